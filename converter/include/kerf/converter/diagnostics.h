@@ -1,0 +1,135 @@
+// Diagnostics: what Kerf says about a program, compiler style.
+//
+//   part.nc:12:7: error: arc radius 4.000 is shorter than half the chord 5.000 [K0302]
+//       G02 X10. Y0 R4.
+//                   ^~~
+// Every diagnostic has a stable code (docs/diagnostics.md lists them), a severity and a span.
+#pragma once
+
+#include "kerf/converter/source.h"
+#include "kerf/geometry/vec.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kerf::converter {
+
+enum class Severity : std::uint8_t { Note, Warning, Error };
+
+/// Stable diagnostic codes. The number is the code users see: K0302 is Code::RadiusTooSmall.
+enum class Code : std::uint16_t {
+  // Lexical and syntax
+  UnterminatedComment = 101,
+  ExpectedNumber = 102,
+  MalformedNumber = 103,
+  ExponentNotation = 104,
+  NumberOutOfRange = 105,
+  UnexpectedCharacter = 106,
+  UnknownWord = 107,
+  RepeatedWord = 108,
+  MalformedSetting = 110,
+  NotAnInteger = 112,
+  // Words and modal state
+  UnknownGCode = 201,
+  UnknownMCode = 202,
+  ModalGroupConflict = 203,
+  PlaneNotSupported = 204,
+  WordIgnored = 205,
+  TaperWordsNotSupported = 206,
+  RadiusAndCentre = 207,
+  DwellWithoutTime = 208,
+  SetPositionWithoutAxis = 209,
+  WireOffsetNotApplied = 210,
+  WireOffsetUnknown = 211,
+  NoMotionMode = 212,
+  WorkOffsetIgnored = 213,
+  BadFeed = 214,
+  // Arcs
+  ArcWithoutCentre = 301,
+  RadiusTooSmall = 302,
+  FullCircleWithRadius = 303,
+  ArcEndOffCircle = 304,
+  ZeroRadius = 305,
+  // Motion
+  ZeroLengthMove = 402,
+  // Program flow and subprograms
+  CallWithoutProgram = 501,
+  SubprogramNotFound = 502,
+  CallTooDeep = 503,
+  ReturnOutsideSubprogram = 504,
+  MissingProgramEnd = 505,
+  BadRepeatCount = 506,
+  ExecutionLimit = 507,
+  DuplicateLabel = 508,
+  // Geometry of the cut path
+  PathCrossesItself = 601,
+  PathTouchesItself = 602,
+  PathOverlapsItself = 603,
+  PathRetraces = 604,
+  PathOpen = 605,
+  NothingCut = 606,
+  RapidInsideCut = 607,
+  // Numbers
+  IntegerUnitSuspect = 701,
+  // Emitters and options
+  CapacityTooSmall = 801,
+  ProfileError = 802,
+  StartBlockNotFound = 803,
+  TooManyDiagnostics = 899,
+};
+
+/// "K0302" for Code::RadiusTooSmall.
+std::string codeName(Code code);
+const char* severityName(Severity s);
+
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  Code code = Code::UnexpectedCharacter;
+  const SourceFile* source = nullptr;  ///< null: not tied to a file (options, emitters)
+  SourceSpan span;
+  std::string message;
+  std::string help;  ///< optional "did you mean ..." or how to fix it
+  // Geometric findings also name the move (index into Toolpath::moves) and a 3D point (z = 0 on
+  // the program plane), so the report, the picture and the window show the same place.
+  std::optional<std::size_t> move;
+  std::optional<geometry::Vec3> point;
+};
+
+/// Collects diagnostics up to a cap; counts every one.
+class Diagnostics {
+ public:
+  explicit Diagnostics(std::size_t cap = 50) : cap_(cap) {}
+
+  void report(Diagnostic d);
+  void error(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
+  void warning(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
+  void note(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
+  /// How many diagnostics are kept (the rest are counted).
+  void setCap(std::size_t cap) { cap_ = cap; }
+
+  [[nodiscard]] const std::vector<Diagnostic>& all() const { return items_; }
+  [[nodiscard]] std::size_t errorCount() const { return errors_; }
+  [[nodiscard]] std::size_t warningCount() const { return warnings_; }
+  [[nodiscard]] std::size_t dropped() const { return dropped_; }
+  [[nodiscard]] bool hasErrors() const { return errors_ > 0; }
+  /// Stable order for output: by file position, then as reported.
+  void sortByPosition();
+
+ private:
+  std::size_t cap_;
+  std::vector<Diagnostic> items_;
+  std::size_t errors_ = 0;
+  std::size_t warnings_ = 0;
+  std::size_t dropped_ = 0;
+};
+
+/// One diagnostic as text: the location line, the source line and a caret under the span.
+std::string formatDiagnostic(const Diagnostic& d);
+
+/// "file:line:col" (or the file name alone for a span-less diagnostic).
+std::string formatLocation(const Diagnostic& d);
+
+}  // namespace kerf::converter

@@ -1,0 +1,64 @@
+// Point-sequence emitter for point-driven 2-axis controllers (the BP-95d and its kin).
+//
+// No public description of the BP-95d format exists (FORMATS.md §3): the output is driven by a
+// profile, and the built-in `bp95d` profile is our documented assumption — one point per line,
+// `X Y` absolute, millimetres, 3 decimals, one space, no header, the start point first.
+#pragma once
+
+#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/toolpath.h"
+#include "kerf/geometry/tessellation.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace kerf::converter {
+
+struct PointProfile {
+  std::string name = "bp95d";
+  int decimals = 3;                    ///< 0..6
+  bool micrometres = false;            ///< integers in µm instead of mm with decimals
+  bool incremental = false;            ///< each point relative to the previous one
+  std::string separator = " ";         ///< between X and Y
+  bool lineNumbers = false;            ///< prefix each point with `lineNumberPrefix` + counter
+  std::string lineNumberPrefix = "N";
+  std::size_t lineNumberStart = 1;
+  std::string header;                  ///< written before the points (verbatim, may be empty)
+  std::string footer;                  ///< written after them
+  std::optional<std::size_t> maxPoints;  ///< the controller's capacity
+};
+
+/// The built-in profile (FORMATS.md §3).
+PointProfile bp95dProfile();
+
+/// Reads a profile file: `key = value` lines, `#` comments. Keys: name, decimals,
+/// unit (mm|um), coordinates (absolute|incremental), separator (space|tab|comma|semicolon or a
+/// quoted string), line_numbers (true|false), line_number_prefix, line_number_start,
+/// header, footer (quoted; \n for a line break), max_points. Starts from the bp95d defaults.
+std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& diags);
+
+struct PointRequest {
+  geometry::Sampling sampling = geometry::Sampling::step(0.1);
+  std::optional<std::size_t> maxPoints;  ///< overrides the profile's; fits the step to it
+  std::optional<std::uint32_t> startLine;  ///< begin at the cut move of this source line
+};
+
+struct PointOutput {
+  std::string text;
+  std::size_t points = 0;
+  geometry::Sampling sampling;  ///< the sampling used (chosen automatically with maxPoints)
+  bool fitted = false;          ///< the sampling was chosen to fit maxPoints
+  geometry::PathSampleStats stats;
+};
+
+/// Builds the point file. Returns nothing (with an error in diags) when it cannot: no cut
+/// moves, a capacity no sampling can meet, an unknown start line.
+std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile* source,
+                                      const PointProfile& profile, const PointRequest& request,
+                                      Diagnostics& diags);
+
+/// Fixed-decimal text of v, rounded to nearest, never "-0.000".
+std::string formatFixed(double v, int decimals);
+
+}  // namespace kerf::converter

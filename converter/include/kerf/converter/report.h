@@ -1,0 +1,26 @@
+// Reports: `kerf check` and `kerf explain` as text and as JSON. Strings out, nothing printed.
+#pragma once
+
+#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/summary.h"
+#include "kerf/converter/toolpath.h"
+
+#include <string>
+
+namespace kerf::converter {
+
+/// Diagnostics, compiler style, in order, with a closing count line.
+std::string formatDiagnosticsText(const Diagnostics& diags);
+
+/// The summary block of `kerf check`.
+std::string formatSummaryText(const std::string& file, const Summary& summary, const Diagnostics& diags);
+
+/// `kerf check --json`: {"file", "verdict", "diagnostics": [...], "summary": {...}}.
+std::string checkReportJson(const std::string& file, const Summary& summary, const Diagnostics& diags);
+
+/// `kerf explain`: each move, how its geometry follows from its words.
+std::string explainText(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling);
+/// `kerf explain --json`: {"file", "sampling", "moves": [{line, kind, start, end, centre, ...}]}.
+std::string explainJson(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling);
+
+}  // namespace kerf::converter

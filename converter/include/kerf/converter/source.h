@@ -1,0 +1,44 @@
+// Source text and positions in it.
+//
+// The text is kept exactly as read; nothing rewrites it (no in-place lowercasing). Positions are
+// byte offsets; lines and columns are 1-based, columns count bytes.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace kerf::converter {
+
+struct SourceSpan {
+  std::uint32_t offset = 0;
+  std::uint32_t length = 0;
+};
+
+struct SourceLocation {
+  std::uint32_t line = 0;    ///< 1-based
+  std::uint32_t column = 0;  ///< 1-based, in bytes
+};
+
+class SourceFile {
+ public:
+  /// Largest text accepted (offsets are 32-bit).
+  static constexpr std::size_t kMaxSize = 1u << 31;
+
+  SourceFile(std::string name, std::string text);
+
+  [[nodiscard]] const std::string& name() const { return name_; }
+  [[nodiscard]] std::string_view text() const { return text_; }
+  [[nodiscard]] SourceLocation locate(std::uint32_t offset) const;
+  /// The text of a 1-based line, without its line break.
+  [[nodiscard]] std::string_view lineText(std::uint32_t line) const;
+  [[nodiscard]] std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
+
+ private:
+  std::string name_;
+  std::string text_;
+  std::vector<std::uint32_t> lineStarts_;
+};
+
+}  // namespace kerf::converter

@@ -1,0 +1,78 @@
+#include "kerf/converter/diagnostics.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace kerf::converter {
+
+std::string codeName(Code code) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "K%04u", static_cast<unsigned>(code));
+  return buf;
+}
+
+const char* severityName(Severity s) {
+  switch (s) {
+    case Severity::Note: return "note";
+    case Severity::Warning: return "warning";
+    case Severity::Error: return "error";
+  }
+  return "error";
+}
+
+void Diagnostics::report(Diagnostic d) {
+  if (d.severity == Severity::Error) ++errors_;
+  if (d.severity == Severity::Warning) ++warnings_;
+  if (items_.size() >= cap_) {
+    ++dropped_;
+    return;
+  }
+  items_.push_back(std::move(d));
+}
+
+void Diagnostics::error(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help) {
+  report({Severity::Error, code, src, span, std::move(message), std::move(help), std::nullopt, std::nullopt});
+}
+void Diagnostics::warning(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help) {
+  report({Severity::Warning, code, src, span, std::move(message), std::move(help), std::nullopt, std::nullopt});
+}
+void Diagnostics::note(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help) {
+  report({Severity::Note, code, src, span, std::move(message), std::move(help), std::nullopt, std::nullopt});
+}
+
+void Diagnostics::sortByPosition() {
+  std::stable_sort(items_.begin(), items_.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    if ((a.source == nullptr) != (b.source == nullptr)) return a.source == nullptr;
+    return a.span.offset < b.span.offset;
+  });
+}
+
+std::string formatLocation(const Diagnostic& d) {
+  if (!d.source) return "kerf";
+  const SourceLocation loc = d.source->locate(d.span.offset);
+  return d.source->name() + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
+}
+
+std::string formatDiagnostic(const Diagnostic& d) {
+  std::string out = formatLocation(d) + ": " + severityName(d.severity) + ": " + d.message + " [" +
+                    codeName(d.code) + "]\n";
+  if (d.source) {
+    const SourceLocation loc = d.source->locate(d.span.offset);
+    const std::string_view text = d.source->lineText(loc.line);
+    out += "    ";
+    // Control characters would garble the terminal; show them as '?'.
+    for (char c : text) out += (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? '?' : c;
+    out += "\n    ";
+    const std::size_t col = loc.column - 1;
+    for (std::size_t i = 0; i < col && i < text.size(); ++i) out += text[i] == '\t' ? '\t' : ' ';
+    out += '^';
+    const std::size_t room = text.size() > col ? text.size() - col : 0;
+    const std::size_t tail = std::min<std::size_t>(d.span.length > 0 ? d.span.length - 1 : 0, room > 0 ? room - 1 : 0);
+    out.append(tail, '~');
+    out += '\n';
+  }
+  if (!d.help.empty()) out += "    help: " + d.help + "\n";
+  return out;
+}
+
+}  // namespace kerf::converter

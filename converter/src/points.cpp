@@ -1,0 +1,229 @@
+#include "kerf/converter/points.h"
+
+#include "kerf/converter/summary.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace kerf::converter {
+
+std::string formatFixed(double v, int decimals) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+  std::string s(buf, r.ptr);
+  // "-0.000" (a negative number that rounds to zero) is written as "0.000".
+  if (!s.empty() && s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+  return s;
+}
+
+PointProfile bp95dProfile() { return PointProfile{}; }
+
+namespace {
+
+std::string unquote(std::string_view v, bool& ok) {
+  ok = true;
+  if (v.size() >= 2 && v.front() == '"' && v.back() == '"') {
+    std::string out;
+    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+      if (v[i] == '\\' && i + 2 < v.size()) {
+        const char e = v[++i];
+        out += e == 'n' ? '\n' : e == 't' ? '\t' : e;
+      } else {
+        out += v[i];
+      }
+    }
+    return out;
+  }
+  if (!v.empty() && (v.front() == '"' || v.back() == '"')) ok = false;
+  return std::string(v);
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace
+
+std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& diags) {
+  PointProfile p = bp95dProfile();
+  p.name = "custom";
+  bool ok = true;
+  const std::string_view text = file.text();
+  for (std::uint32_t line = 1; line <= file.lineCount(); ++line) {
+    const std::string_view raw = file.lineText(line);
+    const auto lineOffset = static_cast<std::uint32_t>(raw.data() - text.data());
+    std::string_view body = raw;
+    if (const std::size_t hash = body.find('#'); hash != std::string_view::npos && body.find('"') > hash)
+      body = body.substr(0, hash);
+    if (trim(body).empty()) continue;
+    const std::size_t eq = body.find('=');
+    auto fail = [&](std::size_t col, std::size_t len, const std::string& msg, const std::string& help = {}) {
+      diags.error(Code::ProfileError, &file,
+                  {lineOffset + static_cast<std::uint32_t>(col), static_cast<std::uint32_t>(std::max<std::size_t>(len, 1))},
+                  msg, help);
+      ok = false;
+    };
+    if (eq == std::string_view::npos) {
+      fail(static_cast<std::size_t>(trim(body).data() - raw.data()), trim(body).size(), "expected 'key = value'");
+      continue;
+    }
+    const std::string_view key = trim(body.substr(0, eq));
+    const std::string_view value = trim(body.substr(eq + 1));
+    const std::size_t valueCol = static_cast<std::size_t>(value.data() - raw.data());
+    const std::size_t keyCol = static_cast<std::size_t>(key.data() - raw.data());
+    auto integer = [&](long lo, long hi, long& out) {
+      long v = 0;
+      const auto r = std::from_chars(value.data(), value.data() + value.size(), v);
+      if (r.ec != std::errc{} || r.ptr != value.data() + value.size() || v < lo || v > hi) {
+        fail(valueCol, value.size(), std::string(key) + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+        return false;
+      }
+      out = v;
+      return true;
+    };
+    auto boolean = [&](bool& out) {
+      if (value == "true" || value == "yes") out = true;
+      else if (value == "false" || value == "no") out = false;
+      else fail(valueCol, value.size(), std::string(key) + " must be true or false");
+    };
+    bool quotedOk = true;
+    if (key == "name") {
+      p.name = unquote(value, quotedOk);
+    } else if (key == "decimals") {
+      long v;
+      if (integer(0, 6, v)) p.decimals = static_cast<int>(v);
+    } else if (key == "unit") {
+      if (value == "mm") p.micrometres = false;
+      else if (value == "um") p.micrometres = true;
+      else fail(valueCol, value.size(), "unit must be mm or um");
+    } else if (key == "coordinates") {
+      if (value == "absolute") p.incremental = false;
+      else if (value == "incremental") p.incremental = true;
+      else fail(valueCol, value.size(), "coordinates must be absolute or incremental");
+    } else if (key == "separator") {
+      if (value == "space") p.separator = " ";
+      else if (value == "tab") p.separator = "\t";
+      else if (value == "comma") p.separator = ",";
+      else if (value == "semicolon") p.separator = ";";
+      else p.separator = unquote(value, quotedOk);
+    } else if (key == "line_numbers") {
+      boolean(p.lineNumbers);
+    } else if (key == "line_number_prefix") {
+      p.lineNumberPrefix = unquote(value, quotedOk);
+    } else if (key == "line_number_start") {
+      long v;
+      if (integer(0, 1000000000, v)) p.lineNumberStart = static_cast<std::size_t>(v);
+    } else if (key == "header") {
+      p.header = unquote(value, quotedOk);
+    } else if (key == "footer") {
+      p.footer = unquote(value, quotedOk);
+    } else if (key == "max_points") {
+      long v;
+      if (integer(2, 100000000, v)) p.maxPoints = static_cast<std::size_t>(v);
+    } else {
+      fail(keyCol, key.size(), "unknown profile key '" + std::string(key) + "'",
+           "keys: name, decimals, unit, coordinates, separator, line_numbers, line_number_prefix, "
+           "line_number_start, header, footer, max_points");
+    }
+    if (!quotedOk) fail(valueCol, value.size(), "unbalanced quote in the value");
+  }
+  if (!ok) return std::nullopt;
+  return p;
+}
+
+std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile* source,
+                                      const PointProfile& profile, const PointRequest& request,
+                                      Diagnostics& diags) {
+  CutPath path = cutPath(toolpath);
+  if (path.segments.empty()) {
+    diags.error(Code::NothingCut, source, {}, "nothing to write: the program has no cutting move");
+    return std::nullopt;
+  }
+  // Start point: rotate a closed path so it begins at the chosen move; on an open path, the
+  // moves before it are left out.
+  if (request.startLine) {
+    std::size_t k = 0;
+    while (k < path.segments.size() && toolpath.moves[path.moveIndex[k]].line != *request.startLine) ++k;
+    if (k == path.segments.size()) {
+      diags.error(Code::StartBlockNotFound, source, {},
+                  "no cutting move comes from line " + std::to_string(*request.startLine));
+      return std::nullopt;
+    }
+    const bool closed = (path.segments.back().end - path.segments.front().start).norm() <= 1e-6;
+    if (closed) {
+      std::rotate(path.segments.begin(), path.segments.begin() + static_cast<std::ptrdiff_t>(k), path.segments.end());
+      std::rotate(path.moveIndex.begin(), path.moveIndex.begin() + static_cast<std::ptrdiff_t>(k), path.moveIndex.end());
+    } else if (k > 0) {
+      diags.warning(Code::StartBlockNotFound, source, toolpath.moves[path.moveIndex[k]].span,
+                    "the cut path is open: the " + std::to_string(k) + " cutting moves before this one are left out");
+      path.segments.erase(path.segments.begin(), path.segments.begin() + static_cast<std::ptrdiff_t>(k));
+      path.moveIndex.erase(path.moveIndex.begin(), path.moveIndex.begin() + static_cast<std::ptrdiff_t>(k));
+    }
+  }
+
+  PointOutput out;
+  out.sampling = request.sampling;
+  const std::optional<std::size_t> capacity = request.maxPoints ? request.maxPoints : profile.maxPoints;
+  if (capacity) {
+    const geometry::CapacityFit fit = geometry::fitToCapacity(path.segments, *capacity, request.sampling.mode);
+    if (!fit.fits) {
+      diags.error(Code::CapacityTooSmall, source, {},
+                  "the path needs at least " + std::to_string(fit.fewestPossible) + " points (every arc as coarse as it can be), more than the " +
+                      std::to_string(*capacity) + " the controller holds");
+      return std::nullopt;
+    }
+    // Keep the requested sampling when it already fits; otherwise the finest one that fits.
+    const std::size_t requested = geometry::samplePath(path.segments, request.sampling, nullptr).points;
+    if (requested > *capacity) {
+      out.sampling = fit.sampling;
+      out.fitted = true;
+    }
+  }
+  std::vector<geometry::Vec2> points;
+  out.stats = geometry::samplePath(path.segments, out.sampling, &points);
+  out.points = points.size();
+
+  std::string& text = out.text;
+  text.reserve(points.size() * 20 + profile.header.size() + profile.footer.size());
+  if (!profile.header.empty()) {
+    text += profile.header;
+    if (text.back() != '\n') text += '\n';
+  }
+  const double scale = profile.micrometres ? 1000.0 : 1.0;
+  const int decimals = profile.micrometres ? 0 : profile.decimals;
+  // Incremental output is the difference of rounded absolute values, so the increments add
+  // up exactly to every absolute point (no drift from rounding).
+  auto rounded = [&](double v) {
+    const double f = std::pow(10.0, decimals);
+    return std::nearbyint(v * scale * f);
+  };
+  const double unitStep = 1.0 / std::pow(10.0, decimals);
+  double prevX = 0, prevY = 0;
+  std::size_t number = profile.lineNumberStart;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double rx = rounded(points[i].x()), ry = rounded(points[i].y());
+    double wx = rx, wy = ry;
+    if (profile.incremental && i > 0) {
+      wx = rx - prevX;
+      wy = ry - prevY;
+    }
+    prevX = rx;
+    prevY = ry;
+    if (profile.lineNumbers) text += profile.lineNumberPrefix + std::to_string(number++) + profile.separator;
+    text += formatFixed(wx * unitStep, decimals);
+    text += profile.separator;
+    text += formatFixed(wy * unitStep, decimals);
+    text += '\n';
+  }
+  if (!profile.footer.empty()) {
+    text += profile.footer;
+    if (text.back() != '\n') text += '\n';
+  }
+  return out;
+}
+
+}  // namespace kerf::converter

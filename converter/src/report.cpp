@@ -1,0 +1,231 @@
+// Sections: 1. number formatting  2. check (text, JSON)  3. explain (text, JSON)
+#include "kerf/converter/report.h"
+
+#include "kerf/converter/points.h"
+#include "kerf/geometry/arc.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+namespace kerf::converter {
+namespace {
+
+using geometry::Vec2;
+using nlohmann::json;
+
+// ---- 1. numbers --------------------------------------------------------------------------------
+
+std::string mm(double v) { return formatFixed(v, 3); }
+std::string pt(const Vec2& p) { return "(" + mm(p.x()) + ", " + mm(p.y()) + ")"; }
+std::string deg(double radians) { return formatFixed(radians * 180.0 / geometry::kPi, 3); }
+std::string sci(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3e", v);
+  return buf;
+}
+std::string plural(std::size_t n, const char* word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+json vec(const Vec2& p) { return json::array({p.x(), p.y()}); }
+
+std::string samplingText(const geometry::Sampling& s) {
+  return s.mode == geometry::SamplingMode::Step ? "step k = " + formatFixed(s.value, 6) + " mm"
+                                                : "tolerance " + formatFixed(s.value, 6) + " mm";
+}
+json samplingJson(const geometry::Sampling& s) {
+  return {{"mode", s.mode == geometry::SamplingMode::Step ? "step" : "tolerance"}, {"value", s.value}};
+}
+
+const char* kindName(MoveKind k) {
+  switch (k) {
+    case MoveKind::Rapid: return "rapid";
+    case MoveKind::Line: return "line";
+    case MoveKind::Arc: return "arc";
+  }
+  return "line";
+}
+
+const char* centreFormName(CentreForm f) {
+  switch (f) {
+    case CentreForm::None: return "none";
+    case CentreForm::Radius: return "R";
+    case CentreForm::Incremental: return "IJ-incremental";
+    case CentreForm::Reversed: return "IJ-reversed";
+    case CentreForm::Absolute: return "IJ-absolute";
+  }
+  return "none";
+}
+
+std::string blockText(const Program& program, const Move& m) {
+  return std::string(program.source->text().substr(m.span.offset, m.span.length));
+}
+
+}  // namespace
+
+// ---- 2. check ----------------------------------------------------------------------------------
+
+std::string formatDiagnosticsText(const Diagnostics& diags) {
+  std::string out;
+  for (const Diagnostic& d : diags.all()) out += formatDiagnostic(d);
+  if (diags.dropped() > 0) out += "... and " + std::to_string(diags.dropped()) + " more diagnostics not shown\n";
+  return out;
+}
+
+std::string formatSummaryText(const std::string& file, const Summary& s, const Diagnostics& diags) {
+  std::string out;
+  out += file + ": " + plural(diags.errorCount(), "error") + ", " + plural(diags.warningCount(), "warning") + "\n";
+  out += "  blocks " + std::to_string(s.blocks) + ", moves " + std::to_string(s.moves) + " (" +
+         std::to_string(s.cutMoves) + " cut: " + plural(s.lines, "line") + ", " + plural(s.arcs, "arc") + "; " +
+         std::to_string(s.rapidMoves) + " rapid)\n";
+  out += "  cut length " + mm(s.cutLength) + " mm, rapid length " + mm(s.rapidLength) + " mm\n";
+  if (!s.bounds.empty())
+    out += "  bounds X " + mm(s.bounds.min.x()) + " .. " + mm(s.bounds.max.x()) + ", Y " + mm(s.bounds.min.y()) + " .. " +
+           mm(s.bounds.max.y()) + " mm\n";
+  out += "  points at " + samplingText(s.sampling) + ": " + std::to_string(s.points.points) + " (max deviation " +
+         formatFixed(s.points.maxDeviation, 6) + " mm, mean relative error " + sci(s.points.meanRelativeError) + ")\n";
+  out += std::string("verdict: ") + (diags.hasErrors() ? "errors — do not cut" : "ok") + "\n";
+  return out;
+}
+
+std::string checkReportJson(const std::string& file, const Summary& s, const Diagnostics& diags) {
+  json j;
+  j["file"] = file;
+  j["verdict"] = diags.hasErrors() ? "errors" : "ok";
+  j["errors"] = diags.errorCount();
+  j["warnings"] = diags.warningCount();
+  j["diagnostics_not_shown"] = diags.dropped();
+  json list = json::array();
+  for (const Diagnostic& d : diags.all()) {
+    json e;
+    e["severity"] = severityName(d.severity);
+    e["code"] = codeName(d.code);
+    e["message"] = d.message;
+    if (!d.help.empty()) e["help"] = d.help;
+    if (d.source) {
+      const SourceLocation loc = d.source->locate(d.span.offset);
+      e["file"] = d.source->name();
+      e["line"] = loc.line;
+      e["column"] = loc.column;
+      e["length"] = d.span.length;
+    }
+    if (d.move) e["move"] = *d.move;
+    if (d.point) e["point"] = json::array({d.point->x(), d.point->y(), d.point->z()});
+    list.push_back(std::move(e));
+  }
+  j["diagnostics"] = std::move(list);
+  json sum;
+  sum["blocks"] = s.blocks;
+  sum["moves"] = s.moves;
+  sum["cut_moves"] = s.cutMoves;
+  sum["rapid_moves"] = s.rapidMoves;
+  sum["lines"] = s.lines;
+  sum["arcs"] = s.arcs;
+  sum["cut_length_mm"] = s.cutLength;
+  sum["rapid_length_mm"] = s.rapidLength;
+  if (!s.bounds.empty()) sum["bounds_mm"] = {{"min", vec(s.bounds.min)}, {"max", vec(s.bounds.max)}};
+  sum["sampling"] = samplingJson(s.sampling);
+  sum["points"] = s.points.points;
+  sum["max_deviation_mm"] = s.points.maxDeviation;
+  sum["mean_relative_error"] = s.points.meanRelativeError;
+  j["summary"] = std::move(sum);
+  return j.dump(2) + "\n";
+}
+
+// ---- 3. explain --------------------------------------------------------------------------------
+
+std::string explainText(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling) {
+  std::string out;
+  out += "Kerf explains " + program.source->name() + ": " + plural(toolpath.moves.size(), "move") +
+         ", arcs sampled at " + samplingText(sampling) + "\n";
+  out += "Angles: counter-clockwise from +X unless marked 'seed', which is the paper's clockwise convention.\n";
+  out += "The wire starts at " + pt(toolpath.start) + ".\n";
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    const Move& m = toolpath.moves[i];
+    const geometry::Segment& s = m.lower;
+    out += "\nline " + std::to_string(m.line) + ": " + blockText(program, m) + "\n";
+    if (m.kind != MoveKind::Arc) {
+      out += std::string("  ") + (m.kind == MoveKind::Rapid ? "rapid (G00, not cut)" : "straight cut (G01)") + " from " +
+             pt(s.start) + " to " + pt(s.end) + ", length " + mm(s.length()) + " mm\n";
+      if (m.kind == MoveKind::Line) out += "  a line adds only its end point to the point sequence\n";
+      continue;
+    }
+    const bool cw = s.sweep < 0;
+    out += std::string("  arc ") + (cw ? "clockwise (G02)" : "counter-clockwise (G03)") + " from " + pt(s.start) +
+           " (the end of the previous move) to " + pt(s.end) + "\n";
+    if (m.centreForm == CentreForm::Radius) {
+      const double r = m.programmedRadius;
+      const int zn = geometry::seedSignFactor(cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
+      out += "  centre " + pt(s.centre) + " from R " + mm(r) + ": half the chord is " + mm((s.end - s.start).norm() / 2) +
+             " mm; " + (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
+             " (seed formulas (1)-(2), sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
+    } else {
+      const Vec2& ij = m.programmedCentreWords;
+      std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"
+                         : m.centreForm == CentreForm::Reversed  ? "centre = start - (I, J)"
+                                                                 : "centre = (I, J)";
+      out += "  centre " + pt(s.centre) + " from I " + mm(ij.x()) + " J " + mm(ij.y()) + ": " + rule +
+             "; radius by formula (3) = |start - centre| = " + mm(s.radius) + " mm\n";
+      if (std::abs(m.radiusError) > 0.0005)
+        out += "  the end point is " + mm(std::abs(m.radiusError)) + " mm off that circle (within the accepted tolerance)\n";
+    }
+    out += "  radius " + mm(s.radius) + " mm, sweep " + deg(std::abs(s.sweep)) + " degrees, length " + mm(s.length()) + " mm\n";
+    std::vector<Vec2> pts;
+    const geometry::ArcSampleStats st = geometry::sample(s, sampling, &pts);
+    if (sampling.mode == geometry::SamplingMode::Step) {
+      const geometry::SeedArcAngles a = geometry::seedAngles(s, sampling.value);
+      out += "  seed angles: alpha " + deg(a.alpha) + ", beta " + deg(a.beta) + ", gamma = 2 asin(k / 2R) = " + deg(a.gamma) +
+             " degrees; delta " + (cw ? "grows" : "falls") + " by gamma from alpha to beta\n";
+    }
+    out += "  " + plural(st.points, "point") + " after the start, max deviation " + formatFixed(st.maxDeviation, 6) +
+           " mm, mean relative error " + sci(st.meanRelativeError) + "\n";
+  }
+  return out;
+}
+
+std::string explainJson(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling) {
+  json j;
+  j["file"] = program.source->name();
+  j["sampling"] = samplingJson(sampling);
+  j["start"] = vec(toolpath.start);
+  json moves = json::array();
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    const Move& m = toolpath.moves[i];
+    const geometry::Segment& s = m.lower;
+    json e;
+    e["index"] = i;
+    e["line"] = m.line;
+    e["block"] = blockText(program, m);
+    e["kind"] = kindName(m.kind);
+    e["start"] = vec(s.start);
+    e["end"] = vec(s.end);
+    e["length"] = s.length();
+    if (m.kind == MoveKind::Arc) {
+      e["centre"] = vec(s.centre);
+      e["radius"] = s.radius;
+      e["direction"] = s.sweep < 0 ? "cw" : "ccw";
+      e["sweep_deg"] = std::abs(s.sweep) * 180.0 / geometry::kPi;
+      e["centre_from"] = centreFormName(m.centreForm);
+      if (m.centreForm == CentreForm::Radius) {
+        e["R"] = m.programmedRadius;
+        e["zn"] = geometry::seedSignFactor(s.sweep < 0 ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise,
+                                           m.programmedRadius);
+      } else {
+        e["IJ"] = vec(m.programmedCentreWords);
+        e["radius_error"] = m.radiusError;
+      }
+      const geometry::ArcSampleStats st = geometry::sample(s, sampling, nullptr);
+      e["points"] = st.points;
+      e["max_deviation"] = st.maxDeviation;
+      e["mean_relative_error"] = st.meanRelativeError;
+    } else {
+      e["points"] = 1;
+    }
+    moves.push_back(std::move(e));
+  }
+  j["moves"] = std::move(moves);
+  return j.dump(2) + "\n";
+}
+
+}  // namespace kerf::converter

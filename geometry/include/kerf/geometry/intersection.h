@@ -1,0 +1,60 @@
+// Exact intersection of lines and arcs, and self-intersection of a path.
+//
+// Exact means on the segments' true geometry (lines and circular arcs), not their
+// tessellation; coincidence is decided with a distance tolerance in mm.
+#pragma once
+
+#include "kerf/geometry/segment.h"
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace kerf::geometry {
+
+struct SegmentIntersection {
+  int count = 0;         ///< 0, 1 or 2 points (an overlap reports its two ends)
+  bool overlap = false;  ///< the segments share a stretch longer than the tolerance
+  Vec2 points[2];
+};
+
+/// Intersection of two segments within tol (mm).
+SegmentIntersection intersect(const Segment& a, const Segment& b, double tol);
+
+enum class ContactKind : std::uint8_t {
+  Crossing,  ///< interiors meet
+  Touch,     ///< an end point of one lies on the other (not a shared vertex)
+  Overlap,   ///< a shared stretch; for neighbours, the path folds back on itself
+};
+
+struct Contact {
+  std::size_t first = 0;   ///< index of the earlier segment
+  std::size_t second = 0;  ///< index of the later segment
+  ContactKind kind = ContactKind::Crossing;
+  bool adjacent = false;  ///< the two are consecutive in the path (or last/first of a closed one)
+  bool opposite = false;  ///< Overlap only: the two run in opposite directions (a retrace)
+  Vec2 point = Vec2::Zero();
+};
+
+struct SelfIntersectionOptions {
+  double tolerance = 1e-6;        ///< mm
+  bool closed = false;            ///< the last segment is a neighbour of the first
+  std::size_t maxContacts = 256;  ///< stop collecting after this many
+};
+
+struct SelfIntersectionResult {
+  std::vector<Contact> contacts;    ///< sorted by (first, second)
+  std::size_t candidatePairs = 0;   ///< pairs whose boxes overlapped (tested exactly)
+  bool truncated = false;           ///< maxContacts was reached
+};
+
+/// Every place where the path meets itself other than at the vertex two consecutive segments
+/// share. Non-neighbours that meet only at their end points (a vertex visited twice, as lead-in
+/// and lead-out do) are not contacts. Zero-length segments are skipped.
+///
+/// Method: boxes sorted by x and swept, with exact tests for the pairs whose boxes overlap;
+/// O(n log n + c) for c overlapping pairs (docs/geometry.md).
+SelfIntersectionResult findSelfIntersections(std::span<const Segment> path,
+                                             const SelfIntersectionOptions& options = {});
+
+}  // namespace kerf::geometry

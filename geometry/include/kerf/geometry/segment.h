@@ -1,0 +1,51 @@
+// Segment: the exact geometry of one move on one plane — a straight line or a circular arc.
+//
+// A Segment never holds sampled points; consumers ask for points with a step or a tolerance
+// (tessellation.h). All lengths in mm, angles in radians (counter-clockwise positive).
+#pragma once
+
+#include "kerf/geometry/vec.h"
+
+#include <cstdint>
+
+namespace kerf::geometry {
+
+enum class SegmentKind : std::uint8_t { Line, Arc };
+
+/// Direction of an arc as seen from +Z: G02 is Clockwise, G03 CounterClockwise.
+enum class ArcDirection : std::uint8_t { Clockwise, CounterClockwise };
+
+struct Segment {
+  SegmentKind kind = SegmentKind::Line;
+  Vec2 start = Vec2::Zero();
+  Vec2 end = Vec2::Zero();
+  // Arc only. radius is |start - centre|; the end point may sit off the circle by the
+  // tolerance the arc was accepted with (see arc.h), and end is kept exactly as programmed.
+  Vec2 centre = Vec2::Zero();
+  double radius = 0.0;
+  double startAngle = 0.0;  ///< angle of start about centre
+  double sweep = 0.0;       ///< signed: > 0 counter-clockwise, < 0 clockwise; |sweep| <= 2 pi
+
+  /// A straight line from a to b.
+  static Segment line(const Vec2& a, const Vec2& b);
+  /// An arc from start to end about centre. When start and end coincide (within 1e-12 of the
+  /// radius) the arc is a full circle. The sweep follows the direction.
+  static Segment arc(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir);
+
+  [[nodiscard]] bool isArc() const { return kind == SegmentKind::Arc; }
+  [[nodiscard]] ArcDirection direction() const {
+    return sweep < 0 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise;
+  }
+  [[nodiscard]] double length() const;
+  /// Point at parameter t in [0, 1], proportional to length. For arcs the point lies on the
+  /// circle of radius `radius`; at t = 1 it is the circle point nearest the programmed end.
+  [[nodiscard]] Vec2 pointAt(double t) const;
+  /// Unit tangent in the direction of travel at parameter t.
+  [[nodiscard]] Vec2 tangentAt(double t) const;
+  /// Tight bounding box (arcs include their axis extremes).
+  [[nodiscard]] Box bounds() const;
+  /// The same path travelled the other way.
+  [[nodiscard]] Segment reversed() const;
+};
+
+}  // namespace kerf::geometry

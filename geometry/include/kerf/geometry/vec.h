@@ -1,0 +1,49 @@
+// Vectors and angles shared by every geometry routine.
+//
+// Units: millimetres and radians. Angles are measured counter-clockwise from +X, as seen
+// from +Z (the usual mathematical sense), unless a function says otherwise.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <numbers>
+
+namespace kerf::geometry {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+/// z component of the 3D cross product of (a, 0) and (b, 0).
+inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+/// Angle of v from +X in (-pi, pi].
+inline double angleOf(const Vec2& v) { return std::atan2(v.y(), v.x()); }
+
+/// Unit vector at angle a.
+inline Vec2 direction(double a) { return {std::cos(a), std::sin(a)}; }
+
+/// Axis-aligned box; empty when min > max.
+struct Box {
+  Vec2 min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  Vec2 max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+
+  void add(const Vec2& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
+  void add(const Box& b) {
+    min = min.cwiseMin(b.min);
+    max = max.cwiseMax(b.max);
+  }
+  [[nodiscard]] bool empty() const { return min.x() > max.x(); }
+  [[nodiscard]] bool overlaps(const Box& b, double tol) const {
+    return min.x() <= b.max.x() + tol && b.min.x() <= max.x() + tol && min.y() <= b.max.y() + tol &&
+           b.min.y() <= max.y() + tol;
+  }
+};
+
+}  // namespace kerf::geometry

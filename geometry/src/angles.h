@@ -1,0 +1,31 @@
+// Private helpers for angles on arcs.
+#pragma once
+
+#include "kerf/geometry/segment.h"
+
+#include <cmath>
+
+namespace kerf::geometry::detail {
+
+/// a reduced into [0, 2 pi).
+inline double wrapPositive(double a) {
+  double r = std::fmod(a, kTwoPi);
+  if (r < 0) r += kTwoPi;
+  if (r >= kTwoPi) r -= kTwoPi;
+  return r;
+}
+
+/// How far along the arc (radians, >= 0, in the direction of travel) the angle phi lies from the
+/// start. Values above |sweep| mean off the arc.
+inline double angleAlong(const Segment& arc, double phi) {
+  return arc.sweep >= 0 ? wrapPositive(phi - arc.startAngle) : wrapPositive(arc.startAngle - phi);
+}
+
+/// Is the point p (assumed on the arc's circle) on the arc, within tol mm along the circle?
+inline bool onArc(const Segment& arc, const Vec2& p, double tol) {
+  const double along = angleAlong(arc, angleOf(p - arc.centre));
+  const double angTol = arc.radius > 0 ? tol / arc.radius : 0.0;
+  return along <= std::abs(arc.sweep) + angTol || along >= kTwoPi - angTol;
+}
+
+}  // namespace kerf::geometry::detail

@@ -1,0 +1,90 @@
+#include "kerf/geometry/segment.h"
+
+#include "angles.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kerf::geometry {
+
+Segment Segment::line(const Vec2& a, const Vec2& b) {
+  Segment s;
+  s.kind = SegmentKind::Line;
+  s.start = a;
+  s.end = b;
+  return s;
+}
+
+Segment Segment::arc(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir) {
+  Segment s;
+  s.kind = SegmentKind::Arc;
+  s.start = start;
+  s.end = end;
+  s.centre = centre;
+  s.radius = (start - centre).norm();
+  s.startAngle = angleOf(start - centre);
+  const double endAngle = angleOf(end - centre);
+  const bool full = (end - start).norm() <= 1e-12 * std::max(1.0, s.radius);
+  if (dir == ArcDirection::CounterClockwise) {
+    double w = detail::wrapPositive(endAngle - s.startAngle);
+    if (full || w == 0.0) w = kTwoPi;
+    s.sweep = w;
+  } else {
+    double w = detail::wrapPositive(s.startAngle - endAngle);
+    if (full || w == 0.0) w = kTwoPi;
+    s.sweep = -w;
+  }
+  return s;
+}
+
+double Segment::length() const {
+  return kind == SegmentKind::Line ? (end - start).norm() : radius * std::abs(sweep);
+}
+
+Vec2 Segment::pointAt(double t) const {
+  if (kind == SegmentKind::Line) return start + t * (end - start);
+  if (t <= 0.0) return start;
+  if (t >= 1.0) return end;
+  return centre + radius * geometry::direction(startAngle + t * sweep);
+}
+
+Vec2 Segment::tangentAt(double t) const {
+  if (kind == SegmentKind::Line) {
+    const Vec2 d = end - start;
+    const double n = d.norm();
+    return n > 0 ? Vec2(d / n) : Vec2(Vec2::Zero());
+  }
+  const double a = startAngle + t * sweep;
+  const Vec2 radial = geometry::direction(a);
+  // Counter-clockwise travel is the radial direction turned by +90 degrees.
+  return sweep >= 0 ? Vec2(-radial.y(), radial.x()) : Vec2(radial.y(), -radial.x());
+}
+
+Box Segment::bounds() const {
+  Box b;
+  b.add(start);
+  b.add(end);
+  if (kind == SegmentKind::Arc) {
+    // Axis extremes (0, 90, 180, 270 degrees) that the arc passes through.
+    for (int q = 0; q < 4; ++q) {
+      const double phi = q * kPi / 2;
+      if (detail::angleAlong(*this, phi) <= std::abs(sweep)) b.add(centre + radius * geometry::direction(phi));
+    }
+  }
+  return b;
+}
+
+Segment Segment::reversed() const {
+  if (kind == SegmentKind::Line) return line(end, start);
+  Segment s = *this;
+  s.start = end;
+  s.end = start;
+  s.startAngle = startAngle + sweep;
+  s.sweep = -sweep;
+  // The radius is defined by the start point; keep the circle, re-anchor on the new start.
+  s.radius = (s.start - centre).norm();
+  s.startAngle = angleOf(s.start - centre);
+  return s;
+}
+
+}  // namespace kerf::geometry

@@ -1,0 +1,217 @@
+#include "kerf/geometry/tessellation.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace kerf::geometry {
+namespace {
+
+/// Angle of the chord of length k on a circle of radius r (capped at a half circle).
+double stepAngle(double k, double r) {
+  if (k >= 2 * r) return kPi;
+  return 2 * std::asin(k / (2 * r));
+}
+
+/// Largest chord angle whose sagitta r (1 - cos(a/2)) stays within tol (capped at a half circle).
+double toleranceAngle(double tol, double r) {
+  if (tol >= r) return kPi;
+  return 2 * std::acos(1 - tol / r);
+}
+
+double sagitta(double r, double span) { return r * (1 - std::cos(span / 2)); }
+
+/// How the arc is cut into chords: `full` chords of angle `span` and, in step mode, one last
+/// chord of angle `rest` (0 when the sweep is a whole number of steps).
+struct ChordPlan {
+  std::size_t full = 0;
+  double span = 0.0;
+  double rest = 0.0;
+};
+
+ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
+  const double sweep = std::abs(arc.sweep);
+  ChordPlan plan;
+  if (sampling.mode == SamplingMode::Step) {
+    plan.span = stepAngle(sampling.value, arc.radius);
+    // A remainder smaller than 1e-9 of a step is rounding noise, not a chord.
+    const double q = sweep / plan.span;
+    const double whole = std::floor(q + 1e-9);
+    plan.full = static_cast<std::size_t>(whole);
+    plan.rest = std::max(0.0, sweep - whole * plan.span);
+    if (plan.rest <= 1e-9 * plan.span) plan.rest = 0.0;
+    if (plan.full == 0) {  // the whole arc is shorter than one step
+      plan.full = 0;
+      plan.rest = sweep;
+    }
+  } else {
+    const double maxSpan = toleranceAngle(sampling.value, arc.radius);
+    plan.full = static_cast<std::size_t>(std::max(1.0, std::ceil(sweep / maxSpan - 1e-9)));
+    plan.span = sweep / static_cast<double>(plan.full);
+    plan.rest = 0.0;
+  }
+  return plan;
+}
+
+}  // namespace
+
+double chordMeanRelativeError(double span) {
+  if (span <= 0) return 0.0;
+  // Average over phi in [-span/2, span/2] of 1 - cos(span/2) / cos(phi).
+  return 1 - std::cos(span / 2) * (2 / span) * std::log(std::tan(kPi / 4 + span / 4));
+}
+
+std::size_t sampleCount(const Segment& seg, const Sampling& sampling) {
+  if (!seg.isArc()) return 1;
+  const ChordPlan plan = planChords(seg, sampling);
+  return plan.full + (plan.rest > 0 ? 1 : 0);
+}
+
+ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<Vec2>* out) {
+  ArcSampleStats stats;
+  if (!seg.isArc()) {
+    stats.points = 1;
+    if (out) out->push_back(seg.end);
+    return stats;
+  }
+  const ChordPlan plan = planChords(seg, sampling);
+  const double dir = seg.sweep >= 0 ? 1.0 : -1.0;
+  const std::size_t total = plan.full + (plan.rest > 0 ? 1 : 0);
+  stats.points = total;
+  if (out) {
+    out->reserve(out->size() + total);
+    for (std::size_t i = 1; i < total; ++i) {
+      const double a = seg.startAngle + dir * plan.span * static_cast<double>(i);
+      out->push_back(seg.centre + seg.radius * direction(a));
+    }
+    out->push_back(seg.end);
+  }
+  const double sweep = std::abs(seg.sweep);
+  double weighted = 0.0;
+  if (plan.full > 0) {
+    stats.maxDeviation = sagitta(seg.radius, plan.span);
+    weighted += static_cast<double>(plan.full) * plan.span * chordMeanRelativeError(plan.span);
+  }
+  if (plan.rest > 0) {
+    stats.maxDeviation = std::max(stats.maxDeviation, sagitta(seg.radius, plan.rest));
+    weighted += plan.rest * chordMeanRelativeError(plan.rest);
+  }
+  stats.meanRelativeError = sweep > 0 ? weighted / sweep : 0.0;
+  return stats;
+}
+
+PathSampleStats samplePath(std::span<const Segment> path, const Sampling& sampling,
+                           std::vector<Vec2>* out) {
+  PathSampleStats stats;
+  if (path.empty()) return stats;
+  Vec2 last = path.front().start;
+  stats.points = 1;
+  if (out) out->push_back(last);
+  double weighted = 0.0;
+  for (const Segment& seg : path) {
+    if ((seg.start - last).norm() > 1e-9) {
+      ++stats.points;
+      if (out) out->push_back(seg.start);
+    }
+    const ArcSampleStats s = sample(seg, sampling, out);
+    stats.points += s.points;
+    if (seg.isArc()) {
+      ++stats.arcs;
+      stats.maxDeviation = std::max(stats.maxDeviation, s.maxDeviation);
+      const double len = seg.length();
+      stats.arcLength += len;
+      weighted += len * s.meanRelativeError;
+    }
+    last = seg.end;
+  }
+  stats.meanRelativeError = stats.arcLength > 0 ? weighted / stats.arcLength : 0.0;
+  return stats;
+}
+
+namespace {
+
+std::size_t countPoints(std::span<const Segment> path, const Sampling& sampling) {
+  if (path.empty()) return 0;
+  std::size_t n = 1;
+  Vec2 last = path.front().start;
+  for (const Segment& seg : path) {
+    if ((seg.start - last).norm() > 1e-9) ++n;
+    n += sampleCount(seg, sampling);
+    last = seg.end;
+  }
+  return n;
+}
+
+}  // namespace
+
+CapacityFit fitToCapacity(std::span<const Segment> path, std::size_t maxPoints, SamplingMode mode) {
+  CapacityFit fit;
+  double maxRadius = 0.0;
+  for (const Segment& s : path)
+    if (s.isArc()) maxRadius = std::max(maxRadius, s.radius);
+  // Coarsest possible sampling: every arc in half circles (and no finer).
+  const double coarsest = mode == SamplingMode::Step ? 2 * maxRadius : maxRadius;
+  const Sampling coarse{mode, std::max(coarsest, 1e-9)};
+  fit.fewestPossible = countPoints(path, coarse);
+  if (fit.fewestPossible > maxPoints) {
+    fit.fits = false;
+    fit.sampling = coarse;
+    fit.points = fit.fewestPossible;
+    return fit;
+  }
+  if (maxRadius == 0.0) {  // no arcs: the count does not depend on the step
+    fit.fits = true;
+    fit.sampling = Sampling{mode, 0.0};
+    fit.points = fit.fewestPossible;
+    return fit;
+  }
+  // The count is non-increasing in the step: bisect on a log scale between a step that is far
+  // too fine (or fits already) and the coarsest one.
+  double hi = coarsest;
+  double lo = coarsest * 1e-12;
+  if (countPoints(path, Sampling{mode, lo}) <= maxPoints) {
+    fit.fits = true;
+    fit.sampling = Sampling{mode, lo};
+    fit.points = countPoints(path, fit.sampling);
+    return fit;
+  }
+  for (int i = 0; i < 200 && hi - lo > 1e-9 * hi; ++i) {
+    const double mid = std::sqrt(lo * hi);
+    const double m = (mid <= lo || mid >= hi) ? (lo + hi) / 2 : mid;
+    if (countPoints(path, Sampling{mode, m}) <= maxPoints) hi = m;
+    else lo = m;
+  }
+  fit.fits = true;
+  fit.sampling = Sampling{mode, hi};
+  fit.points = countPoints(path, fit.sampling);
+  assert(fit.points <= maxPoints);
+  return fit;
+}
+
+SeedArcAngles seedAngles(const Segment& arc, double k) {
+  SeedArcAngles a;
+  // The seed measures angles clockwise from +X, so its angle is minus ours.
+  a.alpha = -arc.startAngle;
+  a.beta = a.alpha - arc.sweep;  // clockwise sweep (G2) makes delta grow
+  a.gamma = stepAngle(k, arc.radius);
+  return a;
+}
+
+std::vector<Vec2> seedArcPoints(const Segment& arc, double k) {
+  const SeedArcAngles a = seedAngles(arc, k);
+  std::vector<Vec2> points;
+  const bool clockwise = arc.sweep < 0;  // G2: delta grows by gamma; G3: it falls by gamma
+  const double total = std::abs(a.beta - a.alpha);
+  // Same rounding rule as sample(): a remainder below 1e-9 of a step is no chord.
+  const auto steps = static_cast<std::size_t>(std::floor(total / a.gamma + 1e-9));
+  for (std::size_t i = 1; i <= steps; ++i) {
+    const double delta = a.alpha + (clockwise ? 1.0 : -1.0) * a.gamma * static_cast<double>(i);
+    if (std::abs(delta - a.alpha) >= total - 1e-9 * a.gamma) break;  // reached beta
+    points.emplace_back(arc.centre.x() + std::cos(delta) * arc.radius,
+                        arc.centre.y() - std::sin(delta) * arc.radius);
+  }
+  points.push_back(arc.end);
+  return points;
+}
+
+}  // namespace kerf::geometry

@@ -1,0 +1,211 @@
+// The kerf program: turns library results into output and exit codes.
+//   exit 0: no errors (warnings allowed)   1: the program has errors   2: usage or I/O problem
+#include "kerf/converter/checks.h"
+#include "kerf/converter/interpreter.h"
+#include "kerf/converter/points.h"
+#include "kerf/converter/program.h"
+#include "kerf/converter/report.h"
+#include "kerf/converter/summary.h"
+
+#include "file_io.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <optional>
+#include <string>
+
+namespace {
+
+using namespace kerf::converter;
+
+constexpr int kExitOk = 0;
+constexpr int kExitErrors = 1;
+constexpr int kExitUsage = 2;
+
+struct CommonOptions {
+  std::string input;
+  std::string integerUnit = "mm";
+  std::string arcCentre = "incremental";
+  std::optional<double> offset;
+  std::optional<double> step;
+  std::optional<double> tolerance;
+  std::size_t maxDiagnostics = 50;
+  bool json = false;
+};
+
+void addCommon(CLI::App& cmd, CommonOptions& o, bool withJson) {
+  cmd.add_option("file", o.input, "NC program (ISO G-code)")->required();
+  cmd.add_option("--integer-unit", o.integerUnit, "unit of coordinates written without a decimal point")
+      ->check(CLI::IsMember({"mm", "um"}));
+  cmd.add_option("--arc-centre", o.arcCentre, "how I J give an arc's centre")
+      ->check(CLI::IsMember({"incremental", "reversed", "absolute"}));
+  cmd.add_option("--offset", o.offset, "wire offset in mm for G41/G42 without D or H (recorded, not applied yet)");
+  auto* step = cmd.add_option("--step", o.step, "arc interpolation step k in mm (chord length; default 0.1)")
+                   ->check(CLI::PositiveNumber);
+  auto* tol = cmd.add_option("--tolerance", o.tolerance, "arc chord tolerance in mm (max deviation), instead of --step")
+                  ->check(CLI::PositiveNumber);
+  step->excludes(tol);
+  cmd.add_option("--max-diagnostics", o.maxDiagnostics, "show at most this many diagnostics")->check(CLI::Range(1, 100000));
+  if (withJson) cmd.add_flag("--json", o.json, "machine-readable output on stdout");
+}
+
+kerf::geometry::Sampling samplingOf(const CommonOptions& o) {
+  if (o.tolerance) return kerf::geometry::Sampling::tolerance(*o.tolerance);
+  return kerf::geometry::Sampling::step(o.step.value_or(0.1));
+}
+
+InterpreterOptions interpreterOptions(const CommonOptions& o) {
+  InterpreterOptions io;
+  io.integerUnit = o.integerUnit == "um" ? IntegerUnit::Micrometre : IntegerUnit::Millimetre;
+  io.arcCentre = o.arcCentre == "reversed"   ? ArcCentreMode::Reversed
+                 : o.arcCentre == "absolute" ? ArcCentreMode::Absolute
+                                             : ArcCentreMode::Incremental;
+  io.wireOffset = o.offset;
+  return io;
+}
+
+/// Everything a command needs after reading and interpreting the input.
+struct Loaded {
+  std::optional<SourceFile> source;
+  Program program;
+  Toolpath toolpath;
+};
+
+bool load(const CommonOptions& o, Diagnostics& diags, Loaded& out) {
+  std::string error;
+  std::optional<std::string> text = kerf::cli::readTextFile(o.input, SourceFile::kMaxSize, error);
+  if (!text) {
+    std::cerr << "kerf: error: " << error << "\n";
+    return false;
+  }
+  out.source.emplace(o.input, std::move(*text));
+  out.program = parseProgram(*out.source, diags);
+  out.toolpath = interpret(out.program, interpreterOptions(o), diags);
+  return true;
+}
+
+void printDiagnostics(Diagnostics& diags) {
+  diags.sortByPosition();
+  std::cerr << formatDiagnosticsText(diags);
+}
+
+int runCheck(const CommonOptions& o) {
+  Diagnostics diags(o.maxDiagnostics);
+  Loaded in;
+  if (!load(o, diags, in)) return kExitUsage;
+  checkToolpath(in.toolpath, &*in.source, CheckOptions{}, diags);
+  const Summary summary = summarize(in.program, in.toolpath, samplingOf(o));
+  diags.sortByPosition();
+  if (o.json) {
+    std::cout << checkReportJson(o.input, summary, diags);
+  } else {
+    std::cerr << formatDiagnosticsText(diags);
+    std::cout << formatSummaryText(o.input, summary, diags);
+  }
+  return diags.hasErrors() ? kExitErrors : kExitOk;
+}
+
+int runExplain(const CommonOptions& o) {
+  Diagnostics diags(o.maxDiagnostics);
+  Loaded in;
+  if (!load(o, diags, in)) return kExitUsage;
+  printDiagnostics(diags);
+  const auto sampling = samplingOf(o);
+  std::cout << (o.json ? explainJson(in.program, in.toolpath, sampling) : explainText(in.program, in.toolpath, sampling));
+  return diags.hasErrors() ? kExitErrors : kExitOk;
+}
+
+struct ConvertOptions {
+  std::string to;
+  std::string output = "-";
+  std::optional<std::size_t> maxPoints;
+  std::optional<std::string> profile;
+  std::optional<std::uint32_t> startBlock;
+};
+
+int runConvert(const CommonOptions& o, const ConvertOptions& c) {
+  Diagnostics diags(o.maxDiagnostics);
+  Loaded in;
+  if (!load(o, diags, in)) return kExitUsage;
+  if (diags.hasErrors()) {
+    printDiagnostics(diags);
+    std::cerr << "kerf: error: not converting a program with errors\n";
+    return kExitErrors;
+  }
+  PointProfile profile = bp95dProfile();
+  std::optional<SourceFile> profileSource;
+  if (c.profile) {
+    std::string error;
+    std::optional<std::string> text = kerf::cli::readTextFile(*c.profile, 1 << 20, error);
+    if (!text) {
+      std::cerr << "kerf: error: " << error << "\n";
+      return kExitUsage;
+    }
+    profileSource.emplace(*c.profile, std::move(*text));
+    std::optional<PointProfile> parsed = parseProfile(*profileSource, diags);
+    if (!parsed) {
+      printDiagnostics(diags);
+      return kExitUsage;
+    }
+    profile = *parsed;
+  }
+  PointRequest request;
+  request.sampling = samplingOf(o);
+  request.maxPoints = c.maxPoints;
+  request.startLine = c.startBlock;
+  std::optional<PointOutput> out = emitPoints(in.toolpath, &*in.source, profile, request, diags);
+  printDiagnostics(diags);
+  if (!out) return kExitErrors;
+  std::string error;
+  if (!kerf::cli::writeOutput(c.output, o.input, out->text, error)) {
+    std::cerr << "kerf: error: " << error << "\n";
+    return kExitUsage;
+  }
+  const auto& s = out->sampling;
+  std::cerr << "kerf: wrote " << out->points << " points (" << profile.name << " profile) to "
+            << (c.output == "-" ? std::string("standard output") : c.output) << "; "
+            << (s.mode == kerf::geometry::SamplingMode::Step ? "step k = " : "tolerance ") << formatFixed(s.value, 6)
+            << " mm" << (out->fitted ? " chosen to fit " + std::to_string(c.maxPoints ? *c.maxPoints : *profile.maxPoints) + " points" : "")
+            << ", max deviation " << formatFixed(out->stats.maxDeviation, 6) << " mm\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Kerf: verify, explain and convert wire-EDM NC programs"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "kerf 0.1.0");
+
+  CommonOptions check, explain, convert;
+  ConvertOptions conv;
+  auto* checkCmd = app.add_subcommand("check", "verify a program: diagnostics, geometric findings, summary");
+  addCommon(*checkCmd, check, true);
+  auto* explainCmd = app.add_subcommand("explain", "how each block's geometry follows from its words");
+  addCommon(*explainCmd, explain, true);
+  auto* convertCmd = app.add_subcommand("convert", "write the program for another controller");
+  addCommon(*convertCmd, convert, false);
+  convertCmd->add_option("--to", conv.to, "output format")->required()->check(CLI::IsMember({"bp95d"}));
+  convertCmd->add_option("-o,--output", conv.output, "output file ('-' for standard output)");
+  convertCmd->add_option("--max-points", conv.maxPoints, "controller capacity: choose the step so the output fits")
+      ->check(CLI::Range(std::size_t{2}, std::size_t{100000000}));
+  convertCmd->add_option("--profile", conv.profile, "point-file profile (docs/bp95d.md)");
+  convertCmd->add_option("--start-block", conv.startBlock, "start the points at the cut move on this source line");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kExitUsage;
+  }
+  if (*checkCmd) return runCheck(check);
+  if (*explainCmd) return runExplain(explain);
+  return runConvert(convert, conv);
+}

@@ -26,6 +26,14 @@ Diagnostic finding(Severity sev, Code code, const SourceFile* src, const Move& m
   return d;
 }
 
+/// A lead-out over the lead-in: the later move runs back along the earlier one, in the opposite
+/// direction, and ends where the earlier one started (the start hole). The kerf there is open
+/// already, so the wire cuts nothing new.
+bool isRetrace(const geometry::Segment& earlier, const geometry::Segment& later, const geometry::Contact& c,
+               double tol) {
+  return c.opposite && (later.end - earlier.start).norm() <= tol;
+}
+
 }  // namespace
 
 void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options, Diagnostics& diags) {
@@ -61,7 +69,6 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   so.closed = closure.endsAtStart;
   so.maxContacts = options.maxContacts;
   const geometry::SelfIntersectionResult result = geometry::findSelfIntersections(path.segments, so);
-  const std::size_t firstCut = 0, lastCut = path.segments.size() - 1;
   for (const geometry::Contact& c : result.contacts) {
     const std::size_t mi = path.moveIndex[c.first], mj = path.moveIndex[c.second];
     const Move& later = moves[mj];
@@ -76,12 +83,12 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                              "the cut path touches itself at " + at(c.point) + ": this move meets the move on " + other));
         break;
       case geometry::ContactKind::Overlap:
-        if (c.adjacent) {
+        if (isRetrace(path.segments[c.first], path.segments[c.second], c, options.tolerance)) {
+          diags.report(finding(Severity::Note, Code::PathRetraces, src, later, mj, c.point,
+                               "the wire leaves along its way in (" + other + "): a lead-out over the lead-in"));
+        } else if (c.adjacent && c.second == c.first + 1) {
           diags.report(finding(Severity::Error, Code::PathOverlapsItself, src, later, mj, c.point,
                                "this move folds back over the previous one (" + other + ") near " + at(c.point)));
-        } else if (c.opposite && c.first == firstCut && c.second == lastCut) {
-          diags.report(finding(Severity::Note, Code::PathRetraces, src, later, mj, c.point,
-                               "the lead-out runs back along the lead-in (" + other + ")"));
         } else {
           diags.report(finding(Severity::Error, Code::PathOverlapsItself, src, later, mj, c.point,
                                "the cut path runs over itself near " + at(c.point) + ": this move overlaps the move on " + other));

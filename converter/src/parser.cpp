@@ -132,6 +132,13 @@ class LineParser {
       }
       if (c == '(') {
         const std::size_t close = text_.find(')', i);
+        const std::size_t inner = text_.find('(', i + 1);
+        if (inner < end && (close == std::string_view::npos || inner < close)) {
+          error(block, Code::NestedComment, inner, 1, "'(' inside a comment: comments cannot nest",
+                "use [ ] or another character inside the comment");
+          blockEnd = end;
+          break;
+        }
         if (close == std::string_view::npos || close >= end) {
           error(block, Code::UnterminatedComment, i, 1, "comment is not closed on its line",
                 "add ')' — a comment cannot span lines");
@@ -159,15 +166,19 @@ class LineParser {
           const std::size_t len = std::max<std::size_t>(1, n.end - i);
           error(block, Code::UnexpectedCharacter, i, len, "number without a letter: every value needs an address letter",
                 "write it as a word, e.g. X" + std::string(text_.substr(i, len)));
-          i += len;
-          continue;
+          blockEnd = end;
+          break;
         } else {
           error(block, Code::UnexpectedCharacter, i, 1, "unexpected " + describeChar(c) + " in a block");
         }
-        ++i;
-        continue;
+        blockEnd = end;
+        break;
       }
       i = parseWord(block, i, end, seen);
+      if (block.hasError) {  // one error per block: what follows is likely noise from it
+        blockEnd = end;
+        break;
+      }
     }
     // Trim trailing blanks from the block's text span.
     std::size_t last = blockEnd;

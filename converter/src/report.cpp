@@ -159,7 +159,7 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
       const int zn = geometry::seedSignFactor(cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
       out += "  centre " + pt(s.centre) + " from R " + mm(r) + ": half the chord is " + mm((s.end - s.start).norm() / 2) +
              " mm; " + (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
-             " (seed formulas (1)-(2), sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
+             " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
     } else {
       const Vec2& ij = m.programmedCentreWords;
       std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"

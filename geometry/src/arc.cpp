@@ -67,6 +67,19 @@ Vec2 seedCentreFromRadius(const Vec2& start, const Vec2& end, double signedRadiu
   return {xs, ys};
 }
 
+Vec2 seedCentreFromRadiusSigned(const Vec2& start, const Vec2& end, double signedRadius, ArcDirection dir) {
+  const double xp = start.x(), yp = start.y(), xk = end.x(), yk = end.y();
+  const double r = std::abs(signedRadius);
+  const double zn = seedSignFactor(dir, signedRadius);
+  const double d = (xp - xk) * (xp - xk) + (yp - yk) * (yp - yk);
+  const double disc = 4 * r * r - d;
+  if (d <= 0 || disc < 0) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  // The first two fractions of (1) and (2) simplify to the chord midpoint.
+  const double xs = (xp + xk) / 2 - (yp - yk) * std::sqrt(disc) / (2 * std::sqrt(d)) * zn;
+  const double ys = (yp + yk) / 2 + (xp - xk) * std::sqrt(disc) / (2 * std::sqrt(d)) * zn;
+  return {xs, ys};
+}
+
 ArcBuild arcFromCentre(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir,
                        const ArcTolerance& tol) {
   ArcBuild out;

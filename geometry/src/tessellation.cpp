@@ -1,5 +1,7 @@
 #include "kerf/geometry/tessellation.h"
 
+#include "angles.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -191,7 +193,7 @@ CapacityFit fitToCapacity(std::span<const Segment> path, std::size_t maxPoints, 
 SeedArcAngles seedAngles(const Segment& arc, double k) {
   SeedArcAngles a;
   // The seed measures angles clockwise from +X, so its angle is minus ours.
-  a.alpha = -arc.startAngle;
+  a.alpha = detail::wrapPositive(-arc.startAngle);
   a.beta = a.alpha - arc.sweep;  // clockwise sweep (G2) makes delta grow
   a.gamma = stepAngle(k, arc.radius);
   return a;

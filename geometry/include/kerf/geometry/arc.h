@@ -50,6 +50,13 @@ ArcBuild arcFromRadius(const Vec2& start, const Vec2& end, double signedRadius, 
 /// value (chord longer than the diameter, or start == end).
 Vec2 seedCentreFromRadius(const Vec2& start, const Vec2& end, double signedRadius, ArcDirection dir);
 
+/// Formulas (1) and (2) with the sign restored under their square roots: the printed
+/// sqrt((Yp - Yk)^2 * D) and sqrt((Xp - Xk)^2 * D) become (Yp - Yk) sqrt(D) and (Xp - Xk) sqrt(D).
+/// As printed, the formulas give the right centre only when Xp > Xk and Yp > Yk (the mirror
+/// centre when both are smaller, a wrong point otherwise); with the signs restored they agree
+/// with arcFromRadius everywhere (tests/unit/arc_test.cpp, docs/geometry.md).
+Vec2 seedCentreFromRadiusSigned(const Vec2& start, const Vec2& end, double signedRadius, ArcDirection dir);
+
 /// The seed's sign factor zn for a direction and signed radius.
 int seedSignFactor(ArcDirection dir, double signedRadius);
 

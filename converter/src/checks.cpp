@@ -39,8 +39,9 @@ bool isRetrace(const geometry::Segment& earlier, const geometry::Segment& later,
 void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options, Diagnostics& diags) {
   const CutPath path = cutPath(toolpath);
   if (path.segments.empty()) {
-    const SourceSpan span = toolpath.moves.empty() ? SourceSpan{} : toolpath.moves.front().span;
-    diags.warning(Code::NothingCut, src, span, "the program cuts nothing (no G01, G02 or G03 move)");
+    // With errors, those say why; alone, this says the program is empty of cuts.
+    if (!diags.hasErrors())
+      diags.warning(Code::NothingCut, src, SourceSpan::wholeFile(), "the program cuts nothing (no G01, G02 or G03 move)");
     return;
   }
   const auto& moves = toolpath.moves;
@@ -97,7 +98,7 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
     }
   }
   if (result.truncated) {
-    diags.warning(Code::TooManyDiagnostics, src, {},
+    diags.warning(Code::TooManyDiagnostics, src, SourceSpan::wholeFile(),
                   "stopped after " + std::to_string(options.maxContacts) + " self-intersections");
   }
 }

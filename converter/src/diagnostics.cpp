@@ -42,13 +42,17 @@ void Diagnostics::note(Code code, const SourceFile* src, SourceSpan span, std::s
 
 void Diagnostics::sortByPosition() {
   std::stable_sort(items_.begin(), items_.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    if ((a.source == nullptr) != (b.source == nullptr)) return a.source == nullptr;
+    // Not tied to a place first (options, whole-file findings), then by position.
+    const bool aNowhere = a.source == nullptr || a.span.isWholeFile();
+    const bool bNowhere = b.source == nullptr || b.span.isWholeFile();
+    if (aNowhere != bNowhere) return aNowhere;
     return a.span.offset < b.span.offset;
   });
 }
 
 std::string formatLocation(const Diagnostic& d) {
   if (!d.source) return "kerf";
+  if (d.span.isWholeFile()) return d.source->name();
   const SourceLocation loc = d.source->locate(d.span.offset);
   return d.source->name() + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
 }
@@ -56,7 +60,7 @@ std::string formatLocation(const Diagnostic& d) {
 std::string formatDiagnostic(const Diagnostic& d) {
   std::string out = formatLocation(d) + ": " + severityName(d.severity) + ": " + d.message + " [" +
                     codeName(d.code) + "]\n";
-  if (d.source) {
+  if (d.source && !d.span.isWholeFile()) {
     const SourceLocation loc = d.source->locate(d.span.offset);
     const std::string_view text = d.source->lineText(loc.line);
     out += "    ";

@@ -247,6 +247,10 @@ class LineParser {
       if (i < end && (text_[i] == 'O' || text_[i] == 'o') && (letter == 'G' || letter == 'M'))
         help = std::string("did you mean ") + letter + "0" + std::string(text_.substr(i + 1, 1)) +
                "? (the digit zero, not the letter O)";
+      else if ((text_[start] == 'l' || text_[start] == 'I' || text_[start] == 'O' || text_[start] == 'o') && start > 0 &&
+               isDigit(text_[start - 1]))
+        help = std::string("did you mean the digit ") + (text_[start] == 'l' || text_[start] == 'I' ? "1" : "0") +
+               " instead of the letter '" + text_[start] + "'?";
       else if (i + 2 < end && upper(text_[i]) == 'N' && upper(text_[i + 1]) == 'A' && upper(text_[i + 2]) == 'N')
         help = "NaN is not a number an NC control accepts";
       error(block, Code::ExpectedNumber, start, 1, std::string("expected a number after '") + letter + "', read " + read, help);

@@ -140,7 +140,7 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
                                       Diagnostics& diags) {
   CutPath path = cutPath(toolpath);
   if (path.segments.empty()) {
-    diags.error(Code::NothingCut, source, {}, "nothing to write: the program has no cutting move");
+    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
     return std::nullopt;
   }
   // Start point: rotate a closed path so it begins at the chosen move; on an open path, the
@@ -149,7 +149,7 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
     std::size_t k = 0;
     while (k < path.segments.size() && toolpath.moves[path.moveIndex[k]].line != *request.startLine) ++k;
     if (k == path.segments.size()) {
-      diags.error(Code::StartBlockNotFound, source, {},
+      diags.error(Code::StartBlockNotFound, source, SourceSpan::wholeFile(),
                   "no cutting move comes from line " + std::to_string(*request.startLine));
       return std::nullopt;
     }
@@ -171,7 +171,7 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
   if (capacity) {
     const geometry::CapacityFit fit = geometry::fitToCapacity(path.segments, *capacity, request.sampling.mode);
     if (!fit.fits) {
-      diags.error(Code::CapacityTooSmall, source, {},
+      diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
                   "the path needs at least " + std::to_string(fit.fewestPossible) + " points (every arc as coarse as it can be), more than the " +
                       std::to_string(*capacity) + " the controller holds");
       return std::nullopt;

@@ -103,9 +103,9 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
     e["code"] = codeName(d.code);
     e["message"] = d.message;
     if (!d.help.empty()) e["help"] = d.help;
-    if (d.source) {
+    if (d.source) e["file"] = d.source->name();
+    if (d.source && !d.span.isWholeFile()) {
       const SourceLocation loc = d.source->locate(d.span.offset);
-      e["file"] = d.source->name();
       e["line"] = loc.line;
       e["column"] = loc.column;
       e["length"] = d.span.length;
@@ -131,6 +131,33 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
   sum["mean_relative_error"] = s.points.meanRelativeError;
   j["summary"] = std::move(sum);
   return j.dump(2) + "\n";
+}
+
+std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags) {
+  auto f6 = [](double v) { return formatFixed(v, 6); };
+  auto p6 = [&](const Vec2& p) { return f6(p.x()) + " " + f6(p.y()); };
+  std::string out = "start " + p6(toolpath.start) + "\n";
+  for (const Move& m : toolpath.moves) {
+    const geometry::Segment& s = m.lower;
+    out += std::to_string(m.line) + " " + kindName(m.kind);
+    if (m.kind == MoveKind::Arc) out += s.sweep < 0 ? " cw" : " ccw";
+    out += " " + p6(s.start) + " -> " + p6(s.end);
+    if (m.kind == MoveKind::Arc)
+      out += " centre " + p6(s.centre) + " r " + f6(s.radius) + " sweep " + f6(s.sweep * 180.0 / geometry::kPi) + " from " +
+             centreFormName(m.centreForm);
+    if (m.callDepth > 0) out += " depth " + std::to_string(m.callDepth);
+    out += "\n";
+  }
+  out += std::string("ended ") + (toolpath.endedProperly ? "yes" : "no") + "\n";
+  for (const Diagnostic& d : diags.all()) {
+    out += "diagnostic ";
+    if (d.source && !d.span.isWholeFile()) {
+      const SourceLocation loc = d.source->locate(d.span.offset);
+      out += std::to_string(loc.line) + ":" + std::to_string(loc.column) + " ";
+    }
+    out += std::string(severityName(d.severity)) + " " + codeName(d.code) + " " + d.message + "\n";
+  }
+  return out;
 }
 
 // ---- 3. explain --------------------------------------------------------------------------------

@@ -1,5 +1,6 @@
 // The kerf program: turns library results into output and exit codes.
 //   exit 0: no errors (warnings allowed)   1: the program has errors   2: usage or I/O problem
+#include "kerf/converter/analysis.h"
 #include "kerf/converter/checks.h"
 #include "kerf/converter/interpreter.h"
 #include "kerf/converter/points.h"
@@ -80,8 +81,9 @@ bool load(const CommonOptions& o, Diagnostics& diags, Loaded& out) {
     return false;
   }
   out.source.emplace(o.input, std::move(*text));
-  out.program = parseProgram(*out.source, diags);
-  out.toolpath = interpret(out.program, interpreterOptions(o), diags);
+  Analysis a = analyse(*out.source, interpreterOptions(o), diags);
+  out.program = std::move(a.program);
+  out.toolpath = std::move(a.toolpath);
   return true;
 }
 

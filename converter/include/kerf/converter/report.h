@@ -18,6 +18,9 @@ std::string formatSummaryText(const std::string& file, const Summary& summary, c
 /// `kerf check --json`: {"file", "verdict", "diagnostics": [...], "summary": {...}}.
 std::string checkReportJson(const std::string& file, const Summary& summary, const Diagnostics& diags);
 
+/// A stable, fixed-decimal trace of the Toolpath and the diagnostics (golden files).
+std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags);
+
 /// `kerf explain`: each move, how its geometry follows from its words.
 std::string explainText(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling);
 /// `kerf explain --json`: {"file", "sampling", "moves": [{line, kind, start, end, centre, ...}]}.

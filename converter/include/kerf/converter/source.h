@@ -14,6 +14,10 @@ namespace kerf::converter {
 struct SourceSpan {
   std::uint32_t offset = 0;
   std::uint32_t length = 0;
+
+  /// A span that stands for the whole file (a finding about the program, not one place).
+  static constexpr SourceSpan wholeFile() { return {0xFFFFFFFFu, 0}; }
+  [[nodiscard]] constexpr bool isWholeFile() const { return offset == 0xFFFFFFFFu; }
 };
 
 struct SourceLocation {

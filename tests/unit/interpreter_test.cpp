@@ -1,0 +1,196 @@
+#include "converter_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace kerf::converter;
+using kerf::geometry::Vec2;
+using kerf::test::run;
+
+namespace {
+
+constexpr double kEps = 1e-9;
+
+TEST(interpreter, absolute_and_incremental_moves) {
+  auto r = run("G90 G01 X10. Y0\nG91 X5. Y5.\nG90 X0 Y0\nM02\n");
+  ASSERT_FALSE(r->diags.hasErrors());
+  const auto& m = r->path().moves;
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_EQ(m[1].lower.end, Vec2(15, 5));
+  EXPECT_EQ(m[2].lower.end, Vec2(0, 0));
+  EXPECT_TRUE(r->path().endedProperly);
+}
+
+TEST(interpreter, modal_motion_carries_over) {
+  auto r = run("G01 X1.\nY1.\nX0\nM30\n");
+  ASSERT_EQ(r->path().moves.size(), 3u);
+  for (const auto& m : r->path().moves) EXPECT_EQ(m.kind, MoveKind::Line);
+}
+
+TEST(interpreter, inch_units_are_converted_to_mm) {
+  auto r = run("G20 G01 X1. Y0.5\nM02\n");
+  ASSERT_EQ(r->path().moves.size(), 1u);
+  EXPECT_NEAR(r->path().moves[0].lower.end.x(), 25.4, kEps);
+  EXPECT_NEAR(r->path().moves[0].lower.end.y(), 12.7, kEps);
+  auto r70 = run("G70 G01 X1.\nG71 X1.\nM02\n");
+  EXPECT_NEAR(r70->path().moves[1].lower.end.x(), 1.0, kEps);
+}
+
+TEST(interpreter, integer_micrometres) {
+  InterpreterOptions o;
+  o.integerUnit = IntegerUnit::Micrometre;
+  auto r = run("G92 X115000 Y-10000\nG91 G01 X-9900 Y0\nX1.5\nM02\n", o);
+  ASSERT_FALSE(r->diags.hasErrors());
+  EXPECT_NEAR(r->path().start.x(), 115.0, kEps);
+  EXPECT_NEAR(r->path().moves[0].lower.end.x(), 105.1, kEps);
+  // A number with a decimal point stays in mm.
+  EXPECT_NEAR(r->path().moves[1].lower.end.x(), 106.6, kEps);
+  EXPECT_FALSE(r->hasCode(Code::IntegerUnitSuspect));
+  auto warned = run("G92 X115000 Y-10000\nG91 G01 X-9900 Y0\nM02\n");
+  EXPECT_TRUE(warned->hasCode(Code::IntegerUnitSuspect));
+}
+
+TEST(interpreter, arc_centre_modes) {
+  const char* text = "G92 X10. Y0\nG03 X0 Y10. I%s J%s\nM02\n";
+  char buf[128];
+  std::snprintf(buf, sizeof buf, text, "-10.", "0");
+  auto inc = run(buf);
+  ASSERT_FALSE(inc->diags.hasErrors());
+  EXPECT_NEAR(inc->path().moves[0].lower.centre.norm(), 0, kEps);
+  InterpreterOptions rev;
+  rev.arcCentre = ArcCentreMode::Reversed;
+  std::snprintf(buf, sizeof buf, text, "10.", "0");
+  auto r = run(buf, rev);
+  ASSERT_FALSE(r->diags.hasErrors());
+  EXPECT_NEAR(r->path().moves[0].lower.centre.norm(), 0, kEps);
+  InterpreterOptions abs;
+  abs.arcCentre = ArcCentreMode::Absolute;
+  std::snprintf(buf, sizeof buf, text, "0", "0");
+  auto a = run(buf, abs);
+  ASSERT_FALSE(a->diags.hasErrors());
+  EXPECT_NEAR(a->path().moves[0].lower.centre.norm(), 0, kEps);
+  // The wrong convention is caught as an end point off the circle, with a hint.
+  auto wrong = run(buf);
+  EXPECT_TRUE(wrong->hasCode(Code::ArcEndOffCircle) || wrong->hasCode(Code::ZeroRadius));
+}
+
+TEST(interpreter, full_circle_from_centre_words) {
+  auto r = run("G92 X5. Y0\nG02 I-5. J0\nM02\n");
+  ASSERT_FALSE(r->diags.hasErrors());
+  ASSERT_EQ(r->path().moves.size(), 1u);
+  EXPECT_NEAR(std::abs(r->path().moves[0].lower.sweep), 2 * M_PI, kEps);
+}
+
+TEST(interpreter, g92_mid_program_shifts_the_frame_not_the_wire) {
+  auto r = run("G92 X0 Y0\nG01 X10. Y0\nG92 X0 Y0\nG01 X5. Y0\nM02\n");
+  ASSERT_EQ(r->path().moves.size(), 2u);
+  // The second move starts where the wire is (10, 0) and goes 5 mm further.
+  EXPECT_EQ(r->path().moves[1].lower.start, Vec2(10, 0));
+  EXPECT_EQ(r->path().moves[1].lower.end, Vec2(15, 0));
+}
+
+TEST(interpreter, dwell_x_is_time_not_a_coordinate) {
+  auto r = run("G01 X1.\nG04 X2.5\nG01 Y1.\nM02\n");
+  ASSERT_FALSE(r->diags.hasErrors());
+  ASSERT_EQ(r->path().moves.size(), 2u);
+  EXPECT_EQ(r->path().moves[1].lower.start, Vec2(1, 0));
+}
+
+TEST(interpreter, subprogram_with_repeats_in_incremental_mode) {
+  auto r = run("G91 G01 X1.\nM98 P100 L3\nM02\nO100\nG01 X2.\nM99\n");
+  ASSERT_FALSE(r->diags.hasErrors());
+  ASSERT_EQ(r->path().moves.size(), 4u);
+  EXPECT_EQ(r->path().moves.back().lower.end, Vec2(7, 0));
+  EXPECT_EQ(r->path().moves.back().callDepth, 1);
+  EXPECT_EQ(r->path().moves.back().line, 5u);  // the move names the subprogram's line
+}
+
+TEST(interpreter, sodick_style_n_label_after_m02) {
+  auto r = run("H001 = +000000.1300;\nG90 G01 X0 Y0;\nM98 P0001;\nM02;\nN0001 G41 H001 G01 X1.;\nM99;\n");
+  ASSERT_FALSE(r->diags.hasErrors());
+  ASSERT_EQ(r->path().moves.size(), 2u);
+  EXPECT_TRUE(r->hasCode(Code::WireOffsetNotApplied));
+  EXPECT_EQ(r->path().moves[1].wireOffset, WireOffset::Left);
+  bool mentions = false;
+  for (const auto& d : r->diags.all())
+    if (d.code == Code::WireOffsetNotApplied && d.message.find("H001 = +000000.1300") != std::string::npos) mentions = true;
+  EXPECT_TRUE(mentions);
+}
+
+TEST(interpreter, recursion_is_stopped) {
+  auto r = run("O1\nG91 G01 X1.\nM98 P1\nM99\n");
+  EXPECT_TRUE(r->hasCode(Code::CallTooDeep));
+  EXPECT_LE(r->path().moves.size(), 17u);
+}
+
+TEST(interpreter, execution_limits_bound_time_and_memory) {
+  InterpreterOptions o;
+  o.maxMoves = 1000;
+  auto r = run("G91 G01\nM98 P1 L9999\nM02\nO1 M98 P2 L9999\nM99\nO2 X1.\nM99\n", o);
+  EXPECT_TRUE(r->hasCode(Code::ExecutionLimit));
+  EXPECT_LE(r->path().moves.size(), 1001u);
+  InterpreterOptions b;
+  b.maxExecutedBlocks = 5000;
+  auto r2 = run("G91\nM98 P1 L9999\nM02\nO1 M98 P2 L9999\nM99\nO2 G04 P0\nM99\n", b);
+  EXPECT_TRUE(r2->hasCode(Code::ExecutionLimit));
+}
+
+TEST(interpreter, block_delete_skips_when_enabled) {
+  auto on = run("G01 X1.\n/G01 Y5.\nM02\n");
+  EXPECT_EQ(on->path().moves.size(), 1u);
+  InterpreterOptions o;
+  o.blockDelete = false;
+  auto off = run("G01 X1.\n/G01 Y5.\nM02\n", o);
+  EXPECT_EQ(off->path().moves.size(), 2u);
+}
+
+TEST(interpreter, rapid_moves_are_not_cut) {
+  auto r = run("G00 X5.\nG01 X6.\nM02\n");
+  ASSERT_EQ(r->path().moves.size(), 2u);
+  EXPECT_FALSE(r->path().moves[0].isCut());
+  EXPECT_TRUE(r->path().moves[1].isCut());
+}
+
+TEST(interpreter, every_move_keeps_its_block_span) {
+  auto r = run("G01 X1.\n\n  G02 X2. Y1. R1.\nM02\n");
+  ASSERT_EQ(r->path().moves.size(), 2u);
+  const auto& m = r->path().moves[1];
+  EXPECT_EQ(m.line, 3u);
+  EXPECT_EQ(r->source->text().substr(m.span.offset, m.span.length), "G02 X2. Y1. R1.");
+}
+
+TEST(interpreter, missing_program_end_is_a_warning) {
+  auto r = run("G01 X1.\n");
+  EXPECT_TRUE(r->hasCode(Code::MissingProgramEnd));
+  EXPECT_FALSE(r->diags.hasErrors());
+}
+
+TEST(interpreter, unknown_g_code_suggests_neighbours) {
+  auto r = run("G010 X1.\nM02\n");
+  ASSERT_TRUE(r->hasCode(Code::UnknownGCode));
+  EXPECT_NE(r->diags.all()[0].help.find("G01"), std::string::npos);
+}
+
+TEST(checks, retrace_is_a_note_and_crossing_an_error) {
+  auto clean = run("G92 X-5. Y0\nG01 X0 Y0\nX10.\nY10.\nX0\nY0\nX-5.\nM02\n", {}, true);
+  EXPECT_FALSE(clean->diags.hasErrors());
+  EXPECT_TRUE(clean->hasCode(Code::PathRetraces));
+  auto crossing = run("G92 X0 Y0\nG01 X10. Y10.\nX10. Y0\nX0 Y10.\nX0 Y0\nM02\n", {}, true);
+  EXPECT_TRUE(crossing->hasCode(Code::PathCrossesItself));
+  ASSERT_TRUE(crossing->diags.hasErrors());
+  for (const auto& d : crossing->diags.all())
+    if (d.code == Code::PathCrossesItself) {
+      ASSERT_TRUE(d.point.has_value());
+      EXPECT_NEAR(d.point->x(), 5.0, 1e-9);
+      ASSERT_TRUE(d.move.has_value());
+    }
+}
+
+TEST(checks, open_path_is_a_warning) {
+  auto r = run("G01 X10.\nY10.\nM02\n", {}, true);
+  EXPECT_TRUE(r->hasCode(Code::PathOpen));
+  EXPECT_FALSE(r->diags.hasErrors());
+}
+
+}  // namespace

@@ -1,0 +1,119 @@
+#include "kerf/converter/program.h"
+
+#include "converter_support.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace kerf::converter;
+
+namespace {
+
+Program parse(const SourceFile& src, Diagnostics& d) { return parseProgram(src, d); }
+
+TEST(parser, words_keep_offset_line_and_column) {
+  SourceFile src("p.nc", "%\nO1234\nN10 G01X10.5Y-2.5 (cut)\n  g2 x1 y2 i3 j4;comment\n%\nG01 X99\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_FALSE(d.hasErrors());
+  ASSERT_EQ(p.blocks.size(), 3u);  // O1234, N10..., g2...; the text after the closing % is ignored
+  const auto words = p.wordsOf(p.blocks[1]);
+  ASSERT_EQ(words.size(), 4u);
+  EXPECT_EQ(words[2].letter, 'X');
+  EXPECT_DOUBLE_EQ(words[2].value, 10.5);
+  const SourceLocation loc = src.locate(words[2].offset);
+  EXPECT_EQ(loc.line, 3u);
+  EXPECT_EQ(loc.column, 8u);
+  EXPECT_EQ(words[3].value, -2.5);
+  // Lower-case letters are read as upper case; the text itself is untouched.
+  const auto lower = p.wordsOf(p.blocks[2]);
+  EXPECT_EQ(lower[0].letter, 'G');
+  EXPECT_EQ(src.text().substr(lower[0].offset, 2), "g2");
+}
+
+TEST(parser, numbers_are_correctly_rounded) {
+  SourceFile src("p.nc", "X0.1 Y-000000.1300 I123456.789012 J.5 R5.\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  ASSERT_EQ(p.words.size(), 5u);
+  EXPECT_EQ(p.words[0].value, 0.1);
+  EXPECT_EQ(p.words[1].value, -0.13);
+  EXPECT_EQ(p.words[2].value, 123456.789012);
+  EXPECT_EQ(p.words[3].value, 0.5);
+  EXPECT_TRUE(p.words[4].hasPoint);
+  EXPECT_EQ(p.words[4].value, 5.0);
+}
+
+TEST(parser, settings_are_kept_verbatim) {
+  SourceFile src("p.nc", "H001 = +000000.1300;\nC000 = 001 002 003 ;\nE001= 1 2\nG01 X1.\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_FALSE(d.hasErrors());
+  ASSERT_EQ(p.settings.size(), 3u);
+  EXPECT_EQ(p.settings[0].name, "H001");
+  EXPECT_EQ(p.settings[0].value, "+000000.1300");
+  EXPECT_EQ(p.settings[1].value, "001 002 003");
+  EXPECT_EQ(p.settings[2].name, "E001");
+  EXPECT_EQ(p.blocks.size(), 1u);
+}
+
+TEST(parser, block_delete_is_marked) {
+  SourceFile src("p.nc", "/G01 X1.\nG01 X2.\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  ASSERT_EQ(p.blocks.size(), 2u);
+  EXPECT_TRUE(p.blocks[0].blockDelete);
+  EXPECT_FALSE(p.blocks[1].blockDelete);
+}
+
+TEST(parser, crlf_lines_and_spaces_between_letter_and_number) {
+  SourceFile src("p.nc", "G01 X 10.\r\nY 5.\r\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_FALSE(d.hasErrors());
+  ASSERT_EQ(p.words.size(), 3u);
+  EXPECT_EQ(p.words[1].value, 10.0);
+  EXPECT_EQ(src.lineText(1), "G01 X 10.");
+}
+
+TEST(parser, integer_statistics_for_the_micrometre_warning) {
+  SourceFile src("p.nc", "G92 X115000 Y-10000\nG01 X-9900 Y0\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_FALSE(p.anyDecimalPoint);
+  EXPECT_EQ(p.largestInteger, 115000.0);
+}
+
+TEST(parser, one_error_per_block_and_parsing_goes_on) {
+  SourceFile src("p.nc", "G01 X1,5 Y$ Z%\nG01 X2.\nG01 Y1e5\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_EQ(d.errorCount(), 2u);
+  ASSERT_EQ(p.blocks.size(), 3u);
+  EXPECT_TRUE(p.blocks[0].hasError);
+  EXPECT_FALSE(p.blocks[1].hasError);
+}
+
+TEST(parser, random_bytes_never_crash_and_always_terminate) {
+  std::mt19937 rng(99);
+  std::uniform_int_distribution<int> byte(0, 255), len(0, 400);
+  for (int i = 0; i < 2000; ++i) {
+    std::string text(static_cast<std::size_t>(len(rng)), '\0');
+    for (char& c : text) c = static_cast<char>(byte(rng));
+    auto r = kerf::test::run(text, {}, true);
+    // Every diagnostic points inside the text and says something; every move is finite.
+    for (const auto& d : r->diags.all()) {
+      EXPECT_FALSE(d.message.empty());
+      if (!d.span.isWholeFile()) {
+        EXPECT_LE(d.span.offset + d.span.length, text.size());
+      }
+    }
+    for (const auto& m : r->path().moves) {
+      EXPECT_TRUE(m.lower.start.allFinite());
+      EXPECT_TRUE(m.lower.end.allFinite());
+    }
+  }
+}
+
+}  // namespace

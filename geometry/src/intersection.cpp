@@ -182,7 +182,9 @@ void classifyPair(std::span<const Segment> path, std::size_t i, std::size_t j, b
     if (adjacentForward && near(p, a.end, tol) && near(p, b.start, tol)) continue;  // shared vertex
     if (adjacentWrap && near(p, b.end, tol) && near(p, a.start, tol)) continue;
     const bool endA = atEnd(a, p, tol), endB = atEnd(b, p, tol);
-    if (!adjacent && endA && endB) continue;  // a vertex visited twice
+    // End meets end: a vertex visited twice (lead-in and lead-out), or two neighbours that
+    // close a loop between them (two half circles). Neither cuts through anything.
+    if (endA && endB) continue;
     c.kind = (endA || endB) ? ContactKind::Touch : ContactKind::Crossing;
     c.point = p;
     out.push_back(c);

@@ -48,9 +48,9 @@ struct SelfIntersectionResult {
   bool truncated = false;           ///< maxContacts was reached
 };
 
-/// Every place where the path meets itself other than at the vertex two consecutive segments
-/// share. Non-neighbours that meet only at their end points (a vertex visited twice, as lead-in
-/// and lead-out do) are not contacts. Zero-length segments are skipped.
+/// Every place where the path meets itself other than at shared vertices: two segments that meet
+/// only end point to end point (a vertex visited twice, as lead-in and lead-out do, or two arcs
+/// that close a circle) are not contacts. Zero-length segments are skipped.
 ///
 /// Method: boxes sorted by x and swept, with exact tests for the pairs whose boxes overlap;
 /// O(n log n + c) for c overlapping pairs (docs/geometry.md).

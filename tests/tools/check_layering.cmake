@@ -1,0 +1,33 @@
+# The dependency direction of DESIGN.md, checked on the sources:
+#  - geometry includes only its own headers, Eigen and the standard library;
+#  - converter includes no viewer, window or GL header;
+#  - libraries never touch the process: no printing to the terminal, no exit(), no opening files.
+#   cmake -DSOURCE=<repo> -P check_layering.cmake
+set(problems "")
+file(GLOB_RECURSE geometry_files "${SOURCE}/geometry/*.h" "${SOURCE}/geometry/*.cpp")
+file(GLOB_RECURSE converter_files "${SOURCE}/converter/*.h" "${SOURCE}/converter/*.cpp")
+foreach(f IN LISTS geometry_files)
+  file(STRINGS "${f}" includes REGEX "^#include")
+  foreach(inc IN LISTS includes)
+    if(NOT inc MATCHES "^#include (\"kerf/geometry/|\"[a-z_]+\\.h\"|<Eigen/|<[a-z_]+>)")
+      string(APPEND problems "${f}: geometry may include only Eigen and itself: ${inc}\n")
+    endif()
+  endforeach()
+endforeach()
+foreach(f IN LISTS converter_files)
+  file(STRINGS "${f}" includes REGEX "^#include")
+  foreach(inc IN LISTS includes)
+    if(inc MATCHES "kerf/(viewer|render|headless|export)|GL|glfw|imgui|vtk")
+      string(APPEND problems "${f}: converter may not include ${inc}\n")
+    endif()
+  endforeach()
+endforeach()
+foreach(f IN LISTS geometry_files converter_files)
+  file(STRINGS "${f}" lines REGEX "std::cout|std::cerr|std::exit|[^_a-z]exit\\(|abort\\(|fopen|ifstream|ofstream|[^n]printf\\(")
+  foreach(l IN LISTS lines)
+    string(APPEND problems "${f}: a library must not touch the process: ${l}\n")
+  endforeach()
+endforeach()
+if(problems)
+  message(FATAL_ERROR "${problems}")
+endif()

@@ -124,6 +124,8 @@ class Interpreter {
 
   Toolpath run() {
     indexLabels();
+    // Most blocks of a wire program are moves: reserving avoids copying them while growing.
+    toolpath_.moves.reserve(std::min(program_.blocks.size(), options_.maxMoves));
     for (const Setting& s : program_.settings) toolpath_.settings.push_back(s);
     warnIntegerUnit();
     std::size_t pc = 0;

@@ -183,6 +183,14 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
       out.fitted = true;
     }
   }
+  const std::size_t planned = geometry::samplePath(path.segments, out.sampling, nullptr).points;
+  if (planned > kMaxPointsWritten) {
+    diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
+                "the step gives " + std::to_string(planned) + " points, more than Kerf writes (" +
+                    std::to_string(kMaxPointsWritten) + ")",
+                "use a coarser --step or --tolerance, or --max-points");
+    return std::nullopt;
+  }
   std::vector<geometry::Vec2> points;
   out.stats = geometry::samplePath(path.segments, out.sampling, &points);
   out.points = points.size();

@@ -198,8 +198,7 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
         out += "  the end point is " + mm(std::abs(m.radiusError)) + " mm off that circle (within the accepted tolerance)\n";
     }
     out += "  radius " + mm(s.radius) + " mm, sweep " + deg(std::abs(s.sweep)) + " degrees, length " + mm(s.length()) + " mm\n";
-    std::vector<Vec2> pts;
-    const geometry::ArcSampleStats st = geometry::sample(s, sampling, &pts);
+    const geometry::ArcSampleStats st = geometry::sample(s, sampling, nullptr);  // counts only
     if (sampling.mode == geometry::SamplingMode::Step) {
       const geometry::SeedArcAngles a = geometry::seedAngles(s, sampling.value);
       out += "  seed angles: alpha " + deg(a.alpha) + ", beta " + deg(a.beta) + ", gamma = 2 asin(k / 2R) = " + deg(a.gamma) +

@@ -32,7 +32,6 @@ enum class Code : std::uint16_t {
   RepeatedWord = 108,
   NestedComment = 109,
   MalformedSetting = 110,
-  NotAnInteger = 112,
   // Words and modal state
   UnknownGCode = 201,
   UnknownMCode = 202,

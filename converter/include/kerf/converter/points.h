@@ -38,6 +38,10 @@ PointProfile bp95dProfile();
 /// header, footer (quoted; \n for a line break), max_points. Starts from the bp95d defaults.
 std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& diags);
 
+/// No point file is built larger than this: a step far too fine for a huge arc is refused with a
+/// diagnostic instead of exhausting memory.
+inline constexpr std::size_t kMaxPointsWritten = 50'000'000;
+
 struct PointRequest {
   geometry::Sampling sampling = geometry::Sampling::step(0.1);
   std::optional<std::size_t> maxPoints;  ///< overrides the profile's; fits the step to it

@@ -5,7 +5,6 @@
 #include "kerf/geometry/segment.h"
 
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,8 +19,11 @@ enum class WireOffset : std::uint8_t { Off, Left, Right };
 
 struct Move {
   MoveKind kind = MoveKind::Line;
-  geometry::Segment lower;                 ///< the contour on the program plane (z = 0)
-  std::optional<geometry::Segment> upper;  ///< the upper contour (4-axis programs; none here)
+  // The contour on the program plane (z = 0). The upper contour of 4-axis programs (DESIGN.md:
+  // Move {lower, upper | none}) is added with taper support; 2-axis moves carry none, and a
+  // per-move optional would cost 88 bytes on every move of every program, so its storage is
+  // left to that change.
+  geometry::Segment lower;
   std::uint32_t block = 0;                 ///< index into Program::blocks
   std::uint32_t line = 0;                  ///< 1-based source line of that block
   SourceSpan span;                         ///< the block's text

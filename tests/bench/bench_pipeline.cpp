@@ -1,0 +1,141 @@
+// Timed harness for the reading pipeline and the 2-axis checks. Prints figures; asserts only
+// that the generated program reads without errors and without self-intersections (so a smoke
+// run in CTest fails if the harness rots). Speed targets are never checked here: machines are
+// shared and noisy; the figures go to the README.
+//
+//   kerf_bench [--blocks N] [--repeat R]
+//
+// The program: a closed contour of N moves around a circle of radius 5 m, alternating G01 lines
+// and G02 R arcs that bulge out, 4 decimals, absolute coordinates.
+#include "kerf/converter/analysis.h"
+#include "kerf/converter/checks.h"
+#include "kerf/converter/summary.h"
+#include "kerf/geometry/intersection.h"
+#include "kerf/geometry/tessellation.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string generate(std::size_t blocks) {
+  std::string text;
+  text.reserve(blocks * 36);
+  text += "%\nO9000 (kerf benchmark)\nG21 G90 G17\nG92 X5000. Y0\nF2.\n";
+  const double radius = 5000.0;
+  // Arcs of radius 0.6 x the chord: they bulge 0.27 chord out, far from their neighbours.
+  const double arcRadius = 0.6 * 2 * M_PI * radius / static_cast<double>(blocks);
+  char line[128];
+  for (std::size_t i = 1; i <= blocks; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(blocks);
+    const double x = i == blocks ? radius : radius * std::cos(a);
+    const double y = i == blocks ? 0.0 : radius * std::sin(a);
+    if (i % 2) {
+      std::snprintf(line, sizeof line, "G01 X%.4f Y%.4f\n", x, y);
+    } else {
+      // Counter-clockwise travel around the circle; G02 bulges outward (to the right).
+      std::snprintf(line, sizeof line, "G02 X%.4f Y%.4f R%.4f\n", x, y, arcRadius);
+    }
+    text += line;
+  }
+  text += "M02\n%\n";
+  return text;
+}
+
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+long peakRssKiB() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::size_t blocks = 1'000'000;
+  int repeat = 3;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--blocks")) blocks = std::strtoul(argv[i + 1], nullptr, 10);
+    else if (!std::strcmp(argv[i], "--repeat")) repeat = std::max(1, std::atoi(argv[i + 1]));
+  }
+  using namespace kerf::converter;
+  const std::string text = generate(blocks);
+  const double mb = static_cast<double>(text.size()) / 1e6;
+  std::printf("program: %zu blocks, %.1f MB\n", blocks, mb);
+  const long rssBefore = peakRssKiB();
+
+  double bestParse = 1e30, bestInterp = 1e30;
+  Analysis analysis;
+  for (int r = 0; r < repeat; ++r) {
+    SourceFile src("bench.nc", text);
+    Diagnostics diags(20);
+    const auto t0 = Clock::now();
+    Program program = parseProgram(src, diags);
+    const auto t1 = Clock::now();
+    Toolpath toolpath = interpret(program, {}, diags);
+    const auto t2 = Clock::now();
+    bestParse = std::min(bestParse, seconds(t0, t1));
+    bestInterp = std::min(bestInterp, seconds(t0, t2));
+    if (diags.hasErrors()) {
+      std::fprintf(stderr, "benchmark program has errors:\n%s\n", formatDiagnostic(diags.all().front()).c_str());
+      return 1;
+    }
+    if (r == repeat - 1) analysis = Analysis{std::move(program), std::move(toolpath)};
+  }
+  std::printf("parse:              %8.3f s  %8.1f MB/s  %10.0f blocks/s\n", bestParse, mb / bestParse,
+              static_cast<double>(blocks) / bestParse);
+  std::printf("parse + interpret:  %8.3f s  %8.1f MB/s  %10.0f blocks/s\n", bestInterp, mb / bestInterp,
+              static_cast<double>(blocks) / bestInterp);
+
+  const CutPath path = cutPath(analysis.toolpath);
+  double bestSample = 1e30;
+  std::size_t points = 0;
+  for (int r = 0; r < repeat; ++r) {
+    std::vector<kerf::geometry::Vec2> pts;
+    const auto t0 = Clock::now();
+    const auto stats = kerf::geometry::samplePath(path.segments, kerf::geometry::Sampling::step(0.01), &pts);
+    const auto t1 = Clock::now();
+    bestSample = std::min(bestSample, seconds(t0, t1));
+    points = stats.points;
+  }
+  std::printf("tessellation k=0.01: %7.3f s  %10zu points  %10.0f points/s\n", bestSample, points,
+              static_cast<double>(points) / bestSample);
+
+  double bestSelf = 1e30;
+  std::size_t contacts = 0, candidates = 0;
+  for (int r = 0; r < repeat; ++r) {
+    kerf::geometry::SelfIntersectionOptions o;
+    o.closed = true;
+    const auto t0 = Clock::now();
+    const auto result = kerf::geometry::findSelfIntersections(path.segments, o);
+    const auto t1 = Clock::now();
+    bestSelf = std::min(bestSelf, seconds(t0, t1));
+    contacts = result.contacts.size();
+    candidates = result.candidatePairs;
+  }
+  std::printf("self-intersection:  %8.3f s  %zu segments, %zu box pairs tested, %zu contacts\n", bestSelf,
+              path.segments.size(), candidates, contacts);
+
+  Diagnostics checkDiags(20);
+  const auto c0 = Clock::now();
+  checkToolpath(analysis.toolpath, nullptr, {}, checkDiags);
+  const auto c1 = Clock::now();
+  std::printf("all 2-axis checks:  %8.3f s\n", seconds(c0, c1));
+  std::printf("peak memory:        %8.1f MiB (before reading: %.1f MiB)\n", static_cast<double>(peakRssKiB()) / 1024.0,
+              static_cast<double>(rssBefore) / 1024.0);
+  if (contacts != 0 || checkDiags.hasErrors()) {
+    std::fprintf(stderr, "the benchmark contour should not meet itself\n");
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,17 @@
+# .ci/run must run the README's test command, verbatim.
+#   cmake -DSOURCE=<repo> -P check_readme_commands.cmake
+file(READ "${SOURCE}/README.md" readme)
+string(REGEX MATCH "<!-- test-command -->\n```sh\n([^\n]*)\n```" m "${readme}")
+set(command "${CMAKE_MATCH_1}")
+if(command STREQUAL "")
+  message(FATAL_ERROR "README.md has no test command after <!-- test-command -->")
+endif()
+file(READ "${SOURCE}/.ci/run" run)
+string(FIND "${run}" "${command}" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR ".ci/run does not run the README's test command:\n${command}")
+endif()
+string(REGEX MATCH "<!-- try-command -->\n```sh\n([^\n]*)\n```" m "${readme}")
+if(CMAKE_MATCH_1 STREQUAL "")
+  message(FATAL_ERROR "README.md has no try command after <!-- try-command -->")
+endif()

@@ -41,7 +41,8 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   if (path.segments.empty()) {
     // With errors, those say why; alone, this says the program is empty of cuts.
     if (!diags.hasErrors())
-      diags.warning(Code::NothingCut, src, SourceSpan::wholeFile(), "the program cuts nothing (no G01, G02 or G03 move)");
+      diags.warning(Code::NothingCut, src, SourceSpan::wholeFile(),
+                    "the program cuts nothing (no G01, G02 or G03 move)");
     return;
   }
   const auto& moves = toolpath.moves;
@@ -60,8 +61,7 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
     const Move& last = moves[path.moveIndex.back()];
     diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(), last.lower.end,
                          "the cut path never closes a loop: the part stays attached (the end is " +
-                             formatFixed(closure.gap, 3) +
-                             " mm from the start)"));
+                             formatFixed(closure.gap, 3) + " mm from the start)"));
   }
 
   // Self-intersection, exact on lines and arcs.
@@ -76,12 +76,14 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
     const std::string other = "line " + std::to_string(moves[mi].line);
     switch (c.kind) {
       case geometry::ContactKind::Crossing:
-        diags.report(finding(Severity::Error, Code::PathCrossesItself, src, later, mj, c.point,
-                             "the cut path crosses itself at " + at(c.point) + ": this move crosses the move on " + other));
+        diags.report(
+            finding(Severity::Error, Code::PathCrossesItself, src, later, mj, c.point,
+                    "the cut path crosses itself at " + at(c.point) + ": this move crosses the move on " + other));
         break;
       case geometry::ContactKind::Touch:
-        diags.report(finding(Severity::Error, Code::PathTouchesItself, src, later, mj, c.point,
-                             "the cut path touches itself at " + at(c.point) + ": this move meets the move on " + other));
+        diags.report(
+            finding(Severity::Error, Code::PathTouchesItself, src, later, mj, c.point,
+                    "the cut path touches itself at " + at(c.point) + ": this move meets the move on " + other));
         break;
       case geometry::ContactKind::Overlap:
         if (isRetrace(path.segments[c.first], path.segments[c.second], c, options.tolerance)) {
@@ -91,8 +93,9 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
           diags.report(finding(Severity::Error, Code::PathOverlapsItself, src, later, mj, c.point,
                                "this move folds back over the previous one (" + other + ") near " + at(c.point)));
         } else {
-          diags.report(finding(Severity::Error, Code::PathOverlapsItself, src, later, mj, c.point,
-                               "the cut path runs over itself near " + at(c.point) + ": this move overlaps the move on " + other));
+          diags.report(finding(
+              Severity::Error, Code::PathOverlapsItself, src, later, mj, c.point,
+              "the cut path runs over itself near " + at(c.point) + ": this move overlaps the move on " + other));
         }
         break;
     }

@@ -58,8 +58,8 @@ std::string formatLocation(const Diagnostic& d) {
 }
 
 std::string formatDiagnostic(const Diagnostic& d) {
-  std::string out = formatLocation(d) + ": " + severityName(d.severity) + ": " + d.message + " [" +
-                    codeName(d.code) + "]\n";
+  std::string out =
+      formatLocation(d) + ": " + severityName(d.severity) + ": " + d.message + " [" + codeName(d.code) + "]\n";
   if (d.source && !d.span.isWholeFile()) {
     const SourceLocation loc = d.source->locate(d.span.offset);
     const std::string_view text = d.source->lineText(loc.line);

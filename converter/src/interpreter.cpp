@@ -56,8 +56,10 @@ const GCodeInfo* findGCode(int tenths) {
 
 std::string gName(int tenths) {
   char buf[16];
-  if (tenths % 10 == 0) std::snprintf(buf, sizeof buf, "G%02d", tenths / 10);
-  else std::snprintf(buf, sizeof buf, "G%d.%d", tenths / 10, tenths % 10);
+  if (tenths % 10 == 0)
+    std::snprintf(buf, sizeof buf, "G%02d", tenths / 10);
+  else
+    std::snprintf(buf, sizeof buf, "G%d.%d", tenths / 10, tenths % 10);
   return buf;
 }
 
@@ -158,8 +160,7 @@ class Interpreter {
       pc = next;
     }
     if (!toolpath_.endedProperly && !diags_.hasErrors() && n > 0)
-      diags_.warning(Code::MissingProgramEnd, src_, program_.blocks.back().span(),
-                     "program ends without M02 or M30");
+      diags_.warning(Code::MissingProgramEnd, src_, program_.blocks.back().span(), "program ends without M02 or M30");
     return std::move(toolpath_);
   }
 
@@ -217,7 +218,8 @@ class Interpreter {
         if (!info) {
           const std::string_view raw = src_->text().substr(w.offset, w.length);
           if (tenths == 121 || tenths == 131) {
-            diags_.error(Code::UnknownGCode, src_, w.span(), gName(tenths) + " (polar coordinate interpolation) is not supported yet");
+            diags_.error(Code::UnknownGCode, src_, w.span(),
+                         gName(tenths) + " (polar coordinate interpolation) is not supported yet");
           } else if (tenths == 500 || tenths == 510 || tenths == 520 || (tenths >= 1400 && tenths <= 1420)) {
             diags_.error(Code::TaperWordsNotSupported, src_, w.span(),
                          gName(tenths) + " is a taper command: 4-axis taper programs are not read by this version");
@@ -229,8 +231,9 @@ class Interpreter {
         }
         const auto gi = static_cast<std::size_t>(info->group);
         if (bw.g[gi]) {
-          diags_.error(Code::ModalGroupConflict, src_, w.span(),
-                       gName(tenths) + " and " + gName(bw.gTenths[gi]) + " are in the same group and cannot share a block");
+          diags_.error(
+              Code::ModalGroupConflict, src_, w.span(),
+              gName(tenths) + " and " + gName(bw.gTenths[gi]) + " are in the same group and cannot share a block");
           bw.bad = true;
           continue;
         }
@@ -270,8 +273,10 @@ class Interpreter {
 
     // F
     if (const Word* f = bw['F']) {
-      if (f->value <= 0) diags_.warning(Code::BadFeed, src_, f->span(), "feed F must be positive");
-      else feed_ = f->value * (inch_ ? 25.4 : 1.0);
+      if (f->value <= 0)
+        diags_.warning(Code::BadFeed, src_, f->span(), "feed F must be positive");
+      else
+        feed_ = f->value * (inch_ ? 25.4 : 1.0);
     }
     // G04 dwell: P in ms or X in s. X here is a time, not a coordinate.
     const bool dwell = bw.group(Group::NonModal) && bw.code(Group::NonModal) == 40;
@@ -283,8 +288,9 @@ class Interpreter {
     // Plane
     if (const Word* p = bw.group(Group::Plane)) {
       if (bw.code(Group::Plane) != 170) {
-        diags_.error(Code::PlaneNotSupported, src_, p->span(),
-                     gName(bw.code(Group::Plane)) + " selects a plane a wire machine cannot cut in; only G17 (XY) is allowed");
+        diags_.error(
+            Code::PlaneNotSupported, src_, p->span(),
+            gName(bw.code(Group::Plane)) + " selects a plane a wire machine cannot cut in; only G17 (XY) is allowed");
         return Flow::Continue;
       }
     }
@@ -304,7 +310,8 @@ class Interpreter {
       if (!warnedWorkOffset_) {
         warnedWorkOffset_ = true;
         diags_.warning(Code::WorkOffsetIgnored, src_, w->span(),
-                       gName(bw.code(Group::WorkOffset)) + " selects a work offset stored in the controller; Kerf takes it as zero");
+                       gName(bw.code(Group::WorkOffset)) +
+                           " selects a work offset stored in the controller; Kerf takes it as zero");
       }
     }
     // G92 set position
@@ -389,7 +396,11 @@ class Interpreter {
     const bool hasRadius = bw.has('R');
     if (!hasEnd && !hasCentre && !hasRadius) return true;  // modal words only
     if (motion_ == Motion::None) {
-      const Word* w = bw.has('X') ? bw['X'] : bw.has('Y') ? bw['Y'] : bw.has('I') ? bw['I'] : bw.has('J') ? bw['J'] : bw['R'];
+      const Word* w = bw.has('X')   ? bw['X']
+                      : bw.has('Y') ? bw['Y']
+                      : bw.has('I') ? bw['I']
+                      : bw.has('J') ? bw['J']
+                                    : bw['R'];
       diags_.error(Code::NoMotionMode, src_, w->span(), "coordinates without a motion command",
                    "start the block (or an earlier one) with G00, G01, G02 or G03");
       return false;
@@ -433,7 +444,8 @@ class Interpreter {
       return false;
     }
     if (!hasRadius && !hasCentre) {
-      diags_.error(Code::ArcWithoutCentre, src_, motionWord_ && motionWord_->offset >= block.offset ? motionWord_->span() : block.span(),
+      diags_.error(Code::ArcWithoutCentre, src_,
+                   motionWord_ && motionWord_->offset >= block.offset ? motionWord_->span() : block.span(),
                    "arc needs its centre (I J) or its radius (R)");
       position_ = end;
       return false;
@@ -452,9 +464,18 @@ class Interpreter {
       move.programmedCentreWords = ij;
       Vec2 centre;
       switch (options_.arcCentre) {
-        case ArcCentreMode::Incremental: centre = start + ij; move.centreForm = CentreForm::Incremental; break;
-        case ArcCentreMode::Reversed: centre = start - ij; move.centreForm = CentreForm::Reversed; break;
-        case ArcCentreMode::Absolute: centre = ij - shift_; move.centreForm = CentreForm::Absolute; break;
+        case ArcCentreMode::Incremental:
+          centre = start + ij;
+          move.centreForm = CentreForm::Incremental;
+          break;
+        case ArcCentreMode::Reversed:
+          centre = start - ij;
+          move.centreForm = CentreForm::Reversed;
+          break;
+        case ArcCentreMode::Absolute:
+          centre = ij - shift_;
+          move.centreForm = CentreForm::Absolute;
+          break;
       }
       build = geometry::arcFromCentre(start, end, centre, dir, tolerance_);
     }
@@ -484,7 +505,11 @@ class Interpreter {
                      "arc ends where it starts, and R cannot describe a full circle", "give the centre with I J");
         break;
       case geometry::ArcStatus::ZeroRadius:
-        diags_.error(Code::ZeroRadius, src_, spanOf(bw.has('R') ? bw['R'] : bw.has('I') ? bw['I'] : bw['J'], block),
+        diags_.error(Code::ZeroRadius, src_,
+                     spanOf(bw.has('R')   ? bw['R']
+                            : bw.has('I') ? bw['I']
+                                          : bw['J'],
+                            block),
                      "arc radius is zero");
         break;
       case geometry::ArcStatus::EndOffCircle:
@@ -492,16 +517,15 @@ class Interpreter {
                      "arc end point is " + fmt3(std::abs(build.radiusError) / unit) + u +
                          " off the circle through the start (limit " + fmt3(tolerance_.centreAbsolute / unit) + u + ")",
                      options_.arcCentre == ArcCentreMode::Incremental
-                         ? "if the post writes I J as start minus centre or as absolute centres, use --arc-centre reversed|absolute"
+                         ? "if the post writes I J as start minus centre or as absolute centres, use --arc-centre "
+                           "reversed|absolute"
                          : std::string{});
         break;
       case geometry::ArcStatus::Ok: break;
     }
   }
 
-  void push(Move&& m) {
-    toolpath_.moves.push_back(std::move(m));
-  }
+  void push(Move&& m) { toolpath_.moves.push_back(std::move(m)); }
 
   // ---- 4. program flow ----------------------------------------------------------------------------
   Flow executeM(const Word& m, const BlockWords& bw, std::size_t pc, std::size_t& next) {
@@ -527,8 +551,9 @@ class Interpreter {
         return Flow::Continue;
       default:
         if (warnedM_.insert(code).second)
-          diags_.warning(Code::UnknownMCode, src_, m.span(),
-                         "M" + std::to_string(code) + " is a machine function Kerf does not know; it has no effect on the path");
+          diags_.warning(
+              Code::UnknownMCode, src_, m.span(),
+              "M" + std::to_string(code) + " is a machine function Kerf does not know; it has no effect on the path");
         return Flow::Continue;
     }
   }
@@ -559,13 +584,14 @@ class Interpreter {
       for (const auto& [k, v] : oLabels_)
         if (best < 0 || std::abs(k - label) < std::abs(best - label)) best = k;
       if (best >= 0) help = "the nearest program number is O" + std::to_string(best);
-      diags_.error(Code::SubprogramNotFound, src_, p->span(), "no subprogram O" + std::to_string(label) + " or N" +
-                                                                std::to_string(label) + " in this file", help);
+      diags_.error(Code::SubprogramNotFound, src_, p->span(),
+                   "no subprogram O" + std::to_string(label) + " or N" + std::to_string(label) + " in this file", help);
       return Flow::Continue;
     }
     if (stack_.size() >= options_.maxCallDepth) {
-      diags_.error(Code::CallTooDeep, src_, m.span(),
-                   "subprogram calls nest deeper than " + std::to_string(options_.maxCallDepth) + " levels (recursion?)");
+      diags_.error(
+          Code::CallTooDeep, src_, m.span(),
+          "subprogram calls nest deeper than " + std::to_string(options_.maxCallDepth) + " levels (recursion?)");
       return Flow::Stop;
     }
     stack_.push_back({pc + 1, target, repeats, pc});

@@ -23,13 +23,10 @@ bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' ||
 bool isWordLetter(char u) { return u != 'B' && u != 'W'; }
 
 /// Letters whose numbers are lengths: they decide --integer-unit heuristics.
-bool isLengthLetter(char u) {
-  return u == 'X' || u == 'Y' || u == 'U' || u == 'V' || u == 'I' || u == 'J' || u == 'R';
-}
+bool isLengthLetter(char u) { return u == 'X' || u == 'Y' || u == 'U' || u == 'V' || u == 'I' || u == 'J' || u == 'R'; }
 
-constexpr std::array<double, 19> kPowersOfTen = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,
-                                                 1e7,  1e8,  1e9,  1e10, 1e11, 1e12, 1e13,
-                                                 1e14, 1e15, 1e16, 1e17, 1e18};
+constexpr std::array<double, 19> kPowersOfTen = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8, 1e9,
+                                                 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18};
 
 /// Numbers larger than this are refused (K0105): no wire machine travels a kilometre.
 constexpr double kLargestNumber = 1e9;
@@ -152,7 +149,7 @@ class LineParser {
         blockEnd = i;
         break;
       }
-      if (c == ':' ) {
+      if (c == ':') {
         error(block, Code::TaperWordsNotSupported, i, 1,
               "':' separates lower and upper contours (Sodick 4-axis taper), which this version does not read");
         blockEnd = end;
@@ -164,7 +161,8 @@ class LineParser {
         } else if (isDigit(c) || c == '.' || c == '-' || c == '+') {
           const NumberScan n = scanNumber(text_, i);
           const std::size_t len = std::max<std::size_t>(1, n.end - i);
-          error(block, Code::UnexpectedCharacter, i, len, "number without a letter: every value needs an address letter",
+          error(block, Code::UnexpectedCharacter, i, len,
+                "number without a letter: every value needs an address letter",
                 "write it as a word, e.g. X" + std::string(text_.substr(i, len)));
           blockEnd = end;
           break;
@@ -191,8 +189,8 @@ class LineParser {
  private:
   void error(Block& block, Code code, std::size_t at, std::size_t length, std::string message, std::string help = {}) {
     block.hasError = true;
-    diags_.error(code, &src_, {static_cast<std::uint32_t>(at), static_cast<std::uint32_t>(length)},
-                 std::move(message), std::move(help));
+    diags_.error(code, &src_, {static_cast<std::uint32_t>(at), static_cast<std::uint32_t>(length)}, std::move(message),
+                 std::move(help));
   }
 
   /// `H001 = +0.13`, `C000 = ...`, `E001= ...`: letter, digits, blanks, '='.
@@ -218,7 +216,8 @@ class LineParser {
     s.span = {static_cast<std::uint32_t>(start), static_cast<std::uint32_t>(ve - start)};
     s.line = line;
     if (s.value.empty()) {
-      diags_.error(Code::MalformedSetting, &src_, {static_cast<std::uint32_t>(start), static_cast<std::uint32_t>(i - start)},
+      diags_.error(Code::MalformedSetting, &src_,
+                   {static_cast<std::uint32_t>(start), static_cast<std::uint32_t>(i - start)},
                    "setting " + s.name + " has no value after '='");
       return true;
     }
@@ -235,7 +234,8 @@ class LineParser {
       // Skip the number that follows, if any, so one bad word is one diagnostic.
       const NumberScan n = scanNumber(text_, i);
       const std::size_t stop = n.status == NumberScan::Missing ? start + 1 : n.end;
-      const bool looks3B = letter == 'B' && text_.substr(block.offset, end - block.offset).find("GX") != std::string_view::npos;
+      const bool looks3B =
+          letter == 'B' && text_.substr(block.offset, end - block.offset).find("GX") != std::string_view::npos;
       error(block, Code::UnknownWord, start, stop - start, std::string("unknown word letter '") + letter + "'",
             looks3B || letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code" : std::string{});
       return std::max(stop, start + 1);
@@ -247,13 +247,14 @@ class LineParser {
       if (i < end && (text_[i] == 'O' || text_[i] == 'o') && (letter == 'G' || letter == 'M'))
         help = std::string("did you mean ") + letter + "0" + std::string(text_.substr(i + 1, 1)) +
                "? (the digit zero, not the letter O)";
-      else if ((text_[start] == 'l' || text_[start] == 'I' || text_[start] == 'O' || text_[start] == 'o') && start > 0 &&
-               isDigit(text_[start - 1]))
+      else if ((text_[start] == 'l' || text_[start] == 'I' || text_[start] == 'O' || text_[start] == 'o') &&
+               start > 0 && isDigit(text_[start - 1]))
         help = std::string("did you mean the digit ") + (text_[start] == 'l' || text_[start] == 'I' ? "1" : "0") +
                " instead of the letter '" + text_[start] + "'?";
       else if (i + 2 < end && upper(text_[i]) == 'N' && upper(text_[i + 1]) == 'A' && upper(text_[i + 2]) == 'N')
         help = "NaN is not a number an NC control accepts";
-      error(block, Code::ExpectedNumber, start, 1, std::string("expected a number after '") + letter + "', read " + read, help);
+      error(block, Code::ExpectedNumber, start, 1,
+            std::string("expected a number after '") + letter + "', read " + read, help);
       return start + 1;
     }
     std::size_t stop = n.end;
@@ -272,8 +273,8 @@ class LineParser {
       if (j < end && (text_[j] == '+' || text_[j] == '-')) ++j;
       if (j < end && isDigit(text_[j])) {
         while (j < end && isDigit(text_[j])) ++j;
-        error(block, Code::ExponentNotation, start, j - start,
-              "exponent notation is not allowed in NC words", "write the number out in full with a decimal point");
+        error(block, Code::ExponentNotation, start, j - start, "exponent notation is not allowed in NC words",
+              "write the number out in full with a decimal point");
         return j;
       }
     }
@@ -288,7 +289,8 @@ class LineParser {
     }
     const std::uint32_t bit = 1u << (letter - 'A');
     if ((seen & bit) && letter != 'G' && letter != 'M') {
-      error(block, Code::RepeatedWord, start, stop - start, std::string("word '") + letter + "' appears twice in one block");
+      error(block, Code::RepeatedWord, start, stop - start,
+            std::string("word '") + letter + "' appears twice in one block");
       return stop;
     }
     seen |= bit;

@@ -62,9 +62,10 @@ std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& di
     if (trim(body).empty()) continue;
     const std::size_t eq = body.find('=');
     auto fail = [&](std::size_t col, std::size_t len, const std::string& msg, const std::string& help = {}) {
-      diags.error(Code::ProfileError, &file,
-                  {lineOffset + static_cast<std::uint32_t>(col), static_cast<std::uint32_t>(std::max<std::size_t>(len, 1))},
-                  msg, help);
+      diags.error(
+          Code::ProfileError, &file,
+          {lineOffset + static_cast<std::uint32_t>(col), static_cast<std::uint32_t>(std::max<std::size_t>(len, 1))},
+          msg, help);
       ok = false;
     };
     if (eq == std::string_view::npos) {
@@ -79,16 +80,20 @@ std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& di
       long v = 0;
       const auto r = std::from_chars(value.data(), value.data() + value.size(), v);
       if (r.ec != std::errc{} || r.ptr != value.data() + value.size() || v < lo || v > hi) {
-        fail(valueCol, value.size(), std::string(key) + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+        fail(valueCol, value.size(),
+             std::string(key) + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
         return false;
       }
       out = v;
       return true;
     };
     auto boolean = [&](bool& out) {
-      if (value == "true" || value == "yes") out = true;
-      else if (value == "false" || value == "no") out = false;
-      else fail(valueCol, value.size(), std::string(key) + " must be true or false");
+      if (value == "true" || value == "yes")
+        out = true;
+      else if (value == "false" || value == "no")
+        out = false;
+      else
+        fail(valueCol, value.size(), std::string(key) + " must be true or false");
     };
     bool quotedOk = true;
     if (key == "name") {
@@ -97,19 +102,30 @@ std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& di
       long v;
       if (integer(0, 6, v)) p.decimals = static_cast<int>(v);
     } else if (key == "unit") {
-      if (value == "mm") p.micrometres = false;
-      else if (value == "um") p.micrometres = true;
-      else fail(valueCol, value.size(), "unit must be mm or um");
+      if (value == "mm")
+        p.micrometres = false;
+      else if (value == "um")
+        p.micrometres = true;
+      else
+        fail(valueCol, value.size(), "unit must be mm or um");
     } else if (key == "coordinates") {
-      if (value == "absolute") p.incremental = false;
-      else if (value == "incremental") p.incremental = true;
-      else fail(valueCol, value.size(), "coordinates must be absolute or incremental");
+      if (value == "absolute")
+        p.incremental = false;
+      else if (value == "incremental")
+        p.incremental = true;
+      else
+        fail(valueCol, value.size(), "coordinates must be absolute or incremental");
     } else if (key == "separator") {
-      if (value == "space") p.separator = " ";
-      else if (value == "tab") p.separator = "\t";
-      else if (value == "comma") p.separator = ",";
-      else if (value == "semicolon") p.separator = ";";
-      else p.separator = unquote(value, quotedOk);
+      if (value == "space")
+        p.separator = " ";
+      else if (value == "tab")
+        p.separator = "\t";
+      else if (value == "comma")
+        p.separator = ",";
+      else if (value == "semicolon")
+        p.separator = ";";
+      else
+        p.separator = unquote(value, quotedOk);
     } else if (key == "line_numbers") {
       boolean(p.lineNumbers);
     } else if (key == "line_number_prefix") {
@@ -135,9 +151,8 @@ std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& di
   return p;
 }
 
-std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile* source,
-                                      const PointProfile& profile, const PointRequest& request,
-                                      Diagnostics& diags) {
+std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile* source, const PointProfile& profile,
+                                      const PointRequest& request, Diagnostics& diags) {
   CutPath path = cutPath(toolpath);
   if (path.segments.empty()) {
     diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
@@ -156,7 +171,8 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
     const bool closed = (path.segments.back().end - path.segments.front().start).norm() <= 1e-6;
     if (closed) {
       std::rotate(path.segments.begin(), path.segments.begin() + static_cast<std::ptrdiff_t>(k), path.segments.end());
-      std::rotate(path.moveIndex.begin(), path.moveIndex.begin() + static_cast<std::ptrdiff_t>(k), path.moveIndex.end());
+      std::rotate(path.moveIndex.begin(), path.moveIndex.begin() + static_cast<std::ptrdiff_t>(k),
+                  path.moveIndex.end());
     } else if (k > 0) {
       diags.warning(Code::StartBlockNotFound, source, toolpath.moves[path.moveIndex[k]].span,
                     "the cut path is open: the " + std::to_string(k) + " cutting moves before this one are left out");
@@ -172,8 +188,9 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
     const geometry::CapacityFit fit = geometry::fitToCapacity(path.segments, *capacity, request.sampling.mode);
     if (!fit.fits) {
       diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
-                  "the path needs at least " + std::to_string(fit.fewestPossible) + " points (every arc as coarse as it can be), more than the " +
-                      std::to_string(*capacity) + " the controller holds");
+                  "the path needs at least " + std::to_string(fit.fewestPossible) +
+                      " points (every arc as coarse as it can be), more than the " + std::to_string(*capacity) +
+                      " the controller holds");
       return std::nullopt;
     }
     // Keep the requested sampling when it already fits; otherwise the finest one that fits.

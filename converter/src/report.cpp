@@ -25,9 +25,7 @@ std::string sci(double v) {
   std::snprintf(buf, sizeof buf, "%.3e", v);
   return buf;
 }
-std::string plural(std::size_t n, const char* word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-}
+std::string plural(std::size_t n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 json vec(const Vec2& p) { return json::array({p.x(), p.y()}); }
 
 std::string samplingText(const geometry::Sampling& s) {
@@ -81,8 +79,8 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
          std::to_string(s.rapidMoves) + " rapid)\n";
   out += "  cut length " + mm(s.cutLength) + " mm, rapid length " + mm(s.rapidLength) + " mm\n";
   if (!s.bounds.empty())
-    out += "  bounds X " + mm(s.bounds.min.x()) + " .. " + mm(s.bounds.max.x()) + ", Y " + mm(s.bounds.min.y()) + " .. " +
-           mm(s.bounds.max.y()) + " mm\n";
+    out += "  bounds X " + mm(s.bounds.min.x()) + " .. " + mm(s.bounds.max.x()) + ", Y " + mm(s.bounds.min.y()) +
+           " .. " + mm(s.bounds.max.y()) + " mm\n";
   out += "  points at " + samplingText(s.sampling) + ": " + std::to_string(s.points.points) + " (max deviation " +
          formatFixed(s.points.maxDeviation, 6) + " mm, mean relative error " + sci(s.points.meanRelativeError) + ")\n";
   out += std::string("verdict: ") + (diags.hasErrors() ? "errors — do not cut" : "ok") + "\n";
@@ -143,8 +141,8 @@ std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags) {
     if (m.kind == MoveKind::Arc) out += s.sweep < 0 ? " cw" : " ccw";
     out += " " + p6(s.start) + " -> " + p6(s.end);
     if (m.kind == MoveKind::Arc)
-      out += " centre " + p6(s.centre) + " r " + f6(s.radius) + " sweep " + f6(s.sweep * 180.0 / geometry::kPi) + " from " +
-             centreFormName(m.centreForm);
+      out += " centre " + p6(s.centre) + " r " + f6(s.radius) + " sweep " + f6(s.sweep * 180.0 / geometry::kPi) +
+             " from " + centreFormName(m.centreForm);
     if (m.callDepth > 0) out += " depth " + std::to_string(m.callDepth);
     out += "\n";
   }
@@ -173,8 +171,8 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
     const geometry::Segment& s = m.lower;
     out += "\nline " + std::to_string(m.line) + ": " + blockText(program, m) + "\n";
     if (m.kind != MoveKind::Arc) {
-      out += std::string("  ") + (m.kind == MoveKind::Rapid ? "rapid (G00, not cut)" : "straight cut (G01)") + " from " +
-             pt(s.start) + " to " + pt(s.end) + ", length " + mm(s.length()) + " mm\n";
+      out += std::string("  ") + (m.kind == MoveKind::Rapid ? "rapid (G00, not cut)" : "straight cut (G01)") +
+             " from " + pt(s.start) + " to " + pt(s.end) + ", length " + mm(s.length()) + " mm\n";
       if (m.kind == MoveKind::Line) out += "  a line adds only its end point to the point sequence\n";
       continue;
     }
@@ -183,9 +181,11 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
            " (the end of the previous move) to " + pt(s.end) + "\n";
     if (m.centreForm == CentreForm::Radius) {
       const double r = m.programmedRadius;
-      const int zn = geometry::seedSignFactor(cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
-      out += "  centre " + pt(s.centre) + " from R " + mm(r) + ": half the chord is " + mm((s.end - s.start).norm() / 2) +
-             " mm; " + (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
+      const int zn = geometry::seedSignFactor(
+          cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
+      out += "  centre " + pt(s.centre) + " from R " + mm(r) + ": half the chord is " +
+             mm((s.end - s.start).norm() / 2) + " mm; " +
+             (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
              " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
     } else {
       const Vec2& ij = m.programmedCentreWords;
@@ -195,14 +195,17 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
       out += "  centre " + pt(s.centre) + " from I " + mm(ij.x()) + " J " + mm(ij.y()) + ": " + rule +
              "; radius by formula (3) = |start - centre| = " + mm(s.radius) + " mm\n";
       if (std::abs(m.radiusError) > 0.0005)
-        out += "  the end point is " + mm(std::abs(m.radiusError)) + " mm off that circle (within the accepted tolerance)\n";
+        out += "  the end point is " + mm(std::abs(m.radiusError)) +
+               " mm off that circle (within the accepted tolerance)\n";
     }
-    out += "  radius " + mm(s.radius) + " mm, sweep " + deg(std::abs(s.sweep)) + " degrees, length " + mm(s.length()) + " mm\n";
+    out += "  radius " + mm(s.radius) + " mm, sweep " + deg(std::abs(s.sweep)) + " degrees, length " + mm(s.length()) +
+           " mm\n";
     const geometry::ArcSampleStats st = geometry::sample(s, sampling, nullptr);  // counts only
     if (sampling.mode == geometry::SamplingMode::Step) {
       const geometry::SeedArcAngles a = geometry::seedAngles(s, sampling.value);
-      out += "  seed angles: alpha " + deg(a.alpha) + ", beta " + deg(a.beta) + ", gamma = 2 asin(k / 2R) = " + deg(a.gamma) +
-             " degrees; delta " + (cw ? "grows" : "falls") + " by gamma from alpha to beta\n";
+      out += "  seed angles: alpha " + deg(a.alpha) + ", beta " + deg(a.beta) +
+             ", gamma = 2 asin(k / 2R) = " + deg(a.gamma) + " degrees; delta " + (cw ? "grows" : "falls") +
+             " by gamma from alpha to beta\n";
     }
     out += "  " + plural(st.points, "point") + " after the start, max deviation " + formatFixed(st.maxDeviation, 6) +
            " mm, mean relative error " + sci(st.meanRelativeError) + "\n";
@@ -235,8 +238,9 @@ std::string explainJson(const Program& program, const Toolpath& toolpath, const 
       e["centre_from"] = centreFormName(m.centreForm);
       if (m.centreForm == CentreForm::Radius) {
         e["R"] = m.programmedRadius;
-        e["zn"] = geometry::seedSignFactor(s.sweep < 0 ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise,
-                                           m.programmedRadius);
+        e["zn"] = geometry::seedSignFactor(
+            s.sweep < 0 ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise,
+            m.programmedRadius);
       } else {
         e["IJ"] = vec(m.programmedCentreWords);
         e["radius_error"] = m.radiusError;

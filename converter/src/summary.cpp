@@ -27,8 +27,10 @@ Summary summarize(const Program& program, const Toolpath& toolpath, const geomet
       continue;
     }
     ++s.cutMoves;
-    if (m.kind == MoveKind::Arc) ++s.arcs;
-    else ++s.lines;
+    if (m.kind == MoveKind::Arc)
+      ++s.arcs;
+    else
+      ++s.lines;
     s.cutLength += m.lower.length();
     s.bounds.add(m.lower.bounds());
   }

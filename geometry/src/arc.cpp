@@ -7,7 +7,7 @@ namespace kerf::geometry {
 
 ArcTolerance ArcTolerance::forInch() {
   ArcTolerance t;
-  t.radius = 0.00005 * 25.4;                                 // RADIUS_TOLERANCE_INCH
+  t.radius = 0.00005 * 25.4;                                    // RADIUS_TOLERANCE_INCH
   t.centreAbsolute = 2.0 * 0.001 * std::numbers::sqrt2 * 25.4;  // CENTER_ARC_RADIUS_TOLERANCE_INCH
   return t;
 }

@@ -1,8 +1,8 @@
 #include "kerf/geometry/contour.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <algorithm>
 #include <utility>
 #include <vector>
 

@@ -127,8 +127,7 @@ SegmentIntersection arcArc(const Segment& a, const Segment& b, double tol) {
   const Vec2 candidates[2] = {base + h * perp, base - h * perp};
   const int n = h <= tol ? 1 : 2;
   for (int i = 0; i < n; ++i)
-    if (detail::onArc(a, candidates[i], tol) && detail::onArc(b, candidates[i], tol))
-      addPoint(r, candidates[i], tol);
+    if (detail::onArc(a, candidates[i], tol) && detail::onArc(b, candidates[i], tol)) addPoint(r, candidates[i], tol);
   return r;
 }
 
@@ -159,8 +158,8 @@ bool sameDirection(const Segment& a, const Segment& b, const Vec2& at) {
 }
 
 /// Appends the contacts of the pair (i, j), i < j.
-void classifyPair(std::span<const Segment> path, std::size_t i, std::size_t j, bool adjacentForward,
-                  bool adjacentWrap, double tol, std::vector<Contact>& out) {
+void classifyPair(std::span<const Segment> path, std::size_t i, std::size_t j, bool adjacentForward, bool adjacentWrap,
+                  double tol, std::vector<Contact>& out) {
   const Segment& a = path[i];
   const Segment& b = path[j];
   const SegmentIntersection x = intersect(a, b, tol);
@@ -195,8 +194,7 @@ void classifyPair(std::span<const Segment> path, std::size_t i, std::size_t j, b
 
 // ---- 3. sweep ---------------------------------------------------------------------------------
 
-SelfIntersectionResult findSelfIntersections(std::span<const Segment> path,
-                                             const SelfIntersectionOptions& options) {
+SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, const SelfIntersectionOptions& options) {
   SelfIntersectionResult result;
   const double tol = options.tolerance;
   const std::size_t n = path.size();
@@ -232,8 +230,8 @@ SelfIntersectionResult findSelfIntersections(std::span<const Segment> path,
       ++result.candidatePairs;
       const std::size_t i = std::min(idx, other), j = std::max(idx, other);
       const bool forward = rank[j] == rank[i] + 1 && near(path[i].end, path[j].start, tol);
-      const bool wrap = options.closed && live > 2 && rank[i] == 0 && rank[j] == live - 1 &&
-                        near(path[j].end, path[i].start, tol);
+      const bool wrap =
+          options.closed && live > 2 && rank[i] == 0 && rank[j] == live - 1 && near(path[j].end, path[i].start, tol);
       classifyPair(path, i, j, forward, wrap, tol, result.contacts);
       if (result.contacts.size() >= options.maxContacts) {
         result.truncated = true;

@@ -102,8 +102,7 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
   return stats;
 }
 
-PathSampleStats samplePath(std::span<const Segment> path, const Sampling& sampling,
-                           std::vector<Vec2>* out) {
+PathSampleStats samplePath(std::span<const Segment> path, const Sampling& sampling, std::vector<Vec2>* out) {
   PathSampleStats stats;
   if (path.empty()) return stats;
   Vec2 last = path.front().start;
@@ -180,8 +179,10 @@ CapacityFit fitToCapacity(std::span<const Segment> path, std::size_t maxPoints, 
   for (int i = 0; i < 200 && hi - lo > 1e-9 * hi; ++i) {
     const double mid = std::sqrt(lo * hi);
     const double m = (mid <= lo || mid >= hi) ? (lo + hi) / 2 : mid;
-    if (countPoints(path, Sampling{mode, m}) <= maxPoints) hi = m;
-    else lo = m;
+    if (countPoints(path, Sampling{mode, m}) <= maxPoints)
+      hi = m;
+    else
+      lo = m;
   }
   fit.fits = true;
   fit.sampling = Sampling{mode, hi};
@@ -209,8 +210,7 @@ std::vector<Vec2> seedArcPoints(const Segment& arc, double k) {
   for (std::size_t i = 1; i <= steps; ++i) {
     const double delta = a.alpha + (clockwise ? 1.0 : -1.0) * a.gamma * static_cast<double>(i);
     if (std::abs(delta - a.alpha) >= total - 1e-9 * a.gamma) break;  // reached beta
-    points.emplace_back(arc.centre.x() + std::cos(delta) * arc.radius,
-                        arc.centre.y() - std::sin(delta) * arc.radius);
+    points.emplace_back(arc.centre.x() + std::cos(delta) * arc.radius, arc.centre.y() - std::sin(delta) * arc.radius);
   }
   points.push_back(arc.end);
   return points;

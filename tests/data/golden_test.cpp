@@ -45,7 +45,9 @@ class GoldenTest : public testing::Test {
     if (opt.count("integer_unit") && opt.at("integer_unit") == "um") io.integerUnit = IntegerUnit::Micrometre;
     if (opt.count("arc_centre")) {
       const std::string& m = opt.at("arc_centre");
-      io.arcCentre = m == "reversed" ? ArcCentreMode::Reversed : m == "absolute" ? ArcCentreMode::Absolute : ArcCentreMode::Incremental;
+      io.arcCentre = m == "reversed"   ? ArcCentreMode::Reversed
+                     : m == "absolute" ? ArcCentreMode::Absolute
+                                       : ArcCentreMode::Incremental;
     }
     PointRequest req;
     if (opt.count("step")) req.sampling = kerf::geometry::Sampling::step(std::stod(opt.at("step")));
@@ -94,7 +96,8 @@ class GoldenTest : public testing::Test {
     }
     ASSERT_TRUE(fs::exists(file)) << file << " is missing; run with KERF_UPDATE_GOLDEN=1 to create it";
     const std::string expected = kerf::test::readFile(file);
-    EXPECT_TRUE(expected == actual) << name << " differs:\n" << kerf::test::cappedDiff(expected, actual)
+    EXPECT_TRUE(expected == actual) << name << " differs:\n"
+                                    << kerf::test::cappedDiff(expected, actual)
                                     << "(KERF_UPDATE_GOLDEN=1 accepts the new output)";
   }
 

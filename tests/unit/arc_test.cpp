@@ -134,7 +134,8 @@ TEST(arc_from_radius, metamorphic_translate_rotate_mirror_reverse) {
       EXPECT_NEAR(std::abs(moved.arc.sweep), std::abs(base.arc.sweep), 1e-9);
     }
     // Reversed: from K to P the other way round has the same centre and sweep.
-    const ArcDirection other = dir == ArcDirection::Clockwise ? ArcDirection::CounterClockwise : ArcDirection::Clockwise;
+    const ArcDirection other =
+        dir == ArcDirection::Clockwise ? ArcDirection::CounterClockwise : ArcDirection::Clockwise;
     const ArcBuild back = arcFromRadius(k, p, r, other);
     ASSERT_EQ(back.status, ArcStatus::Ok);
     EXPECT_NEAR((back.arc.centre - base.arc.centre).norm(), 0, 1e-9);
@@ -160,8 +161,9 @@ TEST(arc_from_centre, linuxcnc_tolerance_rule) {
   // Above it on a big arc, but within 0.1 %: accepted.
   EXPECT_EQ(arcFromCentre({100, 0}, {0, 100.05}, {0, 0}, ArcDirection::CounterClockwise).status, ArcStatus::Ok);
   // Above 100x the absolute limit: refused even when relatively small.
-  EXPECT_EQ(arcFromCentre({10000, 0}, {0, 10000 + 101 * tol.centreAbsolute}, {0, 0}, ArcDirection::CounterClockwise).status,
-            ArcStatus::EndOffCircle);
+  EXPECT_EQ(
+      arcFromCentre({10000, 0}, {0, 10000 + 101 * tol.centreAbsolute}, {0, 0}, ArcDirection::CounterClockwise).status,
+      ArcStatus::EndOffCircle);
 }
 
 TEST(segment, point_at_and_length_of_an_arc) {

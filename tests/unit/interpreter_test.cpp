@@ -114,7 +114,8 @@ TEST(interpreter, sodick_style_n_label_after_m02) {
   EXPECT_EQ(r->path().moves[1].wireOffset, WireOffset::Left);
   bool mentions = false;
   for (const auto& d : r->diags.all())
-    if (d.code == Code::WireOffsetNotApplied && d.message.find("H001 = +000000.1300") != std::string::npos) mentions = true;
+    if (d.code == Code::WireOffsetNotApplied && d.message.find("H001 = +000000.1300") != std::string::npos)
+      mentions = true;
   EXPECT_TRUE(mentions);
 }
 

@@ -1,5 +1,5 @@
-#include "kerf/geometry/contour.h"
 #include "kerf/geometry/intersection.h"
+#include "kerf/geometry/contour.h"
 
 #include "test_support.h"
 
@@ -74,7 +74,8 @@ TEST(intersect, line_misses_the_arc_part_of_its_circle) {
 
 TEST(intersect, arcs_on_the_same_circle_overlap) {
   const Segment a = Segment::arc({10, 0}, {0, 10}, {0, 0}, ArcDirection::CounterClockwise);
-  const Segment b = Segment::arc({7.0710678118654755, 7.0710678118654755}, {-10, 0}, {0, 0}, ArcDirection::CounterClockwise);
+  const Segment b =
+      Segment::arc({7.0710678118654755, 7.0710678118654755}, {-10, 0}, {0, 0}, ArcDirection::CounterClockwise);
   EXPECT_TRUE(intersect(a, b, 1e-9).overlap);
   const Segment c = Segment::arc({0, 10}, {-10, 0}, {0, 0}, ArcDirection::CounterClockwise);
   const auto touch = intersect(a, c, 1e-9);
@@ -168,7 +169,8 @@ TEST(self_intersection, sweep_matches_all_pairs_on_random_paths) {
       const Vec2 q = p + Vec2(step(rng), step(rng));
       if (i % 3 == 2) {
         const Vec2 mid = (p + q) / 2, n(-(q - p).y(), (q - p).x());
-        path.push_back(Segment::arc(p, q, mid + 0.3 * n, i % 2 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise));
+        path.push_back(
+            Segment::arc(p, q, mid + 0.3 * n, i % 2 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise));
         // The arc starts at p by construction; its end is off that circle unless the centre is
         // equidistant, which mid + t n is.
       } else {
@@ -188,11 +190,14 @@ TEST(self_intersection, sweep_matches_all_pairs_on_random_paths) {
         // of non-neighbours instead and compare with the sweep's non-neighbour contacts.
         if (j == i + 1) continue;
         const auto x = intersect(path[i], path[j], o.tolerance);
-        if (x.overlap) ++brute;
+        if (x.overlap)
+          ++brute;
         else
           for (int k = 0; k < x.count; ++k) {
-            const bool endA = (x.points[k] - path[i].start).norm() <= o.tolerance || (x.points[k] - path[i].end).norm() <= o.tolerance;
-            const bool endB = (x.points[k] - path[j].start).norm() <= o.tolerance || (x.points[k] - path[j].end).norm() <= o.tolerance;
+            const bool endA = (x.points[k] - path[i].start).norm() <= o.tolerance ||
+                              (x.points[k] - path[i].end).norm() <= o.tolerance;
+            const bool endB = (x.points[k] - path[j].start).norm() <= o.tolerance ||
+                              (x.points[k] - path[j].end).norm() <= o.tolerance;
             if (!(endA && endB)) ++brute;
           }
       }

@@ -41,8 +41,10 @@ std::string randomProgram(std::mt19937& rng) {
   bool incremental = false;
   auto round4 = [](double v) { return std::round(v * 1e4) / 1e4; };
   auto writeEnd = [&](const Vec2& end) {
-    if (incremental) out << " X" << f4(end.x() - pos.x()) << " Y" << f4(end.y() - pos.y());
-    else out << " X" << f4(end.x()) << " Y" << f4(end.y());
+    if (incremental)
+      out << " X" << f4(end.x() - pos.x()) << " Y" << f4(end.y() - pos.y());
+    else
+      out << " X" << f4(end.x()) << " Y" << f4(end.y());
   };
   for (int i = 0; i < 60; ++i) {
     if (unit(rng) < 0.1) {
@@ -72,7 +74,8 @@ std::string randomProgram(std::mt19937& rng) {
       const Vec2 c = pos + ij;
       const bool full = unit(rng) < 0.1;
       const double a = std::atan2(-ij.y(), -ij.x()) + (unit(rng) - 0.5) * 6;
-      const Vec2 end = full ? pos : Vec2(round4(c.x() + ij.norm() * std::cos(a)), round4(c.y() + ij.norm() * std::sin(a)));
+      const Vec2 end =
+          full ? pos : Vec2(round4(c.x() + ij.norm() * std::cos(a)), round4(c.y() + ij.norm() * std::sin(a)));
       out << (unit(rng) < 0.5 ? "G2" : "G3");
       if (!full) writeEnd(end);
       out << " I" << f4(ij.x()) << " J" << f4(ij.y()) << "\n";
@@ -85,7 +88,8 @@ std::string randomProgram(std::mt19937& rng) {
 
 std::vector<Canon> runRs274(const std::filesystem::path& input) {
   const std::filesystem::path output = input.string() + ".canon";
-  const std::string cmd = std::string(KERF_RS274) + " -g '" + input.string() + "' '" + output.string() + "' > /dev/null 2>&1";
+  const std::string cmd =
+      std::string(KERF_RS274) + " -g '" + input.string() + "' '" + output.string() + "' > /dev/null 2>&1";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
   std::vector<Canon> moves;
   std::ifstream in(output);
@@ -100,7 +104,8 @@ std::vector<Canon> runRs274(const std::filesystem::path& input) {
       c.rapid = true;
       c.end = {v[0], v[1]};
     } else if (auto a = line.find("ARC_FEED("); a != std::string::npos) {
-      if (std::sscanf(line.c_str() + a, "ARC_FEED(%lf, %lf, %lf, %lf, %d", &v[0], &v[1], &v[2], &v[3], &c.turn) != 5) continue;
+      if (std::sscanf(line.c_str() + a, "ARC_FEED(%lf, %lf, %lf, %lf, %d", &v[0], &v[1], &v[2], &v[3], &c.turn) != 5)
+        continue;
       c.arc = true;
       c.end = {v[0], v[1]};
       c.centre = {v[2], v[3]};

@@ -1,5 +1,5 @@
-#include "kerf/geometry/arc.h"
 #include "kerf/geometry/tessellation.h"
+#include "kerf/geometry/arc.h"
 
 #include "test_support.h"
 

@@ -35,8 +35,11 @@ struct Motion2 {
 };
 
 inline std::vector<Motion2> someMotions() {
-  return {{0.0, {0, 0}, false}, {0.7, {13.5, -4.25}, false}, {-2.1, {-100, 250}, false},
-          {1.3, {3, 3}, true},  {3.14159, {0.001, -0.002}, false}};
+  return {{0.0, {0, 0}, false},
+          {0.7, {13.5, -4.25}, false},
+          {-2.1, {-100, 250}, false},
+          {1.3, {3, 3}, true},
+          {3.14159, {0.001, -0.002}, false}};
 }
 
 }  // namespace kerf::test

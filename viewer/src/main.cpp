@@ -47,7 +47,8 @@ void addCommon(CLI::App& cmd, CommonOptions& o, bool withJson) {
   auto* tol = cmd.add_option("--tolerance", o.tolerance, "arc chord tolerance in mm (max deviation), instead of --step")
                   ->check(CLI::PositiveNumber);
   step->excludes(tol);
-  cmd.add_option("--max-diagnostics", o.maxDiagnostics, "show at most this many diagnostics")->check(CLI::Range(1, 100000));
+  cmd.add_option("--max-diagnostics", o.maxDiagnostics, "show at most this many diagnostics")
+      ->check(CLI::Range(1, 100000));
   if (withJson) cmd.add_flag("--json", o.json, "machine-readable output on stdout");
 }
 
@@ -114,7 +115,8 @@ int runExplain(const CommonOptions& o) {
   if (!load(o, diags, in)) return kExitUsage;
   printDiagnostics(diags);
   const auto sampling = samplingOf(o);
-  std::cout << (o.json ? explainJson(in.program, in.toolpath, sampling) : explainText(in.program, in.toolpath, sampling));
+  std::cout << (o.json ? explainJson(in.program, in.toolpath, sampling)
+                       : explainText(in.program, in.toolpath, sampling));
   return diags.hasErrors() ? kExitErrors : kExitOk;
 }
 
@@ -168,7 +170,10 @@ int runConvert(const CommonOptions& o, const ConvertOptions& c) {
   std::cerr << "kerf: wrote " << out->points << " points (" << profile.name << " profile) to "
             << (c.output == "-" ? std::string("standard output") : c.output) << "; "
             << (s.mode == kerf::geometry::SamplingMode::Step ? "step k = " : "tolerance ") << formatFixed(s.value, 6)
-            << " mm" << (out->fitted ? " chosen to fit " + std::to_string(c.maxPoints ? *c.maxPoints : *profile.maxPoints) + " points" : "")
+            << " mm"
+            << (out->fitted
+                    ? " chosen to fit " + std::to_string(c.maxPoints ? *c.maxPoints : *profile.maxPoints) + " points"
+                    : "")
             << ", max deviation " << formatFixed(out->stats.maxDeviation, 6) << " mm\n";
   return kExitOk;
 }

@@ -17,15 +17,15 @@ namespace kerf::converter {
 
 struct PointProfile {
   std::string name = "bp95d";
-  int decimals = 3;                    ///< 0..6
-  bool micrometres = false;            ///< integers in µm instead of mm with decimals
-  bool incremental = false;            ///< each point relative to the previous one
-  std::string separator = " ";         ///< between X and Y
-  bool lineNumbers = false;            ///< prefix each point with `lineNumberPrefix` + counter
+  int decimals = 3;             ///< 0..6
+  bool micrometres = false;     ///< integers in µm instead of mm with decimals
+  bool incremental = false;     ///< each point relative to the previous one
+  std::string separator = " ";  ///< between X and Y
+  bool lineNumbers = false;     ///< prefix each point with `lineNumberPrefix` + counter
   std::string lineNumberPrefix = "N";
   std::size_t lineNumberStart = 1;
-  std::string header;                  ///< written before the points (verbatim, may be empty)
-  std::string footer;                  ///< written after them
+  std::string header;                    ///< written before the points (verbatim, may be empty)
+  std::string footer;                    ///< written after them
   std::optional<std::size_t> maxPoints;  ///< the controller's capacity
 };
 
@@ -44,7 +44,7 @@ inline constexpr std::size_t kMaxPointsWritten = 50'000'000;
 
 struct PointRequest {
   geometry::Sampling sampling = geometry::Sampling::step(0.1);
-  std::optional<std::size_t> maxPoints;  ///< overrides the profile's; fits the step to it
+  std::optional<std::size_t> maxPoints;    ///< overrides the profile's; fits the step to it
   std::optional<std::uint32_t> startLine;  ///< begin at the cut move of this source line
 };
 
@@ -58,9 +58,8 @@ struct PointOutput {
 
 /// Builds the point file. Returns nothing (with an error in diags) when it cannot: no cut
 /// moves, a capacity no sampling can meet, an unknown start line.
-std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile* source,
-                                      const PointProfile& profile, const PointRequest& request,
-                                      Diagnostics& diags);
+std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile* source, const PointProfile& profile,
+                                      const PointRequest& request, Diagnostics& diags);
 
 /// Fixed-decimal text of v, rounded to nearest, never "-0.000".
 std::string formatFixed(double v, int decimals);

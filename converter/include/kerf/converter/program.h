@@ -15,11 +15,11 @@
 namespace kerf::converter {
 
 struct Word {
-  char letter = 0;          ///< upper case A-Z
-  bool hasPoint = false;    ///< the number was written with a decimal point
+  char letter = 0;           ///< upper case A-Z
+  bool hasPoint = false;     ///< the number was written with a decimal point
   std::uint16_t length = 0;  ///< bytes of the whole word in the source (letter + number)
   std::uint32_t offset = 0;  ///< byte offset of the letter
-  double value = 0.0;       ///< as written (no unit conversion)
+  double value = 0.0;        ///< as written (no unit conversion)
 
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
 };
@@ -49,8 +49,8 @@ struct Program {
   std::vector<Word> words;
   std::vector<Block> blocks;  ///< only blocks with at least one word
   std::vector<Setting> settings;
-  bool anyDecimalPoint = false;  ///< some coordinate word was written with a decimal point
-  double largestInteger = 0.0;   ///< largest |value| of a length word written without a point
+  bool anyDecimalPoint = false;          ///< some coordinate word was written with a decimal point
+  double largestInteger = 0.0;           ///< largest |value| of a length word written without a point
   std::uint32_t largestIntegerWord = 0;  ///< index of that word in words
 
   [[nodiscard]] std::span<const Word> wordsOf(const Block& b) const {

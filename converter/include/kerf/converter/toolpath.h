@@ -24,17 +24,17 @@ struct Move {
   // per-move optional would cost 88 bytes on every move of every program, so its storage is
   // left to that change.
   geometry::Segment lower;
-  std::uint32_t block = 0;                 ///< index into Program::blocks
-  std::uint32_t line = 0;                  ///< 1-based source line of that block
-  SourceSpan span;                         ///< the block's text
+  std::uint32_t block = 0;  ///< index into Program::blocks
+  std::uint32_t line = 0;   ///< 1-based source line of that block
+  SourceSpan span;          ///< the block's text
   // How the geometry followed from the words (for `kerf explain`).
   CentreForm centreForm = CentreForm::None;
-  double programmedRadius = 0.0;             ///< signed R as programmed, mm
+  double programmedRadius = 0.0;               ///< signed R as programmed, mm
   geometry::Vec2 programmedCentreWords{0, 0};  ///< I J as programmed, mm
-  double radiusError = 0.0;                  ///< |end - centre| - |start - centre|, mm
-  double feed = 0.0;                         ///< mm/min (0: none programmed)
+  double radiusError = 0.0;                    ///< |end - centre| - |start - centre|, mm
+  double feed = 0.0;                           ///< mm/min (0: none programmed)
   WireOffset wireOffset = WireOffset::Off;
-  std::uint16_t callDepth = 0;               ///< 0 in the main program
+  std::uint16_t callDepth = 0;  ///< 0 in the main program
 
   [[nodiscard]] bool isCut() const { return kind != MoveKind::Rapid; }
 };
@@ -43,9 +43,9 @@ enum class LengthUnit : std::uint8_t { Millimetre, Inch };
 
 struct Toolpath {
   std::vector<Move> moves;
-  geometry::Vec2 start{0, 0};   ///< where the wire is before the first move
+  geometry::Vec2 start{0, 0};                       ///< where the wire is before the first move
   LengthUnit programUnit = LengthUnit::Millimetre;  ///< the last G20/G21 in force
-  bool endedProperly = false;  ///< an M02 or M30 was reached
+  bool endedProperly = false;                       ///< an M02 or M30 was reached
   std::vector<Setting> settings;
 };
 

@@ -43,9 +43,9 @@ struct SelfIntersectionOptions {
 };
 
 struct SelfIntersectionResult {
-  std::vector<Contact> contacts;    ///< sorted by (first, second)
-  std::size_t candidatePairs = 0;   ///< pairs whose boxes overlapped (tested exactly)
-  bool truncated = false;           ///< maxContacts was reached
+  std::vector<Contact> contacts;   ///< sorted by (first, second)
+  std::size_t candidatePairs = 0;  ///< pairs whose boxes overlapped (tested exactly)
+  bool truncated = false;          ///< maxContacts was reached
 };
 
 /// Every place where the path meets itself other than at shared vertices: two segments that meet

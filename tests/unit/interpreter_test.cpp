@@ -52,27 +52,31 @@ TEST(interpreter, integer_micrometres) {
 }
 
 TEST(interpreter, arc_centre_modes) {
-  const char* text = "G92 X10. Y0\nG03 X0 Y10. I%s J%s\nM02\n";
-  char buf[128];
-  std::snprintf(buf, sizeof buf, text, "-10.", "0");
-  auto inc = run(buf);
-  ASSERT_FALSE(inc->diags.hasErrors());
-  EXPECT_NEAR(inc->path().moves[0].lower.centre.norm(), 0, kEps);
-  InterpreterOptions rev;
-  rev.arcCentre = ArcCentreMode::Reversed;
-  std::snprintf(buf, sizeof buf, text, "10.", "0");
-  auto r = run(buf, rev);
-  ASSERT_FALSE(r->diags.hasErrors());
-  EXPECT_NEAR(r->path().moves[0].lower.centre.norm(), 0, kEps);
-  InterpreterOptions abs;
-  abs.arcCentre = ArcCentreMode::Absolute;
-  std::snprintf(buf, sizeof buf, text, "0", "0");
-  auto a = run(buf, abs);
-  ASSERT_FALSE(a->diags.hasErrors());
-  EXPECT_NEAR(a->path().moves[0].lower.centre.norm(), 0, kEps);
-  // The wrong convention is caught as an end point off the circle, with a hint.
-  auto wrong = run(buf);
-  EXPECT_TRUE(wrong->hasCode(Code::ArcEndOffCircle) || wrong->hasCode(Code::ZeroRadius));
+  // The same quarter circle about the origin, from (10, 0) to (0, 10), with I J written three ways.
+  struct Case {
+    ArcCentreMode mode;
+    const char* ij;
+    CentreForm form;
+  };
+  for (const Case c : {Case{ArcCentreMode::Incremental, "I-10. J0", CentreForm::Incremental},
+                       Case{ArcCentreMode::Reversed, "I10. J0", CentreForm::Reversed},
+                       Case{ArcCentreMode::Absolute, "I0 J0", CentreForm::Absolute}}) {
+    SCOPED_TRACE(c.ij);
+    InterpreterOptions o;
+    o.arcCentre = c.mode;
+    auto r = run(std::string("G92 X10. Y0\nG03 X0 Y10. ") + c.ij + "\nM02\n", o);
+    ASSERT_FALSE(r->diags.hasErrors());
+    EXPECT_NEAR(r->path().moves[0].lower.centre.norm(), 0, kEps);
+    EXPECT_EQ(r->path().moves[0].centreForm, c.form);
+  }
+  // The wrong convention is caught: absolute centre words read as incremental put the centre on
+  // the start point.
+  auto wrong = run("G92 X10. Y0\nG03 X0 Y10. I0 J0\nM02\n");
+  EXPECT_TRUE(wrong->hasCode(Code::ZeroRadius));
+  // Reversed words read as incremental: end point 14 mm off the circle, with the hint.
+  auto reversed = run("G92 X10. Y0\nG03 X0 Y10. I10. J0\nM02\n");
+  ASSERT_TRUE(reversed->hasCode(Code::ArcEndOffCircle));
+  EXPECT_NE(reversed->diags.all()[0].help.find("--arc-centre"), std::string::npos);
 }
 
 TEST(interpreter, full_circle_from_centre_words) {

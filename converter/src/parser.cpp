@@ -328,6 +328,12 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags) {
   const std::string_view text = source.text();
   program.words.reserve(text.size() / 6);
   program.blocks.reserve(text.size() / 24);
+  // A NUL byte near the start means a binary file, not NC text: one diagnostic, not thousands.
+  if (const std::size_t nul = text.substr(0, 4096).find('\0'); nul != std::string_view::npos) {
+    diags.error(Code::UnexpectedCharacter, &source, {static_cast<std::uint32_t>(nul), 1},
+                "the file contains NUL bytes: it is not an NC text file");
+    return program;
+  }
   LineParser parser(source, program, diags);
   std::size_t pos = 0;
   std::uint32_t line = 1;

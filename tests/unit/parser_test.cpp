@@ -95,6 +95,27 @@ TEST(parser, one_error_per_block_and_parsing_goes_on) {
   EXPECT_FALSE(p.blocks[1].hasError);
 }
 
+TEST(diagnostics, long_lines_are_shown_as_a_window_around_the_column) {
+  const std::string line = "G01 X1. (" + std::string(5000, 'a') + ") W5";
+  SourceFile src("p.nc", line + "\n");
+  Diagnostics d;
+  parseProgram(src, d);
+  ASSERT_EQ(d.errorCount(), 1u);
+  const std::string text = formatDiagnostic(d.all()[0]);
+  EXPECT_LT(text.size(), 400u);
+  EXPECT_NE(text.find("...aaaa"), std::string::npos);
+  // The caret still sits under the W.
+  const auto lines = [&] {
+    std::vector<std::string> v;
+    std::size_t at = 0;
+    for (std::size_t nl; (nl = text.find('\n', at)) != std::string::npos; at = nl + 1)
+      v.push_back(text.substr(at, nl - at));
+    return v;
+  }();
+  ASSERT_GE(lines.size(), 3u);
+  EXPECT_EQ(lines[1][lines[2].find('^')], 'W');
+}
+
 TEST(parser, random_bytes_never_crash_and_always_terminate) {
   std::mt19937 rng(99);
   std::uniform_int_distribution<int> byte(0, 255), len(0, 400);

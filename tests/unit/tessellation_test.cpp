@@ -102,6 +102,15 @@ TEST(tessellation, mean_relative_error_closed_form_matches_numeric_average) {
   }
 }
 
+TEST(tessellation, mean_relative_error_is_continuous_and_positive_for_tiny_chords) {
+  // Either side of the switch to the series, and far below it, where the closed form cancelled.
+  EXPECT_NEAR(chordMeanRelativeError(1e-2 * (1 - 1e-12)), chordMeanRelativeError(1e-2), 1e-12);
+  for (double span : {1e-11, 1e-8, 1e-5, 1e-3}) {
+    EXPECT_GT(chordMeanRelativeError(span), 0.0) << span;
+    EXPECT_NEAR(chordMeanRelativeError(span) / (span * span / 12), 1.0, 1e-6) << span;
+  }
+}
+
 TEST(tessellation, lines_add_only_their_end_point) {
   const std::vector<Segment> path = {Segment::line({0, 0}, {10, 0}), Segment::line({10, 0}, {10, 10})};
   std::vector<Vec2> pts;

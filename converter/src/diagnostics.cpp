@@ -36,9 +36,6 @@ void Diagnostics::error(Code code, const SourceFile* src, SourceSpan span, std::
 void Diagnostics::warning(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help) {
   report({Severity::Warning, code, src, span, std::move(message), std::move(help), std::nullopt, std::nullopt});
 }
-void Diagnostics::note(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help) {
-  report({Severity::Note, code, src, span, std::move(message), std::move(help), std::nullopt, std::nullopt});
-}
 
 void Diagnostics::sortByPosition() {
   std::stable_sort(items_.begin(), items_.end(), [](const Diagnostic& a, const Diagnostic& b) {

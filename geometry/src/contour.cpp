@@ -88,16 +88,4 @@ ClosureReport analyseClosure(std::span<const Segment> path, double tol) {
   return report;
 }
 
-double pathLength(std::span<const Segment> path) {
-  double total = 0.0;
-  for (const Segment& s : path) total += s.length();
-  return total;
-}
-
-Box pathBounds(std::span<const Segment> path) {
-  Box b;
-  for (const Segment& s : path) b.add(s.bounds());
-  return b;
-}
-
 }  // namespace kerf::geometry

@@ -106,9 +106,6 @@ class Diagnostics {
   void report(Diagnostic d);
   void error(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
   void warning(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
-  void note(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
-  /// How many diagnostics are kept (the rest are counted).
-  void setCap(std::size_t cap) { cap_ = cap; }
 
   [[nodiscard]] const std::vector<Diagnostic>& all() const { return items_; }
   [[nodiscard]] std::size_t errorCount() const { return errors_; }

@@ -1,4 +1,4 @@
-// Whole-path measures: length, bounds, closure.
+// Whole-path measures: closure.
 #pragma once
 
 #include "kerf/geometry/segment.h"
@@ -20,10 +20,5 @@ struct ClosureReport {
 /// lead-out: any segment end that returns to an earlier vertex (within tol) closes one.
 ClosureReport analyseClosure(std::span<const Segment> path, double tol);
 
-/// Sum of segment lengths, mm.
-double pathLength(std::span<const Segment> path);
-
-/// Bounding box of the exact geometry.
-Box pathBounds(std::span<const Segment> path);
 
 }  // namespace kerf::geometry

@@ -242,7 +242,13 @@ class Interpreter {
         continue;
       }
       if (w.letter == 'M') {
-        if (bw.mCount < bw.m.size()) bw.m[bw.mCount++] = &w;
+        if (bw.mCount == bw.m.size()) {
+          diags_.error(Code::TooManyMCodes, src_, w.span(),
+                       "more than " + std::to_string(bw.m.size()) + " M codes in one block");
+          bw.bad = true;
+          continue;
+        }
+        bw.m[bw.mCount++] = &w;
         continue;
       }
       bw.letter[static_cast<std::size_t>(w.letter - 'A')] = &w;
@@ -302,7 +308,7 @@ class Interpreter {
       tolerance_ = inch_ ? geometry::ArcTolerance::forInch() : geometry::ArcTolerance{};
     }
     // Wire offset with D/H register
-    if (const Word* o = bw.group(Group::Offset)) executeWireOffset(bw, *o, block);
+    if (const Word* o = bw.group(Group::Offset)) executeWireOffset(bw, *o);
     // Distance mode
     if (bw.group(Group::Distance)) incremental_ = bw.code(Group::Distance) == 910;
     // Work offset: select only; the values live in the controller.
@@ -356,7 +362,7 @@ class Interpreter {
     return Flow::Continue;
   }
 
-  void executeWireOffset(const BlockWords& bw, const Word& o, const Block& block) {
+  void executeWireOffset(const BlockWords& bw, const Word& o) {
     const int code = bw.code(Group::Offset);
     wireOffset_ = code == 400 ? WireOffset::Off : code == 410 ? WireOffset::Left : WireOffset::Right;
     if (code == 400) return;
@@ -386,7 +392,6 @@ class Interpreter {
                      "wire offset " + gName(code) + " (" + what +
                          ") is read but not applied yet: geometry and pictures show the programmed contour");
     }
-    (void)block;
   }
 
   /// Returns false when the block's motion failed (the diagnostic is reported).
@@ -406,7 +411,7 @@ class Interpreter {
       return false;
     }
     const Vec2 start = position_;
-    Vec2 endProgram = incremental_ ? Vec2(position_ + shift_) : Vec2(position_ + shift_);
+    Vec2 endProgram = position_ + shift_;  // in program coordinates; unwritten axes stay
     if (const Word* x = bw['X']) endProgram.x() = incremental_ ? endProgram.x() + length(*x) : length(*x);
     if (const Word* y = bw['Y']) endProgram.y() = incremental_ ? endProgram.y() + length(*y) : length(*y);
     const Vec2 end = endProgram - shift_;

@@ -234,10 +234,8 @@ class LineParser {
       // Skip the number that follows, if any, so one bad word is one diagnostic.
       const NumberScan n = scanNumber(text_, i);
       const std::size_t stop = n.status == NumberScan::Missing ? start + 1 : n.end;
-      const bool looks3B =
-          letter == 'B' && text_.substr(block.offset, end - block.offset).find("GX") != std::string_view::npos;
       error(block, Code::UnknownWord, start, stop - start, std::string("unknown word letter '") + letter + "'",
-            looks3B || letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code" : std::string{});
+            letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code" : std::string{});
       return std::max(stop, start + 1);
     }
     const NumberScan n = scanNumber(text_, i);

@@ -183,8 +183,10 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
 
   PointOutput out;
   out.sampling = request.sampling;
+  std::size_t planned = geometry::samplePath(path.segments, out.sampling, nullptr).points;
   const std::optional<std::size_t> capacity = request.maxPoints ? request.maxPoints : profile.maxPoints;
-  if (capacity) {
+  // Keep the requested sampling when it fits; otherwise the finest one that does.
+  if (capacity && planned > *capacity) {
     const geometry::CapacityFit fit = geometry::fitToCapacity(path.segments, *capacity, request.sampling.mode);
     if (!fit.fits) {
       diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
@@ -193,14 +195,10 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
                       " the controller holds");
       return std::nullopt;
     }
-    // Keep the requested sampling when it already fits; otherwise the finest one that fits.
-    const std::size_t requested = geometry::samplePath(path.segments, request.sampling, nullptr).points;
-    if (requested > *capacity) {
-      out.sampling = fit.sampling;
-      out.fitted = true;
-    }
+    out.sampling = fit.sampling;
+    out.fitted = true;
+    planned = fit.points;
   }
-  const std::size_t planned = geometry::samplePath(path.segments, out.sampling, nullptr).points;
   if (planned > kMaxPointsWritten) {
     diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
                 "the step gives " + std::to_string(planned) + " points, more than Kerf writes (" +

@@ -77,7 +77,6 @@ Segment Segment::reversed() const {
   Segment s = *this;
   s.start = end;
   s.end = start;
-  s.startAngle = startAngle + sweep;
   s.sweep = -sweep;
   // The radius is defined by the start point; keep the circle, re-anchor on the new start.
   s.radius = (s.start - centre).norm();

@@ -42,10 +42,7 @@ ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
     plan.full = static_cast<std::size_t>(whole);
     plan.rest = std::max(0.0, sweep - whole * plan.span);
     if (plan.rest <= 1e-9 * plan.span) plan.rest = 0.0;
-    if (plan.full == 0) {  // the whole arc is shorter than one step
-      plan.full = 0;
-      plan.rest = sweep;
-    }
+    if (plan.full == 0) plan.rest = sweep;  // the whole arc is shorter than one step
   } else {
     const double maxSpan = toleranceAngle(sampling.value, arc.radius);
     plan.full = static_cast<std::size_t>(std::max(1.0, std::ceil(sweep / maxSpan - 1e-9)));

@@ -30,6 +30,7 @@ enum class Code : std::uint16_t {
   UnexpectedCharacter = 106,
   UnknownWord = 107,
   RepeatedWord = 108,
+  TooManyMCodes = 111,
   NestedComment = 109,
   MalformedSetting = 110,
   // Words and modal state

@@ -20,5 +20,4 @@ struct ClosureReport {
 /// lead-out: any segment end that returns to an earlier vertex (within tol) closes one.
 ClosureReport analyseClosure(std::span<const Segment> path, double tol);
 
-
 }  // namespace kerf::geometry

@@ -4,16 +4,23 @@
 #include "kerf/converter/summary.h"
 #include "kerf/geometry/contour.h"
 #include "kerf/geometry/intersection.h"
+#include "kerf/geometry/ruled_surface.h"
 
+#include <cmath>
+#include <set>
 #include <string>
+#include <utility>
 
 namespace kerf::converter {
 namespace {
 
+constexpr double kDegrees = 180.0 / geometry::kPi;
+
 std::string at(const geometry::Vec2& p) { return "(" + formatFixed(p.x(), 3) + ", " + formatFixed(p.y(), 3) + ")"; }
+std::string deg(double radians) { return formatFixed(radians * kDegrees, 3) + "°"; }
 
 Diagnostic finding(Severity sev, Code code, const SourceFile* src, const Move& move, std::size_t moveIndex,
-                   const geometry::Vec2& p, std::string message, std::string help = {}) {
+                   const geometry::Vec3& p, std::string message, std::string help = {}) {
   Diagnostic d;
   d.severity = sev;
   d.code = code;
@@ -22,9 +29,11 @@ Diagnostic finding(Severity sev, Code code, const SourceFile* src, const Move& m
   d.message = std::move(message);
   d.help = std::move(help);
   d.move = moveIndex;
-  d.point = geometry::Vec3(p.x(), p.y(), 0.0);
+  d.point = p;
   return d;
 }
+
+geometry::Vec3 at3(const geometry::Vec2& p, double z) { return {p.x(), p.y(), z}; }
 
 /// A lead-out over the lead-in: the later move runs back along the earlier one, in the opposite
 /// direction, and ends where the earlier one started (the start hole). The kerf there is open
@@ -34,9 +43,152 @@ bool isRetrace(const geometry::Segment& earlier, const geometry::Segment& later,
   return c.opposite && (later.end - earlier.start).norm() <= tol;
 }
 
+using MovePairs = std::set<std::pair<std::size_t, std::size_t>>;
+
+/// One plane's contour: the segments of the cut moves in order and each one's move.
+struct Contour {
+  std::vector<geometry::Segment> segments;
+  std::vector<std::size_t> moveIndex;
+  const char* name = "the cut path";  ///< how messages name it
+  double z = 0.0;
+};
+
+/// Self-intersection of one contour, exact on lines and arcs. The pairs found go to seen.
+void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const SourceFile* src,
+                  const CheckOptions& options, Diagnostics& diags, MovePairs& seen) {
+  const auto& moves = toolpath.moves;
+  geometry::SelfIntersectionOptions so;
+  so.tolerance = options.tolerance;
+  so.closed = closed;
+  so.maxContacts = options.maxContacts;
+  const geometry::SelfIntersectionResult result = geometry::findSelfIntersections(c.segments, so);
+  const std::string name = c.name;
+  for (const geometry::Contact& x : result.contacts) {
+    const std::size_t mi = c.moveIndex[x.first], mj = c.moveIndex[x.second];
+    seen.insert({mi, mj});
+    const Move& later = moves[mj];
+    const std::string other = "line " + std::to_string(moves[mi].line);
+    const geometry::Vec3 p = at3(x.point, c.z);
+    switch (x.kind) {
+      case geometry::ContactKind::Crossing:
+        diags.report(finding(Severity::Error, Code::PathCrossesItself, src, later, mj, p,
+                             name + " crosses itself at " + at(x.point) + ": this move crosses the move on " + other));
+        break;
+      case geometry::ContactKind::Touch:
+        diags.report(finding(Severity::Error, Code::PathTouchesItself, src, later, mj, p,
+                             name + " touches itself at " + at(x.point) + ": this move meets the move on " + other));
+        break;
+      case geometry::ContactKind::Overlap:
+        if (isRetrace(c.segments[x.first], c.segments[x.second], x, options.tolerance)) {
+          diags.report(finding(Severity::Note, Code::PathRetraces, src, later, mj, p,
+                               "the wire leaves along its way in (" + other + "): a lead-out over the lead-in"));
+        } else if (x.adjacent && x.second == x.first + 1) {
+          diags.report(finding(Severity::Error, Code::PathOverlapsItself, src, later, mj, p,
+                               "this move folds back over the previous one (" + other + ") near " + at(x.point) +
+                                   (c.z != 0.0 || name != "the cut path" ? std::string(" on ") + name : "")));
+        } else {
+          diags.report(
+              finding(Severity::Error, Code::PathOverlapsItself, src, later, mj, p,
+                      name + " runs over itself near " + at(x.point) + ": this move overlaps the move on " + other));
+        }
+        break;
+    }
+  }
+  if (result.truncated) {
+    diags.warning(Code::TooManyDiagnostics, src, SourceSpan::wholeFile(),
+                  "stopped after " + std::to_string(options.maxContacts) + " self-intersections of " + name);
+  }
+}
+
+/// The surface checks of a taper program whose heights are known.
+void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, const SourceFile* src,
+                  const CheckOptions& options, Diagnostics& diags, const SurfaceMeasures& m, MovePairs& seen) {
+  const auto& moves = toolpath.moves;
+  const geometry::Planes& planes = toolpath.heights.planes;
+  const double limit = options.maxTaperDegrees / kDegrees;
+  for (std::size_t k = 0; k < path.moveIndex.size(); ++k) {
+    const std::size_t i = path.moveIndex[k];
+    const geometry::Segment& lo = moves[i].lower;
+    const geometry::Segment& up = toolpath.upper[i];
+    const geometry::PatchMeasures& pm = m.patches[i];
+    if (pm.maxSlope.value > limit) {
+      diags.report(finding(Severity::Error, Code::TaperTooSteep, src, moves[i], i,
+                           at3(lo.pointAt(pm.maxSlope.t), planes.lower),
+                           "the wire leans " + deg(pm.maxSlope.value) + " from vertical here, beyond the machine's " +
+                               formatFixed(options.maxTaperDegrees, 3) + "°",
+                           "the limit is --max-taper (default 30°)"));
+    }
+    if (options.uvRange) {
+      const geometry::Extreme& e = pm.maxOffsetX.value >= pm.maxOffsetY.value ? pm.maxOffsetX : pm.maxOffsetY;
+      if (e.value > *options.uvRange)
+        diags.report(finding(Severity::Error, Code::UvOutOfRange, src, moves[i], i, at3(lo.pointAt(e.t), planes.lower),
+                             "the upper guide is " + formatFixed(e.value, 3) + " mm from the lower one along " +
+                                 (&e == &pm.maxOffsetX ? "X" : "Y") + ", beyond the U/V range " +
+                                 formatFixed(*options.uvRange, 3) + " mm"));
+    }
+    const geometry::TwistMeasure tw = geometry::measureTwist(lo, up);
+    if (tw.defined && tw.maxAngle > geometry::kPi / 2 + 1e-9) {
+      diags.report(finding(Severity::Error, Code::PatchTwisted, src, moves[i], i,
+                           geometry::surfacePoint(lo, up, planes, tw.t, 0.5),
+                           "the upper contour runs against the lower one here: their directions differ by " +
+                               deg(tw.maxAngle) + ", so the wire turns over and the surface twists through itself"));
+    }
+  }
+  // Horizontal sections between the planes, each tested exactly.
+  MovePairs reported;
+  const int levels = std::max(2, options.surfaceLevels);
+  for (int level = 1; level < levels; ++level) {
+    const double s = static_cast<double>(level) / levels;
+    Contour section;
+    section.z = planes.lower + s * planes.height();
+    for (std::size_t k = 0; k < path.moveIndex.size(); ++k) {
+      const std::size_t i = path.moveIndex[k];
+      const std::size_t before = section.segments.size();
+      geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, section.segments);
+      section.moveIndex.insert(section.moveIndex.end(), section.segments.size() - before, k);
+    }
+    geometry::SelfIntersectionOptions so;
+    so.tolerance = options.tolerance;
+    so.closed = closed;
+    so.maxContacts = options.maxContacts;
+    const geometry::SelfIntersectionResult r = geometry::findSelfIntersections(section.segments, so);
+    const std::size_t n = path.moveIndex.size();
+    for (const geometry::Contact& x : r.contacts) {
+      const std::size_t ka = section.moveIndex[x.first], kb = section.moveIndex[x.second];
+      const std::size_t mi = path.moveIndex[ka], mj = path.moveIndex[kb];
+      if (seen.count({mi, mj}) || reported.count({mi, mj})) continue;
+      if (x.kind == geometry::ContactKind::Overlap &&
+          isRetrace(section.segments[x.first], section.segments[x.second], x, options.tolerance))
+        continue;
+      reported.insert({mi, mj});
+      const bool neighbours = kb == ka + 1 || (closed && ka == 0 && kb + 1 == n);
+      const geometry::Vec3 p = at3(x.point, section.z);
+      const std::string where = " at z " + formatFixed(section.z, 3) + ", " + at(x.point);
+      if (ka == kb) {
+        diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
+                             "the wire crosses its own path inside this move" + where +
+                                 ": two positions of the wire meet between the planes"));
+      } else if (neighbours && x.kind == geometry::ContactKind::Overlap) {
+        diags.report(finding(
+            Severity::Error, Code::SurfaceFold, src, moves[mj], mj, p,
+            "the surface folds back over the previous move (line " + std::to_string(moves[mi].line) + ")" + where));
+      } else if (neighbours) {
+        diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
+                             "the wire of this move crosses the wire of the previous move (line " +
+                                 std::to_string(moves[mi].line) + ")" + where));
+      } else {
+        diags.report(finding(Severity::Error, Code::SurfaceSelfIntersection, src, moves[mj], mj, p,
+                             "the surface the wire sweeps meets itself" + where +
+                                 ": this move meets the move on line " + std::to_string(moves[mi].line)));
+      }
+    }
+  }
+}
+
 }  // namespace
 
-void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options, Diagnostics& diags) {
+void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options, Diagnostics& diags,
+                   const SurfaceMeasures* measures) {
   const CutPath path = cutPath(toolpath);
   if (path.segments.empty()) {
     // With errors, those say why; alone, this says the program is empty of cuts.
@@ -46,11 +198,13 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
     return;
   }
   const auto& moves = toolpath.moves;
+  const bool taper = toolpath.isTaper();
+  const double zLower = taper ? toolpath.heights.planes.lower : 0.0;
 
   // Rapids between the first and the last cut.
   for (std::size_t i = path.moveIndex.front(); i < path.moveIndex.back(); ++i) {
     if (moves[i].isCut()) continue;
-    diags.report(finding(Severity::Warning, Code::RapidInsideCut, src, moves[i], i, moves[i].lower.end,
+    diags.report(finding(Severity::Warning, Code::RapidInsideCut, src, moves[i], i, at3(moves[i].lower.end, zLower),
                          "rapid move between cuts: a point-driven controller would cut along it",
                          "wire programs usually thread the wire again (M-code) at a new start hole"));
   }
@@ -59,51 +213,40 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   const geometry::ClosureReport closure = geometry::analyseClosure(path.segments, options.tolerance);
   if (!closure.loopFrom) {
     const Move& last = moves[path.moveIndex.back()];
-    diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(), last.lower.end,
+    diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(),
+                         at3(last.lower.end, zLower),
                          "the cut path never closes a loop: the part stays attached (the end is " +
                              formatFixed(closure.gap, 3) + " mm from the start)"));
   }
 
-  // Self-intersection, exact on lines and arcs.
-  geometry::SelfIntersectionOptions so;
-  so.tolerance = options.tolerance;
-  so.closed = closure.endsAtStart;
-  so.maxContacts = options.maxContacts;
-  const geometry::SelfIntersectionResult result = geometry::findSelfIntersections(path.segments, so);
-  for (const geometry::Contact& c : result.contacts) {
-    const std::size_t mi = path.moveIndex[c.first], mj = path.moveIndex[c.second];
-    const Move& later = moves[mj];
-    const std::string other = "line " + std::to_string(moves[mi].line);
-    switch (c.kind) {
-      case geometry::ContactKind::Crossing:
-        diags.report(
-            finding(Severity::Error, Code::PathCrossesItself, src, later, mj, c.point,
-                    "the cut path crosses itself at " + at(c.point) + ": this move crosses the move on " + other));
-        break;
-      case geometry::ContactKind::Touch:
-        diags.report(
-            finding(Severity::Error, Code::PathTouchesItself, src, later, mj, c.point,
-                    "the cut path touches itself at " + at(c.point) + ": this move meets the move on " + other));
-        break;
-      case geometry::ContactKind::Overlap:
-        if (isRetrace(path.segments[c.first], path.segments[c.second], c, options.tolerance)) {
-          diags.report(finding(Severity::Note, Code::PathRetraces, src, later, mj, c.point,
-                               "the wire leaves along its way in (" + other + "): a lead-out over the lead-in"));
-        } else if (c.adjacent && c.second == c.first + 1) {
-          diags.report(finding(Severity::Error, Code::PathOverlapsItself, src, later, mj, c.point,
-                               "this move folds back over the previous one (" + other + ") near " + at(c.point)));
-        } else {
-          diags.report(finding(
-              Severity::Error, Code::PathOverlapsItself, src, later, mj, c.point,
-              "the cut path runs over itself near " + at(c.point) + ": this move overlaps the move on " + other));
-        }
-        break;
-    }
+  MovePairs seen;
+  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower};
+  checkContour(lower, closure.endsAtStart, toolpath, src, options, diags, seen);
+  if (!taper) return;
+
+  Contour upper;
+  upper.name = "the upper contour";
+  upper.z = toolpath.heights.known ? toolpath.heights.planes.upper : 0.0;
+  upper.moveIndex = path.moveIndex;
+  for (std::size_t i : path.moveIndex) upper.segments.push_back(toolpath.upper[i]);
+  const geometry::ClosureReport upperClosure = geometry::analyseClosure(upper.segments, options.tolerance);
+  if (closure.loopFrom.has_value() != upperClosure.loopFrom.has_value()) {
+    const std::size_t i = path.moveIndex.back();
+    const bool lowerClosed = closure.loopFrom.has_value();
+    diags.report(
+        finding(Severity::Error, Code::ClosureMismatch, src, moves[i], i,
+                at3(lowerClosed ? upper.segments.back().end : moves[i].lower.end, lowerClosed ? upper.z : zLower),
+                std::string("the ") + (lowerClosed ? "lower" : "upper") + " contour closes a loop but the " +
+                    (lowerClosed ? "upper" : "lower") + " one does not (it ends " +
+                    formatFixed(lowerClosed ? upperClosure.gap : closure.gap, 3) +
+                    " mm from its start): the wire cannot release the part on both planes"));
   }
-  if (result.truncated) {
-    diags.warning(Code::TooManyDiagnostics, src, SourceSpan::wholeFile(),
-                  "stopped after " + std::to_string(options.maxContacts) + " self-intersections");
-  }
+  checkContour(upper, upperClosure.endsAtStart, toolpath, src, options, diags, seen);
+  if (!toolpath.heights.known) return;
+  const SurfaceMeasures own =
+      measures && measures->patches.size() == moves.size() ? SurfaceMeasures{} : measureSurface(toolpath);
+  const SurfaceMeasures& m = own.patches.empty() ? *measures : own;
+  checkSurface(toolpath, path, closure.endsAtStart && upperClosure.endsAtStart, src, options, diags, m, seen);
 }
 
 }  // namespace kerf::converter

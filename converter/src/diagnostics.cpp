@@ -37,6 +37,10 @@ void Diagnostics::warning(Code code, const SourceFile* src, SourceSpan span, std
   report({Severity::Warning, code, src, span, std::move(message), std::move(help), std::nullopt, std::nullopt});
 }
 
+void Diagnostics::note(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help) {
+  report({Severity::Note, code, src, span, std::move(message), std::move(help), std::nullopt, std::nullopt});
+}
+
 void Diagnostics::sortByPosition() {
   std::stable_sort(items_.begin(), items_.end(), [](const Diagnostic& a, const Diagnostic& b) {
     // Not tied to a place first (options, whole-file findings), then by position.

@@ -120,7 +120,9 @@ class LineParser {
       block.blockDelete = true;
       ++i;
     }
-    std::uint32_t seen = 0;  // letters already in this block (bit per letter)
+    std::uint32_t seen = 0;  // letters already on this side of the block (bit per letter)
+    upperStarted_ = false;
+    sawCoordinate_ = false;
     while (i < end) {
       const char c = text_[i];
       if (isBlank(c)) {
@@ -142,6 +144,7 @@ class LineParser {
           blockEnd = end;
           break;
         }
+        readHeightComment(i, close, line);
         i = close + 1;
         continue;
       }
@@ -149,11 +152,17 @@ class LineParser {
         blockEnd = i;
         break;
       }
-      if (c == ':') {
-        error(block, Code::TaperWordsNotSupported, i, 1,
-              "':' separates lower and upper contours (Sodick 4-axis taper), which this version does not read");
-        blockEnd = end;
-        break;
+      if (c == ':') {  // Sodick: the lower contour before, the upper after (FORMATS.md §2)
+        if (upperStarted_) {
+          error(block, Code::UnexpectedCharacter, i, 1,
+                block.colon ? "a second ':' in one block" : "':' after the upper contour's words have begun");
+          blockEnd = end;
+          break;
+        }
+        startUpper(block, seen);
+        block.colon = true;
+        ++i;
+        continue;
       }
       if (!isLetter(c)) {
         if (c == ')') {
@@ -183,10 +192,57 @@ class LineParser {
     while (last > block.offset && isBlank(text_[last - 1])) --last;
     block.length = static_cast<std::uint32_t>(last - block.offset);
     block.wordCount = static_cast<std::uint32_t>(program_.words.size()) - block.firstWord;
+    if (!upperStarted_) block.upperFrom = block.wordCount;
     if (block.wordCount > 0 || block.hasError) program_.blocks.push_back(block);
   }
 
  private:
+  void startUpper(Block& block, std::uint32_t& seen) {
+    upperStarted_ = true;
+    block.upperFrom = static_cast<std::uint32_t>(program_.words.size()) - block.firstWord;
+    seen = 0;  // the upper side has its own X Y I J R
+  }
+
+  /// LinuxCNC's `(AXIS,XY_Z_POS,z)` and `(AXIS,UV_Z_POS,z)`: the heights of the two planes.
+  void readHeightComment(std::size_t open, std::size_t close, std::uint32_t line) {
+    std::string inner;
+    for (std::size_t k = open + 1; k < close; ++k)
+      if (!isBlank(text_[k])) inner += upper(text_[k]);
+    HeightWord h;
+    if (inner.starts_with("AXIS,XY_Z_POS,"))
+      h.kind = HeightWord::Kind::LinuxCncXyPlane;
+    else if (inner.starts_with("AXIS,UV_Z_POS,"))
+      h.kind = HeightWord::Kind::LinuxCncUvPlane;
+    else
+      return;
+    const std::string number = inner.substr(14);
+    const NumberScan n = scanNumber(number, 0);
+    h.span = {static_cast<std::uint32_t>(open), static_cast<std::uint32_t>(close + 1 - open)};
+    h.line = line;
+    if (n.status != NumberScan::Ok || n.end != number.size()) {
+      diags_.error(Code::ExpectedNumber, &src_, h.span, "the height in this AXIS comment is not a number");
+      return;
+    }
+    h.value = n.value;
+    program_.heights.push_back(h);
+  }
+
+  /// Sodick `TP<z>` (program plane) and `TN<z>` (lower plane).
+  bool tryHeightWord(Block& block, std::size_t start, std::size_t i, std::size_t end, std::size_t& next) {
+    if (i >= end || (upper(text_[i]) != 'P' && upper(text_[i]) != 'N')) return false;
+    const NumberScan n = scanNumber(text_, i + 1);
+    if (n.status != NumberScan::Ok) return false;
+    HeightWord h;
+    h.kind = upper(text_[i]) == 'P' ? HeightWord::Kind::SodickProgramPlane : HeightWord::Kind::SodickLowerPlane;
+    h.value = n.value;
+    h.hasPoint = n.hasPoint;
+    h.span = {static_cast<std::uint32_t>(start), static_cast<std::uint32_t>(n.end - start)};
+    h.line = block.line;
+    program_.heights.push_back(h);
+    next = n.end;
+    return true;
+  }
+
   void error(Block& block, Code code, std::size_t at, std::size_t length, std::string message, std::string help = {}) {
     block.hasError = true;
     diags_.error(code, &src_, {static_cast<std::uint32_t>(at), static_cast<std::uint32_t>(length)}, std::move(message),
@@ -238,6 +294,7 @@ class LineParser {
             letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code" : std::string{});
       return std::max(stop, start + 1);
     }
+    if (std::size_t next = 0; letter == 'T' && tryHeightWord(block, start, i, end, next)) return next;
     const NumberScan n = scanNumber(text_, i);
     if (n.status == NumberScan::Missing) {
       std::string read = i < end ? describeChar(text_[i]) : std::string("the end of the line");
@@ -285,6 +342,13 @@ class LineParser {
       error(block, Code::NumberOutOfRange, start, stop - start, "number is out of range (limit 1e9)");
       return stop;
     }
+    // The upper side of an xyuv-abs block starts at its first U/V word or at a second motion
+    // word after a coordinate (`G2 X Y I J G1 U V`); its I J R may repeat the lower side's.
+    if (!upperStarted_ &&
+        (letter == 'U' || letter == 'V' ||
+         (letter == 'G' && sawCoordinate_ && n.value >= 0 && n.value <= 3 && n.value == std::floor(n.value))))
+      startUpper(block, seen);
+    if (letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R') sawCoordinate_ = true;
     const std::uint32_t bit = 1u << (letter - 'A');
     if ((seen & bit) && letter != 'G' && letter != 'M') {
       error(block, Code::RepeatedWord, start, stop - start,
@@ -314,6 +378,8 @@ class LineParser {
   std::string_view text_;
   Program& program_;
   Diagnostics& diags_;
+  bool upperStarted_ = false;   ///< this block's upper side has begun
+  bool sawCoordinate_ = false;  ///< X Y I J R seen in this block
 };
 
 }  // namespace

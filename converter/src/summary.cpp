@@ -16,7 +16,56 @@ CutPath cutPath(const Toolpath& toolpath) {
   return path;
 }
 
-Summary summarize(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling) {
+SurfaceMeasures measureSurface(const Toolpath& toolpath) {
+  SurfaceMeasures m;
+  if (!toolpath.isTaper() || !toolpath.heights.known) return m;
+  const std::size_t n = toolpath.moves.size();
+  m.patches.resize(n);
+  m.areas.resize(n, 0.0);
+  const geometry::Planes& planes = toolpath.heights.planes;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!toolpath.moves[i].isCut()) continue;
+    m.patches[i] = geometry::measurePatch(toolpath.moves[i].lower, toolpath.upper[i], planes);
+    m.areas[i] = geometry::patchArea(toolpath.moves[i].lower, toolpath.upper[i], planes);
+  }
+  return m;
+}
+
+namespace {
+
+TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) {
+  constexpr double kDegrees = 180.0 / geometry::kPi;
+  TaperSummary t;
+  t.dialect = toolpath.dialect;
+  t.heights = toolpath.heights;
+  bool first = true;
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    const Move& move = toolpath.moves[i];
+    if (!move.isCut()) continue;
+    ++t.patches;
+    t.lowerLength += move.lower.length();
+    t.upperLength += toolpath.upper[i].length();
+    t.area += m.areas[i];
+    const geometry::PatchMeasures& p = m.patches[i];
+    if (first || p.maxSlope.value > t.maxSlopeDegrees / kDegrees) {
+      t.maxSlopeDegrees = p.maxSlope.value * kDegrees;
+      t.maxSlopeMove = i;
+      t.maxSlopeLine = move.line;
+    }
+    if (first || p.minSlope.value < t.minSlopeDegrees / kDegrees) {
+      t.minSlopeDegrees = p.minSlope.value * kDegrees;
+      t.minSlopeMove = i;
+      t.minSlopeLine = move.line;
+    }
+    first = false;
+  }
+  return t;
+}
+
+}  // namespace
+
+Summary summarize(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling,
+                  const SurfaceMeasures* measures) {
   Summary s;
   s.blocks = program.blocks.size();
   s.moves = toolpath.moves.size();
@@ -37,6 +86,13 @@ Summary summarize(const Program& program, const Toolpath& toolpath, const geomet
   s.sampling = sampling;
   const CutPath path = cutPath(toolpath);
   s.points = geometry::samplePath(path.segments, sampling, nullptr);
+  if (toolpath.isTaper() && toolpath.heights.known) {
+    if (measures && measures->patches.size() == toolpath.moves.size()) {
+      s.taper = summarizeTaper(toolpath, *measures);
+    } else {
+      s.taper = summarizeTaper(toolpath, measureSurface(toolpath));
+    }
+  }
   return s;
 }
 

@@ -39,7 +39,7 @@ enum class Code : std::uint16_t {
   ModalGroupConflict = 203,
   PlaneNotSupported = 204,
   WordIgnored = 205,
-  TaperWordsNotSupported = 206,
+  WordNotInDialect = 206,
   RadiusAndCentre = 207,
   DwellWithoutTime = 208,
   SetPositionWithoutAxis = 209,
@@ -48,6 +48,14 @@ enum class Code : std::uint16_t {
   NoMotionMode = 212,
   WorkOffsetIgnored = 213,
   BadFeed = 214,
+  // 4-axis taper: dialects, heights, pairing
+  DialectAmbiguous = 215,
+  DialectChosen = 216,
+  HeightsMissing = 217,
+  TaperAngleTooLarge = 218,
+  TaperOnArc = 219,
+  BlockCountMismatch = 220,
+  OffsetCollapses = 221,
   // Arcs
   ArcWithoutCentre = 301,
   RadiusTooSmall = 302,
@@ -73,12 +81,21 @@ enum class Code : std::uint16_t {
   PathOpen = 605,
   NothingCut = 606,
   RapidInsideCut = 607,
+  // Geometry of the ruled surface (4-axis taper)
+  TaperTooSteep = 650,
+  SurfaceSelfIntersection = 651,
+  WireCrossing = 652,
+  PatchTwisted = 653,
+  SurfaceFold = 654,
+  ClosureMismatch = 655,
+  UvOutOfRange = 656,
   // Numbers
   IntegerUnitSuspect = 701,
   // Emitters and options
   CapacityTooSmall = 801,
   ProfileError = 802,
   StartBlockNotFound = 803,
+  TaperFlattened = 804,
   TooManyDiagnostics = 899,
 };
 
@@ -107,6 +124,7 @@ class Diagnostics {
   void report(Diagnostic d);
   void error(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
   void warning(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
+  void note(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
 
   [[nodiscard]] const std::vector<Diagnostic>& all() const { return items_; }
   [[nodiscard]] std::size_t errorCount() const { return errors_; }

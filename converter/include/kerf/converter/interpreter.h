@@ -8,7 +8,10 @@
 //                  G70/71), wire offset (G40/41/42 with D/H), distance mode (G90/91), work offset
 //                  (G54-G59), set position (G92), motion (G00-G03), then program flow
 //                  (M00/M01, M98/M99, M02/M30)
-// and every move carries the block it came from.
+// and every move carries the block it came from. A 4-axis block has two sides (Block::upperFrom):
+// the lower side's words build Move::lower, the upper side's Toolpath::upper; taper-angle and
+// xyuv-rel programs get their upper (and, with a program plane above the lower plane, lower)
+// contours after the last block, once the plane heights are known.
 #pragma once
 
 #include "kerf/converter/diagnostics.h"
@@ -32,6 +35,14 @@ enum class ArcCentreMode : std::uint8_t {
 };
 
 struct InterpreterOptions {
+  /// The 4-axis dialect; nothing: detected from the words (dialect.h), with the choice reported.
+  std::optional<Dialect> dialect;
+  // Plane heights in mm (FORMATS.md §2); these override what the program says.
+  std::optional<double> lowerZ;     ///< --lower-z (default 0)
+  std::optional<double> upperZ;     ///< --upper-z
+  std::optional<double> thickness;  ///< --thickness: upper - lower
+  std::optional<double> programZ;   ///< --program-z: z of the programmed contour
+
   IntegerUnit integerUnit = IntegerUnit::Millimetre;
   ArcCentreMode arcCentre = ArcCentreMode::Incremental;
   std::optional<double> wireOffset;  ///< --offset, mm: for a bare G41/G42

@@ -5,6 +5,7 @@
 #include "kerf/geometry/tessellation.h"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace kerf::converter {
@@ -15,6 +16,26 @@ struct CutPath {
   std::vector<std::size_t> moveIndex;
 };
 CutPath cutPath(const Toolpath& toolpath);
+
+/// The measures of the ruled surface of a taper program, one entry per move (rapids too, so the
+/// index is the move's).
+struct SurfaceMeasures {
+  std::vector<geometry::PatchMeasures> patches;
+  std::vector<double> areas;  ///< mm^2
+};
+SurfaceMeasures measureSurface(const Toolpath& toolpath);
+
+/// What `kerf check` says about a taper part.
+struct TaperSummary {
+  Dialect dialect = Dialect::Plain;
+  PlaneHeights heights;
+  std::size_t patches = 0;  ///< cut moves
+  double maxSlopeDegrees = 0.0, minSlopeDegrees = 0.0;
+  std::size_t maxSlopeMove = 0, minSlopeMove = 0;
+  std::uint32_t maxSlopeLine = 0, minSlopeLine = 0;
+  double lowerLength = 0.0, upperLength = 0.0;  ///< mm, cut moves
+  double area = 0.0;                            ///< mm^2, cut moves
+};
 
 struct Summary {
   std::size_t blocks = 0;
@@ -27,9 +48,11 @@ struct Summary {
   double rapidLength = 0.0;  ///< mm
   geometry::Box bounds;      ///< of the cut path
   geometry::Sampling sampling;
-  geometry::PathSampleStats points;  ///< the cut path sampled at `sampling`
+  geometry::PathSampleStats points;   ///< the cut path sampled at `sampling`
+  std::optional<TaperSummary> taper;  ///< taper programs whose heights are known
 };
 
-Summary summarize(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling);
+Summary summarize(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling,
+                  const SurfaceMeasures* measures = nullptr);
 
 }  // namespace kerf::converter

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "kerf/converter/program.h"
+#include "kerf/geometry/ruled_surface.h"
 #include "kerf/geometry/segment.h"
 
 #include <cstdint>
@@ -19,10 +20,9 @@ enum class WireOffset : std::uint8_t { Off, Left, Right };
 
 struct Move {
   MoveKind kind = MoveKind::Line;
-  // The contour on the program plane (z = 0). The upper contour of 4-axis programs (DESIGN.md:
-  // Move {lower, upper | none}) is added with taper support; 2-axis moves carry none, and a
-  // per-move optional would cost 88 bytes on every move of every program, so its storage is
-  // left to that change.
+  // The contour on the lower plane. The upper contour of a 4-axis program (DESIGN.md: Move {lower,
+  // upper | none}) lives in Toolpath::upper, parallel to the moves, so 2-axis programs do not
+  // pay 80 bytes a move for it.
   geometry::Segment lower;
   std::uint32_t block = 0;  ///< index into Program::blocks
   std::uint32_t line = 0;   ///< 1-based source line of that block
@@ -35,11 +35,34 @@ struct Move {
   double feed = 0.0;                           ///< mm/min (0: none programmed)
   WireOffset wireOffset = WireOffset::Off;
   std::uint16_t callDepth = 0;  ///< 0 in the main program
+  float taperDegrees = 0.0f;    ///< taper-angle dialect: the angle in force, > 0 leaning left (G51)
 
   [[nodiscard]] bool isCut() const { return kind != MoveKind::Rapid; }
 };
 
 enum class LengthUnit : std::uint8_t { Millimetre, Inch };
+
+/// How a program gives its upper contour (FORMATS.md §2). Plain programs have none: the wire is
+/// vertical.
+enum class Dialect : std::uint8_t {
+  Plain,        ///< 2-axis: no upper contour
+  XyuvAbs,      ///< U V: the upper contour, absolute
+  XyuvRel,      ///< U V: upper minus lower; K L: lower centre to upper centre
+  SodickColon,  ///< `lower : upper`
+  TaperAngle,   ///< G51/G52 with A or T: the upper contour is an offset of the programmed one
+  TwoFile,      ///< lower and upper contours from two plain files, paired move by move
+};
+
+/// "plain", "xyuv-abs", "xyuv-rel", "sodick-colon", "taper-angle", "two-file".
+const char* dialectName(Dialect d);
+
+/// Where the heights of the planes came from.
+struct PlaneHeights {
+  geometry::Planes planes;  ///< lower and upper z, mm
+  double programZ = 0.0;    ///< z of the programmed contour (taper-angle, xyuv-rel), mm
+  bool known = false;       ///< both planes are known (a taper program needs them)
+  std::string source;       ///< "M101 P (line 3)", "--thickness", ...
+};
 
 struct Toolpath {
   std::vector<Move> moves;
@@ -47,6 +70,17 @@ struct Toolpath {
   LengthUnit programUnit = LengthUnit::Millimetre;  ///< the last G20/G21 in force
   bool endedProperly = false;                       ///< an M02 or M30 was reached
   std::vector<Setting> settings;
+
+  Dialect dialect = Dialect::Plain;
+  /// The upper contour, one segment per move (same index), or empty for a plain program.
+  std::vector<geometry::Segment> upper;
+  PlaneHeights heights;
+
+  [[nodiscard]] bool isTaper() const { return !upper.empty(); }
+  /// The upper segment of move i: the lower one where the wire is vertical.
+  [[nodiscard]] const geometry::Segment& upperOf(std::size_t i) const {
+    return upper.empty() ? moves[i].lower : upper[i];
+  }
 };
 
 }  // namespace kerf::converter

@@ -1,0 +1,31 @@
+// Which 4-axis dialect a program is written in (FORMATS.md §2), from the words present.
+#pragma once
+
+#include "kerf/converter/program.h"
+#include "kerf/converter/toolpath.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace kerf::converter {
+
+struct DialectDetection {
+  Dialect dialect = Dialect::Plain;
+  std::string reason;               ///< the evidence, e.g. "M101 P on line 3"
+  SourceSpan span;                  ///< where that evidence is
+  std::vector<Dialect> candidates;  ///< more than one: the words fit several dialects
+  [[nodiscard]] bool ambiguous() const { return candidates.size() > 1; }
+};
+
+/// Evidence, strongest first: ':' -> sodick-colon; G51/G52 -> taper-angle; G140-G142 ->
+/// sodick-colon; U/V outside G92 -> xyuv-abs when a block carries a second motion word or a
+/// second I J / R for the upper side, M100/M101 or an (AXIS,UV_Z_POS) comment; xyuv-rel when
+/// K/L appear with U/V or G92 carries I J (NCVC heights); both or neither: ambiguous.
+DialectDetection detectDialect(const Program& program);
+
+/// "auto" gives nothing; an unknown name gives nothing too (the caller checks the list).
+std::optional<Dialect> parseDialect(std::string_view name);
+
+}  // namespace kerf::converter

@@ -1,0 +1,96 @@
+// The ruled surface the wire sweeps, one patch per move.
+//
+// A patch joins a lower segment L (on z = planes.lower) and an upper segment U (on z =
+// planes.upper): the wire at parameter t in [0, 1] is the straight generator from L(t) to U(t),
+// with t proportional to arc length on each side (FORMATS.md §2). A point of the patch is
+//   P(t, s) = ((1 - s) L(t) + s U(t), lower + s H),   s in [0, 1], H = upper - lower.
+// Every evaluation here is exact; the extremes over t are exact where a closed form exists
+// (line paired with line) and sampled-and-refined otherwise (docs/geometry.md says which).
+#pragma once
+
+#include "kerf/geometry/segment.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace kerf::geometry {
+
+struct Planes {
+  double lower = 0.0;  ///< z of the lower contour, mm
+  double upper = 1.0;  ///< z of the upper contour, mm (> lower)
+  [[nodiscard]] double height() const { return upper - lower; }
+};
+
+Vec3 surfacePoint(const Segment& lower, const Segment& upper, const Planes& planes, double t, double s);
+
+/// Unit normal dP/dt x dP/ds (zero where the patch degenerates, e.g. an upper side of length 0
+/// at s = 1). For a counter-clockwise contour cut with a vertical wire it points outwards.
+Vec3 surfaceNormal(const Segment& lower, const Segment& upper, const Planes& planes, double t, double s);
+
+/// Slope of the wire at t: the angle between the generator and +z, radians.
+double slopeAt(const Segment& lower, const Segment& upper, const Planes& planes, double t);
+
+struct Extreme {
+  double value = 0.0;
+  double t = 0.0;
+};
+
+/// The measures of one patch that the checks and the report use.
+struct PatchMeasures {
+  Extreme minSlope, maxSlope;      ///< radians
+  Extreme maxOffsetX, maxOffsetY;  ///< largest |U(t) - L(t)| per axis, mm
+  bool exact = false;              ///< closed form (line with line); else sampled and refined
+};
+
+/// Sampled at kExtremeSamples points, each extreme refined by golden section to 1e-12 in t.
+inline constexpr int kExtremeSamples = 64;
+PatchMeasures measurePatch(const Segment& lower, const Segment& upper, const Planes& planes);
+
+/// Area of the patch, mm^2: Gauss-Legendre quadrature (5 x 5 points per piece, arcs split into
+/// pieces of at most pi/8), exact for planar patches and within 1e-9 relative on the others.
+double patchArea(const Segment& lower, const Segment& upper, const Planes& planes);
+
+/// How far the upper direction of travel turns away from the lower one over the patch. The
+/// tangent angles of lines and arcs are linear in t, so the largest angle is found exactly.
+struct TwistMeasure {
+  double maxAngle = 0.0;  ///< radians, in [0, pi]
+  double t = 0.0;         ///< where it is largest
+  bool defined = false;   ///< false when a side has length zero (a point: no direction)
+};
+TwistMeasure measureTwist(const Segment& lower, const Segment& upper);
+
+/// The horizontal section of the patch at s, appended to out: one exact segment when the section
+/// is a line or an arc (line with line; arcs with the same start angle and sweep, e.g. the
+/// concentric arcs of a constant taper), otherwise a polyline within tolerance of it.
+/// Returns true when the section is exact.
+bool appendSection(const Segment& lower, const Segment& upper, double s, double tolerance, std::vector<Segment>& out);
+
+// ---- meshes ------------------------------------------------------------------------------------
+
+struct Mesh {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise about the normal
+  std::vector<std::uint32_t> trianglePatch;             ///< patch index per triangle (caps: kCapPatch)
+  std::size_t capsMade = 0;
+};
+inline constexpr std::uint32_t kCapPatch = 0xFFFFFFFFu;
+
+struct MeshOptions {
+  double tolerance = 0.01;  ///< mm: largest distance between the mesh and the exact surface
+  bool lowerCap = false;    ///< close a closed lower contour with a flat cap (ear clipping)
+  bool upperCap = false;
+  std::size_t maxCapVertices = 20000;  ///< ear clipping is O(n^2): larger caps are left open
+};
+
+/// Triangulates the patches (lower[i], upper[i]) into one mesh. Consecutive patches that share
+/// their joining generator share its vertices, so a closed contour gives a closed tube and every
+/// interior edge is used by exactly two triangles. Half the tolerance goes to the chords of arcs
+/// (along t), half to the twist of each cell (the generators are split along s until the
+/// triangles are within it of the bilinear cell).
+Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> upper, const Planes& planes,
+                      const MeshOptions& options = {});
+
+}  // namespace kerf::geometry

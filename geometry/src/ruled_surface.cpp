@@ -1,0 +1,338 @@
+#include "kerf/geometry/ruled_surface.h"
+
+#include "kerf/geometry/tessellation.h"
+
+#include "angles.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace kerf::geometry {
+namespace {
+
+/// dL/dt: the tangent scaled by the length (t runs over [0, 1]).
+Vec2 derivative(const Segment& s, double t) { return s.tangentAt(t) * s.length(); }
+
+Vec2 offsetAt(const Segment& lower, const Segment& upper, double t) { return upper.pointAt(t) - lower.pointAt(t); }
+
+/// Largest f on [0, 1]: the best of n samples, refined by golden section in its neighbourhood.
+Extreme maximize(const std::function<double(double)>& f, int n) {
+  Extreme best{f(0.0), 0.0};
+  for (int i = 1; i <= n; ++i) {
+    const double t = static_cast<double>(i) / n;
+    const double v = f(t);
+    if (v > best.value) best = {v, t};
+  }
+  double a = std::max(0.0, best.t - 1.0 / n), b = std::min(1.0, best.t + 1.0 / n);
+  constexpr double kInvPhi = 0.6180339887498949;
+  double c = b - kInvPhi * (b - a), d = a + kInvPhi * (b - a);
+  double fc = f(c), fd = f(d);
+  while (b - a > 1e-12) {
+    if (fc > fd) {
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - kInvPhi * (b - a);
+      fc = f(c);
+    } else {
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + kInvPhi * (b - a);
+      fd = f(d);
+    }
+  }
+  const double t = 0.5 * (a + b);
+  const double v = f(t);
+  if (v > best.value) best = {v, t};
+  return best;
+}
+
+/// Tangent angle of travel at t (unwrapped: linear in t).
+double tangentAngle(const Segment& s, double t) {
+  if (!s.isArc()) return angleOf(s.end - s.start);
+  const double turn = s.sweep >= 0 ? kPi / 2 : -kPi / 2;
+  return s.startAngle + t * s.sweep + turn;
+}
+
+double wrapSigned(double a) {
+  double r = detail::wrapPositive(a);
+  return r > kPi ? r - kTwoPi : r;
+}
+
+}  // namespace
+
+Vec3 surfacePoint(const Segment& lower, const Segment& upper, const Planes& planes, double t, double s) {
+  const Vec2 p = (1.0 - s) * lower.pointAt(t) + s * upper.pointAt(t);
+  return {p.x(), p.y(), planes.lower + s * planes.height()};
+}
+
+Vec3 surfaceNormal(const Segment& lower, const Segment& upper, const Planes& planes, double t, double s) {
+  const Vec2 dt = (1.0 - s) * derivative(lower, t) + s * derivative(upper, t);
+  const Vec2 off = offsetAt(lower, upper, t);
+  const Vec3 pt(dt.x(), dt.y(), 0.0), ps(off.x(), off.y(), planes.height());
+  const Vec3 n = pt.cross(ps);
+  const double len = n.norm();
+  return len > 0 ? Vec3(n / len) : Vec3(Vec3::Zero());
+}
+
+double slopeAt(const Segment& lower, const Segment& upper, const Planes& planes, double t) {
+  return std::atan2(offsetAt(lower, upper, t).norm(), planes.height());
+}
+
+PatchMeasures measurePatch(const Segment& lower, const Segment& upper, const Planes& planes) {
+  PatchMeasures m;
+  const double h = planes.height();
+  if (!lower.isArc() && !upper.isArc()) {
+    // The offset a + t b is linear in t: |.| is convex, so the maximum is at an end and the
+    // minimum at the foot of the perpendicular from the origin.
+    m.exact = true;
+    const Vec2 a = upper.start - lower.start, b = (upper.end - lower.end) - a;
+    const double bb = b.squaredNorm();
+    const double tMin = bb > 0 ? std::clamp(-a.dot(b) / bb, 0.0, 1.0) : 0.0;
+    const double n0 = a.norm(), n1 = (a + b).norm();
+    m.minSlope = {std::atan2((a + tMin * b).norm(), h), tMin};
+    m.maxSlope = n1 > n0 ? Extreme{std::atan2(n1, h), 1.0} : Extreme{std::atan2(n0, h), 0.0};
+    m.maxOffsetX = std::abs(a.x() + b.x()) > std::abs(a.x()) ? Extreme{std::abs(a.x() + b.x()), 1.0}
+                                                             : Extreme{std::abs(a.x()), 0.0};
+    m.maxOffsetY = std::abs(a.y() + b.y()) > std::abs(a.y()) ? Extreme{std::abs(a.y() + b.y()), 1.0}
+                                                             : Extreme{std::abs(a.y()), 0.0};
+    return m;
+  }
+  auto norm = [&](double t) { return offsetAt(lower, upper, t).norm(); };
+  const Extreme big = maximize(norm, kExtremeSamples);
+  Extreme small = maximize([&](double t) { return -norm(t); }, kExtremeSamples);
+  m.maxSlope = {std::atan2(big.value, h), big.t};
+  m.minSlope = {std::atan2(-small.value, h), small.t};
+  m.maxOffsetX = maximize([&](double t) { return std::abs(offsetAt(lower, upper, t).x()); }, kExtremeSamples);
+  m.maxOffsetY = maximize([&](double t) { return std::abs(offsetAt(lower, upper, t).y()); }, kExtremeSamples);
+  return m;
+}
+
+double patchArea(const Segment& lower, const Segment& upper, const Planes& planes) {
+  // 5-point Gauss-Legendre on [0, 1].
+  static constexpr std::array<double, 5> kNode = {0.046910077030668, 0.230765344947158, 0.5, 0.769234655052842,
+                                                  0.953089922969332};
+  static constexpr std::array<double, 5> kWeight = {0.118463442528095, 0.239314335249683, 0.284444444444444,
+                                                    0.239314335249683, 0.118463442528095};
+  auto pieces = [](const Segment& s) {
+    return s.isArc() ? std::max(1, static_cast<int>(std::ceil(std::abs(s.sweep) / (kPi / 8)))) : 1;
+  };
+  const int n = std::max(pieces(lower), pieces(upper));
+  const double h = planes.height();
+  double area = 0.0;
+  for (int k = 0; k < n; ++k) {
+    for (std::size_t i = 0; i < kNode.size(); ++i) {
+      const double t = (k + kNode[i]) / n;
+      const Vec2 dl = derivative(lower, t), du = derivative(upper, t);
+      const Vec2 off = offsetAt(lower, upper, t);
+      const Vec3 ps(off.x(), off.y(), h);
+      double inner = 0.0;
+      for (std::size_t j = 0; j < kNode.size(); ++j) {
+        const Vec2 dt = (1.0 - kNode[j]) * dl + kNode[j] * du;
+        inner += kWeight[j] * Vec3(dt.x(), dt.y(), 0.0).cross(ps).norm();
+      }
+      area += kWeight[i] * inner / n;
+    }
+  }
+  return area;
+}
+
+TwistMeasure measureTwist(const Segment& lower, const Segment& upper) {
+  TwistMeasure m;
+  constexpr double kShort = 1e-9;
+  if (lower.length() <= kShort || upper.length() <= kShort) return m;
+  m.defined = true;
+  // d(t) = d0 + t (d1 - d0) unwrapped; the angle between the directions is |wrap(d(t))|.
+  const double d0 = wrapSigned(tangentAngle(upper, 0.0) - tangentAngle(lower, 0.0));
+  const double d1 = d0 + (upper.isArc() ? upper.sweep : 0.0) - (lower.isArc() ? lower.sweep : 0.0);
+  const double lo = std::min(d0, d1), hi = std::max(d0, d1);
+  // Does [lo, hi] contain an odd multiple of pi (directions exactly opposite)?
+  const double k = std::ceil((lo - kPi) / kTwoPi);
+  const double oddPi = kPi + k * kTwoPi;
+  if (oddPi <= hi) {
+    m.maxAngle = kPi;
+    m.t = d1 != d0 ? (oddPi - d0) / (d1 - d0) : 0.0;
+    return m;
+  }
+  const double a0 = std::abs(wrapSigned(d0)), a1 = std::abs(wrapSigned(d1));
+  m.maxAngle = std::max(a0, a1);
+  m.t = a1 > a0 ? 1.0 : 0.0;
+  return m;
+}
+
+bool appendSection(const Segment& lower, const Segment& upper, double s, double tolerance, std::vector<Segment>& out) {
+  const Vec2 a = (1.0 - s) * lower.start + s * upper.start;
+  const Vec2 b = (1.0 - s) * lower.end + s * upper.end;
+  if (!lower.isArc() && !upper.isArc()) {
+    out.push_back(Segment::line(a, b));
+    return true;
+  }
+  if (lower.isArc() && upper.isArc() && std::abs(lower.sweep - upper.sweep) <= 1e-12 &&
+      std::abs(wrapSigned(lower.startAngle - upper.startAngle)) <= 1e-12) {
+    // centre_s + ((1 - s) rL + s rU) e(angle): again an arc, with the same angles.
+    Segment arc = lower;
+    arc.centre = (1.0 - s) * lower.centre + s * upper.centre;
+    arc.radius = (1.0 - s) * lower.radius + s * upper.radius;
+    arc.start = a;
+    arc.end = b;
+    if (arc.radius > 0) {
+      out.push_back(arc);
+      return true;
+    }
+  }
+  const Sampling tol = Sampling::tolerance(tolerance);
+  const std::size_t n = std::max<std::size_t>({2, sampleCount(lower, tol), sampleCount(upper, tol)});
+  Vec2 prev = a;
+  for (std::size_t i = 1; i <= n; ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(n);
+    const Vec2 p = i == n ? b : Vec2((1.0 - s) * lower.pointAt(t) + s * upper.pointAt(t));
+    out.push_back(Segment::line(prev, p));
+    prev = p;
+  }
+  return false;
+}
+
+// ---- meshes ------------------------------------------------------------------------------------
+
+namespace {
+
+struct Generator {
+  Vec2 bottom, top;
+  std::uint32_t cuts = 1;  ///< pieces along s
+  std::uint32_t firstVertex = 0;
+};
+
+/// Pieces along s that keep the cell between generators a and b within tol of the bilinear
+/// surface: the triangles of a bilinear cell deviate by at most |P00 + P11 - P10 - P01| / 4.
+std::uint32_t cutsFor(const Generator& a, const Generator& b, double tol) {
+  const double twist = ((a.bottom + b.top) - (b.bottom + a.top)).norm();
+  const double need = std::ceil(twist / (4.0 * tol));
+  return static_cast<std::uint32_t>(std::clamp(need, 1.0, 4096.0));
+}
+
+/// Ear clipping of a simple polygon given as vertex indices; triangles follow the polygon's
+/// winding. False when no ear is found (the polygon is not simple).
+bool earClip(const std::vector<Vec3>& v, std::vector<std::uint32_t> poly, bool reverse,
+             std::vector<std::array<std::uint32_t, 3>>& result) {
+  std::vector<std::array<std::uint32_t, 3>> out;
+  if (reverse) std::reverse(poly.begin(), poly.end());
+  auto p = [&](std::uint32_t i) { return Vec2(v[i].x(), v[i].y()); };
+  double area2 = 0.0;
+  for (std::size_t i = 0; i < poly.size(); ++i) area2 += cross(p(poly[i]), p(poly[(i + 1) % poly.size()]));
+  const double sign = area2 >= 0 ? 1.0 : -1.0;
+  while (poly.size() > 3) {
+    bool clipped = false;
+    const std::size_t n = poly.size();
+    for (std::size_t i = 0; i < n && !clipped; ++i) {
+      const std::uint32_t ia = poly[(i + n - 1) % n], ib = poly[i], ic = poly[(i + 1) % n];
+      const Vec2 a = p(ia), b = p(ib), c = p(ic);
+      if (sign * cross(b - a, c - b) <= 0) continue;  // reflex or flat
+      bool inside = false;
+      for (std::size_t j = 0; j < n && !inside; ++j) {
+        const std::uint32_t iq = poly[j];
+        if (iq == ia || iq == ib || iq == ic) continue;
+        const Vec2 q = p(iq);
+        inside = sign * cross(b - a, q - a) > 0 && sign * cross(c - b, q - b) > 0 && sign * cross(a - c, q - c) > 0;
+      }
+      if (inside) continue;
+      out.push_back({ia, ib, ic});
+      poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+    }
+    if (!clipped) return false;
+  }
+  if (poly.size() == 3) out.push_back({poly[0], poly[1], poly[2]});
+  result.insert(result.end(), out.begin(), out.end());
+  return true;
+}
+
+}  // namespace
+
+Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> upper, const Planes& planes,
+                      const MeshOptions& options) {
+  Mesh mesh;
+  const std::size_t n = std::min(lower.size(), upper.size());
+  const double chordTol = options.tolerance / 2, twistTol = options.tolerance / 2;
+  const Sampling sampling = Sampling::tolerance(chordTol);
+  constexpr double kJoin = 1e-9;
+
+  std::size_t i = 0;
+  while (i < n) {
+    // One strip: patches joined end to start on both planes.
+    std::size_t j = i + 1;
+    while (j < n && (lower[j].start - lower[j - 1].end).norm() <= kJoin &&
+           (upper[j].start - upper[j - 1].end).norm() <= kJoin)
+      ++j;
+    std::vector<Generator> gens;
+    std::vector<std::uint32_t> cellPatch;
+    gens.push_back({lower[i].start, upper[i].start});
+    for (std::size_t k = i; k < j; ++k) {
+      const std::size_t pieces = std::max(sampleCount(lower[k], sampling), sampleCount(upper[k], sampling));
+      for (std::size_t q = 1; q <= pieces; ++q) {
+        const double t = static_cast<double>(q) / static_cast<double>(pieces);
+        gens.push_back({lower[k].pointAt(t), upper[k].pointAt(t)});
+        cellPatch.push_back(static_cast<std::uint32_t>(k));
+      }
+    }
+    const bool closed = j - i > 1 && (gens.back().bottom - gens.front().bottom).norm() <= kJoin &&
+                        (gens.back().top - gens.front().top).norm() <= kJoin;
+    for (std::size_t c = 0; c + 1 < gens.size(); ++c) {
+      const std::uint32_t cuts = cutsFor(gens[c], gens[c + 1], twistTol);
+      gens[c].cuts = std::max(gens[c].cuts, cuts);
+      gens[c + 1].cuts = std::max(gens[c + 1].cuts, cuts);
+    }
+    if (closed) gens.front().cuts = gens.back().cuts = std::max(gens.front().cuts, gens.back().cuts);
+    const std::size_t own = closed ? gens.size() - 1 : gens.size();
+    for (std::size_t g = 0; g < own; ++g) {
+      gens[g].firstVertex = static_cast<std::uint32_t>(mesh.vertices.size());
+      for (std::uint32_t q = 0; q <= gens[g].cuts; ++q) {
+        const double s = static_cast<double>(q) / gens[g].cuts;
+        const Vec2 p = (1.0 - s) * gens[g].bottom + s * gens[g].top;
+        mesh.vertices.emplace_back(p.x(), p.y(), planes.lower + s * planes.height());
+      }
+    }
+    if (closed) gens.back().firstVertex = gens.front().firstVertex;
+    // Zip neighbouring generators together, advancing whichever has the lower next s.
+    for (std::size_t c = 0; c + 1 < gens.size(); ++c) {
+      const Generator& a = gens[c];
+      const Generator& b = gens[c + 1];
+      std::uint32_t ia = 0, ib = 0;
+      while (ia < a.cuts || ib < b.cuts) {
+        const bool advanceA = ia < a.cuts && (ib == b.cuts || static_cast<double>(ia + 1) / a.cuts <=
+                                                                  static_cast<double>(ib + 1) / b.cuts);
+        if (advanceA) {
+          mesh.triangles.push_back({a.firstVertex + ia, b.firstVertex + ib, a.firstVertex + ia + 1});
+          ++ia;
+        } else {
+          mesh.triangles.push_back({a.firstVertex + ia, b.firstVertex + ib, b.firstVertex + ib + 1});
+          ++ib;
+        }
+        mesh.trianglePatch.push_back(cellPatch[c]);
+      }
+    }
+    if (closed && (options.lowerCap || options.upperCap) && own >= 3 && own <= options.maxCapVertices) {
+      std::vector<std::uint32_t> bottom, top;
+      for (std::size_t g = 0; g < own; ++g) {
+        bottom.push_back(gens[g].firstVertex);
+        top.push_back(gens[g].firstVertex + gens[g].cuts);
+      }
+      // The side triangles run along the bottom edge forwards and the top edge backwards, so the
+      // lower cap takes the contour reversed and the upper cap as it is.
+      std::vector<std::array<std::uint32_t, 3>> caps;
+      if (options.lowerCap && earClip(mesh.vertices, bottom, true, caps)) ++mesh.capsMade;
+      if (options.upperCap && earClip(mesh.vertices, top, false, caps)) ++mesh.capsMade;
+      for (const auto& tri : caps) {
+        mesh.triangles.push_back(tri);
+        mesh.trianglePatch.push_back(kCapPatch);
+      }
+    }
+    i = j;
+  }
+  return mesh;
+}
+
+}  // namespace kerf::geometry

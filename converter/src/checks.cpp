@@ -45,12 +45,31 @@ bool isRetrace(const geometry::Segment& earlier, const geometry::Segment& later,
 
 using MovePairs = std::set<std::pair<std::size_t, std::size_t>>;
 
+/// Two moves whose lower segments share an end point: where a taper starts and finishes at the
+/// same place (the start point of a closed contour), the wire leans one way on the way in and the
+/// other way on the way out, so above the lower plane their patches touch or overlap. The kerf
+/// there is cut already; this is the taper's seam, not a fault.
+bool atSeam(const Toolpath& tp, std::size_t a, std::size_t b, double tol) {
+  const geometry::Segment& p = tp.moves[a].lower;
+  const geometry::Segment& q = tp.moves[b].lower;
+  return (p.start - q.end).norm() <= tol || (p.end - q.start).norm() <= tol || (p.start - q.start).norm() <= tol ||
+         (p.end - q.end).norm() <= tol;
+}
+
+void seamNote(const Toolpath& tp, const SourceFile* src, std::size_t mi, std::size_t mj, const geometry::Vec3& p,
+              const std::string& where, Diagnostics& diags) {
+  diags.report(finding(Severity::Note, Code::PathRetraces, src, tp.moves[mj], mj, p,
+                       "the wire passes the start point twice" + where + " (the move on line " +
+                           std::to_string(tp.moves[mi].line) + " leans the other way): the taper's seam"));
+}
+
 /// One plane's contour: the segments of the cut moves in order and each one's move.
 struct Contour {
   std::vector<geometry::Segment> segments;
   std::vector<std::size_t> moveIndex;
   const char* name = "the cut path";  ///< how messages name it
   double z = 0.0;
+  bool upperPlane = false;
 };
 
 /// Self-intersection of one contour, exact on lines and arcs. The pairs found go to seen.
@@ -69,6 +88,13 @@ void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const
     const Move& later = moves[mj];
     const std::string other = "line " + std::to_string(moves[mi].line);
     const geometry::Vec3 p = at3(x.point, c.z);
+    if (c.upperPlane && x.kind != geometry::ContactKind::Crossing && !x.adjacent &&
+        !(x.kind == geometry::ContactKind::Overlap &&
+          isRetrace(c.segments[x.first], c.segments[x.second], x, options.tolerance)) &&
+        atSeam(toolpath, mi, mj, options.tolerance)) {
+      seamNote(toolpath, src, mi, mj, p, " on the upper plane", diags);
+      continue;
+    }
     switch (x.kind) {
       case geometry::ContactKind::Crossing:
         diags.report(finding(Severity::Error, Code::PathCrossesItself, src, later, mj, p,
@@ -81,7 +107,8 @@ void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const
       case geometry::ContactKind::Overlap:
         if (isRetrace(c.segments[x.first], c.segments[x.second], x, options.tolerance)) {
           diags.report(finding(Severity::Note, Code::PathRetraces, src, later, mj, p,
-                               "the wire leaves along its way in (" + other + "): a lead-out over the lead-in"));
+                               "the wire leaves along its way in (" + other + "): a lead-out over the lead-in" +
+                                   (c.upperPlane ? std::string(" on the upper plane") : std::string{})));
         } else if (x.adjacent && x.second == x.first + 1) {
           diags.report(finding(Severity::Error, Code::PathOverlapsItself, src, later, mj, p,
                                "this move folds back over the previous one (" + other + ") near " + at(x.point) +
@@ -127,7 +154,15 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
                                  formatFixed(*options.uvRange, 3) + " mm"));
     }
     const geometry::TwistMeasure tw = geometry::measureTwist(lo, up);
-    if (tw.defined && tw.maxAngle > geometry::kPi / 2 + 1e-9) {
+    if (tw.defined && !lo.isArc() && !up.isArc() && tw.maxAngle >= geometry::kPi - 1e-12) {
+      // Opposite lines: every generator passes through one point, at s = |L'| / (|L'| + |U'|).
+      const double s = lo.length() / (lo.length() + up.length());
+      diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[i], i,
+                           geometry::surfacePoint(lo, up, planes, 0.0, s),
+                           "the upper side runs exactly against the lower one: every position of the wire in this move "
+                           "passes through one point, at z " +
+                               formatFixed(planes.lower + s * planes.height(), 3)));
+    } else if (tw.defined && tw.maxAngle > geometry::kPi / 2 + 1e-9) {
       diags.report(finding(Severity::Error, Code::PatchTwisted, src, moves[i], i,
                            geometry::surfacePoint(lo, up, planes, tw.t, 0.5),
                            "the upper contour runs against the lower one here: their directions differ by " +
@@ -162,6 +197,11 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
         continue;
       reported.insert({mi, mj});
       const bool neighbours = kb == ka + 1 || (closed && ka == 0 && kb + 1 == n);
+      if (x.kind != geometry::ContactKind::Crossing && ka != kb && !neighbours &&
+          atSeam(toolpath, mi, mj, options.tolerance)) {
+        seamNote(toolpath, src, mi, mj, at3(x.point, section.z), " at z " + formatFixed(section.z, 3), diags);
+        continue;
+      }
       const geometry::Vec3 p = at3(x.point, section.z);
       const std::string where = " at z " + formatFixed(section.z, 3) + ", " + at(x.point);
       if (ka == kb) {
@@ -226,6 +266,7 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
 
   Contour upper;
   upper.name = "the upper contour";
+  upper.upperPlane = true;
   upper.z = toolpath.heights.known ? toolpath.heights.planes.upper : 0.0;
   upper.moveIndex = path.moveIndex;
   for (std::size_t i : path.moveIndex) upper.segments.push_back(toolpath.upper[i]);

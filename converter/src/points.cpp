@@ -1,5 +1,7 @@
 #include "kerf/converter/points.h"
 
+#include <array>
+
 #include "kerf/converter/summary.h"
 
 #include <algorithm>
@@ -151,6 +153,46 @@ std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& di
   return p;
 }
 
+namespace {
+
+using Row = std::array<double, 4>;
+
+/// The point file: header, one row per line (columns values each), footer.
+std::string writeRows(const std::vector<Row>& rows, std::size_t columns, const PointProfile& profile) {
+  std::string text;
+  text.reserve(rows.size() * 10 * columns + profile.header.size() + profile.footer.size());
+  if (!profile.header.empty()) {
+    text += profile.header;
+    if (text.back() != '\n') text += '\n';
+  }
+  const double scale = profile.micrometres ? 1000.0 : 1.0;
+  const int decimals = profile.micrometres ? 0 : profile.decimals;
+  // Incremental output is the difference of rounded absolute values, so the increments add
+  // up exactly to every absolute point (no drift from rounding).
+  const double f = std::pow(10.0, decimals);
+  const double unitStep = 1.0 / f;
+  Row prev{};
+  std::size_t number = profile.lineNumberStart;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (profile.lineNumbers) text += profile.lineNumberPrefix + std::to_string(number++) + profile.separator;
+    for (std::size_t c = 0; c < columns; ++c) {
+      const double r = std::nearbyint(rows[i][c] * scale * f);
+      const double w = profile.incremental && i > 0 ? r - prev[c] : r;
+      prev[c] = r;
+      if (c > 0) text += profile.separator;
+      text += formatFixed(w * unitStep, decimals);
+    }
+    text += '\n';
+  }
+  if (!profile.footer.empty()) {
+    text += profile.footer;
+    if (text.back() != '\n') text += '\n';
+  }
+  return text;
+}
+
+}  // namespace
+
 std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile* source, const PointProfile& profile,
                                       const PointRequest& request, Diagnostics& diags) {
   CutPath path = cutPath(toolpath);
@@ -210,42 +252,133 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
   out.stats = geometry::samplePath(path.segments, out.sampling, &points);
   out.points = points.size();
 
-  std::string& text = out.text;
-  text.reserve(points.size() * 20 + profile.header.size() + profile.footer.size());
-  if (!profile.header.empty()) {
-    text += profile.header;
-    if (text.back() != '\n') text += '\n';
+  std::vector<Row> rows(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) rows[i] = {points[i].x(), points[i].y(), 0.0, 0.0};
+  out.text = writeRows(rows, 2, profile);
+  return out;
+}
+
+}  // namespace kerf::converter
+
+namespace kerf::converter {
+
+std::optional<PlaneChoice> parsePlane(std::string_view text) {
+  if (text == "lower") return PlaneChoice{PlaneChoice::Kind::Lower, 0.0};
+  if (text == "upper") return PlaneChoice{PlaneChoice::Kind::Upper, 0.0};
+  if (!text.starts_with("z=") || text.size() < 3) return std::nullopt;
+  const std::string number(text.substr(2));
+  char* end = nullptr;
+  const double z = std::strtod(number.c_str(), &end);
+  if (end != number.c_str() + number.size() || !std::isfinite(z)) return std::nullopt;
+  return PlaneChoice{PlaneChoice::Kind::Height, z};
+}
+
+std::optional<Toolpath> toolpathAtPlane(const Toolpath& toolpath, const PlaneChoice& plane, double tolerance,
+                                        const SourceFile* source, Diagnostics& diags) {
+  Toolpath out;
+  out.start = toolpath.start;
+  out.programUnit = toolpath.programUnit;
+  out.endedProperly = toolpath.endedProperly;
+  out.heights = toolpath.heights;
+  if (!toolpath.isTaper()) {
+    out.moves = toolpath.moves;
+    return out;
   }
-  const double scale = profile.micrometres ? 1000.0 : 1.0;
-  const int decimals = profile.micrometres ? 0 : profile.decimals;
-  // Incremental output is the difference of rounded absolute values, so the increments add
-  // up exactly to every absolute point (no drift from rounding).
-  auto rounded = [&](double v) {
-    const double f = std::pow(10.0, decimals);
-    return std::nearbyint(v * scale * f);
-  };
-  const double unitStep = 1.0 / std::pow(10.0, decimals);
-  double prevX = 0, prevY = 0;
-  std::size_t number = profile.lineNumberStart;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double rx = rounded(points[i].x()), ry = rounded(points[i].y());
-    double wx = rx, wy = ry;
-    if (profile.incremental && i > 0) {
-      wx = rx - prevX;
-      wy = ry - prevY;
+  double s = 0.0;
+  if (plane.kind == PlaneChoice::Kind::Upper) s = 1.0;
+  if (plane.kind == PlaneChoice::Kind::Height) {
+    const geometry::Planes& p = toolpath.heights.planes;
+    if (!toolpath.heights.known || plane.z < p.lower || plane.z > p.upper) {
+      diags.error(Code::TaperFlattened, source, SourceSpan::wholeFile(),
+                  toolpath.heights.known ? "z " + formatFixed(plane.z, 3) + " is outside the part (z " +
+                                               formatFixed(p.lower, 3) + " .. " + formatFixed(p.upper, 3) + ")"
+                                         : std::string("the plane heights are not known, so z= cannot be placed"));
+      return std::nullopt;
     }
-    prevX = rx;
-    prevY = ry;
-    if (profile.lineNumbers) text += profile.lineNumberPrefix + std::to_string(number++) + profile.separator;
-    text += formatFixed(wx * unitStep, decimals);
-    text += profile.separator;
-    text += formatFixed(wy * unitStep, decimals);
-    text += '\n';
+    s = (plane.z - p.lower) / p.height();
   }
-  if (!profile.footer.empty()) {
-    text += profile.footer;
-    if (text.back() != '\n') text += '\n';
+  diags.warning(Code::TaperFlattened, source, SourceSpan::wholeFile(),
+                "a 2-axis machine cannot cut the taper: this file follows the wire on one plane only (" +
+                    std::string(plane.kind == PlaneChoice::Kind::Lower   ? "lower"
+                                : plane.kind == PlaneChoice::Kind::Upper ? "upper"
+                                                                         : "z " + formatFixed(plane.z, 3)) +
+                    ")");
+  out.start = (1.0 - s) * toolpath.moves.front().lower.start + s * toolpath.upper.front().start;
+  std::vector<geometry::Segment> pieces;
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    pieces.clear();
+    if (s == 0.0)
+      pieces.push_back(toolpath.moves[i].lower);
+    else if (s == 1.0)
+      pieces.push_back(toolpath.upper[i]);
+    else
+      geometry::appendSection(toolpath.moves[i].lower, toolpath.upper[i], s, tolerance, pieces);
+    for (const geometry::Segment& piece : pieces) {
+      Move m = toolpath.moves[i];
+      m.lower = piece;
+      if (m.kind != MoveKind::Rapid) m.kind = piece.isArc() ? MoveKind::Arc : MoveKind::Line;
+      out.moves.push_back(m);
+    }
   }
+  return out;
+}
+
+std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFile* source, const PointProfile& profile,
+                                       const PointRequest& request, bool relativeUv, Diagnostics& diags) {
+  if (!toolpath.isTaper()) {
+    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(),
+                "points4 writes both planes, and this program has no upper contour", "use --to bp95d");
+    return std::nullopt;
+  }
+  std::vector<Row> rows;
+  constexpr double kJoin = 1e-9;
+  geometry::Vec2 lastLower(0, 0), lastUpper(0, 0);
+  bool any = false;
+  std::size_t planned = 0;
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    if (!toolpath.moves[i].isCut()) continue;
+    const geometry::Segment& lo = toolpath.moves[i].lower;
+    const geometry::Segment& up = toolpath.upper[i];
+    const std::size_t n =
+        std::max(geometry::sampleCount(lo, request.sampling), geometry::sampleCount(up, request.sampling));
+    planned += n + 1;
+    if (planned > kMaxPointsWritten) {
+      diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
+                  "the step gives more points than Kerf writes (" + std::to_string(kMaxPointsWritten) + ")",
+                  "use a coarser --step or --tolerance");
+      return std::nullopt;
+    }
+    auto push = [&](const geometry::Vec2& l, const geometry::Vec2& u) {
+      const geometry::Vec2 uv = relativeUv ? geometry::Vec2(u - l) : u;
+      rows.push_back({l.x(), l.y(), uv.x(), uv.y()});
+    };
+    if (!any || (lo.start - lastLower).norm() > kJoin || (up.start - lastUpper).norm() > kJoin)
+      push(lo.start, up.start);
+    // Both planes at the same t, so each pair is one position of the wire.
+    for (std::size_t k = 1; k <= n; ++k) {
+      const double t = static_cast<double>(k) / static_cast<double>(n);
+      push(k == n ? lo.end : lo.pointAt(t), k == n ? up.end : up.pointAt(t));
+    }
+    lastLower = lo.end;
+    lastUpper = up.end;
+    any = true;
+  }
+  if (!any) {
+    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
+    return std::nullopt;
+  }
+  const std::optional<std::size_t> capacity = request.maxPoints ? request.maxPoints : profile.maxPoints;
+  if (capacity && rows.size() > *capacity) {
+    diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
+                std::to_string(rows.size()) + " point pairs at this step, more than the " + std::to_string(*capacity) +
+                    " the controller holds",
+                "use a coarser --step or --tolerance (points4 does not fit the step by itself)");
+    return std::nullopt;
+  }
+  PointOutput out;
+  out.sampling = request.sampling;
+  out.points = rows.size();
+  out.text = writeRows(rows, 4, profile);
   return out;
 }
 

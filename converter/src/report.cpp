@@ -25,7 +25,11 @@ std::string sci(double v) {
   std::snprintf(buf, sizeof buf, "%.3e", v);
   return buf;
 }
-std::string plural(std::size_t n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
+std::string plural(std::size_t n, const char* word) {
+  const std::string_view w(word);
+  const char* ending = w.ends_with("ch") ? "es" : "s";
+  return std::to_string(n) + " " + word + (n == 1 ? "" : ending);
+}
 json vec(const Vec2& p) { return json::array({p.x(), p.y()}); }
 
 std::string samplingText(const geometry::Sampling& s) {
@@ -60,6 +64,40 @@ std::string blockText(const Program& program, const Move& m) {
   return std::string(program.source->text().substr(m.span.offset, m.span.length));
 }
 
+std::string segmentText(const geometry::Segment& s, int decimals) {
+  auto p = [&](const Vec2& v) { return formatFixed(v.x(), decimals) + " " + formatFixed(v.y(), decimals); };
+  std::string out = s.isArc() ? std::string("arc ") + (s.sweep < 0 ? "cw " : "ccw ") : "line ";
+  out += p(s.start) + " -> " + p(s.end);
+  if (s.isArc())
+    out += " centre " + p(s.centre) + " r " + formatFixed(s.radius, decimals) + " sweep " +
+           formatFixed(s.sweep * 180.0 / geometry::kPi, decimals);
+  return out;
+}
+
+constexpr double kToDegrees = 180.0 / geometry::kPi;
+
+/// Why the upper segment of a move is what it is, by dialect (for `kerf explain`).
+std::string pairingReason(const Toolpath& tp, const Move& m) {
+  switch (tp.dialect) {
+    case Dialect::Plain: return "the wire is vertical";
+    case Dialect::XyuvAbs:
+      return "the upper side is the block's U V words (absolute, same frame as X Y), with its own motion word and "
+             "centre where given; without them the upper guide stays put";
+    case Dialect::XyuvRel:
+      return "the upper side is the programmed point plus the U V offset (upper minus lower) at each end; an arc's "
+             "upper centre is the lower centre moved by K L";
+    case Dialect::SodickColon: return "the upper side is the words after ':' (absolute, its own modal motion)";
+    case Dialect::TaperAngle:
+      if (m.taperDegrees == 0.0f) return "no taper is in force here: the wire is vertical";
+      return std::string("the programmed contour offset by h tan(") + formatFixed(std::abs(m.taperDegrees), 3) +
+             "°) to the " + (m.taperDegrees > 0 ? "left (G51)" : "right (G52)") +
+             " of travel, h measured from the program plane; lines stay parallel, arcs concentric, corners sharp "
+             "where the offsets meet";
+    case Dialect::TwoFile: return "the upper side is the move with the same index in the upper program";
+  }
+  return {};
+}
+
 }  // namespace
 
 // ---- 2. check ----------------------------------------------------------------------------------
@@ -83,6 +121,17 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
            " .. " + mm(s.bounds.max.y()) + " mm\n";
   out += "  points at " + samplingText(s.sampling) + ": " + std::to_string(s.points.points) + " (max deviation " +
          formatFixed(s.points.maxDeviation, 6) + " mm, mean relative error " + sci(s.points.meanRelativeError) + ")\n";
+  if (s.taper) {
+    const TaperSummary& t = *s.taper;
+    const geometry::Planes& p = t.heights.planes;
+    out += std::string("  taper (") + dialectName(t.dialect) + "): lower z " + mm(p.lower) + ", upper z " +
+           mm(p.upper) + ", height " + mm(p.height()) + " mm — " + t.heights.source + "\n";
+    out += "  wire slope max " + formatFixed(t.maxSlopeDegrees, 3) + "° (line " + std::to_string(t.maxSlopeLine) +
+           ", move " + std::to_string(t.maxSlopeMove) + "), min " + formatFixed(t.minSlopeDegrees, 3) + "° (line " +
+           std::to_string(t.minSlopeLine) + ")\n";
+    out += "  lower length " + mm(t.lowerLength) + " mm, upper length " + mm(t.upperLength) + " mm, surface " +
+           mm(t.area) + " mm² in " + plural(t.patches, "patch") + "\n";
+  }
   out += std::string("verdict: ") + (diags.hasErrors() ? "errors — do not cut" : "ok") + "\n";
   return out;
 }
@@ -127,6 +176,17 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
   sum["points"] = s.points.points;
   sum["max_deviation_mm"] = s.points.maxDeviation;
   sum["mean_relative_error"] = s.points.meanRelativeError;
+  if (s.taper) {
+    const TaperSummary& t = *s.taper;
+    sum["taper"] = {{"dialect", dialectName(t.dialect)},   {"lower_z", t.heights.planes.lower},
+                    {"upper_z", t.heights.planes.upper},   {"program_z", t.heights.programZ},
+                    {"height", t.heights.planes.height()}, {"heights_from", t.heights.source},
+                    {"max_slope_deg", t.maxSlopeDegrees},  {"max_slope_move", t.maxSlopeMove},
+                    {"max_slope_line", t.maxSlopeLine},    {"min_slope_deg", t.minSlopeDegrees},
+                    {"min_slope_move", t.minSlopeMove},    {"min_slope_line", t.minSlopeLine},
+                    {"lower_length_mm", t.lowerLength},    {"upper_length_mm", t.upperLength},
+                    {"surface_area_mm2", t.area},          {"patches", t.patches}};
+  }
   j["summary"] = std::move(sum);
   return j.dump(2) + "\n";
 }
@@ -135,7 +195,15 @@ std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags) {
   auto f6 = [](double v) { return formatFixed(v, 6); };
   auto p6 = [&](const Vec2& p) { return f6(p.x()) + " " + f6(p.y()); };
   std::string out = "start " + p6(toolpath.start) + "\n";
-  for (const Move& m : toolpath.moves) {
+  if (toolpath.isTaper()) {
+    const PlaneHeights& h = toolpath.heights;
+    out += std::string("dialect ") + dialectName(toolpath.dialect) + " heights " +
+           (h.known ? "lower " + f6(h.planes.lower) + " upper " + f6(h.planes.upper) + " program " + f6(h.programZ)
+                    : std::string("unknown")) +
+           "\n";
+  }
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    const Move& m = toolpath.moves[i];
     const geometry::Segment& s = m.lower;
     out += std::to_string(m.line) + " " + kindName(m.kind);
     if (m.kind == MoveKind::Arc) out += s.sweep < 0 ? " cw" : " ccw";
@@ -145,6 +213,7 @@ std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags) {
              " from " + centreFormName(m.centreForm);
     if (m.callDepth > 0) out += " depth " + std::to_string(m.callDepth);
     out += "\n";
+    if (toolpath.isTaper()) out += "  upper " + segmentText(toolpath.upper[i], 6) + "\n";
   }
   out += std::string("ended ") + (toolpath.endedProperly ? "yes" : "no") + "\n";
   for (const Diagnostic& d : diags.all()) {
@@ -166,10 +235,30 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
          ", arcs sampled at " + samplingText(sampling) + "\n";
   out += "Angles: counter-clockwise from +X unless marked 'seed', which is the paper's clockwise convention.\n";
   out += "The wire starts at " + pt(toolpath.start) + ".\n";
+  if (toolpath.isTaper()) {
+    const PlaneHeights& h = toolpath.heights;
+    out += std::string("4-axis taper, dialect ") + dialectName(toolpath.dialect) +
+           ": each move is a ruled patch; the "
+           "wire at t joins lower(t) and upper(t), t proportional to arc length on each side.\n";
+    out += h.known
+               ? "Planes: " + h.source + "; slope = atan(|upper(t) - lower(t)| / " + mm(h.planes.height()) + " mm).\n"
+               : std::string("The plane heights are not known, so slopes cannot be given.\n");
+  }
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     const Move& m = toolpath.moves[i];
     const geometry::Segment& s = m.lower;
     out += "\nline " + std::to_string(m.line) + ": " + blockText(program, m) + "\n";
+    if (toolpath.isTaper()) {
+      const geometry::Segment& u = toolpath.upper[i];
+      out += "  upper: " + segmentText(u, 3) + ", length " + mm(u.length()) + " mm\n";
+      out += "  pairing: " + pairingReason(toolpath, m) + "\n";
+      if (toolpath.heights.known) {
+        const geometry::Planes& pl = toolpath.heights.planes;
+        out += "  slope " + formatFixed(geometry::slopeAt(s, u, pl, 0.0) * kToDegrees, 3) + "° at the start, " +
+               formatFixed(geometry::slopeAt(s, u, pl, 1.0) * kToDegrees, 3) + "° at the end\n";
+      }
+      out += "  lower:\n";
+    }
     if (m.kind != MoveKind::Arc) {
       out += std::string("  ") + (m.kind == MoveKind::Rapid ? "rapid (G00, not cut)" : "straight cut (G01)") +
              " from " + pt(s.start) + " to " + pt(s.end) + ", length " + mm(s.length()) + " mm\n";
@@ -230,6 +319,25 @@ std::string explainJson(const Program& program, const Toolpath& toolpath, const 
     e["start"] = vec(s.start);
     e["end"] = vec(s.end);
     e["length"] = s.length();
+    if (toolpath.isTaper()) {
+      const geometry::Segment& u = toolpath.upper[i];
+      json up;
+      up["kind"] = u.isArc() ? "arc" : "line";
+      up["start"] = vec(u.start);
+      up["end"] = vec(u.end);
+      up["length"] = u.length();
+      if (u.isArc()) {
+        up["centre"] = vec(u.centre);
+        up["radius"] = u.radius;
+        up["direction"] = u.sweep < 0 ? "cw" : "ccw";
+      }
+      up["pairing"] = pairingReason(toolpath, m);
+      if (toolpath.heights.known) {
+        up["slope_start_deg"] = geometry::slopeAt(s, u, toolpath.heights.planes, 0.0) * kToDegrees;
+        up["slope_end_deg"] = geometry::slopeAt(s, u, toolpath.heights.planes, 1.0) * kToDegrees;
+      }
+      e["upper"] = std::move(up);
+    }
     if (m.kind == MoveKind::Arc) {
       e["centre"] = vec(s.centre);
       e["radius"] = s.radius;

@@ -20,4 +20,11 @@ inline Analysis analyse(const SourceFile& source, const InterpreterOptions& opti
   return a;
 }
 
+/// Two-file input (`kerf check lower.nc --upper upper.nc`): both programs read as plain 2-axis
+/// programs, the second one's moves become the upper contour of the first's, move by move. A
+/// different move count is an error (K0220) naming the first move without a partner; the
+/// heights come from the first program or the options (K0217 when neither gives them).
+void pairUpper(Toolpath& lower, const Toolpath& upper, const SourceFile* lowerSource, const SourceFile* upperSource,
+               Diagnostics& diags);
+
 }  // namespace kerf::converter

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace kerf::converter {
 
@@ -60,6 +61,26 @@ struct PointOutput {
 /// moves, a capacity no sampling can meet, an unknown start line.
 std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile* source, const PointProfile& profile,
                                       const PointRequest& request, Diagnostics& diags);
+
+/// Which plane a 2-axis file follows on a taper program: `lower`, `upper` or `z=H`.
+struct PlaneChoice {
+  enum class Kind : std::uint8_t { Lower, Upper, Height } kind = Kind::Lower;
+  double z = 0.0;  ///< Height only, mm
+};
+std::optional<PlaneChoice> parsePlane(std::string_view text);
+
+/// The wire on one plane as a plain toolpath (warning K0804: a 2-axis machine cannot cut the
+/// taper). Sections between the planes are exact lines and arcs where they can be, polylines
+/// within tolerance otherwise. A plain toolpath is returned as it is.
+std::optional<Toolpath> toolpathAtPlane(const Toolpath& toolpath, const PlaneChoice& plane, double tolerance,
+                                        const SourceFile* source, Diagnostics& diags);
+
+/// `--to points4`: `X Y U V` per line for point-driven 4-axis controllers. Each cut move is split
+/// into as many equal steps of t as its finer side needs, and both planes are sampled at the same
+/// t, so every line is one position of the wire. U V are the upper point (absolute) or upper
+/// minus lower (relativeUv). The profile's format settings apply to all four columns.
+std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFile* source, const PointProfile& profile,
+                                       const PointRequest& request, bool relativeUv, Diagnostics& diags);
 
 /// Fixed-decimal text of v, rounded to nearest, never "-0.000".
 std::string formatFixed(double v, int decimals);

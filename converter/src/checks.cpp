@@ -6,6 +6,7 @@
 #include "kerf/geometry/intersection.h"
 #include "kerf/geometry/ruled_surface.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -49,11 +50,24 @@ using MovePairs = std::set<std::pair<std::size_t, std::size_t>>;
 /// same place (the start point of a closed contour), the wire leans one way on the way in and the
 /// other way on the way out, so above the lower plane their patches touch or overlap. The kerf
 /// there is cut already; this is the taper's seam, not a fault.
+/// Where the programmed contour lies between the planes (0: lower, 1: upper).
+double programLevel(const Toolpath& tp) {
+  const PlaneHeights& h = tp.heights;
+  return h.known ? std::clamp((h.programZ - h.planes.lower) / h.planes.height(), 0.0, 1.0) : 0.0;
+}
+
+/// Move i's end points on the programmed contour's plane.
+std::pair<geometry::Vec2, geometry::Vec2> programEnds(const Toolpath& tp, std::size_t i) {
+  const double s = programLevel(tp);
+  const geometry::Segment& l = tp.moves[i].lower;
+  const geometry::Segment& u = tp.upperOf(i);
+  return {(1.0 - s) * l.start + s * u.start, (1.0 - s) * l.end + s * u.end};
+}
+
 bool atSeam(const Toolpath& tp, std::size_t a, std::size_t b, double tol) {
-  const geometry::Segment& p = tp.moves[a].lower;
-  const geometry::Segment& q = tp.moves[b].lower;
-  return (p.start - q.end).norm() <= tol || (p.end - q.start).norm() <= tol || (p.start - q.start).norm() <= tol ||
-         (p.end - q.end).norm() <= tol;
+  const auto [ps, pe] = programEnds(tp, a);
+  const auto [qs, qe] = programEnds(tp, b);
+  return (ps - qe).norm() <= tol || (pe - qs).norm() <= tol || (ps - qs).norm() <= tol || (pe - qe).norm() <= tol;
 }
 
 void seamNote(const Toolpath& tp, const SourceFile* src, std::size_t mi, std::size_t mj, const geometry::Vec3& p,
@@ -70,6 +84,7 @@ struct Contour {
   const char* name = "the cut path";  ///< how messages name it
   double z = 0.0;
   bool upperPlane = false;
+  bool seamAllowed = false;  ///< a taper program: contacts at the taper's seam are notes
 };
 
 /// Self-intersection of one contour, exact on lines and arcs. The pairs found go to seen.
@@ -88,11 +103,11 @@ void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const
     const Move& later = moves[mj];
     const std::string other = "line " + std::to_string(moves[mi].line);
     const geometry::Vec3 p = at3(x.point, c.z);
-    if (c.upperPlane && x.kind != geometry::ContactKind::Crossing && !x.adjacent &&
+    if (c.seamAllowed && x.kind != geometry::ContactKind::Crossing && !x.adjacent &&
         !(x.kind == geometry::ContactKind::Overlap &&
           isRetrace(c.segments[x.first], c.segments[x.second], x, options.tolerance)) &&
         atSeam(toolpath, mi, mj, options.tolerance)) {
-      seamNote(toolpath, src, mi, mj, p, " on the upper plane", diags);
+      seamNote(toolpath, src, mi, mj, p, c.upperPlane ? " on the upper plane" : " on the lower plane", diags);
       continue;
     }
     switch (x.kind) {
@@ -169,8 +184,31 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
                                deg(tw.maxAngle) + ", so the wire turns over and the surface twists through itself"));
     }
   }
-  // Horizontal sections between the planes, each tested exactly.
+  // Folds at the joints between neighbouring patches: exact.
   MovePairs reported;
+  const std::size_t count = path.moveIndex.size();
+  for (std::size_t k = 0; k + 1 < count || (closed && k + 1 == count && count > 2); ++k) {
+    const std::size_t i = path.moveIndex[k], j = path.moveIndex[(k + 1) % count];
+    if ((moves[i].lower.end - moves[j].lower.start).norm() > options.tolerance) continue;
+    if (k + 1 == count) {
+      // The wrap from the lead-out back to the lead-in at a start hole turns round by design.
+      const double sp = programLevel(toolpath);
+      auto velocity = [](const geometry::Segment& g, double t) { return geometry::Vec2(g.tangentAt(t) * g.length()); };
+      const geometry::Vec2 out = (1.0 - sp) * velocity(moves[i].lower, 1.0) + sp * velocity(toolpath.upper[i], 1.0);
+      const geometry::Vec2 in = (1.0 - sp) * velocity(moves[j].lower, 0.0) + sp * velocity(toolpath.upper[j], 0.0);
+      if (std::abs(geometry::cross(out, in)) <= 1e-9 * out.norm() * in.norm() && out.dot(in) < 0) continue;
+    }
+    const std::optional<double> s =
+        geometry::foldAtJoint(moves[i].lower, toolpath.upper[i], moves[j].lower, toolpath.upper[j]);
+    if (!s) continue;
+    reported.insert({std::min(i, j), std::max(i, j)});
+    const geometry::Vec3 p = geometry::surfacePoint(moves[j].lower, toolpath.upper[j], planes, 0.0, *s);
+    diags.report(finding(Severity::Error, Code::SurfaceFold, src, moves[j], j, p,
+                         "the surface folds back at the start of this move, at z " + formatFixed(p.z(), 3) +
+                             ": the wire turns round by 180° there (after line " + std::to_string(moves[i].line) +
+                             ")"));
+  }
+  // Horizontal sections between the planes, each tested exactly.
   const int levels = std::max(2, options.surfaceLevels);
   for (int level = 1; level < levels; ++level) {
     const double s = static_cast<double>(level) / levels;
@@ -260,13 +298,14 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   }
 
   MovePairs seen;
-  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower};
+  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
   checkContour(lower, closure.endsAtStart, toolpath, src, options, diags, seen);
   if (!taper) return;
 
   Contour upper;
   upper.name = "the upper contour";
   upper.upperPlane = true;
+  upper.seamAllowed = true;
   upper.z = toolpath.heights.known ? toolpath.heights.planes.upper : 0.0;
   upper.moveIndex = path.moveIndex;
   for (std::size_t i : path.moveIndex) upper.segments.push_back(toolpath.upper[i]);

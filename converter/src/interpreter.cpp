@@ -301,7 +301,8 @@ class Interpreter {
       switch (issue.problem) {
         case geometry::OffsetProblem::Collapsed:
           message = std::string("the taper offset of ") + fmt3(std::abs(distance[issue.index])) + " mm on the " +
-                    plane + " plane is larger than this arc's radius " + fmt3(m.lower.radius) + " mm: the arc vanishes";
+                    plane + " plane is larger than this arc's radius " + fmt3(m.lower.radius) +
+                    " mm: there the arc shrinks to a sharp corner";
           break;
         case geometry::OffsetProblem::Reversed:
           message = std::string("the taper offset of ") + fmt3(std::abs(distance[issue.index])) + " mm on the " +
@@ -313,7 +314,7 @@ class Interpreter {
           break;
       }
       Diagnostic d;
-      d.severity = Severity::Error;
+      d.severity = issue.problem == geometry::OffsetProblem::Collapsed ? Severity::Warning : Severity::Error;
       d.code = Code::OffsetCollapses;
       d.source = src_;
       d.span = m.span;

@@ -100,30 +100,42 @@ OffsetChainResult offsetChain(std::span<const Segment> chain, std::span<const do
   OffsetChainResult result;
   const std::size_t n = chain.size();
   std::vector<Segment> raw(n);
+  std::vector<bool> collapsed(n, false);
   for (std::size_t i = 0; i < n; ++i) {
     std::optional<Segment> o = offsetSegment(chain[i], i < distances.size() ? distances[i] : 0.0);
     if (!o) {
       result.issues.push_back({i, OffsetProblem::Collapsed});
       raw[i] = chain[i];
+      collapsed[i] = true;
     } else {
       raw[i] = *o;
     }
   }
-  // corner[i]: where element i ends and element i+1 starts.
+  // corner[i]: where element i ends and the next element that survives the offset starts. A
+  // collapsed element shrinks to a point: the corner of its neighbours.
+  auto nextAlive = [&](std::size_t i) -> std::optional<std::size_t> {
+    for (std::size_t step = 1; step < n + 1; ++step) {
+      const std::size_t j = i + step;
+      if (j >= n && !options.closed) return std::nullopt;
+      if (!collapsed[j % n]) return j % n;
+    }
+    return std::nullopt;
+  };
   std::vector<Vec2> corner(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const bool last = i + 1 == n;
-    if (last && !options.closed) {
+    if (collapsed[i]) continue;
+    const std::optional<std::size_t> next = nextAlive(i);
+    if (!next || *next == i) {
       corner[i] = raw[i].end;
       continue;
     }
     const Segment& a = raw[i];
-    const Segment& b = raw[last ? 0 : i + 1];
+    const Segment& b = raw[*next];
     if ((a.end - b.start).norm() <= options.tolerance) {
       corner[i] = 0.5 * (a.end + b.start);
       continue;
     }
-    Vec2 candidates[2];
+    Vec2 candidates[2] = {Vec2::Zero(), Vec2::Zero()};
     const int count = carrierIntersections(a, b, candidates);
     if (count == 0) {
       result.issues.push_back({i, OffsetProblem::NoCorner});
@@ -134,8 +146,29 @@ OffsetChainResult offsetChain(std::span<const Segment> chain, std::span<const do
     corner[i] = candidates[0];
     if (count == 2 && (candidates[1] - near).norm() < (candidates[0] - near).norm()) corner[i] = candidates[1];
   }
+  // Collapsed elements take the corner of the survivor before them (or, at the open start, the
+  // start of the first survivor).
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!collapsed[i]) continue;
+    std::optional<std::size_t> before;
+    for (std::size_t step = 1; step <= n && !before; ++step) {
+      if (step > i && !options.closed) break;
+      const std::size_t j = (i + n - step) % n;
+      if (!collapsed[j]) before = j;
+    }
+    if (before) {
+      corner[i] = corner[*before];
+    } else {
+      const std::optional<std::size_t> next = nextAlive(i);
+      corner[i] = next ? raw[*next].start : chain[i].end;
+    }
+  }
   result.segments.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
+    if (collapsed[i]) {
+      result.segments[i] = Segment::line(corner[i], corner[i]);
+      continue;
+    }
     Vec2 s = i > 0 ? corner[i - 1] : options.closed ? corner[n - 1] : raw[0].start;
     Vec2 e = corner[i];
     if (i == 0 && options.anchorStart && !options.closed && !chain[0].isArc()) s = chain[0].start;

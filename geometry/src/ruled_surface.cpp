@@ -164,6 +164,36 @@ TwistMeasure measureTwist(const Segment& lower, const Segment& upper) {
   return m;
 }
 
+std::optional<double> foldAtJoint(const Segment& lowerA, const Segment& upperA, const Segment& lowerB,
+                                  const Segment& upperB) {
+  // Section directions at the joint: dA(s) = a + s b (end of A), dB(s) = c + s d (start of B).
+  const Vec2 a = derivative(lowerA, 1.0), b = derivative(upperA, 1.0) - a;
+  const Vec2 c = derivative(lowerB, 0.0), d = derivative(upperB, 0.0) - c;
+  const double k0 = cross(a, c), k1 = cross(a, d) + cross(b, c), k2 = cross(b, d);
+  double roots[2];
+  int count = 0;
+  const double scale = std::max({a.squaredNorm(), b.squaredNorm(), c.squaredNorm(), d.squaredNorm(), 1e-300});
+  if (std::abs(k2) <= 1e-14 * scale) {
+    if (std::abs(k1) > 1e-14 * scale) roots[count++] = -k0 / k1;
+  } else {
+    const double disc = k1 * k1 - 4 * k2 * k0;
+    if (disc >= 0) {
+      const double q = -0.5 * (k1 + std::copysign(std::sqrt(disc), k1));
+      roots[count++] = q / k2;
+      if (q != 0.0) roots[count++] = k0 / q;
+    }
+  }
+  std::optional<double> best;
+  for (int i = 0; i < count; ++i) {
+    const double s = roots[i];
+    if (!(s > 1e-9 && s < 1.0 - 1e-9)) continue;
+    const Vec2 da = a + s * b, db = c + s * d;
+    if (da.norm() <= 1e-12 || db.norm() <= 1e-12) continue;
+    if (da.dot(db) < 0 && (!best || s < *best)) best = s;
+  }
+  return best;
+}
+
 bool appendSection(const Segment& lower, const Segment& upper, double s, double tolerance, std::vector<Segment>& out) {
   const Vec2 a = (1.0 - s) * lower.start + s * upper.start;
   const Vec2 b = (1.0 - s) * lower.end + s * upper.end;

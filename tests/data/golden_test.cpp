@@ -4,6 +4,7 @@
 // KERF_UPDATE_GOLDEN=1 rewrites the expectations instead of comparing.
 #include "kerf/converter/analysis.h"
 #include "kerf/converter/checks.h"
+#include "kerf/converter/dialect.h"
 #include "kerf/converter/points.h"
 #include "kerf/converter/report.h"
 
@@ -49,6 +50,10 @@ class GoldenTest : public testing::Test {
                      : m == "absolute" ? ArcCentreMode::Absolute
                                        : ArcCentreMode::Incremental;
     }
+    if (opt.count("dialect")) io.dialect = parseDialect(opt.at("dialect"));
+    if (opt.count("thickness")) io.thickness = std::stod(opt.at("thickness"));
+    if (opt.count("upper_z")) io.upperZ = std::stod(opt.at("upper_z"));
+    if (opt.count("program_z")) io.programZ = std::stod(opt.at("program_z"));
     PointRequest req;
     if (opt.count("step")) req.sampling = kerf::geometry::Sampling::step(std::stod(opt.at("step")));
     if (opt.count("tolerance")) req.sampling = kerf::geometry::Sampling::tolerance(std::stod(opt.at("tolerance")));
@@ -72,8 +77,15 @@ class GoldenTest : public testing::Test {
       profile = *parsed;
     }
     std::string points;
+    std::optional<Toolpath> flat;
     if (!diags.hasErrors()) {
-      const auto out = emitPoints(a.toolpath, &src, profile, req, emitDiags);
+      // A taper program is written at its `plane` (default lower), and both planes as points4.
+      const auto plane = parsePlane(opt.count("plane") ? opt.at("plane") : "lower");
+      ASSERT_TRUE(plane.has_value()) << "bad plane option";
+      flat = toolpathAtPlane(a.toolpath, *plane, 0.001, &src, emitDiags);
+    }
+    if (flat) {
+      const auto out = emitPoints(*flat, &src, profile, req, emitDiags);
       if (out) {
         points = "# " + std::to_string(out->points) + " points, " +
                  (out->sampling.mode == kerf::geometry::SamplingMode::Step ? "step " : "tolerance ") +
@@ -85,6 +97,18 @@ class GoldenTest : public testing::Test {
       points = "# not written: the program has errors\n";
     }
     compare("expected.bp95d", points);
+    if (a.toolpath.isTaper()) {
+      std::string both;
+      Diagnostics d4(50);
+      if (!diags.hasErrors()) {
+        const auto out = emitPoints4(a.toolpath, &src, profile, req, false, d4);
+        if (out) both = "# " + std::to_string(out->points) + " point pairs\n" + out->text;
+        for (const auto& d : d4.all()) both += "# " + formatDiagnostic(d);
+      } else {
+        both = "# not written: the program has errors\n";
+      }
+      compare("expected.points4", both);
+    }
   }
 
  private:

@@ -22,7 +22,7 @@ namespace kerf::geometry {
 std::optional<Segment> offsetSegment(const Segment& s, double d);
 
 enum class OffsetProblem : std::uint8_t {
-  Collapsed,  ///< an arc whose radius the offset makes zero or negative
+  Collapsed,  ///< an arc whose radius the offset makes zero or negative: it becomes a point
   Reversed,   ///< trimming at the corners turns the element round: the offset swallows it
   NoCorner,   ///< the two offset elements never meet (parallel lines with different distances)
 };
@@ -49,7 +49,9 @@ struct OffsetChainResult {
 };
 
 /// Offsets every element of chain by distances[i] and joins them at sharp corners. A collapsed
-/// element is kept as its original (and reported) so the result still pairs 1:1 with the input.
+/// arc shrinks to a point where its neighbours' offsets meet (the rounded corner of a punch
+/// becomes a sharp corner on the other plane) and is reported; the result still pairs 1:1 with
+/// the input.
 OffsetChainResult offsetChain(std::span<const Segment> chain, std::span<const double> distances,
                               const OffsetChainOptions& options = {});
 

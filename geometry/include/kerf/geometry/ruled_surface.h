@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -61,6 +62,13 @@ struct TwistMeasure {
   bool defined = false;   ///< false when a side has length zero (a point: no direction)
 };
 TwistMeasure measureTwist(const Segment& lower, const Segment& upper);
+
+/// Where two consecutive patches (a ends where b starts) fold onto each other: the height s in
+/// (0, 1) at which the section turns back by exactly 180 degrees at their joint (the section
+/// directions there, (1 - s) L' + s U', are linear in s, so this is the root of a quadratic:
+/// exact). Nothing when they never do.
+std::optional<double> foldAtJoint(const Segment& lowerA, const Segment& upperA, const Segment& lowerB,
+                                  const Segment& upperB);
 
 /// The horizontal section of the patch at s, appended to out: one exact segment when the section
 /// is a line or an arc (line with line; arcs with the same start angle and sweep, e.g. the

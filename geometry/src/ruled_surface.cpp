@@ -257,22 +257,27 @@ bool earClip(const std::vector<Vec3>& v, std::vector<std::uint32_t> poly, bool r
   while (poly.size() > 3) {
     bool clipped = false;
     const std::size_t n = poly.size();
-    for (std::size_t i = 0; i < n && !clipped; ++i) {
-      const std::uint32_t ia = poly[(i + n - 1) % n], ib = poly[i], ic = poly[(i + 1) % n];
-      const Vec2 a = p(ia), b = p(ib), c = p(ic);
-      if (sign * cross(b - a, c - b) <= 0) continue;  // reflex or flat
-      bool inside = false;
-      for (std::size_t j = 0; j < n && !inside; ++j) {
-        const std::uint32_t iq = poly[j];
-        if (iq == ia || iq == ib || iq == ic) continue;
-        const Vec2 q = p(iq);
-        inside = sign * cross(b - a, q - a) > 0 && sign * cross(c - b, q - b) > 0 && sign * cross(a - c, q - c) > 0;
+    // First look for a proper (convex) ear; failing that, a flat one (a vertex in the middle of a
+    // straight run: its triangle has no area, but the vertex must stay connected).
+    for (std::size_t pass = 0; pass < 2 && !clipped; ++pass)
+      for (std::size_t i = 0; i < n && !clipped; ++i) {
+        const std::uint32_t ia = poly[(i + n - 1) % n], ib = poly[i], ic = poly[(i + 1) % n];
+        const Vec2 a = p(ia), b = p(ib), c = p(ic);
+        const double turn = sign * cross(b - a, c - b);
+        const bool flat = std::abs(turn) <= 1e-12 * (b - a).norm() * (c - b).norm() && (b - a).dot(c - b) > 0;
+        if (pass == 0 ? turn <= 0 || flat : !flat) continue;
+        bool inside = false;
+        for (std::size_t j = 0; j < n && !inside; ++j) {
+          const std::uint32_t iq = poly[j];
+          if (iq == ia || iq == ib || iq == ic) continue;
+          const Vec2 q = p(iq);
+          inside = sign * cross(b - a, q - a) > 0 && sign * cross(c - b, q - b) > 0 && sign * cross(a - c, q - c) > 0;
+        }
+        if (inside) continue;
+        out.push_back({ia, ib, ic});
+        poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+        clipped = true;
       }
-      if (inside) continue;
-      out.push_back({ia, ib, ic});
-      poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
-      clipped = true;
-    }
     if (!clipped) return false;
   }
   if (poly.size() == 3) out.push_back({poly[0], poly[1], poly[2]});

@@ -31,4 +31,11 @@ inline std::unique_ptr<Run> run(const std::string& text, const converter::Interp
   return r;
 }
 
+/// The diagnostics as text, for failure messages.
+inline std::string dump(const converter::Diagnostics& d) {
+  std::string out = "\n";
+  for (const auto& x : d.all()) out += converter::formatDiagnostic(x);
+  return out;
+}
+
 }  // namespace kerf::test

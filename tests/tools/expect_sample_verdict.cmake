@@ -1,0 +1,21 @@
+# Runs `kerf check FILE` on a deliberately bad sample and requires exit code 1 and the code named
+# in the sample's header line `(Expect: error Kxxxx)` among the diagnostics.
+#   cmake -DKERF=... -DFILE=... -P expect_sample_verdict.cmake
+file(READ "${FILE}" text)
+string(REGEX MATCH "\\(Expect: (error|warning) (K[0-9][0-9][0-9][0-9])\\)" found "${text}")
+if(NOT found)
+  message(FATAL_ERROR "${FILE} has no (Expect: error Kxxxx) header line")
+endif()
+set(severity "${CMAKE_MATCH_1}")
+set(code "${CMAKE_MATCH_2}")
+execute_process(COMMAND "${KERF}" check "${FILE}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 1)
+  message(FATAL_ERROR "kerf check ${FILE}: exit code ${rc}, expected 1\n${err}")
+endif()
+string(REGEX MATCH ": ${severity}: [^\n]*\\[${code}\\]" hit "${err}")
+if(NOT hit)
+  message(FATAL_ERROR "kerf check ${FILE}: no ${severity} ${code} in\n${err}")
+endif()
+if(err MATCHES "runtime error|AddressSanitizer|LeakSanitizer")
+  message(FATAL_ERROR "sanitizer report:\n${err}")
+endif()

@@ -1,0 +1,216 @@
+// The ruled surface: exact evaluation, slope, area, twist, folds, and the mesh.
+#include "kerf/geometry/ruled_surface.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using namespace kerf::geometry;
+
+constexpr double kDeg = 180.0 / kPi;
+
+TEST(RuledSurface, SlopeMatchesTheClosedFormTo1e9Degrees) {
+  // A constant offset o over a height h: slope = atan(o / h), along the whole patch.
+  for (const double o : {0.05, 0.5, 1.0, 3.3, 11.0}) {
+    for (const double h : {5.0, 20.0, 137.0}) {
+      const Planes planes{0.0, h};
+      const Segment lo = Segment::line({0, 0}, {10, 3});
+      const Segment up = Segment::line({0 + o, 0}, {10 + o, 3});
+      const double expect = std::atan(o / h) * kDeg;
+      for (double t : {0.0, 0.3, 1.0}) EXPECT_NEAR(slopeAt(lo, up, planes, t) * kDeg, expect, 1e-9);
+      const PatchMeasures m = measurePatch(lo, up, planes);
+      EXPECT_TRUE(m.exact);
+      EXPECT_NEAR(m.maxSlope.value * kDeg, expect, 1e-9);
+      EXPECT_NEAR(m.minSlope.value * kDeg, expect, 1e-9);
+      // Concentric arcs r and r - o: the same slope, found by sampling and refinement.
+      const Segment la = Segment::arc({20, 0}, {0, 20}, {0, 0}, ArcDirection::CounterClockwise);
+      const Segment ua = Segment::arc({20 - o, 0}, {0, 20 - o}, {0, 0}, ArcDirection::CounterClockwise);
+      const PatchMeasures ma = measurePatch(la, ua, planes);
+      EXPECT_NEAR(ma.maxSlope.value * kDeg, expect, 1e-9);
+      EXPECT_NEAR(ma.minSlope.value * kDeg, expect, 1e-9);
+    }
+  }
+}
+
+TEST(RuledSurface, LinePairExtremesAreExact) {
+  // Offset (0,-2) at t = 0 and (0,2) at t = 1: vertical in the middle, atan(2/10) at the ends.
+  const Planes planes{0.0, 10.0};
+  const PatchMeasures m = measurePatch(Segment::line({0, 2}, {10, -2}), Segment::line({0, 0}, {10, 0}), planes);
+  EXPECT_NEAR(m.minSlope.value, 0.0, 1e-15);
+  EXPECT_NEAR(m.minSlope.t, 0.5, 1e-15);
+  EXPECT_NEAR(m.maxSlope.value, std::atan(0.2), 1e-15);
+  EXPECT_NEAR(m.maxOffsetY.value, 2.0, 1e-15);
+}
+
+TEST(RuledSurface, AreaOfAFrustumAndOfAWall) {
+  const Planes planes{0.0, 20.0};
+  // A wall: 10 x 20.
+  EXPECT_NEAR(patchArea(Segment::line({0, 0}, {10, 0}), Segment::line({0, 0}, {10, 0}), planes), 200.0, 1e-9);
+  // A cone frustum, radii 10 and 8: lateral area pi (r1 + r2) slant, per quarter.
+  const Segment lo = Segment::arc({10, 0}, {0, 10}, {0, 0}, ArcDirection::CounterClockwise);
+  const Segment up = Segment::arc({8, 0}, {0, 8}, {0, 0}, ArcDirection::CounterClockwise);
+  const double slant = std::hypot(2.0, 20.0);
+  EXPECT_NEAR(patchArea(lo, up, planes), kPi * 18.0 * slant / 4.0, 1e-9 * 200);
+}
+
+TEST(RuledSurface, TwistIsFoundExactlyAndItsNearMissIsNot) {
+  const Segment lo = Segment::line({0, 0}, {10, 0});
+  auto rotated = [](double deg) {
+    const Vec2 d = 10.0 * direction(deg / kDeg);
+    return Segment::line({0, 5}, Vec2(Vec2(0, 5) + d));
+  };
+  EXPECT_NEAR(measureTwist(lo, rotated(89.0)).maxAngle * kDeg, 89.0, 1e-9);
+  EXPECT_NEAR(measureTwist(lo, rotated(91.0)).maxAngle * kDeg, 91.0, 1e-9);
+  EXPECT_NEAR(measureTwist(lo, rotated(180.0)).maxAngle * kDeg, 180.0, 1e-9);
+  // An arc's tangent turns linearly: a half circle against a line turns from 90 to -90 degrees.
+  const Segment half = Segment::arc({10, 0}, {-10, 0}, {0, 0}, ArcDirection::CounterClockwise);
+  const TwistMeasure tw = measureTwist(Segment::line({10, 0}, {-10, 0}), half);
+  EXPECT_NEAR(tw.maxAngle * kDeg, 90.0, 1e-9);
+  // A point has no direction.
+  EXPECT_FALSE(measureTwist(lo, Segment::line({1, 1}, {1, 1})).defined);
+}
+
+TEST(RuledSurface, FoldAtAJointIsTheRootOfItsQuadratic) {
+  // The corner (10,0): below it turns 90 degrees, above it turns back over the first side; half
+  // way up the second side runs exactly back along the first.
+  const Segment l1 = Segment::line({0, 0}, {10, 0}), u1 = Segment::line({0, 0}, {10, 0});
+  const Segment l2 = Segment::line({10, 0}, {10, 10}), u2 = Segment::line({10, 0}, {0, -10});
+  const auto s = foldAtJoint(l1, u1, l2, u2);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(*s, 0.5, 1e-12);
+  const Segment near = Segment::line({10, 0}, {0, -9});  // near miss: turns 170 degrees at most
+  EXPECT_FALSE(foldAtJoint(l1, u1, l2, Segment::line({10, 0}, {20, -1})).has_value());
+  EXPECT_TRUE(foldAtJoint(l1, u1, l2, near).has_value() == false || *foldAtJoint(l1, u1, l2, near) > 0.0);
+}
+
+TEST(RuledSurface, SectionsOfLinesAndMatchingArcsAreExact) {
+  std::vector<Segment> out;
+  EXPECT_TRUE(appendSection(Segment::line({0, 0}, {10, 0}), Segment::line({2, 2}, {12, 2}), 0.25, 1e-3, out));
+  EXPECT_NEAR((out.back().start - Vec2(0.5, 0.5)).norm(), 0, 1e-15);
+  const Segment lo = Segment::arc({10, 0}, {0, 10}, {0, 0}, ArcDirection::CounterClockwise);
+  const Segment up = Segment::arc({8, 0}, {0, 8}, {0, 0}, ArcDirection::CounterClockwise);
+  EXPECT_TRUE(appendSection(lo, up, 0.5, 1e-3, out));
+  EXPECT_NEAR(out.back().radius, 9.0, 1e-12);
+  // An arc with a line: a polyline within the tolerance.
+  out.clear();
+  EXPECT_FALSE(appendSection(lo, Segment::line({8, 0}, {0, 8}), 0.5, 1e-3, out));
+  EXPECT_GT(out.size(), 2u);
+  for (const Segment& piece : out) {
+    const double tMid = 0.5;  // chord midpoints stay near the true section
+    (void)tMid;
+    EXPECT_FALSE(piece.isArc());
+  }
+}
+
+/// Every edge (unordered) and how many triangles use it.
+std::map<std::pair<std::uint32_t, std::uint32_t>, int> edgeUse(const Mesh& m) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> use;
+  for (const auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t a = t[k], b = t[(k + 1) % 3];
+      if (a > b) std::swap(a, b);
+      ++use[{a, b}];
+    }
+  return use;
+}
+
+/// The circle-under-square part: quarter arcs below, square sides above, 30 mm apart.
+void circleUnderSquare(std::vector<Segment>& lo, std::vector<Segment>& up) {
+  const Vec2 p[4] = {{10, 0}, {0, 10}, {-10, 0}, {0, -10}};
+  for (int i = 0; i < 4; ++i) {
+    lo.push_back(Segment::arc(p[i], p[(i + 1) % 4], {0, 0}, ArcDirection::CounterClockwise));
+    up.push_back(Segment::line(p[i], p[(i + 1) % 4]));
+  }
+}
+
+TEST(RuledSurface, ClosedMeshWithCapsIsWatertightAndOriented) {
+  std::vector<Segment> lo, up;
+  circleUnderSquare(lo, up);
+  MeshOptions opt;
+  opt.tolerance = 0.01;
+  opt.lowerCap = opt.upperCap = true;
+  const Mesh m = meshRuledSurface(lo, up, {0.0, 30.0}, opt);
+  EXPECT_EQ(m.capsMade, 2u);
+  for (const auto& [edge, n] : edgeUse(m)) EXPECT_EQ(n, 2) << edge.first << "-" << edge.second;
+  // Oriented: every directed edge appears once.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (const auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  for (const auto& [edge, n] : directed) EXPECT_EQ(n, 1);
+  // Without caps: the two contours are the only edges used once.
+  const Mesh open = meshRuledSurface(lo, up, {0.0, 30.0}, {});
+  std::size_t boundary = 0;
+  for (const auto& [edge, n] : edgeUse(open)) {
+    EXPECT_LE(n, 2);
+    if (n == 1) {
+      ++boundary;
+      EXPECT_TRUE(std::abs(open.vertices[edge.first].z()) < 1e-12 ||
+                  std::abs(open.vertices[edge.first].z() - 30) < 1e-12);
+    }
+  }
+  EXPECT_GT(boundary, 8u);
+}
+
+/// Distance from p to triangle abc.
+double pointTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = (b - a).cross(c - a);
+  const double nn = n.squaredNorm();
+  if (nn > 0) {
+    const Vec3 q = p - n * (n.dot(p - a) / nn);
+    const double u = n.dot((c - b).cross(q - b)), v = n.dot((a - c).cross(q - c)), w = n.dot((b - a).cross(q - a));
+    if (u >= 0 && v >= 0 && w >= 0) return (p - q).norm();
+  }
+  auto seg = [&](const Vec3& x, const Vec3& y) {
+    const Vec3 d = y - x;
+    const double t = d.squaredNorm() > 0 ? std::clamp(d.dot(p - x) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    return (p - (x + t * d)).norm();
+  };
+  return std::min({seg(a, b), seg(b, c), seg(c, a)});
+}
+
+TEST(RuledSurface, MeshStaysWithinItsToleranceOfTheExactSurface) {
+  // A twisted patch (arc below, a line turned 60 degrees above) and the circle-under-square.
+  std::vector<Segment> lo, up;
+  circleUnderSquare(lo, up);
+  lo.push_back(Segment::arc({30, 0}, {0, 30}, {0, 0}, ArcDirection::CounterClockwise));
+  up.push_back(Segment::line({25, 5}, {10, 20}));
+  for (const double tol : {0.05, 0.01}) {
+    MeshOptions opt;
+    opt.tolerance = tol;
+    const Planes planes{0.0, 30.0};
+    const Mesh m = meshRuledSurface(lo, up, planes, opt);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double worst = 0.0;
+    for (std::size_t patch = 0; patch < lo.size(); ++patch) {
+      for (int k = 0; k < 60; ++k) {
+        const Vec3 p = surfacePoint(lo[patch], up[patch], planes, u(rng), u(rng));
+        double best = 1e300;
+        for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+          if (m.trianglePatch[t] != patch) continue;
+          const auto& tri = m.triangles[t];
+          best = std::min(best, pointTriangle(p, m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]));
+        }
+        worst = std::max(worst, best);
+      }
+    }
+    EXPECT_LE(worst, tol) << "tolerance " << tol;
+    EXPECT_GT(worst, tol / 1000) << "a mesh that matches exactly here would not test anything";
+  }
+}
+
+TEST(RuledSurface, NormalsOfAVerticalCounterClockwiseWallPointOutwards) {
+  const Segment arc = Segment::arc({10, 0}, {0, 10}, {0, 0}, ArcDirection::CounterClockwise);
+  const Vec3 n = surfaceNormal(arc, arc, {0.0, 10.0}, 0.5, 0.5);
+  EXPECT_NEAR(n.dot(Vec3(std::sqrt(0.5), std::sqrt(0.5), 0)), 1.0, 1e-12);
+}
+
+}  // namespace

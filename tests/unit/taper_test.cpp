@@ -1,0 +1,327 @@
+// 4-axis taper: dialects, heights, pairing, and every check with a part that trips it and a
+// near miss that must not; metamorphic reruns of the samples.
+#include "kerf/converter/analysis.h"
+#include "kerf/converter/checks.h"
+#include "kerf/converter/dialect.h"
+#include "kerf/converter/points.h"
+#include "kerf/converter/summary.h"
+
+#include "converter_support.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace {
+
+using namespace kerf::converter;
+using kerf::geometry::Segment;
+using kerf::geometry::Vec2;
+using kerf::test::run;
+
+std::set<Code> errorCodes(const Diagnostics& d) {
+  std::set<Code> out;
+  for (const auto& x : d.all())
+    if (x.severity == Severity::Error) out.insert(x.code);
+  return out;
+}
+
+std::unique_ptr<kerf::test::Run> check(const std::string& text, CheckOptions co = {}, InterpreterOptions io = {}) {
+  auto r = run(text, io);
+  checkToolpath(r->analysis.toolpath, r->source.get(), co, r->diags);
+  return r;
+}
+
+/// xyuv-abs square 10 x 10 below; above, corner points given (U V after each X Y).
+std::string xyuvSquare(const std::vector<Vec2>& upper, double thickness = 10.0) {
+  const Vec2 lower[5] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}};
+  std::ostringstream s;
+  s << "M101 P" << thickness << "\nG92 X0 Y0 U" << upper[0].x() << " V" << upper[0].y() << "\n";
+  for (int i = 1; i < 5; ++i)
+    s << "G1 X" << lower[i].x() << " Y" << lower[i].y() << " G1 U" << upper[i].x() << " V" << upper[i].y() << "\n";
+  s << "M2\n";
+  return s.str();
+}
+
+std::vector<Vec2> shifted(double dx, double dy) {
+  return {{dx, dy}, {10 + dx, dy}, {10 + dx, 10 + dy}, {dx, 10 + dy}, {dx, dy}};
+}
+
+// ---- dialects and heights -------------------------------------------------------------------
+
+TEST(Taper, EveryDialectParsesAndIsDetected) {
+  struct Case {
+    const char* text;
+    Dialect dialect;
+  } cases[] = {
+      {"M101 P20\nG92 X0 Y0 U0 V0\nG1 X5 Y0 G1 U5 V0\nG2 X10 Y5 I5 J0 G1 U10 V5\nM2\n", Dialect::XyuvAbs},
+      {"G92 X0 Y0 I20. J0\nG1 X10 Y0 U-1 V0\nG3 X10 Y0 I-10 J0 U-1 V0 K0 L0\nM2\n", Dialect::XyuvRel},
+      {"TN0 TP20.\nG141\nG01 X10. Y0 : G02 X10. Y0 I5. J0\nG140\nM02\n", Dialect::SodickColon},
+      {"G92 X0 Y-5 I20.\nG51 A2.\nG01 X0 Y0\nX10.\nG50\nG01 Y-5.\nM02\n", Dialect::TaperAngle},
+      {"G92 X0 Y-5 I20.\nG52 T2.\nG01 X0 Y0\nX10.\nG50\nG01 Y-5.\nM02\n", Dialect::TaperAngle},
+  };
+  for (const Case& c : cases) {
+    auto r = run(c.text);
+    EXPECT_EQ(r->path().dialect, c.dialect) << c.text;
+    EXPECT_FALSE(r->diags.hasErrors()) << c.text << kerf::test::dump(r->diags);
+    EXPECT_TRUE(r->hasCode(Code::DialectChosen));
+    EXPECT_EQ(r->path().upper.size(), r->path().moves.size());
+    EXPECT_TRUE(r->path().heights.known);
+  }
+}
+
+TEST(Taper, AmbiguousUvIsAnErrorUntilTheDialectIsGiven) {
+  const std::string text = "G92 X0 Y0 U0 V0\nG1 X10 Y0 U11 V0\nM2\n";
+  auto r = run(text);
+  EXPECT_TRUE(r->hasCode(Code::DialectAmbiguous));
+  InterpreterOptions io;
+  io.thickness = 10.0;
+  io.dialect = Dialect::XyuvAbs;
+  auto a = run(text, io);
+  EXPECT_FALSE(a->diags.hasErrors()) << kerf::test::dump(a->diags);
+  EXPECT_NEAR(a->path().upper[0].end.x(), 11.0, 1e-12);
+  io.dialect = Dialect::XyuvRel;
+  auto rel = run(text, io);
+  EXPECT_FALSE(rel->diags.hasErrors());
+  EXPECT_NEAR(rel->path().upper[0].end.x(), 21.0, 1e-12);  // lower 10 + offset 11
+  io.dialect = Dialect::Plain;
+  EXPECT_TRUE(run(text, io)->hasCode(Code::WordNotInDialect));
+}
+
+TEST(Taper, HeightsComeFromOptionsFirstThenTheProgram) {
+  const std::string body = "G92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U11 V0\nM2\n";
+  EXPECT_TRUE(run("M100 P1 Q1\n" + body)->hasCode(Code::HeightsMissing));
+  EXPECT_NEAR(run("M101 P12.5\n" + body)->path().heights.planes.upper, 12.5, 1e-12);
+  EXPECT_NEAR(run("(AXIS,XY_Z_POS,2)\n(AXIS,UV_Z_POS,32)\nM100 P1 Q1\n" + body)->path().heights.planes.height(), 30,
+              1e-12);
+  InterpreterOptions io;
+  io.upperZ = 40.0;
+  EXPECT_NEAR(run("M101 P12.5\n" + body, io)->path().heights.planes.upper, 40.0, 1e-12);
+  io.upperZ.reset();
+  io.lowerZ = 5.0;
+  io.thickness = 10.0;
+  EXPECT_NEAR(run("M101 P12.5\n" + body, io)->path().heights.planes.upper, 15.0, 1e-12);
+  // Sodick: TN the lower plane, TP the program plane (taken as the upper one here).
+  auto s = run("TN5. TP25.\nG01 X1 Y0 : X1 Y0\nM02\n");
+  EXPECT_NEAR(s->path().heights.planes.height(), 20.0, 1e-12);
+  // NCVC: G92 I thickness, J program plane.
+  auto n = run("G92 X0 Y-5 I30. J10.\nG51 T1.\nG01 X0 Y0\nG50\nG01 Y-5.\nM02\n");
+  EXPECT_NEAR(n->path().heights.programZ, 10.0, 1e-12);
+  EXPECT_NEAR(n->path().heights.planes.upper, 30.0, 1e-12);
+}
+
+TEST(Taper, TaperAngleOffsetsByHeightTimesTangent) {
+  // Lean left 2 degrees on a +X line, 25 mm up: the upper line is 25 tan 2 to the left (+Y).
+  auto r = run("G92 X0 Y-5. I25.\nG51 A2.\nG01 X0 Y0\nX10.\nY5.\nG50\nG01 X15.\nM02\n");
+  ASSERT_FALSE(r->diags.hasErrors()) << kerf::test::dump(r->diags);
+  const double d = 25.0 * std::tan(2.0 * kerf::geometry::kPi / 180.0);
+  const Segment& up = r->path().upper[1];
+  EXPECT_NEAR(up.start.y(), d, 1e-12);
+  EXPECT_NEAR(up.end.y(), d, 1e-12);
+  EXPECT_NEAR(up.end.x(), 10.0 - d, 1e-12);            // sharp corner with the next side
+  EXPECT_EQ(r->path().upper[0].start, Vec2(0, -5));    // the start-up line starts vertical
+  EXPECT_EQ(r->path().upper.back().end, Vec2(15, 5));  // the end line ends vertical
+  auto measures = measureSurface(r->path());
+  // Between two sharp corners the wire leans 2 degrees square to the side; at a right-angle
+  // corner the offset is the diagonal, sqrt(2) times as far: atan(sqrt(2) tan 2 deg).
+  const double toDeg = 180.0 / kerf::geometry::kPi;
+  EXPECT_NEAR(measures.patches[1].minSlope.value * toDeg, 2.0, 1e-9);
+  EXPECT_NEAR(measures.patches[1].maxSlope.value * toDeg, std::atan(std::sqrt(2.0) * d / 25.0) * toDeg, 1e-9);
+}
+
+// ---- each check: a part that trips it and a near miss ----------------------------------------
+
+TEST(TaperChecks, SlopeAboveTheMachineLimit) {
+  const double limit = 10.0 * std::tan(30.0 * kerf::geometry::kPi / 180.0);  // 5.7735
+  EXPECT_TRUE(errorCodes(check(xyuvSquare(shifted(limit + 0.001, 0)))->diags).count(Code::TaperTooSteep));
+  EXPECT_FALSE(errorCodes(check(xyuvSquare(shifted(limit - 0.001, 0)))->diags).count(Code::TaperTooSteep));
+  CheckOptions co;
+  co.maxTaperDegrees = 20.0;
+  EXPECT_TRUE(errorCodes(check(xyuvSquare(shifted(4.0, 0)), co)->diags).count(Code::TaperTooSteep));
+}
+
+TEST(TaperChecks, AngleWordBeyond45IsRefused) {
+  const std::string head = "G92 X0 Y-5. I10.\nG51 A";
+  EXPECT_TRUE(run(head + "45.1\nG01 X0 Y0\nM02\n")->hasCode(Code::TaperAngleTooLarge));
+  EXPECT_FALSE(run(head + "45.\nG01 X0 Y0\nM02\n")->hasCode(Code::TaperAngleTooLarge));
+}
+
+TEST(TaperChecks, UpperContourSelfIntersection) {
+  const auto bow = check(xyuvSquare({{0, 0}, {10, 0}, {0, 10}, {10, 10}, {0, 0}}, 30.0));
+  EXPECT_TRUE(errorCodes(bow->diags).count(Code::PathCrossesItself));
+  const auto fine = check(xyuvSquare({{0, 0}, {10, 0}, {9, 10}, {1, 10}, {0, 0}}, 30.0));
+  EXPECT_TRUE(errorCodes(fine->diags).empty()) << kerf::test::dump(fine->diags);
+}
+
+TEST(TaperChecks, SurfaceMeetsItselfBetweenSimpleContours) {
+  auto part = [](double px) {
+    std::ostringstream s;
+    s << "M101 P20\nG92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U10 V8\nG1 X8 Y1 G1 U" << px
+      << " V1\nG1 X2 Y3 G1 U-2 V4\nG1 X0 Y0 G1 U0 V0\nM2\n";
+    return s.str();
+  };
+  EXPECT_TRUE(errorCodes(check(part(0.0))->diags).count(Code::SurfaceSelfIntersection));
+  const auto near = check(part(6.0));
+  EXPECT_FALSE(errorCodes(near->diags).count(Code::SurfaceSelfIntersection)) << kerf::test::dump(near->diags);
+}
+
+TEST(TaperChecks, WireCrossingAndTwist) {
+  auto one = [](const char* upperEnd) {
+    return std::string("M101 P30\nG92 X0 Y0 U10 V0\nG1 X10 Y0 G1 ") + upperEnd + "\nM2\n";
+  };
+  // Upper runs exactly back: every generator passes through one point.
+  EXPECT_TRUE(errorCodes(check(one("U0 V0"))->diags).count(Code::WireCrossing));
+  // 91 degrees away: twisted; 89: fine.
+  auto turned = [&](double deg) {
+    const double a = deg * kerf::geometry::kPi / 180.0;
+    std::ostringstream s;
+    s << "U" << 10 + 10 * std::cos(a) << " V" << 10 * std::sin(a);
+    return check(one(s.str().c_str()));
+  };
+  EXPECT_TRUE(errorCodes(turned(91)->diags).count(Code::PatchTwisted));
+  const auto fine = turned(89);
+  EXPECT_FALSE(errorCodes(fine->diags).count(Code::PatchTwisted));
+  EXPECT_FALSE(errorCodes(fine->diags).count(Code::WireCrossing));
+}
+
+TEST(TaperChecks, FoldBetweenNeighbours) {
+  auto part = [](const char* third) {
+    return std::string("M101 P30\nG92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U10 V0\nG1 X10 Y10 G1 ") + third +
+           "\nG1 X0 Y10 G1 U-10 V0\nG1 X0 Y0 G1 U0 V0\nM2\n";
+  };
+  EXPECT_TRUE(errorCodes(check(part("U0 V-10"))->diags).count(Code::SurfaceFold));
+  EXPECT_FALSE(errorCodes(check(part("U5 V5"))->diags).count(Code::SurfaceFold));
+}
+
+TEST(TaperChecks, OneContourClosedAndTheOtherNot) {
+  auto open = xyuvSquare({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 3}});
+  EXPECT_TRUE(errorCodes(check(open)->diags).count(Code::ClosureMismatch));
+  EXPECT_FALSE(errorCodes(check(xyuvSquare(shifted(1, 1)))->diags).count(Code::ClosureMismatch));
+}
+
+TEST(TaperChecks, UvRange) {
+  CheckOptions co;
+  co.uvRange = 2.0;
+  EXPECT_TRUE(errorCodes(check(xyuvSquare(shifted(2.5, 0)), co)->diags).count(Code::UvOutOfRange));
+  EXPECT_FALSE(errorCodes(check(xyuvSquare(shifted(1.5, 1.5)), co)->diags).count(Code::UvOutOfRange));
+}
+
+TEST(TaperChecks, TaperStartedOrEndedOnAnArc) {
+  EXPECT_TRUE(run("G92 X10 Y0 I20.\nG52 A3.\nG03 X-10 Y0 I-10 J0\nM02\n")->hasCode(Code::TaperOnArc));
+  EXPECT_TRUE(run("G92 X10 Y-5 I20.\nG52 A3.\nG01 X10 Y0\nG50\nG03 X-10 Y0 I-10 J0\nM02\n")->hasCode(Code::TaperOnArc));
+  EXPECT_FALSE(run("G92 X10 Y-5 I20.\nG52 A3.\nG01 X10 Y0\nG03 X-10 Y0 I-10 J0\nG50\nG01 X-10 Y-5\nM02\n")
+                   ->hasCode(Code::TaperOnArc));
+}
+
+TEST(TaperChecks, SodickBlockWithoutUpperSideInsideG141) {
+  EXPECT_TRUE(run("TP20.\nG141\nG01 X10 Y0 : X10 Y0\nG01 X10 Y10\nG140\nM02\n")->hasCode(Code::BlockCountMismatch));
+  EXPECT_FALSE(run("TP20.\nG141\nG01 X10 Y0 : X10 Y0\nG140\nG01 X10 Y10\nM02\n")->hasCode(Code::BlockCountMismatch));
+}
+
+TEST(TaperChecks, TwoFilePairingCountsMoves) {
+  SourceFile lo("lower.nc", "G01 X10 Y0\nX10 Y10\nX0 Y0\nM02\n");
+  SourceFile up2("upper.nc", "G01 X11 Y0\nX0 Y0\nM02\n");
+  SourceFile up3("upper.nc", "G01 X11 Y1\nX11 Y11\nX0 Y0\nM02\n");
+  InterpreterOptions io;
+  io.dialect = Dialect::Plain;
+  io.thickness = 20.0;
+  for (const SourceFile* up : {&up2, &up3}) {
+    Diagnostics d;
+    Analysis a = analyse(lo, io, d);
+    const Analysis b = analyse(*up, io, d);
+    pairUpper(a.toolpath, b.toolpath, &lo, up, d);
+    EXPECT_EQ(errorCodes(d).count(Code::BlockCountMismatch), up == &up2 ? 1u : 0u);
+    if (up == &up3) {
+      EXPECT_EQ(a.toolpath.upper[1].end, Vec2(11, 11));
+    }
+  }
+}
+
+// ---- outputs -------------------------------------------------------------------------------
+
+TEST(TaperOutputs, Points4KeepsBothPlanesInStep) {
+  auto r = run("M101 P30\nG92 X10 Y0 U10 V0\nG3 X-10 Y0 I-10 J0 G1 U-10 V0\nM2\n");
+  PointRequest req;
+  req.sampling = kerf::geometry::Sampling::step(1.0);
+  Diagnostics d;
+  const auto out = emitPoints4(r->path(), r->source.get(), bp95dProfile(), req, false, d);
+  ASSERT_TRUE(out.has_value());
+  std::istringstream lines(out->text);
+  double x, y, u, v;
+  std::size_t n = 0;
+  while (lines >> x >> y >> u >> v) {
+    // The upper point is the lower one's projection on the chord: the same t on both sides.
+    EXPECT_NEAR(v, 0.0, 1e-3);
+    const double t = std::acos(std::clamp(x / 10.0, -1.0, 1.0)) / kerf::geometry::kPi;
+    EXPECT_NEAR(u, 10.0 - 20.0 * t, 2e-3);
+    ++n;
+  }
+  EXPECT_EQ(n, out->points);
+  EXPECT_GT(n, 30u);
+}
+
+TEST(TaperOutputs, APlaneBetweenTheContoursIsTheirSection) {
+  auto r = run("M101 P20\nG92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U10 V4\nM2\n");
+  Diagnostics d;
+  const auto flat = toolpathAtPlane(r->path(), PlaneChoice{PlaneChoice::Kind::Height, 5.0}, 1e-3, nullptr, d);
+  ASSERT_TRUE(flat.has_value());
+  EXPECT_NEAR(flat->moves[0].lower.end.y(), 1.0, 1e-12);
+  EXPECT_TRUE(errorCodes(d).empty());
+  EXPECT_FALSE(toolpathAtPlane(r->path(), PlaneChoice{PlaneChoice::Kind::Height, 25.0}, 1e-3, nullptr, d));
+}
+
+// ---- metamorphic: rigid motions, mirrors (G2 <-> G3) and reversal keep the verdicts ----------
+
+Toolpath transformed(const Toolpath& tp, const kerf::test::Motion2& m) {
+  Toolpath out = tp;
+  for (auto& mv : out.moves) mv.lower = m.apply(mv.lower);
+  for (auto& s : out.upper) s = m.apply(s);
+  out.start = m.apply(tp.start);
+  return out;
+}
+
+Toolpath reversedPath(const Toolpath& tp) {
+  Toolpath out = tp;
+  std::reverse(out.moves.begin(), out.moves.end());
+  std::reverse(out.upper.begin(), out.upper.end());
+  for (auto& mv : out.moves) mv.lower = mv.lower.reversed();
+  for (auto& s : out.upper) s = s.reversed();
+  if (!out.moves.empty()) out.start = out.moves.front().lower.start;
+  return out;
+}
+
+std::set<Code> verdict(const Toolpath& tp) {
+  Diagnostics d(1000);
+  checkToolpath(tp, nullptr, {}, d);
+  return errorCodes(d);
+}
+
+TEST(TaperMetamorphic, SamplesKeepTheirVerdicts) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> files;
+  for (const char* dir : {KERF_SAMPLES_DIR, KERF_SAMPLES_DIR "/bad"})
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().extension() == ".nc") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::size_t taperFiles = 0;
+  for (const fs::path& f : files) {
+    std::ifstream in(f);
+    std::stringstream text;
+    text << in.rdbuf();
+    auto r = run(text.str());
+    if (!r->path().isTaper() || !r->path().heights.known) continue;
+    ++taperFiles;
+    const std::set<Code> base = verdict(r->path());
+    for (const auto& m : kerf::test::someMotions())
+      EXPECT_EQ(verdict(transformed(r->path(), m)), base) << f << " moved by angle " << m.angle;
+    EXPECT_EQ(verdict(reversedPath(r->path())), base) << f << " reversed";
+  }
+  EXPECT_GE(taperFiles, 10u);
+}
+
+}  // namespace

@@ -3,7 +3,8 @@
 (Cut counter-clockwise, so left is inwards: the punch is 20 x 20 at the bottom and smaller on top.)
 (Heights: G92 I = thickness 25, J = program plane 0 - the contour below is the lower contour.)
 (The taper starts on the lead-in line and ends on the lead-out line, never on an arc.)
-(Expected: kerf check says ok, wire slope 2 degrees everywhere.)
+(Expected: kerf check says ok. The wire leans 2 degrees along the sides and arcs; where the taper)
+(starts and ends, at the sharp corner of the lead-in, the wire leans along the diagonal: 2.83 degrees.)
 %
 O0100
 G90 G92 X0 Y-15. I25. J0

@@ -116,21 +116,24 @@ TEST(Taper, HeightsComeFromOptionsFirstThenTheProgram) {
 }
 
 TEST(Taper, TaperAngleOffsetsByHeightTimesTangent) {
-  // Lean left 2 degrees on a +X line, 25 mm up: the upper line is 25 tan 2 to the left (+Y).
-  auto r = run("G92 X0 Y-5. I25.\nG51 A2.\nG01 X0 Y0\nX10.\nY5.\nG50\nG01 X15.\nM02\n");
+  // Lean left 2 degrees, 25 mm up: lines move 25 tan 2 to their left, arcs stay concentric,
+  // corners are sharp, the start-up line starts vertical and the end line ends vertical.
+  auto r = run("G92 X0 Y-5. I25.\nG51 A2.\nG01 X0 Y0\nX10.\nG03 X15. Y5. I0 J5.\nG01 Y10.\nG50\nG01 X20.\nM02\n");
   ASSERT_FALSE(r->diags.hasErrors()) << kerf::test::dump(r->diags);
   const double d = 25.0 * std::tan(2.0 * kerf::geometry::kPi / 180.0);
-  const Segment& up = r->path().upper[1];
-  EXPECT_NEAR(up.start.y(), d, 1e-12);
-  EXPECT_NEAR(up.end.y(), d, 1e-12);
-  EXPECT_NEAR(up.end.x(), 10.0 - d, 1e-12);            // sharp corner with the next side
-  EXPECT_EQ(r->path().upper[0].start, Vec2(0, -5));    // the start-up line starts vertical
-  EXPECT_EQ(r->path().upper.back().end, Vec2(15, 5));  // the end line ends vertical
-  auto measures = measureSurface(r->path());
-  // Between two sharp corners the wire leans 2 degrees square to the side; at a right-angle
-  // corner the offset is the diagonal, sqrt(2) times as far: atan(sqrt(2) tan 2 deg).
+  const auto& up = r->path().upper;
+  EXPECT_NEAR(up[1].start.y(), d, 1e-12);
+  EXPECT_NEAR(up[1].end.y(), d, 1e-12);
+  EXPECT_NEAR((up[0].end - Vec2(-d, d)).norm(), 0.0, 1e-12);  // sharp corner of the start-up
+  EXPECT_NEAR(up[2].radius, 5.0 - d, 1e-12);                   // concentric, left of CCW: smaller
+  EXPECT_EQ(up[0].start, Vec2(0, -5));
+  EXPECT_EQ(up.back().end, Vec2(20, 10));
+  // On the arc the offset is square to the travel: exactly 2 degrees. At the sharp start-up
+  // corner it is the diagonal, sqrt(2) times as far.
   const double toDeg = 180.0 / kerf::geometry::kPi;
-  EXPECT_NEAR(measures.patches[1].minSlope.value * toDeg, 2.0, 1e-9);
+  const auto measures = measureSurface(r->path());
+  EXPECT_NEAR(measures.patches[2].minSlope.value * toDeg, 2.0, 1e-9);
+  EXPECT_NEAR(measures.patches[2].maxSlope.value * toDeg, 2.0, 1e-9);
   EXPECT_NEAR(measures.patches[1].maxSlope.value * toDeg, std::atan(std::sqrt(2.0) * d / 25.0) * toDeg, 1e-9);
 }
 

@@ -103,7 +103,7 @@ void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const
     const Move& later = moves[mj];
     const std::string other = "line " + std::to_string(moves[mi].line);
     const geometry::Vec3 p = at3(x.point, c.z);
-    if (c.seamAllowed && x.kind != geometry::ContactKind::Crossing && !x.adjacent &&
+    if (c.seamAllowed && !x.adjacent &&
         !(x.kind == geometry::ContactKind::Overlap &&
           isRetrace(c.segments[x.first], c.segments[x.second], x, options.tolerance)) &&
         atSeam(toolpath, mi, mj, options.tolerance)) {
@@ -235,8 +235,7 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
         continue;
       reported.insert({mi, mj});
       const bool neighbours = kb == ka + 1 || (closed && ka == 0 && kb + 1 == n);
-      if (x.kind != geometry::ContactKind::Crossing && ka != kb && !neighbours &&
-          atSeam(toolpath, mi, mj, options.tolerance)) {
+      if (ka != kb && !neighbours && atSeam(toolpath, mi, mj, options.tolerance)) {
         seamNote(toolpath, src, mi, mj, at3(x.point, section.z), " at z " + formatFixed(section.z, 3), diags);
         continue;
       }

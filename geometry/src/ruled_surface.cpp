@@ -18,19 +18,13 @@ Vec2 derivative(const Segment& s, double t) { return s.tangentAt(t) * s.length()
 
 Vec2 offsetAt(const Segment& lower, const Segment& upper, double t) { return upper.pointAt(t) - lower.pointAt(t); }
 
-/// Largest f on [0, 1]: the best of n samples, refined by golden section in its neighbourhood.
-Extreme maximize(const std::function<double(double)>& f, int n) {
-  Extreme best{f(0.0), 0.0};
-  for (int i = 1; i <= n; ++i) {
-    const double t = static_cast<double>(i) / n;
-    const double v = f(t);
-    if (v > best.value) best = {v, t};
-  }
-  double a = std::max(0.0, best.t - 1.0 / n), b = std::min(1.0, best.t + 1.0 / n);
+/// Golden-section refinement of a maximum of f sampled best at t0 on a grid of step h.
+Extreme refine(const std::function<double(double)>& f, Extreme best, double h) {
+  double a = std::max(0.0, best.t - h), b = std::min(1.0, best.t + h);
   constexpr double kInvPhi = 0.6180339887498949;
   double c = b - kInvPhi * (b - a), d = a + kInvPhi * (b - a);
   double fc = f(c), fd = f(d);
-  while (b - a > 1e-12) {
+  while (b - a > 1e-11) {
     if (fc > fd) {
       b = d;
       d = c;
@@ -85,7 +79,7 @@ double slopeAt(const Segment& lower, const Segment& upper, const Planes& planes,
 
 PatchMeasures measurePatch(const Segment& lower, const Segment& upper, const Planes& planes) {
   PatchMeasures m;
-  const double h = planes.height();
+  const double h0 = planes.height();
   if (!lower.isArc() && !upper.isArc()) {
     // The offset a + t b is linear in t: |.| is convex, so the maximum is at an end and the
     // minimum at the foot of the perpendicular from the origin.
@@ -94,21 +88,32 @@ PatchMeasures measurePatch(const Segment& lower, const Segment& upper, const Pla
     const double bb = b.squaredNorm();
     const double tMin = bb > 0 ? std::clamp(-a.dot(b) / bb, 0.0, 1.0) : 0.0;
     const double n0 = a.norm(), n1 = (a + b).norm();
-    m.minSlope = {std::atan2((a + tMin * b).norm(), h), tMin};
-    m.maxSlope = n1 > n0 ? Extreme{std::atan2(n1, h), 1.0} : Extreme{std::atan2(n0, h), 0.0};
+    m.minSlope = {std::atan2((a + tMin * b).norm(), h0), tMin};
+    m.maxSlope = n1 > n0 ? Extreme{std::atan2(n1, h0), 1.0} : Extreme{std::atan2(n0, h0), 0.0};
     m.maxOffsetX = std::abs(a.x() + b.x()) > std::abs(a.x()) ? Extreme{std::abs(a.x() + b.x()), 1.0}
                                                              : Extreme{std::abs(a.x()), 0.0};
     m.maxOffsetY = std::abs(a.y() + b.y()) > std::abs(a.y()) ? Extreme{std::abs(a.y() + b.y()), 1.0}
                                                              : Extreme{std::abs(a.y()), 0.0};
     return m;
   }
-  auto norm = [&](double t) { return offsetAt(lower, upper, t).norm(); };
-  const Extreme big = maximize(norm, kExtremeSamples);
-  Extreme small = maximize([&](double t) { return -norm(t); }, kExtremeSamples);
-  m.maxSlope = {std::atan2(big.value, h), big.t};
-  m.minSlope = {std::atan2(-small.value, h), small.t};
-  m.maxOffsetX = maximize([&](double t) { return std::abs(offsetAt(lower, upper, t).x()); }, kExtremeSamples);
-  m.maxOffsetY = maximize([&](double t) { return std::abs(offsetAt(lower, upper, t).y()); }, kExtremeSamples);
+  // One pass of samples for all four measures, then each extreme refined where it was best.
+  Extreme big{-1, 0}, small{-1, 0}, bx{-1, 0}, by{-1, 0};
+  for (int i = 0; i <= kExtremeSamples; ++i) {
+    const double t = static_cast<double>(i) / kExtremeSamples;
+    const Vec2 o = offsetAt(lower, upper, t);
+    const double n = o.norm();
+    if (n > big.value) big = {n, t};
+    if (-n > small.value || small.value == -1) small = {-n, t};
+    if (std::abs(o.x()) > bx.value) bx = {std::abs(o.x()), t};
+    if (std::abs(o.y()) > by.value) by = {std::abs(o.y()), t};
+  }
+  const double h = 1.0 / kExtremeSamples;
+  big = refine([&](double t) { return offsetAt(lower, upper, t).norm(); }, big, h);
+  small = refine([&](double t) { return -offsetAt(lower, upper, t).norm(); }, small, h);
+  m.maxSlope = {std::atan2(big.value, h0), big.t};
+  m.minSlope = {std::atan2(-small.value, h0), small.t};
+  m.maxOffsetX = refine([&](double t) { return std::abs(offsetAt(lower, upper, t).x()); }, bx, h);
+  m.maxOffsetY = refine([&](double t) { return std::abs(offsetAt(lower, upper, t).y()); }, by, h);
   return m;
 }
 
@@ -201,17 +206,24 @@ bool appendSection(const Segment& lower, const Segment& upper, double s, double 
     out.push_back(Segment::line(a, b));
     return true;
   }
-  if (lower.isArc() && upper.isArc() && std::abs(lower.sweep - upper.sweep) <= 1e-12 &&
-      std::abs(wrapSigned(lower.startAngle - upper.startAngle)) <= 1e-12) {
-    // centre_s + ((1 - s) rL + s rU) e(angle): again an arc, with the same angles.
-    Segment arc = lower;
-    arc.centre = (1.0 - s) * lower.centre + s * upper.centre;
-    arc.radius = (1.0 - s) * lower.radius + s * upper.radius;
-    arc.start = a;
-    arc.end = b;
-    if (arc.radius > 0) {
+  if (lower.isArc() && upper.isArc()) {
+    // Two arcs turning at the same rate: (1-s)(cL + rL e(aL + w t)) + s(cU + rU e(aU + w t)) is
+    // c_s + |z| e(arg z + w t) with z = (1-s) rL e(aL) + s rU e(aU): again an arc. When the
+    // sweeps differ by d (rounding in the program), the arc with the mean sweep is within
+    // d max(rL, rU) of the true section; that is accepted up to half the tolerance.
+    const double d = std::abs(lower.sweep - upper.sweep);
+    const Vec2 z =
+        (1.0 - s) * lower.radius * direction(lower.startAngle) + s * upper.radius * direction(upper.startAngle);
+    if (d * std::max(lower.radius, upper.radius) <= tolerance / 2 && z.norm() > tolerance) {
+      Segment arc = lower;
+      arc.centre = (1.0 - s) * lower.centre + s * upper.centre;
+      arc.start = a;
+      arc.end = b;
+      arc.radius = (a - arc.centre).norm();
+      arc.startAngle = angleOf(a - arc.centre);
+      arc.sweep = (1.0 - s) * lower.sweep + s * upper.sweep;
       out.push_back(arc);
-      return true;
+      return d == 0.0;
     }
   }
   const Sampling tol = Sampling::tolerance(tolerance);

@@ -14,7 +14,7 @@ struct CheckOptions {
   double maxTaperDegrees = 30.0;   ///< --max-taper: the machine's largest wire slope
   std::optional<double> uvRange;   ///< --uv-range: largest |upper - lower| per axis, mm
   int surfaceLevels = 16;          ///< sections of the surface tested: z at k/levels, 0 < k < levels
-  double sectionTolerance = 1e-3;  ///< mm: chord tolerance of sections that are not lines or arcs
+  double sectionTolerance = 5e-3;  ///< mm: chord tolerance of sections that are not lines or arcs
 };
 
 struct SurfaceMeasures;

@@ -46,7 +46,8 @@ struct PatchMeasures {
   bool exact = false;              ///< closed form (line with line); else sampled and refined
 };
 
-/// Sampled at kExtremeSamples points, each extreme refined by golden section to 1e-12 in t.
+/// Line with line: closed form. Otherwise kExtremeSamples + 1 samples, each extreme refined by
+/// golden section to 1e-11 in t around its best sample.
 inline constexpr int kExtremeSamples = 64;
 PatchMeasures measurePatch(const Segment& lower, const Segment& upper, const Planes& planes);
 
@@ -70,10 +71,10 @@ TwistMeasure measureTwist(const Segment& lower, const Segment& upper);
 std::optional<double> foldAtJoint(const Segment& lowerA, const Segment& upperA, const Segment& lowerB,
                                   const Segment& upperB);
 
-/// The horizontal section of the patch at s, appended to out: one exact segment when the section
-/// is a line or an arc (line with line; arcs with the same start angle and sweep, e.g. the
-/// concentric arcs of a constant taper), otherwise a polyline within tolerance of it.
-/// Returns true when the section is exact.
+/// The horizontal section of the patch at s, appended to out: one segment when the section is a
+/// line or an arc (line with line, exact; two arcs with the same sweep, exact — two vectors turning
+/// at the same rate add up to one — or with sweeps that differ by d where d max(r) is within
+/// half the tolerance), otherwise a polyline within tolerance of it. Returns true when exact.
 bool appendSection(const Segment& lower, const Segment& upper, double s, double tolerance, std::vector<Segment>& out);
 
 // ---- meshes ------------------------------------------------------------------------------------

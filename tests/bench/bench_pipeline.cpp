@@ -13,7 +13,7 @@
 #include "kerf/geometry/intersection.h"
 #include "kerf/geometry/tessellation.h"
 
-#include <sys/resource.h>
+#include "bench_support.h"
 
 #include <algorithm>
 #include <chrono>
@@ -25,7 +25,9 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using kerf::bench::Clock;
+using kerf::bench::peakRssKiB;
+using kerf::bench::seconds;
 
 std::string generate(std::size_t blocks) {
   std::string text;
@@ -49,14 +51,6 @@ std::string generate(std::size_t blocks) {
   }
   text += "M02\n%\n";
   return text;
-}
-
-double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
-
-long peakRssKiB() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss;
 }
 
 }  // namespace

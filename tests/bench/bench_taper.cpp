@@ -12,7 +12,7 @@
 #include "kerf/converter/summary.h"
 #include "kerf/geometry/ruled_surface.h"
 
-#include <sys/resource.h>
+#include "bench_support.h"
 
 #include <algorithm>
 #include <chrono>
@@ -24,7 +24,9 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using kerf::bench::Clock;
+using kerf::bench::peakRssKiB;
+using kerf::bench::seconds;
 
 std::string generate(std::size_t moves, bool taperAngle) {
   std::string text;
@@ -57,14 +59,6 @@ std::string generate(std::size_t moves, bool taperAngle) {
   }
   text += taperAngle ? "G50\nG01 X5000. Y-5.\nM02\n%\n" : "M02\n%\n";
   return text;
-}
-
-double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
-
-long peakRssKiB() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss;
 }
 
 }  // namespace

@@ -6,10 +6,13 @@
 #include "kerf/converter/checks.h"
 #include "kerf/converter/points.h"
 #include "kerf/converter/report.h"
+#include "kerf/converter/summary.h"
+#include "kerf/geometry/ruled_surface.h"
 
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace kerf::converter;
@@ -19,12 +22,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.maxExecutedBlocks = 200000;  // keep each input fast; the limits themselves are tested
   options.maxMoves = 100000;
   const Analysis a = analyse(src, options, diags);
-  checkToolpath(a.toolpath, &src, {}, diags);
+  const SurfaceMeasures measures = measureSurface(a.toolpath);
+  checkToolpath(a.toolpath, &src, {}, diags, &measures);
   for (const Diagnostic& d : diags.all()) (void)formatDiagnostic(d);
   (void)formatTrace(a.toolpath, diags);
   (void)explainText(a.program, a.toolpath, kerf::geometry::Sampling::step(0.5));
   PointRequest request;
   request.maxPoints = 500;
   (void)emitPoints(a.toolpath, &src, bp95dProfile(), request, diags);
+  if (a.toolpath.isTaper()) {
+    request.sampling = kerf::geometry::Sampling::step(0.5);
+    (void)emitPoints4(a.toolpath, &src, bp95dProfile(), request, true, diags);
+    if (const auto flat = toolpathAtPlane(a.toolpath, PlaneChoice{PlaneChoice::Kind::Height, 1.0}, 0.01, &src, diags))
+      (void)emitPoints(*flat, &src, bp95dProfile(), request, diags);
+    if (a.toolpath.heights.known && a.toolpath.moves.size() < 200) {
+      std::vector<kerf::geometry::Segment> lower;
+      for (const Move& m : a.toolpath.moves) lower.push_back(m.lower);
+      kerf::geometry::MeshOptions mo;
+      mo.tolerance = 0.1;
+      mo.lowerCap = mo.upperCap = true;
+      mo.maxCapVertices = 2000;
+      (void)kerf::geometry::meshRuledSurface(lower, a.toolpath.upper, a.toolpath.heights.planes, mo);
+    }
+  }
   return 0;
 }

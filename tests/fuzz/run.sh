@@ -11,6 +11,6 @@ CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKERF_BU
   -DKERF_BUILD_BENCHMARKS=OFF -DKERF_SANITIZER=address,undefined >/dev/null
 cmake --build build-fuzz --target kerf_fuzz -j"$(nproc)"
 mkdir -p build-fuzz/corpus tests/fuzz/crashers
-build-fuzz/tests/kerf_fuzz build-fuzz/corpus samples tests/bad tests/fuzz/corpus \
+build-fuzz/tests/kerf_fuzz build-fuzz/corpus samples samples/bad tests/bad tests/fuzz/corpus \
   -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
   -artifact_prefix=tests/fuzz/crashers/ -print_final_stats=1

@@ -86,9 +86,10 @@ TEST(RuledSurface, FoldAtAJointIsTheRootOfItsQuadratic) {
   const auto s = foldAtJoint(l1, u1, l2, u2);
   ASSERT_TRUE(s.has_value());
   EXPECT_NEAR(*s, 0.5, 1e-12);
-  const Segment near = Segment::line({10, 0}, {0, -9});  // near miss: turns 170 degrees at most
+  // Near miss: the second side above turns away (through 0, not 180 degrees).
   EXPECT_FALSE(foldAtJoint(l1, u1, l2, Segment::line({10, 0}, {20, -1})).has_value());
-  EXPECT_TRUE(foldAtJoint(l1, u1, l2, near).has_value() == false || *foldAtJoint(l1, u1, l2, near) > 0.0);
+  // A corner that is already straight below and turns only one way above never folds.
+  EXPECT_FALSE(foldAtJoint(l1, u1, Segment::line({10, 0}, {20, 0}), Segment::line({10, 0}, {20, 5})).has_value());
 }
 
 TEST(RuledSurface, SectionsOfLinesAndMatchingArcsAreExact) {
@@ -99,15 +100,19 @@ TEST(RuledSurface, SectionsOfLinesAndMatchingArcsAreExact) {
   const Segment up = Segment::arc({8, 0}, {0, 8}, {0, 0}, ArcDirection::CounterClockwise);
   EXPECT_TRUE(appendSection(lo, up, 0.5, 1e-3, out));
   EXPECT_NEAR(out.back().radius, 9.0, 1e-12);
-  // An arc with a line: a polyline within the tolerance.
+  // An arc with a line: a polyline, equal steps of t, each chord within the tolerance.
   out.clear();
-  EXPECT_FALSE(appendSection(lo, Segment::line({8, 0}, {0, 8}), 0.5, 1e-3, out));
-  EXPECT_GT(out.size(), 2u);
-  for (const Segment& piece : out) {
-    const double tMid = 0.5;  // chord midpoints stay near the true section
-    (void)tMid;
-    EXPECT_FALSE(piece.isArc());
+  const Segment chordLine = Segment::line({8, 0}, {0, 8});
+  EXPECT_FALSE(appendSection(lo, chordLine, 0.5, 1e-3, out));
+  ASSERT_GT(out.size(), 2u);
+  const double n = static_cast<double>(out.size());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const double tMid = (static_cast<double>(k) + 0.5) / n;
+    const Vec2 truth = 0.5 * lo.pointAt(tMid) + 0.5 * chordLine.pointAt(tMid);
+    const Vec2 chordMid = 0.5 * (out[k].start + out[k].end);
+    EXPECT_LE((truth - chordMid).norm(), 1e-3);
   }
+  EXPECT_EQ(out.back().end, Vec2(0.5 * (lo.end + chordLine.end)));
 }
 
 /// Every edge (unordered) and how many triangles use it.

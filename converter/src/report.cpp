@@ -254,8 +254,11 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
       out += "  pairing: " + pairingReason(toolpath, m) + "\n";
       if (toolpath.heights.known) {
         const geometry::Planes& pl = toolpath.heights.planes;
+        const geometry::PatchMeasures pm = geometry::measurePatch(s, u, pl);
         out += "  slope " + formatFixed(geometry::slopeAt(s, u, pl, 0.0) * kToDegrees, 3) + "° at the start, " +
-               formatFixed(geometry::slopeAt(s, u, pl, 1.0) * kToDegrees, 3) + "° at the end\n";
+               formatFixed(geometry::slopeAt(s, u, pl, 1.0) * kToDegrees, 3) + "° at the end, steepest " +
+               formatFixed(pm.maxSlope.value * kToDegrees, 3) + "° at t = " + formatFixed(pm.maxSlope.t, 3) +
+               (pm.exact ? " (closed form)" : " (sampled and refined)") + "\n";
       }
       out += "  lower:\n";
     }

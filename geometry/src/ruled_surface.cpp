@@ -227,7 +227,8 @@ bool appendSection(const Segment& lower, const Segment& upper, double s, double 
     }
   }
   const Sampling tol = Sampling::tolerance(tolerance);
-  const std::size_t n = std::max<std::size_t>({2, sampleCount(lower, tol), sampleCount(upper, tol)});
+  const std::size_t n =
+      std::min(kMaxSectionPieces, std::max<std::size_t>({2, sampleCount(lower, tol), sampleCount(upper, tol)}));
   Vec2 prev = a;
   for (std::size_t i = 1; i <= n; ++i) {
     const double t = static_cast<double>(i) / static_cast<double>(n);
@@ -253,7 +254,7 @@ struct Generator {
 std::uint32_t cutsFor(const Generator& a, const Generator& b, double tol) {
   const double twist = ((a.bottom + b.top) - (b.bottom + a.top)).norm();
   const double need = std::ceil(twist / (4.0 * tol));
-  return static_cast<std::uint32_t>(std::clamp(need, 1.0, 4096.0));
+  return static_cast<std::uint32_t>(std::clamp(need, 1.0, static_cast<double>(kMaxMeshCuts)));
 }
 
 /// Ear clipping of a simple polygon given as vertex indices; triangles follow the polygon's
@@ -318,7 +319,8 @@ Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> u
     std::vector<std::uint32_t> cellPatch;
     gens.push_back({lower[i].start, upper[i].start});
     for (std::size_t k = i; k < j; ++k) {
-      const std::size_t pieces = std::max(sampleCount(lower[k], sampling), sampleCount(upper[k], sampling));
+      const std::size_t pieces =
+          std::min(kMaxMeshPieces, std::max(sampleCount(lower[k], sampling), sampleCount(upper[k], sampling)));
       for (std::size_t q = 1; q <= pieces; ++q) {
         const double t = static_cast<double>(q) / static_cast<double>(pieces);
         gens.push_back({lower[k].pointAt(t), upper[k].pointAt(t)});
@@ -345,6 +347,10 @@ Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> u
     if (closed) gens.back().firstVertex = gens.front().firstVertex;
     // Zip neighbouring generators together, advancing whichever has the lower next s.
     for (std::size_t c = 0; c + 1 < gens.size(); ++c) {
+      if (mesh.triangles.size() >= options.maxTriangles) {
+        mesh.truncated = true;
+        return mesh;
+      }
       const Generator& a = gens[c];
       const Generator& b = gens[c + 1];
       std::uint32_t ia = 0, ib = 0;

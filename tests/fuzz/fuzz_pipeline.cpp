@@ -42,6 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       mo.tolerance = 0.1;
       mo.lowerCap = mo.upperCap = true;
       mo.maxCapVertices = 2000;
+      mo.maxTriangles = 200000;
       (void)kerf::geometry::meshRuledSurface(lower, a.toolpath.upper, a.toolpath.heights.planes, mo);
     }
   }

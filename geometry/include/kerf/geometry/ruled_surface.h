@@ -71,6 +71,10 @@ TwistMeasure measureTwist(const Segment& lower, const Segment& upper);
 std::optional<double> foldAtJoint(const Segment& lowerA, const Segment& upperA, const Segment& lowerB,
                                   const Segment& upperB);
 
+/// A polyline section has at most this many pieces (a patch with a huge arc would otherwise make
+/// millions); beyond it the tolerance is not met.
+inline constexpr std::size_t kMaxSectionPieces = 4096;
+
 /// The horizontal section of the patch at s, appended to out: one segment when the section is a
 /// line or an arc (line with line, exact; two arcs with the same sweep, exact — two vectors turning
 /// at the same rate add up to one — or with sweeps that differ by d where d max(r) is within
@@ -84,14 +88,21 @@ struct Mesh {
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise about the normal
   std::vector<std::uint32_t> trianglePatch;             ///< patch index per triangle (caps: kCapPatch)
   std::size_t capsMade = 0;
+  bool truncated = false;  ///< MeshOptions::maxTriangles was reached: the mesh is incomplete
 };
 inline constexpr std::uint32_t kCapPatch = 0xFFFFFFFFu;
+
+/// Limits of one patch's mesh: pieces along t, and pieces along s of one generator. Beyond them
+/// the tolerance is not met (a huge arc, a wildly twisted patch) rather than memory exhausted.
+inline constexpr std::size_t kMaxMeshPieces = 4096;
+inline constexpr std::uint32_t kMaxMeshCuts = 256;
 
 struct MeshOptions {
   double tolerance = 0.01;  ///< mm: largest distance between the mesh and the exact surface
   bool lowerCap = false;    ///< close a closed lower contour with a flat cap (ear clipping)
   bool upperCap = false;
-  std::size_t maxCapVertices = 20000;  ///< ear clipping is O(n^2): larger caps are left open
+  std::size_t maxCapVertices = 20000;     ///< ear clipping is O(n^2): larger caps are left open
+  std::size_t maxTriangles = 50'000'000;  ///< stop (Mesh::truncated) rather than exhaust memory
 };
 
 /// Triangulates the patches (lower[i], upper[i]) into one mesh. Consecutive patches that share

@@ -758,7 +758,6 @@ class Interpreter {
       } else {
         taperSide_ = code == 510 ? 1 : -1;
         if (taperPhase_ == TaperPhase::Off || taperPhase_ == TaperPhase::Ending) taperPhase_ = TaperPhase::Starting;
-        taperWord_ = bw.group(Group::Taper);
       }
     }
     return true;
@@ -1147,7 +1146,6 @@ class Interpreter {
   TaperPhase taperPhase_ = TaperPhase::Off;
   int taperSide_ = 1;  // +1 G51 (wire leans left of travel), -1 G52
   double taperDegrees_ = 0.0;
-  const Word* taperWord_ = nullptr;
   std::vector<RelRecord> relRecords_;
   std::vector<TaperRecord> taperRecords_;
   std::optional<Height> fileThickness_, fileProgramZ_;

@@ -137,4 +137,46 @@ TEST(parser, random_bytes_never_crash_and_always_terminate) {
   }
 }
 
+TEST(parser, upper_side_of_a_4_axis_block) {
+  // xyuv-abs: the upper side starts at a second motion word after a coordinate, or at U/V; its
+  // I J may repeat the lower side's.
+  SourceFile src("p.nc",
+                 "G2 X10. Y5. I5. J0 G2 U10. V5. I5. J0\nG1 X1. U2. V3.\nG01 X1. : G02 X2. Y0 I1. J0\nG1 X1.\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_FALSE(d.hasErrors());
+  ASSERT_EQ(p.blocks.size(), 4u);
+  EXPECT_EQ(p.blocks[0].upperFrom, 5u);
+  EXPECT_EQ(p.upperWordsOf(p.blocks[0]).front().letter, 'G');
+  EXPECT_EQ(p.blocks[1].upperFrom, 2u);
+  EXPECT_TRUE(p.blocks[2].colon);
+  EXPECT_EQ(p.blocks[2].upperFrom, 2u);
+  EXPECT_EQ(p.upperWordsOf(p.blocks[2]).size(), 5u);
+  EXPECT_EQ(p.blocks[3].upperFrom, p.blocks[3].wordCount);  // no upper side
+}
+
+TEST(parser, repeats_on_one_side_and_a_second_colon_are_errors) {
+  SourceFile src("p.nc", "G1 X1. X2.\nG1 X1. : X2. : X3.\n");
+  Diagnostics d;
+  parse(src, d);
+  ASSERT_EQ(d.errorCount(), 2u);
+  EXPECT_EQ(d.all()[0].code, Code::RepeatedWord);
+  EXPECT_EQ(src.locate(d.all()[1].span.offset).column, 14u);
+}
+
+TEST(parser, plane_heights_outside_the_words) {
+  SourceFile src("p.nc", "TN5. TP25.\n(AXIS,XY_Z_POS,0)\n( axis, uv_z_pos, 40.5 )\n(AXIS,UV_Z_POS,abc)\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  ASSERT_EQ(p.heights.size(), 4u);
+  EXPECT_EQ(p.heights[0].kind, HeightWord::Kind::SodickLowerPlane);
+  EXPECT_EQ(p.heights[0].value, 5.0);
+  EXPECT_EQ(p.heights[1].kind, HeightWord::Kind::SodickProgramPlane);
+  EXPECT_EQ(p.heights[1].value, 25.0);
+  EXPECT_EQ(p.heights[3].kind, HeightWord::Kind::LinuxCncUvPlane);
+  EXPECT_EQ(p.heights[3].value, 40.5);
+  ASSERT_EQ(d.errorCount(), 1u);  // the height that is not a number, at its comment
+  EXPECT_EQ(src.locate(d.all()[0].span.offset).line, 4u);
+}
+
 }  // namespace

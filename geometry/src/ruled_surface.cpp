@@ -338,10 +338,12 @@ Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> u
     const std::size_t own = closed ? gens.size() - 1 : gens.size();
     for (std::size_t g = 0; g < own; ++g) {
       gens[g].firstVertex = static_cast<std::uint32_t>(mesh.vertices.size());
+      const auto slope = static_cast<float>(std::atan2((gens[g].top - gens[g].bottom).norm(), planes.height()));
       for (std::uint32_t q = 0; q <= gens[g].cuts; ++q) {
         const double s = static_cast<double>(q) / gens[g].cuts;
         const Vec2 p = (1.0 - s) * gens[g].bottom + s * gens[g].top;
         mesh.vertices.emplace_back(p.x(), p.y(), planes.lower + s * planes.height());
+        mesh.vertexSlope.push_back(slope);
       }
     }
     if (closed) gens.back().firstVertex = gens.front().firstVertex;

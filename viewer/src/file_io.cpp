@@ -95,4 +95,36 @@ bool writeOutput(const std::string& path, const std::string& input, const std::s
   return true;
 }
 
+bool writeOutputVia(const std::string& path, const std::string& input,
+                    const std::function<bool(const std::string& temporary, std::string& error)>& writer,
+                    std::string& error) {
+  std::error_code ec;
+  if (fs::exists(path, ec) && fs::equivalent(path, input, ec)) {
+    error = "refusing to write the output over the input file '" + input + "'";
+    return false;
+  }
+  const fs::path target(path);
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::string tmpl = (dir / ("." + target.filename().string() + ".kerf-XXXXXX")).string();
+  const int fd = mkstemp(tmpl.data());
+  if (fd < 0) {
+    error = "cannot create a file in '" + dir.string() + "': " + std::strerror(errno);
+    return false;
+  }
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
+  ::close(fd);
+  if (!writer(tmpl, error)) {
+    std::remove(tmpl.c_str());
+    return false;
+  }
+  if (std::rename(tmpl.c_str(), path.c_str()) != 0) {
+    error = "cannot write '" + path + "': " + std::strerror(errno);
+    std::remove(tmpl.c_str());
+    return false;
+  }
+  return true;
+}
+
 }  // namespace kerf::cli

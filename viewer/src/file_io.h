@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -13,5 +14,11 @@ std::optional<std::string> readTextFile(const std::string& path, std::size_t max
 
 /// Writes text to path ("-" is standard output). Refuses to write over `input`.
 bool writeOutput(const std::string& path, const std::string& input, const std::string& text, std::string& error);
+
+/// Writes path through `writer`, which must create the file at the temporary path it is given
+/// (same folder, so the final rename is atomic). Refuses to write over `input`; no "-".
+bool writeOutputVia(const std::string& path, const std::string& input,
+                    const std::function<bool(const std::string& temporary, std::string& error)>& writer,
+                    std::string& error);
 
 }  // namespace kerf::cli

@@ -10,9 +10,15 @@
 #include "kerf/converter/summary.h"
 
 #include "file_io.h"
+#include "kerf/export/mesh_export.h"
+#include "kerf/headless/context.h"
+#include "kerf/render/scene.h"
+#include "ui/picture.h"
+#include "window/window.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -150,6 +156,188 @@ int runCheck(const CommonOptions& o, const CheckCommand& c) {
   return diags.hasErrors() ? kExitErrors : kExitOk;
 }
 
+/// Everything the pictures, the window and the export show: the program, its findings, the scene.
+struct Checked {
+  Loaded in;
+  Diagnostics diags{100000};
+  std::size_t errors = 0, warnings = 0;
+};
+
+bool loadAndCheck(const CommonOptions& o, Checked& c) {
+  if (!load(o, c.diags, c.in)) return false;
+  const SurfaceMeasures measures = measureSurface(c.in.toolpath);
+  checkToolpath(c.in.toolpath, &*c.in.source, CheckOptions{}, c.diags, &measures);
+  c.diags.sortByPosition();
+  c.errors = c.diags.errorCount();
+  c.warnings = c.diags.warningCount();
+  // What the terminal shows is capped as for check; the picture gets every finding.
+  Diagnostics shown(o.maxDiagnostics);
+  for (const auto& d : c.diags.all()) shown.report(d);
+  std::cerr << formatDiagnosticsText(shown);
+  return true;
+}
+
+std::string baseName(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+kerf::ui::Annotation annotationOf(const CommonOptions& o, const Checked& c) {
+  kerf::ui::Annotation a;
+  a.title = baseName(o.input);
+  const Toolpath& tp = c.in.toolpath;
+  a.subtitle =
+      std::string(tp.isTaper() ? dialectName(tp.dialect) : "2-axis") + " | " + std::to_string(tp.moves.size()) +
+      " moves | " +
+      (c.errors ? std::to_string(c.errors) + (c.errors == 1 ? " error" : " errors") : std::string("no errors")) +
+      (c.warnings ? ", " + std::to_string(c.warnings) + (c.warnings == 1 ? " warning" : " warnings") : std::string());
+  return a;
+}
+
+kerf::render::SceneOptions sceneOptionsOf(const CommonOptions& o, std::optional<double> meshTolerance) {
+  kerf::render::SceneOptions so;
+  if (meshTolerance) so.tolerance = *meshTolerance;
+  (void)o;
+  return so;
+}
+
+struct PictureOptions {
+  std::string output;
+  std::string view = "iso";
+  std::string size = "800x600";
+  std::optional<std::string> colourBy;
+  bool highlight = false;
+  std::string backend = "auto";
+  int samples = 4;
+  std::optional<double> meshTolerance;
+  bool timings = false;
+};
+
+bool parseSize(const std::string& text, int& w, int& h) {
+  int consumed = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%n", &w, &h, &consumed) != 2 || consumed != static_cast<int>(text.size()))
+    return false;
+  return w >= 16 && h >= 16 && w <= 8192 && h <= 8192;
+}
+
+int runRender(const CommonOptions& o, const PictureOptions& p) {
+  kerf::ui::PictureRequest request;
+  if (!parseSize(p.size, request.width, request.height)) {
+    std::cerr << "kerf: error: --size takes WIDTHxHEIGHT between 16 and 8192, not '" << p.size << "'\n";
+    return kExitUsage;
+  }
+  request.view = *kerf::render::parseView(p.view);
+  request.backend = *kerf::headless::parseBackend(p.backend);
+  request.samples = p.samples;
+  request.options.colourBySlope = p.colourBy.has_value();
+  request.options.highlightFindings = p.highlight;
+  Checked c;
+  if (!loadAndCheck(o, c)) return kExitUsage;
+  const kerf::render::Scene scene =
+      kerf::render::buildScene(c.in.toolpath, c.diags.all(), sceneOptionsOf(o, p.meshTolerance));
+  request.annotation = annotationOf(o, c);
+  request.annotation.legend = request.options.colourBySlope;
+  request.annotation.labels = p.highlight;
+  const kerf::ui::PictureResult result = kerf::ui::renderPicture(scene, request);
+  if (result.png.empty()) {
+    std::cerr << "kerf: error: " << result.error << "\n";
+    return kExitUsage;
+  }
+  std::string error;
+  if (!kerf::cli::writeOutput(p.output, o.input, result.png, error)) {
+    std::cerr << "kerf: error: " << error << "\n";
+    return kExitUsage;
+  }
+  std::cerr << "kerf: wrote " << request.width << "x" << request.height << " " << kerf::render::viewName(request.view)
+            << " view (" << scene.triangles() << " triangles) to " << p.output << "\n";
+  if (p.timings)
+    std::cerr << "kerf: " << result.context << "; context " << formatFixed(result.contextSeconds, 3) << " s, upload "
+              << formatFixed(result.uploadSeconds, 3) << " s, draw+read " << formatFixed(result.drawSeconds, 3)
+              << " s, PNG " << formatFixed(result.encodeSeconds, 3) << " s\n";
+  return c.errors ? kExitErrors : kExitOk;
+}
+
+struct ExportOptions {
+  std::string output;
+  std::optional<double> meshTolerance;
+  bool caps = false;
+};
+
+int runExport(const CommonOptions& o, const ExportOptions& e) {
+  const auto format = kerf::exporter::formatOfPath(e.output);
+  if (!format) {
+    std::cerr << "kerf: error: -o must end in .vtp, .stl or .ply, not '" << e.output << "'\n";
+    return kExitUsage;
+  }
+  Checked c;
+  if (!loadAndCheck(o, c)) return kExitUsage;
+  const kerf::exporter::SurfaceData data =
+      kerf::exporter::surfaceData(c.in.toolpath, c.diags.all(), sceneOptionsOf(o, e.meshTolerance), e.caps);
+  if (data.surface.mesh.triangles.empty()) {
+    std::cerr << "kerf: error: nothing is cut, so there is no surface to export\n";
+    return kExitErrors;
+  }
+  std::string error;
+  const bool written = kerf::cli::writeOutputVia(
+      e.output, o.input,
+      [&](const std::string& tmp, std::string& err) { return kerf::exporter::writeMesh(data, *format, tmp, err); },
+      error);
+  if (!written) {
+    std::cerr << "kerf: error: " << error << "\n";
+    return kExitUsage;
+  }
+  std::cerr << "kerf: wrote " << data.surface.mesh.triangles.size() << " triangles, "
+            << data.surface.mesh.vertices.size() << " points to " << e.output
+            << (data.surface.mesh.truncated ? " (incomplete: triangle limit reached)" : "") << "\n";
+  return c.errors ? kExitErrors : kExitOk;
+}
+
+struct ViewOptions {
+  std::optional<std::string> screenshot;
+  int frames = 0;
+  std::string size = "1280x800";
+  bool benchmark = false;
+  std::optional<std::size_t> line;
+  double playback = -1;
+  std::optional<double> meshTolerance;
+  bool colourBy = false;
+};
+
+int runView(const CommonOptions& o, const ViewOptions& v) {
+  kerf::window::WindowRequest request;
+  if (!parseSize(v.size, request.width, request.height)) {
+    std::cerr << "kerf: error: --size takes WIDTHxHEIGHT between 16 and 8192, not '" << v.size << "'\n";
+    return kExitUsage;
+  }
+  if (v.screenshot && v.frames <= 0) {
+    std::cerr << "kerf: error: --screenshot needs --frames N: the window is saved after N frames\n";
+    return kExitUsage;
+  }
+  Checked c;
+  if (!loadAndCheck(o, c)) return kExitUsage;
+  const kerf::render::Scene scene =
+      kerf::render::buildScene(c.in.toolpath, c.diags.all(), sceneOptionsOf(o, v.meshTolerance));
+  request.source = &*c.in.source;
+  request.toolpath = &c.in.toolpath;
+  request.findings = c.diags.all();
+  request.scene = &scene;
+  request.annotation = annotationOf(o, c);
+  request.annotation.legend = true;
+  request.options.colourBySlope = v.colourBy;
+  request.step = o.step.value_or(0.1);
+  request.screenshot = v.screenshot;
+  request.frames = v.frames;
+  request.benchmark = v.benchmark;
+  request.selectLine = v.line;
+  request.playback = v.playback;
+  std::string error;
+  if (!kerf::window::runWindow(request, error)) {
+    std::cerr << "kerf: error: " << error << "\n";
+    return kExitUsage;
+  }
+  return c.errors ? kExitErrors : kExitOk;
+}
+
 int runExplain(const CommonOptions& o) {
   Diagnostics diags(o.maxDiagnostics);
   Loaded in;
@@ -249,7 +437,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "kerf 0.1.0");
 
-  CommonOptions check, explain, convert;
+  CommonOptions check, explain, convert, render, exportCommon, view;
+  PictureOptions picture;
+  ExportOptions exportOnly;
+  ViewOptions viewOnly;
   ConvertOptions conv;
   CheckCommand checkOnly;
   auto* checkCmd = app.add_subcommand("check", "verify a program: diagnostics, geometric findings, summary");
@@ -272,6 +463,49 @@ int main(int argc, char** argv) {
   convertCmd->add_option("--profile", conv.profile, "point-file profile (docs/bp95d.md)");
   convertCmd->add_option("--start-block", conv.startBlock, "start the points at the cut move on this source line");
 
+  auto* renderCmd = app.add_subcommand("render", "a picture of the part as PNG, with no display and no GPU");
+  addCommon(*renderCmd, render, false);
+  renderCmd->add_option("-o,--output", picture.output, "PNG file to write")->required();
+  renderCmd->add_option("--view", picture.view, "iso, top, front or side")
+      ->check(CLI::IsMember({"iso", "top", "front", "side"}));
+  renderCmd->add_option("--size", picture.size, "WIDTHxHEIGHT in pixels (default 800x600)");
+  renderCmd->add_option("--color-by,--colour-by", picture.colourBy, "colour the surface by the wire slope")
+      ->check(CLI::IsMember({"slope"}));
+  renderCmd->add_flag("--highlight-findings", picture.highlight, "tint moves with findings and label the findings");
+  renderCmd->add_option("--backend", picture.backend, "headless OpenGL: auto (OSMesa, then EGL), osmesa or egl")
+      ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+  renderCmd->add_option("--samples", picture.samples, "multisampling (1: none; default 4)")->check(CLI::Range(1, 16));
+  renderCmd
+      ->add_option("--mesh-tolerance", picture.meshTolerance,
+                   "largest distance of the drawn surface from the exact one, mm (default 0.01)")
+      ->check(CLI::Range(1e-5, 100.0));
+  renderCmd->add_flag("--timings", picture.timings, "print the time of each stage");
+
+  auto* exportCmd = app.add_subcommand("export", "the ruled surface as a .vtp, .stl or .ply mesh (VTK)");
+  addCommon(*exportCmd, exportCommon, false);
+  exportCmd->add_option("-o,--output", exportOnly.output, "mesh file to write: .vtp, .stl or .ply")->required();
+  exportCmd
+      ->add_option("--mesh-tolerance", exportOnly.meshTolerance,
+                   "largest distance of the mesh from the exact surface, mm (default 0.01)")
+      ->check(CLI::Range(1e-5, 100.0));
+  exportCmd->add_flag("--caps", exportOnly.caps, "close closed contours with flat caps (a solid for CAD)");
+
+  auto* viewCmd = app.add_subcommand("view", "the interactive window: program text, 3D part and findings");
+  addCommon(*viewCmd, view, false);
+  viewCmd->add_option("--screenshot", viewOnly.screenshot, "save the window as PNG after --frames frames, then close");
+  viewCmd->add_option("--frames", viewOnly.frames, "draw this many frames, then close")->check(CLI::Range(1, 1000000));
+  viewCmd->add_option("--size", viewOnly.size, "window size WIDTHxHEIGHT (default 1280x800)");
+  viewCmd->add_flag("--benchmark", viewOnly.benchmark, "print frame times when closing");
+  viewCmd->add_option("--line", viewOnly.line, "select the move on this source line");
+  viewCmd->add_option("--playback", viewOnly.playback, "show the wire at this fraction of the path, 0 to 1")
+      ->check(CLI::Range(0.0, 1.0));
+  viewCmd
+      ->add_option("--mesh-tolerance", viewOnly.meshTolerance,
+                   "largest distance of the drawn surface from the exact one, mm")
+      ->check(CLI::Range(1e-5, 100.0));
+  viewCmd->add_flag("--color-by-slope,--colour-by-slope", viewOnly.colourBy,
+                    "start with the surface coloured by slope");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -286,5 +520,8 @@ int main(int argc, char** argv) {
   }
   if (*checkCmd) return runCheck(check, checkOnly);
   if (*explainCmd) return runExplain(explain);
+  if (*renderCmd) return runRender(render, picture);
+  if (*exportCmd) return runExport(exportCommon, exportOnly);
+  if (*viewCmd) return runView(view, viewOnly);
   return runConvert(convert, conv);
 }

@@ -85,6 +85,7 @@ bool appendSection(const Segment& lower, const Segment& upper, double s, double 
 
 struct Mesh {
   std::vector<Vec3> vertices;
+  std::vector<float> vertexSlope;  ///< slope of the generator the vertex lies on, radians (as slopeAt)
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise about the normal
   std::vector<std::uint32_t> trianglePatch;             ///< patch index per triangle (caps: kCapPatch)
   std::size_t capsMade = 0;

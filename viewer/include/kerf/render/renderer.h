@@ -1,0 +1,116 @@
+// The OpenGL 3.3 core renderer: draws a Scene and a 2D overlay into the framebuffer that is bound.
+// It needs a current context and loadGl() done; it knows nothing of windows, GLFW or ImGui.
+//
+// Passes, in order: surface (lit; or coloured by slope), contour/generator/rapid lines (widened
+// to quads in a geometry shader, rapids dashed), extra lines (the wire in playback, a selection),
+// finding and start markers (always on top), the axis triad in the bottom-left corner.
+#pragma once
+
+#include "kerf/render/camera.h"
+#include "kerf/render/overlay.h"
+#include "kerf/render/scene.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kerf::render {
+
+struct RenderOptions {
+  bool surface = true;
+  bool contours = true;
+  bool generators = true;
+  bool rapids = true;
+  bool markers = true;
+  bool triad = true;
+  bool colourBySlope = false;
+  bool highlightFindings = false;  ///< tint the surface of moves with findings, bigger markers
+  float lineWidth = 2.0f;          ///< pixels
+  std::uint32_t background = rgba(250, 250, 250);
+  std::optional<std::size_t> selectedMove;  ///< drawn again, thick and yellow
+};
+
+/// An offscreen colour + depth target, multisampled when the context allows.
+class OffscreenTarget {
+ public:
+  OffscreenTarget() = default;
+  OffscreenTarget(const OffscreenTarget&) = delete;
+  OffscreenTarget& operator=(const OffscreenTarget&) = delete;
+  ~OffscreenTarget();
+  /// (Re)creates the buffers; samples is clamped to GL_MAX_SAMPLES (1: no multisampling).
+  bool create(int width, int height, int samples, std::string& error);
+  void bind() const;
+  /// Resolves the samples into `framebuffer` (0: the window), its lower-left corner at (x, y).
+  void resolveTo(unsigned framebuffer, int x = 0, int y = 0) const;
+  /// RGBA rows top to bottom, after resolving.
+  [[nodiscard]] std::vector<std::uint8_t> readRgba() const;
+  [[nodiscard]] int width() const { return width_; }
+  [[nodiscard]] int height() const { return height_; }
+  [[nodiscard]] int samples() const { return samples_; }
+
+ private:
+  void release();
+  unsigned msFbo_ = 0, msColour_ = 0, msDepth_ = 0;  // drawn into
+  unsigned fbo_ = 0, colour_ = 0;                    // resolved
+  int width_ = 0, height_ = 0, samples_ = 1;
+};
+
+/// RGBA rows top to bottom of the framebuffer bound for reading.
+std::vector<std::uint8_t> readFramebufferRgba(int width, int height);
+
+class Renderer {
+ public:
+  Renderer() = default;
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+  ~Renderer();
+
+  /// Compiles the shaders (GLSL 330, shaders/). False with the compiler's log in error.
+  bool init(std::string& error);
+  /// Uploads the scene's buffers; the scene may be dropped afterwards except for what the caller keeps.
+  void setScene(const Scene& scene);
+  /// Lines drawn on top of the scene each frame (the wire in playback), width in pixels.
+  void setExtraLines(const std::vector<LineVertex>& lines, float width);
+  /// The overlay's texture: RGBA, width x height (ImGui's font atlas).
+  void setOverlayTexture(int width, int height, const std::uint8_t* rgba);
+  /// Draws the scene into the bound framebuffer, viewport width x height.
+  void render(const Camera& camera, const RenderOptions& options, int width, int height);
+  /// Draws 2D geometry on top (no depth test, blended, scissored per command).
+  void drawOverlay(const OverlayDrawData& data, int width, int height);
+
+  [[nodiscard]] double slopeMin() const { return slopeMin_; }
+  [[nodiscard]] double slopeMax() const { return slopeMax_; }
+
+ private:
+  struct Buffer {
+    unsigned vao = 0, vbo = 0;
+    std::size_t count = 0;
+  };
+  void drawLines(const Buffer& b, std::size_t first, std::size_t count, const Eigen::Matrix4f& viewProj, float width,
+                 float dash, int width_px, int height_px, const float* colourOverride);
+  void releaseBuffers();
+
+  unsigned surfaceProgram_ = 0, lineProgram_ = 0, markerProgram_ = 0, overlayProgram_ = 0;
+  Buffer surface_, lower_, upper_, generators_, rapids_, markers_, extra_, triad_, overlay_;
+  unsigned overlayEbo_ = 0, overlayTexture_ = 0;
+  std::vector<std::uint32_t> lowerFirst_, upperFirst_;
+  float extraWidth_ = 3.0f;
+  std::size_t findingMarkers_ = 0;
+  double slopeMin_ = 0.0, slopeMax_ = 0.0;
+  bool taper_ = false;
+};
+
+}  // namespace kerf::render
+
+namespace kerf::render {
+
+/// Where the axis triad's X, Y and Z arrows end, in pixels of a width x height image (origin top
+/// left), so labels drawn in the overlay sit at the renderer's arrows.
+struct TriadLayout {
+  Eigen::Vector2d origin;
+  std::array<Eigen::Vector2d, 3> tips;
+};
+TriadLayout triadLayout(const Camera& camera, int width, int height);
+
+}  // namespace kerf::render

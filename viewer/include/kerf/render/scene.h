@@ -1,0 +1,96 @@
+// What the renderer draws, built from a Toolpath and its findings. Plain data: no GL here, so the
+// window, the headless renderer, the exporter and the tests share one description of the part.
+//
+// Coordinates are the program's, in mm, z up: the lower contour lies on Planes::lower and the
+// upper one on Planes::upper. A 2-axis program's wire is vertical, so its surface is the lower
+// contour swept up to a display height (SceneOptions::displayHeight).
+#pragma once
+
+#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/toolpath.h"
+#include "kerf/geometry/ruled_surface.h"
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace kerf::render {
+
+/// Colours are 0xAABBGGRR (byte order R, G, B, A in memory, as GL reads GL_UNSIGNED_BYTE x4).
+constexpr std::uint32_t rgba(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a = 255) {
+  return std::uint32_t{r} | (std::uint32_t{g} << 8) | (std::uint32_t{b} << 16) | (std::uint32_t{a} << 24);
+}
+
+struct SurfaceVertex {
+  std::array<float, 3> position;
+  std::array<float, 3> normal;  ///< unit, outward for a counter-clockwise contour
+  float slopeDegrees;           ///< slope of the wire through this point
+  std::uint32_t flags;          ///< kOnFinding: the move has an error or warning finding
+};
+inline constexpr std::uint32_t kOnFinding = 1u;
+
+struct LineVertex {
+  std::array<float, 3> position;
+  std::uint32_t colour;
+};
+
+/// Line segments (pairs of vertices). moveFirst[m]..moveFirst[m+1] are the vertices of move m,
+/// so one move can be drawn again highlighted; segmentMove gives the move of each segment.
+struct LineSet {
+  std::vector<LineVertex> vertices;
+  std::vector<std::uint32_t> moveFirst;
+  void add(const geometry::Vec3& a, const geometry::Vec3& b, std::uint32_t colour);
+};
+
+struct Marker {
+  geometry::Vec3 position;
+  std::uint32_t colour = 0;
+  float sizePixels = 10.0f;
+  std::string label;            ///< "K0651 line 12"
+  std::size_t move = SIZE_MAX;  ///< SIZE_MAX: not tied to a move
+  converter::Severity severity = converter::Severity::Note;
+};
+
+struct SceneOptions {
+  double tolerance = 0.01;      ///< mm: largest distance of the drawn surface and contours from the exact ones
+  double displayHeight = 0.0;   ///< 2-axis parts: height of the wall drawn, mm (0: 8 % of the part's size)
+  std::size_t generators = 72;  ///< about this many generator lines along the whole cut
+  std::size_t maxTriangles = 20'000'000;
+  bool noteMarkers = false;  ///< notes get markers too (errors and warnings always do)
+};
+
+struct Scene {
+  std::vector<SurfaceVertex> surface;  ///< triangles, three vertices each (flat per patch, unshared)
+  std::vector<std::uint32_t> triangleMove;
+  LineSet lower, upper, generators, rapids;
+  std::vector<Marker> findings;
+  geometry::Vec3 start{0, 0, 0};
+  geometry::Vec3 boundsMin{0, 0, 0}, boundsMax{0, 0, 0};
+  geometry::Planes planes;
+  bool taper = false;
+  bool truncated = false;  ///< the surface hit maxTriangles: drawn incomplete, said in the picture
+  double minSlopeDegrees = 0.0, maxSlopeDegrees = 0.0;
+  std::size_t moves = 0;
+  [[nodiscard]] std::size_t triangles() const { return surface.size() / 3; }
+};
+
+/// The ruled surface of the cut moves (rapids are not cut), meshed within `tolerance`, with the
+/// move each patch of the mesh belongs to: mesh.trianglePatch[t] indexes patchMove.
+struct CutSurface {
+  geometry::Mesh mesh;
+  std::vector<std::size_t> patchMove;
+  geometry::Planes planes;
+};
+CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOptions& options, bool caps = false);
+
+/// Builds the scene. findings are the check's diagnostics; those with a point become markers
+/// (errors red, warnings amber, notes blue if noteMarkers) and those with a move flag that move's surface.
+Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter::Diagnostic> findings,
+                 const SceneOptions& options = {});
+
+/// The planes a toolpath is drawn between (taper: its own; 2-axis: lower .. lower + display height).
+geometry::Planes displayPlanes(const converter::Toolpath& toolpath, double displayHeight);
+
+}  // namespace kerf::render

@@ -1,0 +1,219 @@
+#include "kerf/render/scene.h"
+
+#include "kerf/geometry/tessellation.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kerf::render {
+
+using converter::Severity;
+using geometry::Segment;
+using geometry::Vec2;
+using geometry::Vec3;
+
+namespace {
+
+constexpr std::uint32_t kLowerColour = rgba(20, 70, 160);
+constexpr std::uint32_t kUpperColour = rgba(200, 90, 20);
+constexpr std::uint32_t kGeneratorColour = rgba(70, 75, 90, 70);
+constexpr std::uint32_t kRapidColour = rgba(110, 110, 110, 200);
+
+std::array<float, 3> toFloat(const Vec3& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
+
+/// The segment as a polyline within `tolerance` of it, at height z.
+void addSegment(LineSet& set, const Segment& seg, double z, const geometry::Sampling& sampling, std::uint32_t colour,
+                std::vector<Vec2>& scratch) {
+  scratch.assign(1, seg.start);
+  geometry::sample(seg, sampling, &scratch);  // appends the points after the start
+  for (std::size_t i = 0; i + 1 < scratch.size(); ++i)
+    set.add({scratch[i].x(), scratch[i].y(), z}, {scratch[i + 1].x(), scratch[i + 1].y(), z}, colour);
+}
+
+std::uint32_t severityColour(Severity s) {
+  switch (s) {
+    case Severity::Error: return rgba(220, 30, 30);
+    case Severity::Warning: return rgba(240, 160, 0);
+    case Severity::Note: return rgba(40, 120, 230);
+  }
+  return rgba(220, 30, 30);
+}
+
+}  // namespace
+
+void LineSet::add(const Vec3& a, const Vec3& b, std::uint32_t colour) {
+  vertices.push_back({toFloat(a), colour});
+  vertices.push_back({toFloat(b), colour});
+}
+
+geometry::Planes displayPlanes(const converter::Toolpath& toolpath, double displayHeight) {
+  if (toolpath.isTaper() && toolpath.heights.known) return toolpath.heights.planes;
+  geometry::Box box;
+  for (const auto& m : toolpath.moves) {
+    box.add(m.lower.start);
+    box.add(m.lower.end);
+  }
+  double h = displayHeight;
+  if (h <= 0.0) {
+    const double size = toolpath.moves.empty() ? 1.0 : std::max((box.max - box.min).norm(), 1e-3);
+    h = 0.08 * size;
+  }
+  const double lower = toolpath.heights.known ? toolpath.heights.planes.lower : 0.0;
+  return {lower, lower + h};
+}
+
+CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOptions& options, bool caps) {
+  CutSurface out;
+  out.planes = displayPlanes(toolpath, options.displayHeight);
+  std::vector<Segment> lowerCut, upperCut;
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    if (!toolpath.moves[i].isCut()) continue;
+    lowerCut.push_back(toolpath.moves[i].lower);
+    upperCut.push_back(toolpath.upperOf(i));
+    out.patchMove.push_back(i);
+  }
+  geometry::MeshOptions meshOptions;
+  meshOptions.tolerance = options.tolerance;
+  meshOptions.maxTriangles = options.maxTriangles;
+  meshOptions.lowerCap = meshOptions.upperCap = caps;
+  out.mesh = geometry::meshRuledSurface(lowerCut, upperCut, out.planes, meshOptions);
+  return out;
+}
+
+Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter::Diagnostic> findings,
+                 const SceneOptions& options) {
+  Scene scene;
+  scene.taper = toolpath.isTaper();
+  scene.planes = displayPlanes(toolpath, options.displayHeight);
+  scene.moves = toolpath.moves.size();
+  const geometry::Planes& planes = scene.planes;
+  const std::size_t n = toolpath.moves.size();
+
+  std::vector<bool> flagged(n, false);
+  for (const auto& d : findings) {
+    if (d.move && *d.move < n && d.severity != Severity::Note) flagged[*d.move] = true;
+    if (!d.point || (d.severity == Severity::Note && !options.noteMarkers)) continue;
+    Marker m;
+    m.position = *d.point;
+    m.severity = d.severity;
+    m.colour = severityColour(d.severity);
+    m.sizePixels = d.severity == Severity::Error ? 12.0f : 10.0f;
+    std::uint32_t line = 0;
+    if (d.move && *d.move < n) {
+      m.move = *d.move;
+      line = toolpath.moves[*d.move].line;
+    } else if (d.source != nullptr && !d.span.isWholeFile()) {
+      line = d.source->locate(d.span.offset).line;
+    }
+    m.label = converter::codeName(d.code) + (line ? " line " + std::to_string(line) : std::string());
+    scene.findings.push_back(std::move(m));
+  }
+
+  const CutSurface cut = meshCutSurface(toolpath, options);
+  const geometry::Mesh& mesh = cut.mesh;
+  const std::vector<std::size_t>& cutMove = cut.patchMove;
+  scene.truncated = mesh.truncated;
+
+  // Normals are averaged over the triangles of one patch only, so the corners between patches
+  // stay sharp: each patch gets its own copy of the vertices it uses.
+  scene.surface.reserve(mesh.triangles.size() * 3);
+  scene.triangleMove.reserve(mesh.triangles.size());
+  std::vector<Vec3> normalSum(mesh.vertices.size(), Vec3::Zero());
+  std::vector<std::uint32_t> stamp(mesh.vertices.size(), 0);
+  std::uint32_t run = 0;
+  std::size_t t0 = 0;
+  bool anySlope = false;
+  while (t0 < mesh.triangles.size()) {
+    std::size_t t1 = t0;
+    const std::uint32_t patch = mesh.trianglePatch[t0];
+    while (t1 < mesh.triangles.size() && mesh.trianglePatch[t1] == patch) ++t1;
+    ++run;
+    for (std::size_t t = t0; t < t1; ++t) {
+      const auto& tri = mesh.triangles[t];
+      const Vec3 fn =
+          (mesh.vertices[tri[1]] - mesh.vertices[tri[0]]).cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+      for (const std::uint32_t v : tri) {
+        if (stamp[v] != run) {
+          normalSum[v] = Vec3::Zero();
+          stamp[v] = run;
+        }
+        normalSum[v] += fn;
+      }
+    }
+    const std::size_t move = patch < cutMove.size() ? cutMove[patch] : SIZE_MAX;
+    const std::uint32_t flags = move != SIZE_MAX && flagged[move] ? kOnFinding : 0u;
+    for (std::size_t t = t0; t < t1; ++t) {
+      for (const std::uint32_t v : mesh.triangles[t]) {
+        const double len = normalSum[v].norm();
+        const Vec3 nrm = len > 0 ? Vec3(normalSum[v] / len) : Vec3(0, 0, 1);
+        const double slope = static_cast<double>(mesh.vertexSlope[v]) * 180.0 / geometry::kPi;
+        if (!anySlope || slope < scene.minSlopeDegrees) scene.minSlopeDegrees = slope;
+        if (!anySlope || slope > scene.maxSlopeDegrees) scene.maxSlopeDegrees = slope;
+        anySlope = true;
+        scene.surface.push_back({toFloat(mesh.vertices[v]), toFloat(nrm), static_cast<float>(slope), flags});
+      }
+      scene.triangleMove.push_back(static_cast<std::uint32_t>(std::min<std::size_t>(move, 0xFFFFFFFFu)));
+    }
+    t0 = t1;
+  }
+
+  // Lines, per move, so a move can be drawn again selected.
+  const geometry::Sampling sampling = geometry::Sampling::tolerance(options.tolerance);
+  std::vector<Vec2> scratch;
+  double cutLength = 0.0;
+  for (std::size_t i : cutMove) cutLength += toolpath.moves[i].lower.length();
+  const double spacing = cutLength / static_cast<double>(std::max<std::size_t>(options.generators, 1));
+  double untilNext = 0.0;
+  for (LineSet* set : {&scene.lower, &scene.upper, &scene.generators, &scene.rapids}) set->moveFirst.reserve(n + 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (LineSet* set : {&scene.lower, &scene.upper, &scene.generators, &scene.rapids})
+      set->moveFirst.push_back(static_cast<std::uint32_t>(set->vertices.size()));
+    const auto& move = toolpath.moves[i];
+    const Segment& up = toolpath.upperOf(i);
+    if (!move.isCut()) {
+      addSegment(scene.rapids, move.lower, planes.lower, sampling, kRapidColour, scratch);
+      if (scene.taper) addSegment(scene.rapids, up, planes.upper, sampling, kRapidColour, scratch);
+      continue;
+    }
+    addSegment(scene.lower, move.lower, planes.lower, sampling, kLowerColour, scratch);
+    addSegment(scene.upper, up, planes.upper, sampling, kUpperColour, scratch);
+    // Generators every `spacing` mm of the lower contour, and at every move's start (corners).
+    const double len = move.lower.length();
+    auto generatorAt = [&](double t) {
+      const Vec2 a = move.lower.pointAt(t), b = up.pointAt(t);
+      scene.generators.add({a.x(), a.y(), planes.lower}, {b.x(), b.y(), planes.upper}, kGeneratorColour);
+    };
+    generatorAt(0.0);
+    double at = untilNext;
+    while (spacing > 0 && at < len) {
+      if (at > 1e-9 * (len + 1)) generatorAt(at / len);
+      at += spacing;
+    }
+    untilNext = at - len;
+  }
+  for (LineSet* set : {&scene.lower, &scene.upper, &scene.generators, &scene.rapids})
+    set->moveFirst.push_back(static_cast<std::uint32_t>(set->vertices.size()));
+
+  scene.start = {toolpath.start.x(), toolpath.start.y(), planes.lower};
+  // Bounds of everything drawn.
+  Vec3 lo = scene.start, hi = scene.start;
+  auto grow = [&](const std::array<float, 3>& p) {
+    const Vec3 v{p[0], p[1], p[2]};
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  };
+  for (const auto& v : scene.surface) grow(v.position);
+  for (const LineSet* set : {&scene.lower, &scene.upper, &scene.rapids})
+    for (const auto& v : set->vertices) grow(v.position);
+  lo.z() = std::min(lo.z(), planes.lower);
+  hi.z() = std::max(hi.z(), planes.upper);
+  scene.boundsMin = lo;
+  scene.boundsMax = hi;
+  return scene;
+}
+
+}  // namespace kerf::render

@@ -1,0 +1,204 @@
+#include "ui/overlay.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace kerf::ui {
+
+namespace {
+
+constexpr ImU32 kText = IM_COL32(20, 20, 25, 255);
+constexpr ImU32 kPanel = IM_COL32(255, 255, 255, 210);
+
+/// The surface shader's ramp (shaders/surface.frag), for the legend.
+ImU32 rampColour(float x) {
+  static const float stops[5][3] = {{0.19f, 0.30f, 0.80f},
+                                    {0.10f, 0.70f, 0.85f},
+                                    {0.25f, 0.75f, 0.30f},
+                                    {0.95f, 0.80f, 0.15f},
+                                    {0.85f, 0.20f, 0.15f}};
+  x = std::clamp(x, 0.0f, 1.0f) * 4.0f;
+  const int i = std::min(3, static_cast<int>(x));
+  const float f = x - static_cast<float>(i);
+  float c[3];
+  for (int k = 0; k < 3; ++k) c[k] = stops[i][k] + (stops[i + 1][k] - stops[i][k]) * f;
+  return IM_COL32(static_cast<int>(c[0] * 255.0f + 0.5f), static_cast<int>(c[1] * 255.0f + 0.5f),
+                  static_cast<int>(c[2] * 255.0f + 0.5f), 255);
+}
+
+void textWithBackground(ImDrawList& list, ImVec2 at, ImU32 colour, const char* text) {
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  list.AddRectFilled(ImVec2(at.x - 2, at.y - 1), ImVec2(at.x + size.x + 2, at.y + size.y + 1), kPanel, 2.0f);
+  list.AddText(at, colour, text);
+}
+
+std::string formatNumber(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+}  // namespace
+
+double niceLength(double maxLength) {
+  if (!(maxLength > 0)) return 0;
+  const double p = std::pow(10.0, std::floor(std::log10(maxLength)));
+  for (double m : {5.0, 2.0, 1.0})
+    if (m * p <= maxLength) return m * p;
+  return p;
+}
+
+void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render::Camera& camera,
+                     const render::RenderOptions& options, const Annotation& annotation, int width, int height) {
+  const float lineHeight = ImGui::GetTextLineHeight();
+  // Title block, top left.
+  float y = 6.0f;
+  for (const std::string* line : {&annotation.title, &annotation.subtitle}) {
+    if (line->empty()) continue;
+    textWithBackground(list, ImVec2(8, y), kText, line->c_str());
+    y += lineHeight + 3;
+  }
+  if (scene.truncated)
+    textWithBackground(list, ImVec2(8, y), IM_COL32(200, 0, 0, 255), "surface incomplete: triangle limit reached");
+
+  // Scale bar, bottom right: a 1-2-5 length of at most a fifth of the width.
+  const double mmPerPixel = camera.mmPerPixel(height);
+  const double length = niceLength(0.2 * width * mmPerPixel);
+  if (length > 0 && options.surface) {
+    const auto px = static_cast<float>(length / mmPerPixel);
+    const float x1 = static_cast<float>(width) - 12.0f, x0 = x1 - px, yb = static_cast<float>(height) - 12.0f;
+    const std::string label = formatNumber(length, length < 1 ? (length < 0.1 ? 3 : 2) : 0) + " mm";
+    const ImVec2 ls = ImGui::CalcTextSize(label.c_str());
+    list.AddRectFilled(ImVec2(x0 - 4, yb - ls.y - 8), ImVec2(x1 + 4, yb + 4), kPanel, 2.0f);
+    list.AddLine(ImVec2(x0, yb), ImVec2(x1, yb), kText, 2.0f);
+    list.AddLine(ImVec2(x0, yb - 4), ImVec2(x0, yb + 2), kText, 1.0f);
+    list.AddLine(ImVec2(x1, yb - 4), ImVec2(x1, yb + 2), kText, 1.0f);
+    list.AddText(ImVec2(0.5f * (x0 + x1) - 0.5f * ls.x, yb - ls.y - 5), kText, label.c_str());
+  }
+
+  // Slope legend, right edge.
+  if (annotation.legend && options.colourBySlope && options.surface) {
+    const float barH = std::min(160.0f, static_cast<float>(height) * 0.45f), barW = 12.0f;
+    const float x0 = static_cast<float>(width) - 70.0f, y0 = 30.0f;
+    const std::string hi = formatNumber(scene.maxSlopeDegrees, 2) + " deg";
+    const std::string lo = formatNumber(scene.minSlopeDegrees, 2) + " deg";
+    list.AddRectFilled(ImVec2(x0 - 6, y0 - lineHeight - 8), ImVec2(static_cast<float>(width) - 4, y0 + barH + 6),
+                       kPanel, 2.0f);
+    list.AddText(ImVec2(x0 - 2, y0 - lineHeight - 5), kText, "slope");
+    constexpr int kSteps = 16;
+    for (int i = 0; i < kSteps; ++i) {
+      const float a = y0 + barH * static_cast<float>(i) / kSteps, b = y0 + barH * static_cast<float>(i + 1) / kSteps;
+      const ImU32 top = rampColour(1.0f - static_cast<float>(i) / kSteps);
+      const ImU32 bottom = rampColour(1.0f - static_cast<float>(i + 1) / kSteps);
+      list.AddRectFilledMultiColor(ImVec2(x0, a), ImVec2(x0 + barW, b), top, top, bottom, bottom);
+    }
+    list.AddRect(ImVec2(x0, y0), ImVec2(x0 + barW, y0 + barH), kText);
+    list.AddText(ImVec2(x0 + barW + 3, y0 - 2), kText, hi.c_str());
+    list.AddText(ImVec2(x0 + barW + 3, y0 + barH - lineHeight + 2), kText, lo.c_str());
+  }
+
+  // Finding labels beside their markers.
+  if (annotation.labels && options.markers) {
+    for (const render::Marker& m : scene.findings) {
+      const Eigen::Vector2d p = camera.project(m.position, width, height);
+      const ImU32 colour = m.severity == converter::Severity::Error     ? IM_COL32(190, 0, 0, 255)
+                           : m.severity == converter::Severity::Warning ? IM_COL32(150, 90, 0, 255)
+                                                                        : IM_COL32(20, 80, 180, 255);
+      textWithBackground(list, ImVec2(static_cast<float>(p.x()) + 10, static_cast<float>(p.y()) - lineHeight - 2),
+                         colour, m.label.c_str());
+    }
+  }
+
+  // Triad letters.
+  if (options.triad) {
+    const render::TriadLayout t = render::triadLayout(camera, width, height);
+    const char* names[3] = {"X", "Y", "Z"};
+    const ImU32 colours[3] = {IM_COL32(200, 30, 30, 255), IM_COL32(30, 140, 30, 255), IM_COL32(30, 60, 210, 255)};
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector2d d = t.tips[i] - t.origin;
+      if (d.norm() < 4) continue;  // seen end-on
+      const Eigen::Vector2d at = t.tips[i] + 7.0 * d.normalized();
+      list.AddText(ImVec2(static_cast<float>(at.x()) - 3, static_cast<float>(at.y()) - 0.5f * lineHeight), colours[i],
+                   names[i]);
+    }
+  }
+}
+
+render::OverlayDrawData convertDrawData(const ImDrawData& data) {
+  static_assert(sizeof(ImDrawVert) == sizeof(render::OverlayVertex), "ImDrawVert layout");
+  static_assert(offsetof(ImDrawVert, pos) == offsetof(render::OverlayVertex, x), "ImDrawVert layout");
+  static_assert(offsetof(ImDrawVert, uv) == offsetof(render::OverlayVertex, u), "ImDrawVert layout");
+  static_assert(offsetof(ImDrawVert, col) == offsetof(render::OverlayVertex, colour), "ImDrawVert layout");
+  render::OverlayDrawData out;
+  const ImVec2 origin = data.DisplayPos;
+  for (int l = 0; l < data.CmdListsCount; ++l) {
+    const ImDrawList& list = *data.CmdLists[l];
+    const auto base = static_cast<std::uint32_t>(out.vertices.size());
+    const std::size_t firstVertex = out.vertices.size();
+    out.vertices.resize(firstVertex + static_cast<std::size_t>(list.VtxBuffer.Size));
+    if (list.VtxBuffer.Size > 0)
+      std::memcpy(&out.vertices[firstVertex], list.VtxBuffer.Data,
+                  static_cast<std::size_t>(list.VtxBuffer.Size) * sizeof(ImDrawVert));
+    for (std::size_t v = firstVertex; v < out.vertices.size(); ++v) {
+      out.vertices[v].x -= origin.x;
+      out.vertices[v].y -= origin.y;
+    }
+    for (int c = 0; c < list.CmdBuffer.Size; ++c) {
+      const ImDrawCmd& cmd = list.CmdBuffer[c];
+      if (cmd.UserCallback != nullptr) continue;
+      render::OverlayCommand oc;
+      oc.clip = {cmd.ClipRect.x - origin.x, cmd.ClipRect.y - origin.y, cmd.ClipRect.z - origin.x,
+                 cmd.ClipRect.w - origin.y};
+      oc.firstIndex = static_cast<std::uint32_t>(out.indices.size());
+      oc.indexCount = cmd.ElemCount;
+      for (unsigned i = 0; i < cmd.ElemCount; ++i)
+        out.indices.push_back(base + cmd.VtxOffset + list.IdxBuffer[static_cast<int>(cmd.IdxOffset + i)]);
+      out.commands.push_back(oc);
+    }
+  }
+  return out;
+}
+
+HeadlessOverlay::HeadlessOverlay() {
+  ImGuiContext* previous = ImGui::GetCurrentContext();
+  context_ = ImGui::CreateContext();
+  ImGui::SetCurrentContext(context_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.LogFilename = nullptr;
+  io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
+  unsigned char* pixels = nullptr;
+  int w = 0, h = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+  io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
+  ImGui::SetCurrentContext(previous ? previous : context_);
+}
+
+HeadlessOverlay::~HeadlessOverlay() { ImGui::DestroyContext(context_); }
+
+void HeadlessOverlay::uploadFont(render::Renderer& renderer) {
+  ImGui::SetCurrentContext(context_);
+  unsigned char* pixels = nullptr;
+  int w = 0, h = 0;
+  ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+  renderer.setOverlayTexture(w, h, pixels);
+}
+
+render::OverlayDrawData HeadlessOverlay::frame(const render::Scene& scene, const render::Camera& camera,
+                                               const render::RenderOptions& options, const Annotation& annotation,
+                                               int width, int height) {
+  ImGui::SetCurrentContext(context_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+  io.DeltaTime = 1.0f / 60.0f;
+  ImGui::NewFrame();
+  drawAnnotations(*ImGui::GetForegroundDrawList(), scene, camera, options, annotation, width, height);
+  ImGui::Render();
+  return convertDrawData(*ImGui::GetDrawData());
+}
+
+}  // namespace kerf::ui

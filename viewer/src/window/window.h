@@ -1,0 +1,38 @@
+// `kerf view`: the interactive window (GLFW + Dear ImGui). The program text and the 3D part point
+// at each other: click a segment to select its block, click a line or a finding to see it.
+#pragma once
+
+#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/source.h"
+#include "kerf/converter/toolpath.h"
+#include "kerf/render/renderer.h"
+#include "kerf/render/scene.h"
+#include "ui/overlay.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kerf::window {
+
+struct WindowRequest {
+  const converter::SourceFile* source = nullptr;
+  const converter::Toolpath* toolpath = nullptr;
+  std::vector<converter::Diagnostic> findings;
+  const render::Scene* scene = nullptr;
+  render::RenderOptions options;
+  ui::Annotation annotation;
+  double step = 0.1;  ///< initial interpolation step k, mm
+  int width = 1280, height = 800;
+  std::optional<std::string> screenshot;  ///< write the window as PNG after `frames` frames, then close
+  int frames = 0;                         ///< 0: run until closed
+  bool benchmark = false;                 ///< print frame times when closing
+  std::optional<std::size_t> selectLine;  ///< start with the move on this source line selected
+  double playback = -1;                   ///< start the wire at this fraction of the path (< 0: hidden)
+};
+
+/// Runs the window until it is closed (or `frames` are drawn). False with a message when no
+/// window can be opened (no display) or the screenshot cannot be written.
+bool runWindow(const WindowRequest& request, std::string& error);
+
+}  // namespace kerf::window

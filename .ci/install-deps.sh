@@ -2,12 +2,14 @@
 # Installs Kerf's build dependencies from Debian 12 packages (run as root).
 #   .ci/install-deps.sh          what building and running kerf needs
 #   .ci/install-deps.sh --tests  plus what the test suite needs (LinuxCNC's rs274 as the
-#                                independent interpreter the arc tests compare against)
+#                                independent interpreter the arc tests compare against; Xvfb
+#                                for the window tests)
 # Skips apt entirely when everything is already installed.
 set -euo pipefail
-packages=(g++ cmake make libeigen3-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev)
+packages=(g++ cmake make pkg-config libeigen3-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
+  libvtk9-dev libglfw3-dev libimgui-dev libstb-dev libgl-dev libosmesa6-dev libegl-dev libegl-mesa0)
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(linuxcnc-uspace python3)
+  packages+=(linuxcnc-uspace python3 xvfb xauth)
 fi
 missing=()
 for p in "${packages[@]}"; do

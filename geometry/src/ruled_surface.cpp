@@ -319,8 +319,11 @@ Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> u
     std::vector<std::uint32_t> cellPatch;
     gens.push_back({lower[i].start, upper[i].start});
     for (std::size_t k = i; k < j; ++k) {
+      const bool leans =
+          (upper[k].start - lower[k].start).norm() > kJoin || (upper[k].end - lower[k].end).norm() > kJoin;
       const std::size_t pieces =
-          std::min(kMaxMeshPieces, std::max(sampleCount(lower[k], sampling), sampleCount(upper[k], sampling)));
+          std::min(kMaxMeshPieces, std::max({sampleCount(lower[k], sampling), sampleCount(upper[k], sampling),
+                                             leans ? options.minTaperPieces : std::size_t{1}}));
       for (std::size_t q = 1; q <= pieces; ++q) {
         const double t = static_cast<double>(q) / static_cast<double>(pieces);
         gens.push_back({lower[k].pointAt(t), upper[k].pointAt(t)});

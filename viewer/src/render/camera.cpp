@@ -64,7 +64,8 @@ Eigen::Vector2d Camera::project(const Vec3& p, int width, int height) const {
   return {(x + 1.0) * 0.5 * width, (1.0 - y) * 0.5 * height};
 }
 
-Camera fitCamera(const Vec3& boxMin, const Vec3& boxMax, View view, int width, int height, double margin) {
+Camera fitCamera(const Vec3& boxMin, const Vec3& boxMax, View view, int width, int height, double margin,
+                 int reservedTop) {
   Camera c;
   switch (view) {
     case View::Iso:
@@ -93,9 +94,12 @@ Camera fitCamera(const Vec3& boxMin, const Vec3& boxMax, View view, int width, i
     hx = std::max(hx, std::abs((corner - c.target).dot(r)));
     hy = std::max(hy, std::abs((corner - c.target).dot(u)));
   }
-  const double aspect = static_cast<double>(width) / std::max(1, height);
-  const double half = std::max({hy, hx / aspect, 1e-3});
-  c.halfHeight = half * (1.0 + 2.0 * margin);
+  const int below = std::max(1, height - std::clamp(reservedTop, 0, height / 2));
+  const double aspect = static_cast<double>(width) / below;
+  const double half = std::max({hy, hx / aspect, 1e-3}) * (1.0 + 2.0 * margin);
+  // Fitted into the band below the title, then seen in the whole image at the same scale.
+  c.halfHeight = half * static_cast<double>(height) / below;
+  c.target += c.up() * (0.5 * (height - below) * c.mmPerPixel(height));
   c.depth = std::max((boxMax - boxMin).norm(), 1e-3) * 2.0;
   return c;
 }

@@ -80,6 +80,7 @@ CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOption
   meshOptions.tolerance = options.tolerance;
   meshOptions.maxTriangles = options.maxTriangles;
   meshOptions.lowerCap = meshOptions.upperCap = caps;
+  meshOptions.minTaperPieces = options.minTaperPieces;
   out.mesh = geometry::meshRuledSurface(lowerCut, upperCut, out.planes, meshOptions);
   return out;
 }

@@ -83,7 +83,7 @@ void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render:
   // Slope legend, right edge.
   if (annotation.legend && options.colourBySlope && options.surface) {
     const float barH = std::min(160.0f, static_cast<float>(height) * 0.45f), barW = 12.0f;
-    const float x0 = static_cast<float>(width) - 70.0f, y0 = 30.0f;
+    const float x0 = static_cast<float>(width) - 92.0f, y0 = 30.0f;
     const std::string hi = formatNumber(scene.maxSlopeDegrees, 2) + " deg";
     const std::string lo = formatNumber(scene.minSlopeDegrees, 2) + " deg";
     list.AddRectFilled(ImVec2(x0 - 6, y0 - lineHeight - 8), ImVec2(static_cast<float>(width) - 4, y0 + barH + 6),

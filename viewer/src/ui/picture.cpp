@@ -8,6 +8,7 @@
 namespace kerf::ui {
 
 namespace {
+constexpr int kTitleBand = 36;  // pixels: the title and subtitle lines
 double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -32,8 +33,8 @@ PictureResult renderPicture(const render::Scene& scene, const PictureRequest& re
   result.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const render::Camera camera =
-      render::fitCamera(scene.boundsMin, scene.boundsMax, request.view, request.width, request.height);
+  const render::Camera camera = render::fitCamera(scene.boundsMin, scene.boundsMax, request.view, request.width,
+                                                  request.height, 0.08, kTitleBand);
   target.bind();
   renderer.render(camera, request.options, request.width, request.height);
   renderer.drawOverlay(overlay.frame(scene, camera, request.options, request.annotation, request.width, request.height),

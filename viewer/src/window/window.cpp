@@ -281,8 +281,8 @@ bool runWindow(const WindowRequest& request, std::string& error) {
         }
         targetW = viewW;
         targetH = viewH;
-        s.fitted =
-            render::fitCamera(request.scene->boundsMin, request.scene->boundsMax, render::View::Iso, viewW, viewH);
+        s.fitted = render::fitCamera(request.scene->boundsMin, request.scene->boundsMax, render::View::Iso, viewW,
+                                     viewH, 0.08, 36);
         if (!fittedOnce) s.camera = s.fitted;
         fittedOnce = true;
       }
@@ -340,14 +340,20 @@ bool runWindow(const WindowRequest& request, std::string& error) {
       if (s.selected != lastSelected) lastSelected = s.selected;
 
       // The annotations of the picture, in the view's area.
+      // Drawn in the view's own coordinates (ImGui culls text against the clip rectangle as it
+      // draws), then moved right by the text panel's width, clip rectangles included.
       ImDrawList* fg = ImGui::GetForegroundDrawList();
-      fg->PushClipRect(ImVec2(static_cast<float>(viewX), 0),
-                       ImVec2(static_cast<float>(viewX + viewW), static_cast<float>(viewH)));
+      fg->PushClipRect(ImVec2(0, 0), ImVec2(static_cast<float>(viewW), static_cast<float>(viewH)));
       const int vtxStart = fg->VtxBuffer.Size;
+      const int cmdStart = fg->CmdBuffer.Size - 1;
       render::RenderOptions options = s.options;
       options.selectedMove = s.selected;
       ui::drawAnnotations(*fg, *request.scene, s.camera, options, request.annotation, viewW, viewH);
       for (int v = vtxStart; v < fg->VtxBuffer.Size; ++v) fg->VtxBuffer[v].pos.x += static_cast<float>(viewX);
+      for (int c = std::max(0, cmdStart); c < fg->CmdBuffer.Size; ++c) {
+        fg->CmdBuffer[c].ClipRect.x += static_cast<float>(viewX);
+        fg->CmdBuffer[c].ClipRect.z += static_cast<float>(viewX);
+      }
       fg->PopClipRect();
       ImGui::Render();
 

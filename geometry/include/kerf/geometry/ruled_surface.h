@@ -104,6 +104,9 @@ struct MeshOptions {
   bool upperCap = false;
   std::size_t maxCapVertices = 20000;     ///< ear clipping is O(n^2): larger caps are left open
   std::size_t maxTriangles = 50'000'000;  ///< stop (Mesh::truncated) rather than exhaust memory
+  /// At least this many pieces along t in a patch whose generators are not all vertical, so
+  /// values that vary along it (the slope) are sampled inside the patch, not only at its ends.
+  std::size_t minTaperPieces = 1;
 };
 
 /// Triangulates the patches (lower[i], upper[i]) into one mesh. Consecutive patches that share

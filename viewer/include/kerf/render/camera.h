@@ -33,8 +33,9 @@ struct Camera {
   [[nodiscard]] double mmPerPixel(int height) const { return 2.0 * halfHeight / height; }
 };
 
-/// A camera looking from `view` with the box fitted into a width x height image with a margin.
+/// A camera looking from `view` with the box fitted into a width x height image with a margin
+/// (a fraction of the size on each side), below a band `reservedTop` pixels high (the title).
 Camera fitCamera(const geometry::Vec3& boxMin, const geometry::Vec3& boxMax, View view, int width, int height,
-                 double margin = 0.08);
+                 double margin = 0.08, int reservedTop = 0);
 
 }  // namespace kerf::render

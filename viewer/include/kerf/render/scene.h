@@ -58,7 +58,8 @@ struct SceneOptions {
   double displayHeight = 0.0;   ///< 2-axis parts: height of the wall drawn, mm (0: 8 % of the part's size)
   std::size_t generators = 72;  ///< about this many generator lines along the whole cut
   std::size_t maxTriangles = 20'000'000;
-  bool noteMarkers = false;  ///< notes get markers too (errors and warnings always do)
+  std::size_t minTaperPieces = 16;  ///< pieces along a leaning patch at least, so the slope colours vary inside it
+  bool noteMarkers = false;         ///< notes get markers too (errors and warnings always do)
 };
 
 struct Scene {

@@ -1,0 +1,35 @@
+# Snapshot tests: one line each (cmake/KerfSnapshotTest.cmake). Baselines are tests/snapshots/<name>.png;
+# KERF_UPDATE_SNAPSHOTS=1 ctest -L snapshot rewrites them (look at each before committing).
+set(s --size 320x240)
+# Every sample kind, iso.
+kerf_snapshot_test(NAME sector_r40_iso ARGS samples/sector_r40.nc ${s})
+kerf_snapshot_test(NAME punch_outline_iso ARGS samples/punch_outline.nc ${s})
+kerf_snapshot_test(NAME inch_g91_iso ARGS samples/inch_g91_bare_g41.nc ${s})
+kerf_snapshot_test(NAME taper_punch_iso ARGS samples/taper_punch_2deg.nc ${s})
+kerf_snapshot_test(NAME circle_under_square_iso ARGS samples/circle_under_square.nc ${s})
+kerf_snapshot_test(NAME sodick_colon_iso ARGS samples/sodick_colon_bulge.nc ${s})
+# Every view.
+kerf_snapshot_test(NAME punch_outline_top ARGS samples/punch_outline.nc ${s} --view top)
+kerf_snapshot_test(NAME punch_outline_front ARGS samples/punch_outline.nc ${s} --view front)
+kerf_snapshot_test(NAME punch_outline_side ARGS samples/punch_outline.nc ${s} --view side)
+kerf_snapshot_test(NAME taper_punch_top ARGS samples/taper_punch_2deg.nc ${s} --view top)
+# Colour by slope, with its legend.
+kerf_snapshot_test(NAME taper_punch_slope ARGS samples/taper_punch_2deg.nc ${s} --color-by slope)
+kerf_snapshot_test(NAME circle_under_square_slope ARGS samples/circle_under_square.nc ${s} --color-by slope --view front)
+# Findings highlighted: a 2-axis crossing, and taper faults.
+kerf_snapshot_test(NAME path_crosses_highlight ARGS tests/bad/path_crosses_itself.nc ${s} --highlight-findings --view top)
+kerf_snapshot_test(NAME too_steep_highlight ARGS samples/bad/too_steep.nc ${s} --highlight-findings --color-by slope)
+kerf_snapshot_test(NAME surface_meets_itself_highlight ARGS samples/bad/surface_meets_itself.nc ${s} --highlight-findings)
+kerf_snapshot_test(NAME wire_crossing_highlight ARGS samples/bad/wire_crossing.nc ${s} --highlight-findings)
+# The headless back ends must agree: the same picture through EGL.
+kerf_snapshot_test(NAME taper_punch_iso_egl ARGS samples/taper_punch_2deg.nc ${s} --backend egl)
+
+# The window under xvfb-run: text panel, 3D view, findings panel; a block selected, the wire shown.
+if(KERF_XVFB_RUN)
+  kerf_snapshot_test(NAME view_taper_punch WINDOW
+                     ARGS samples/taper_punch_2deg.nc --size 900x560 --frames 4 --line 16 --colour-by-slope)
+  kerf_snapshot_test(NAME view_punch_playback WINDOW
+                     ARGS samples/punch_outline.nc --size 900x560 --frames 4 --playback 0.4)
+else()
+  message(WARNING "xvfb-run (package xvfb) not found: the window snapshot tests are not built")
+endif()

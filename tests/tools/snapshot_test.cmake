@@ -1,0 +1,36 @@
+# One snapshot test: render with kerf (headless, DISPLAY unset) or take a window screenshot, then
+# compare with the baseline by SSIM error (tests/image/ssim.h).
+#   cmake -DKERF=... -DCOMPARE=... -DBASELINE=... -DOUTPUT=... -DTHRESHOLD=... -DMODE=render|window
+#         -DXVFB=... -DARGS="a;b;c" -P snapshot_test.cmake
+# KERF_UPDATE_SNAPSHOTS=1 in the environment accepts the new picture as the baseline.
+# On failure the rendered picture (OUTPUT) and a diff image (OUTPUT without .png + .diff.png) stay.
+get_filename_component(out_dir "${OUTPUT}" DIRECTORY)
+file(MAKE_DIRECTORY "${out_dir}")
+string(REGEX REPLACE "\\.png$" ".diff.png" diff "${OUTPUT}")
+file(REMOVE "${OUTPUT}" "${diff}")
+if(MODE STREQUAL "window")
+  execute_process(COMMAND ${XVFB} -a -s "-screen 0 1280x1024x24" ${KERF} view ${ARGS} --screenshot ${OUTPUT}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+else()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY ${KERF} render ${ARGS} -o ${OUTPUT}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+endif()
+# 0: the part has no errors; 1: it has (the picture shows them). 2 and up: kerf failed.
+if(NOT rc MATCHES "^[01]$" OR NOT EXISTS "${OUTPUT}")
+  message(FATAL_ERROR "kerf ${MODE} failed (exit ${rc}):\n${err}")
+endif()
+if(DEFINED ENV{KERF_UPDATE_SNAPSHOTS} AND NOT "$ENV{KERF_UPDATE_SNAPSHOTS}" STREQUAL "0")
+  file(COPY_FILE "${OUTPUT}" "${BASELINE}")
+  message(STATUS "snapshot baseline updated: ${BASELINE}")
+  return()
+endif()
+if(NOT EXISTS "${BASELINE}")
+  message(FATAL_ERROR "no baseline ${BASELINE}: look at ${OUTPUT} and accept it with KERF_UPDATE_SNAPSHOTS=1")
+endif()
+execute_process(COMMAND ${COMPARE} ${BASELINE} ${OUTPUT} --threshold ${THRESHOLD} --diff ${diff}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message(STATUS "${out}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "snapshot differs from ${BASELINE}: ${out}${err}rendered: ${OUTPUT}\ndiff: ${diff}")
+endif()
+file(REMOVE "${OUTPUT}")

@@ -1,0 +1,325 @@
+// kerf::render, kerf::headless and kerf::export: camera, scene, pixels, PNG, the SSIM error, and
+// mesh files read back with VTK's readers.
+#include "kerf/converter/analysis.h"
+#include "kerf/converter/checks.h"
+#include "kerf/converter/summary.h"
+#include "kerf/export/mesh_export.h"
+#include "kerf/headless/context.h"
+#include "kerf/headless/png.h"
+#include "kerf/render/gl.h"
+#include "kerf/render/renderer.h"
+#include "kerf/render/scene.h"
+#include "ssim.h"
+
+#include <gtest/gtest.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPLYReader.h>
+#include <vtkPolyData.h>
+#include <vtkSTLReader.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+namespace {
+
+using namespace kerf;
+using converter::Diagnostics;
+using converter::SourceFile;
+
+struct Part {
+  std::unique_ptr<SourceFile> source;
+  converter::Toolpath toolpath;
+  std::unique_ptr<Diagnostics> diags;
+};
+
+Part analyse(const std::string& text, const converter::InterpreterOptions& options = {}) {
+  Part p;
+  p.source = std::make_unique<SourceFile>("part.nc", text);
+  p.diags = std::make_unique<Diagnostics>(1000);
+  p.toolpath = converter::analyse(*p.source, options, *p.diags).toolpath;
+  const converter::SurfaceMeasures measures = converter::measureSurface(p.toolpath);
+  converter::checkToolpath(p.toolpath, p.source.get(), converter::CheckOptions{}, *p.diags, &measures);
+  return p;
+}
+
+// A 20 x 10 mm rectangle, counter-clockwise from the origin.
+const char* kRectangle = "G90 G21\nG01 X20. Y0\nY10.\nX0\nY0\nM30\n";
+// A frustum: a 20 mm square below, a 16 mm square above, 10 mm apart (xyuv-abs).
+const char* kFrustum =
+    "(AXIS,XY_Z_POS,0)\n(AXIS,UV_Z_POS,10)\nG90 G21\nG00 X-10. Y-10. U-8. V-8.\nG01 X10. U8.\nY10. V8.\nX-10. U-8.\n"
+    "Y-10. V-8.\nM30\n";
+
+TEST(render_camera, top_view_fits_the_box_with_the_margin) {
+  const render::Camera c = render::fitCamera({0, 0, 0}, {20, 10, 2}, render::View::Top, 400, 200, 0.1);
+  const Eigen::Vector2d lo = c.project({0, 0, 0}, 400, 200), hi = c.project({20, 10, 0}, 400, 200);
+  // Top view: x to the right, y up (so down the image); the box fills the width less 2 x 10 %.
+  EXPECT_NEAR(lo.x(), 400 * (1 - 1 / 1.2) / 2, 1e-6);
+  EXPECT_NEAR(hi.x(), 400 - 400 * (1 - 1 / 1.2) / 2, 1e-6);
+  EXPECT_GT(lo.y(), hi.y());
+  EXPECT_NEAR(0.5 * (lo.y() + hi.y()), 100, 1e-6);
+}
+
+TEST(render_camera, iso_view_is_the_classic_isometric) {
+  const render::Camera c = render::fitCamera({-1, -1, -1}, {1, 1, 1}, render::View::Iso, 100, 100);
+  const geometry::Vec3 e = c.eyeDirection();
+  EXPECT_NEAR(e.x(), 1 / std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(e.y(), -1 / std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(e.z(), 1 / std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(c.up().dot(e), 0.0, 1e-12);
+  EXPECT_NEAR(c.right().dot(e), 0.0, 1e-12);
+  EXPECT_GT(c.up().z(), 0.0);  // z points up the picture
+}
+
+TEST(render_scene, two_axis_wall_faces_outwards_with_zero_slope) {
+  const Part p = analyse(kRectangle);
+  const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
+  ASSERT_GT(s.triangles(), 0u);
+  EXPECT_FALSE(s.taper);
+  EXPECT_NEAR(s.planes.height(), 0.08 * std::hypot(20.0, 10.0), 1e-9);
+  for (const auto& v : s.surface) {
+    EXPECT_NEAR(v.normal[2], 0.0f, 1e-6f);
+    EXPECT_NEAR(v.slopeDegrees, 0.0f, 1e-6f);
+    // Outward: the normal points away from the rectangle's centre (10, 5).
+    const double out = (static_cast<double>(v.position[0]) - 10.0) * static_cast<double>(v.normal[0]) +
+                       (static_cast<double>(v.position[1]) - 5.0) * static_cast<double>(v.normal[1]);
+    EXPECT_GT(out, 0.0);
+  }
+  EXPECT_EQ(s.lower.moveFirst.size(), p.toolpath.moves.size() + 1);
+  EXPECT_NEAR(s.boundsMax.x(), 20.0, 1e-6);
+  EXPECT_NEAR(s.boundsMax.y(), 10.0, 1e-6);
+}
+
+TEST(render_scene, frustum_slope_is_the_taper) {
+  const Part p = analyse(kFrustum);
+  ASSERT_TRUE(p.toolpath.isTaper());
+  const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
+  // Mid-side generators lean 2 mm over 10 mm; the corner ones 2 sqrt 2.
+  EXPECT_NEAR(s.minSlopeDegrees, std::atan(0.2) * 180 / geometry::kPi, 1e-3);
+  EXPECT_NEAR(s.maxSlopeDegrees, std::atan(0.2 * std::sqrt(2.0)) * 180 / geometry::kPi, 1e-3);
+  EXPECT_DOUBLE_EQ(s.planes.upper, 10.0);
+}
+
+TEST(render_scene, findings_become_markers_and_flag_their_move) {
+  // The path crosses itself: an error with a point.
+  const Part p = analyse("G90 G21\nG01 X10. Y10.\nX10. Y0\nX0 Y10.\nX0 Y0\nM30\n");
+  ASSERT_TRUE(p.diags->hasErrors());
+  const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
+  ASSERT_FALSE(s.findings.empty());
+  EXPECT_EQ(s.findings[0].severity, converter::Severity::Error);
+  EXPECT_NE(s.findings[0].label.find("K0601"), std::string::npos);
+  bool flagged = false;
+  for (const auto& v : s.surface) flagged = flagged || (v.flags & render::kOnFinding);
+  EXPECT_TRUE(flagged);
+}
+
+class Headless : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string error;
+    context_ = headless::createContext(headless::Backend::Auto, error);
+    ASSERT_NE(context_, nullptr) << error;
+  }
+  std::unique_ptr<headless::Context> context_;
+};
+
+std::vector<std::uint8_t> drawTop(const render::Scene& scene, int w, int h, const render::RenderOptions& options) {
+  render::Renderer r;
+  render::OffscreenTarget t;
+  std::string error;
+  EXPECT_TRUE(r.init(error)) << error;
+  EXPECT_TRUE(t.create(w, h, 1, error)) << error;
+  r.setScene(scene);
+  t.bind();
+  r.render(render::fitCamera(scene.boundsMin, scene.boundsMax, render::View::Top, w, h), options, w, h);
+  return t.readRgba();
+}
+
+TEST_F(Headless, top_view_puts_the_contour_where_the_camera_says) {
+  const Part p = analyse(kRectangle);
+  const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
+  constexpr int w = 200, h = 120;
+  render::RenderOptions o;
+  o.triad = false;
+  o.markers = false;
+  const std::vector<std::uint8_t> px = drawTop(s, w, h, o);
+  const render::Camera c = render::fitCamera(s.boundsMin, s.boundsMax, render::View::Top, w, h);
+  auto at = [&](const Eigen::Vector2d& q) {
+    const auto x = static_cast<std::size_t>(q.x()), y = static_cast<std::size_t>(q.y());
+    return &px[(y * w + x) * 4];
+  };
+  // The middle of the bottom edge, seen from above: the upper contour's orange (200, 90, 20).
+  const std::uint8_t* edge = at(c.project({10, 0, s.planes.upper}, w, h));
+  EXPECT_EQ(edge[0], 200);
+  EXPECT_EQ(edge[1], 90);
+  EXPECT_EQ(edge[2], 20);
+  // The rectangle's inside (seen from above, open) and outside are background.
+  for (const geometry::Vec3& q : {geometry::Vec3(10, 5, 0), geometry::Vec3(-3, 5, 0)}) {
+    const std::uint8_t* bg = at(c.project(q, w, h));
+    EXPECT_EQ(bg[0], 250);
+    EXPECT_EQ(bg[1], 250);
+    EXPECT_EQ(bg[2], 250);
+  }
+}
+
+TEST_F(Headless, same_scene_same_pixels) {
+  const Part p = analyse(kFrustum);
+  const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
+  render::RenderOptions o;
+  o.colourBySlope = true;
+  EXPECT_EQ(drawTop(s, 160, 120, o), drawTop(s, 160, 120, o));
+}
+
+TEST_F(Headless, colour_by_slope_changes_the_picture) {
+  const Part p = analyse(kFrustum);
+  const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
+  render::RenderOptions plain, slope;
+  slope.colourBySlope = true;
+  const auto a = drawTop(s, 160, 120, plain), b = drawTop(s, 160, 120, slope);
+  const test::SsimResult r = test::compareImages({160, 120, &a}, {160, 120, &b});
+  EXPECT_GT(r.error, 0.05);
+}
+
+TEST(headless_png, encodes_and_decodes_the_same_pixels) {
+  std::vector<std::uint8_t> rgba(7 * 5 * 4);
+  for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>(i * 37 % 256);
+  const std::string png = headless::encodePng(rgba, 7, 5);
+  ASSERT_FALSE(png.empty());
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  const auto back = headless::decodePng(png);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->width, 7);
+  EXPECT_EQ(back->height, 5);
+  EXPECT_EQ(back->rgba, rgba);
+  EXPECT_TRUE(headless::encodePng(rgba, 8, 5).empty());  // wrong size
+  EXPECT_FALSE(headless::decodePng("not a png").has_value());
+}
+
+std::vector<std::uint8_t> checker(int w, int h) {
+  std::vector<std::uint8_t> px(static_cast<std::size_t>(w) * h * 4, 255);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (((x / 8) + (y / 8)) % 2)
+        for (int c = 0; c < 3; ++c) px[(static_cast<std::size_t>(y) * w + x) * 4 + c] = 40;
+  return px;
+}
+
+TEST(snapshot_ssim, identical_images_have_no_error) {
+  const auto a = checker(96, 64);
+  const test::SsimResult r = test::compareImages({96, 64, &a}, {96, 64, &a});
+  EXPECT_NEAR(r.error, 0.0, 1e-6);
+  EXPECT_NEAR(r.meanSsim, 1.0, 1e-6);
+}
+
+TEST(snapshot_ssim, a_small_local_change_is_above_the_default_threshold) {
+  const auto a = checker(320, 240);
+  auto b = a;
+  // A 10 x 10 red square (a finding marker) in a 320 x 240 picture: 0.13 % of its pixels.
+  for (int y = 100; y < 110; ++y)
+    for (int x = 200; x < 210; ++x) {
+      auto* p = &b[(static_cast<std::size_t>(y) * 320 + x) * 4];
+      p[0] = 220, p[1] = 30, p[2] = 30;
+    }
+  const test::SsimResult r = test::compareImages({320, 240, &a}, {320, 240, &b});
+  EXPECT_GT(r.error, 0.05);
+  EXPECT_GT(r.meanSsim, 0.99);  // a whole-picture mean would have missed it
+  EXPECT_EQ(r.worstTileX, 192);
+  EXPECT_EQ(r.worstTileY, 96);
+}
+
+TEST(snapshot_ssim, faint_noise_is_below_the_default_threshold) {
+  const auto a = checker(160, 120);
+  auto b = a;
+  for (std::size_t i = 0; i < b.size(); i += 4)
+    b[i] = static_cast<std::uint8_t>(std::clamp(b[i] + static_cast<int>(i % 5) - 2, 0, 255));
+  const test::SsimResult r = test::compareImages({160, 120, &a}, {160, 120, &b});
+  EXPECT_GT(r.error, 0.0);
+  EXPECT_LT(r.error, 0.05);
+}
+
+TEST(snapshot_ssim, different_sizes_are_a_full_error) {
+  const auto a = checker(16, 16), b = checker(16, 24);
+  EXPECT_EQ(test::compareImages({16, 16, &a}, {16, 24, &b}).error, 1.0);
+}
+
+class Export : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("kerf_export_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::filesystem::path dir_;
+};
+
+TEST_F(Export, vtp_carries_move_line_slope_and_findings) {
+  // A frustum whose last side is too steep for --max-taper 12: findings on one move.
+  const Part p = analyse(kFrustum);
+  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags->all(), {}, false);
+  const std::string path = (dir_ / "part.vtp").string();
+  std::string error;
+  ASSERT_TRUE(exporter::writeMesh(data, exporter::MeshFormat::Vtp, path, error)) << error;
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* poly = reader->GetOutput();
+  ASSERT_EQ(poly->GetNumberOfPolys(), static_cast<vtkIdType>(data.surface.mesh.triangles.size()));
+  EXPECT_EQ(poly->GetNumberOfPoints(), static_cast<vtkIdType>(data.surface.mesh.vertices.size()));
+  for (const char* name : {"move", "line", "slope", "findings"})
+    ASSERT_NE(poly->GetCellData()->GetArray(name), nullptr) << name;
+  vtkDataArray* line = poly->GetCellData()->GetArray("line");
+  vtkDataArray* move = poly->GetCellData()->GetArray("move");
+  vtkDataArray* slope = poly->GetCellData()->GetArray("slope");
+  for (vtkIdType c = 0; c < poly->GetNumberOfPolys(); ++c) {
+    const auto m = static_cast<std::size_t>(move->GetTuple1(c));
+    ASSERT_LT(m, p.toolpath.moves.size());
+    EXPECT_EQ(line->GetTuple1(c), p.toolpath.moves[m].line);
+    EXPECT_GE(slope->GetTuple1(c), std::atan(0.2) * 180 / geometry::kPi - 1e-3);
+    EXPECT_LE(slope->GetTuple1(c), std::atan(0.2 * std::sqrt(2.0)) * 180 / geometry::kPi + 1e-3);
+  }
+}
+
+TEST_F(Export, findings_flags_mark_the_moves_with_findings) {
+  const Part p = analyse("G90 G21\nG01 X10. Y10.\nX10. Y0\nX0 Y10.\nX0 Y0\nM30\n");
+  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags->all(), {}, false);
+  std::size_t flagged = 0;
+  for (std::size_t c = 0; c < data.cellFindings.size(); ++c) {
+    if (data.cellFindings[c] & exporter::kFindingError) ++flagged;
+  }
+  EXPECT_GT(flagged, 0u);
+  EXPECT_LT(flagged, data.cellFindings.size());  // the crossing is on some moves, not all
+}
+
+TEST_F(Export, stl_and_ply_read_back_with_the_same_triangles) {
+  const Part p = analyse(kFrustum);
+  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags->all(), {}, true);
+  EXPECT_EQ(data.surface.mesh.capsMade, 2u);
+  std::string error;
+  const std::string stl = (dir_ / "part.stl").string(), ply = (dir_ / "part.ply").string();
+  ASSERT_TRUE(exporter::writeMesh(data, exporter::MeshFormat::Stl, stl, error)) << error;
+  ASSERT_TRUE(exporter::writeMesh(data, exporter::MeshFormat::Ply, ply, error)) << error;
+  vtkNew<vtkSTLReader> stlReader;
+  stlReader->SetFileName(stl.c_str());
+  stlReader->Update();
+  EXPECT_EQ(stlReader->GetOutput()->GetNumberOfPolys(), static_cast<vtkIdType>(data.surface.mesh.triangles.size()));
+  vtkNew<vtkPLYReader> plyReader;
+  plyReader->SetFileName(ply.c_str());
+  plyReader->Update();
+  EXPECT_EQ(plyReader->GetOutput()->GetNumberOfPolys(), static_cast<vtkIdType>(data.surface.mesh.triangles.size()));
+  EXPECT_EQ(plyReader->GetOutput()->GetNumberOfPoints(), static_cast<vtkIdType>(data.surface.mesh.vertices.size()));
+}
+
+TEST(export_format, chosen_by_extension) {
+  EXPECT_EQ(exporter::formatOfPath("a/b.VTP"), exporter::MeshFormat::Vtp);
+  EXPECT_EQ(exporter::formatOfPath("b.stl"), exporter::MeshFormat::Stl);
+  EXPECT_EQ(exporter::formatOfPath("b.ply"), exporter::MeshFormat::Ply);
+  EXPECT_FALSE(exporter::formatOfPath("b.obj").has_value());
+  EXPECT_FALSE(exporter::formatOfPath("noext").has_value());
+}
+
+}  // namespace

@@ -22,5 +22,5 @@ function(kerf_snapshot_test)
                    -DMODE=${mode} -DXVFB=${KERF_XVFB_RUN} "-DARGS=${ARG_ARGS}"
                    -P ${PROJECT_SOURCE_DIR}/tests/tools/snapshot_test.cmake
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
-  set_tests_properties(${prefix}.${ARG_NAME} PROPERTIES LABELS snapshot)
+  set_tests_properties(${prefix}.${ARG_NAME} PROPERTIES LABELS snapshot ENVIRONMENT "${KERF_MESA_LSAN}")
 endfunction()

@@ -208,7 +208,7 @@ struct PictureOptions {
   std::optional<std::string> colourBy;
   bool highlight = false;
   std::string backend = "auto";
-  int samples = 4;
+  int samples = 0;
   std::optional<double> meshTolerance;
   bool timings = false;
 };
@@ -474,7 +474,10 @@ int main(int argc, char** argv) {
   renderCmd->add_flag("--highlight-findings", picture.highlight, "tint moves with findings and label the findings");
   renderCmd->add_option("--backend", picture.backend, "headless OpenGL: auto (OSMesa, then EGL), osmesa or egl")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
-  renderCmd->add_option("--samples", picture.samples, "multisampling (1: none; default 4)")->check(CLI::Range(1, 16));
+  renderCmd
+      ->add_option("--samples", picture.samples,
+                   "multisampling (1: none; default 4, or 1 when the triangles outnumber half the pixels)")
+      ->check(CLI::Range(1, 16));
   renderCmd
       ->add_option("--mesh-tolerance", picture.meshTolerance,
                    "largest distance of the drawn surface from the exact one, mm (default 0.01)")

@@ -14,6 +14,10 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
+int autoSamples(std::size_t triangles, int width, int height) {
+  return triangles > static_cast<std::size_t>(width) * static_cast<std::size_t>(height) / 2 ? 1 : 4;
+}
+
 PictureResult renderPicture(const render::Scene& scene, const PictureRequest& request) {
   PictureResult result;
   auto t0 = std::chrono::steady_clock::now();
@@ -22,7 +26,11 @@ PictureResult renderPicture(const render::Scene& scene, const PictureRequest& re
   result.context = context->description();
   render::OffscreenTarget target;
   render::Renderer renderer;
-  if (!renderer.init(result.error) || !target.create(request.width, request.height, request.samples, result.error))
+  if (!renderer.init(result.error) ||
+      !target.create(
+          request.width, request.height,
+          request.samples > 0 ? request.samples : autoSamples(scene.triangles(), request.width, request.height),
+          result.error))
     return result;
   HeadlessOverlay overlay;
   overlay.uploadFont(renderer);

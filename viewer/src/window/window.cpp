@@ -5,6 +5,7 @@
 #include "kerf/geometry/tessellation.h"
 #include "kerf/headless/png.h"
 #include "kerf/render/gl.h"
+#include "ui/picture.h"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -275,7 +276,7 @@ bool runWindow(const WindowRequest& request, std::string& error) {
       const int viewW = std::max(16, fbW - static_cast<int>(textW) - static_cast<int>(sideW));
       const int viewH = fbH;
       if (viewW != targetW || viewH != targetH) {
-        if (!target.create(viewW, viewH, 4, error)) {
+        if (!target.create(viewW, viewH, ui::autoSamples(request.scene->triangles(), viewW, viewH), error)) {
           ok = false;
           break;
         }

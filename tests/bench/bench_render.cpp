@@ -6,7 +6,10 @@
 // xvfb-run measures the window's frame time on the same part (tests/bench/render_bench.sh).
 #include "bench_support.h"
 #include "kerf/converter/analysis.h"
+#include "kerf/headless/context.h"
 #include "kerf/headless/png.h"
+#include "kerf/render/gl.h"
+#include "kerf/render/renderer.h"
 #include "kerf/render/scene.h"
 #include "ui/picture.h"
 
@@ -108,5 +111,33 @@ int main(int argc, char** argv) {
   }
   std::printf("headless %dx%d, %zu triangles: best %.3f s; peak RSS %ld MiB\n", width, height, scene.triangles(), best,
               kerf::bench::peakRssKiB() / 1024);
+
+  // Steady-state frames (what an orbiting window redraws), in one context: scene drawn, finished.
+  std::string error;
+  auto context = kerf::headless::createContext(kerf::headless::Backend::Auto, error);
+  kerf::render::Renderer renderer;
+  kerf::render::OffscreenTarget target;
+  if (!context || !renderer.init(error) ||
+      !target.create(width, height, samples > 0 ? samples : kerf::ui::autoSamples(scene.triangles(), width, height),
+                     error)) {
+    std::fprintf(stderr, "bench_render: %s\n", error.c_str());
+    return 1;
+  }
+  renderer.setScene(scene);
+  kerf::render::Camera camera =
+      kerf::render::fitCamera(scene.boundsMin, scene.boundsMax, kerf::render::View::Iso, width, height);
+  target.bind();
+  renderer.render(camera, request.options, width, height);  // first frame: shaders compiled
+  kerf::render::gl().Finish();
+  const int frames = 10;
+  const auto f0 = kerf::bench::Clock::now();
+  for (int f = 0; f < frames; ++f) {
+    camera.yaw += 0.05;
+    renderer.render(camera, request.options, width, height);
+    kerf::render::gl().Finish();
+  }
+  const double frame = kerf::bench::seconds(f0, kerf::bench::Clock::now()) / frames;
+  std::printf("frame %dx%d, %d samples: %.1f ms (%.1f fps)\n", width, height, target.samples(), frame * 1e3,
+              1.0 / frame);
   return 0;
 }

@@ -219,3 +219,32 @@ TEST(RuledSurface, NormalsOfAVerticalCounterClockwiseWallPointOutwards) {
 }
 
 }  // namespace
+
+namespace {
+
+// Each mesh vertex carries the slope of the generator it lies on, and a leaning patch gets at
+// least minTaperPieces pieces, so the slope is sampled inside it.
+TEST(ruled_surface_mesh, vertex_slope_is_the_generator_slope_and_leaning_patches_are_split) {
+  using kerf::geometry::Segment;
+  using kerf::geometry::Vec2;
+  const Segment lower = Segment::line(Vec2(-10, -10), Vec2(10, -10));
+  const Segment upper = Segment::line(Vec2(-8, -8), Vec2(8, -8));
+  const kerf::geometry::Planes planes{0.0, 10.0};
+  kerf::geometry::MeshOptions options;
+  options.minTaperPieces = 8;
+  const kerf::geometry::Mesh mesh =
+      kerf::geometry::meshRuledSurface(std::span(&lower, 1), std::span(&upper, 1), planes, options);
+  ASSERT_EQ(mesh.vertexSlope.size(), mesh.vertices.size());
+  double least = 1e9;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    least = std::min(least, static_cast<double>(mesh.vertexSlope[v]));
+  EXPECT_NEAR(least, std::atan(0.2), 1e-6);  // the generator at t = 1/2 is a vertex
+  // A vertical patch is not split beyond what its tolerance needs: one piece, two triangles.
+  const kerf::geometry::Mesh wall =
+      kerf::geometry::meshRuledSurface(std::span(&lower, 1), std::span(&lower, 1), planes, options);
+  EXPECT_EQ(wall.triangles.size(), 2u);
+  for (float s : wall.vertexSlope) EXPECT_EQ(s, 0.0f);
+  EXPECT_GE(mesh.triangles.size(), 16u);
+}
+
+}  // namespace

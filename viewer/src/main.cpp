@@ -194,10 +194,11 @@ kerf::ui::Annotation annotationOf(const CommonOptions& o, const Checked& c) {
   return a;
 }
 
-kerf::render::SceneOptions sceneOptionsOf(const CommonOptions& o, std::optional<double> meshTolerance) {
+kerf::render::SceneOptions sceneOptionsOf(std::optional<double> meshTolerance,
+                                          std::optional<std::size_t> generators = {}) {
   kerf::render::SceneOptions so;
   if (meshTolerance) so.tolerance = *meshTolerance;
-  (void)o;
+  if (generators) so.generators = *generators;
   return so;
 }
 
@@ -210,6 +211,7 @@ struct PictureOptions {
   std::string backend = "auto";
   int samples = 0;
   std::optional<double> meshTolerance;
+  std::optional<std::size_t> generators;
   bool timings = false;
 };
 
@@ -234,7 +236,7 @@ int runRender(const CommonOptions& o, const PictureOptions& p) {
   Checked c;
   if (!loadAndCheck(o, c)) return kExitUsage;
   const kerf::render::Scene scene =
-      kerf::render::buildScene(c.in.toolpath, c.diags.all(), sceneOptionsOf(o, p.meshTolerance));
+      kerf::render::buildScene(c.in.toolpath, c.diags.all(), sceneOptionsOf(p.meshTolerance, p.generators));
   request.annotation = annotationOf(o, c);
   request.annotation.legend = request.options.colourBySlope;
   request.annotation.labels = p.highlight;
@@ -272,7 +274,7 @@ int runExport(const CommonOptions& o, const ExportOptions& e) {
   Checked c;
   if (!loadAndCheck(o, c)) return kExitUsage;
   const kerf::exporter::SurfaceData data =
-      kerf::exporter::surfaceData(c.in.toolpath, c.diags.all(), sceneOptionsOf(o, e.meshTolerance), e.caps);
+      kerf::exporter::surfaceData(c.in.toolpath, c.diags.all(), sceneOptionsOf(e.meshTolerance), e.caps);
   if (data.surface.mesh.triangles.empty()) {
     std::cerr << "kerf: error: nothing is cut, so there is no surface to export\n";
     return kExitErrors;
@@ -300,7 +302,9 @@ struct ViewOptions {
   std::optional<std::size_t> line;
   double playback = -1;
   std::optional<double> meshTolerance;
+  std::optional<std::size_t> generators;
   bool colourBy = false;
+  bool coarse = false;
 };
 
 int runView(const CommonOptions& o, const ViewOptions& v) {
@@ -316,11 +320,13 @@ int runView(const CommonOptions& o, const ViewOptions& v) {
   Checked c;
   if (!loadAndCheck(o, c)) return kExitUsage;
   const kerf::render::Scene scene =
-      kerf::render::buildScene(c.in.toolpath, c.diags.all(), sceneOptionsOf(o, v.meshTolerance));
+      kerf::render::buildScene(c.in.toolpath, c.diags.all(), sceneOptionsOf(v.meshTolerance, v.generators));
   request.source = &*c.in.source;
   request.toolpath = &c.in.toolpath;
   request.findings = c.diags.all();
   request.scene = &scene;
+  request.sceneOptions = sceneOptionsOf(v.meshTolerance, v.generators);
+  request.coarseFrames = v.coarse;
   request.annotation = annotationOf(o, c);
   request.annotation.legend = true;
   request.options.colourBySlope = v.colourBy;
@@ -483,6 +489,9 @@ int main(int argc, char** argv) {
                    "largest distance of the drawn surface from the exact one, mm (default 0.01)")
       ->check(CLI::Range(1e-5, 100.0));
   renderCmd->add_flag("--timings", picture.timings, "print the time of each stage");
+  renderCmd
+      ->add_option("--generators", picture.generators, "about this many wire lines along the cut (default 72; 0: none)")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{100000}));
 
   auto* exportCmd = app.add_subcommand("export", "the ruled surface as a .vtp, .stl or .ply mesh (VTK)");
   addCommon(*exportCmd, exportCommon, false);
@@ -506,6 +515,9 @@ int main(int argc, char** argv) {
       ->add_option("--mesh-tolerance", viewOnly.meshTolerance,
                    "largest distance of the drawn surface from the exact one, mm")
       ->check(CLI::Range(1e-5, 100.0));
+  viewCmd->add_flag("--coarse", viewOnly.coarse, "draw every frame as while the view moves (with --benchmark)");
+  viewCmd->add_option("--generators", viewOnly.generators, "about this many wire lines along the cut (default 72)")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{100000}));
   viewCmd->add_flag("--color-by-slope,--colour-by-slope", viewOnly.colourBy,
                     "start with the surface coloured by slope");
 

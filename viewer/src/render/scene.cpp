@@ -183,6 +183,7 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     addSegment(scene.lower, move.lower, planes.lower, sampling, kLowerColour, scratch);
     addSegment(scene.upper, up, planes.upper, sampling, kUpperColour, scratch);
     // Generators every `spacing` mm of the lower contour, and at every move's start (corners).
+    if (options.generators == 0) continue;
     const double len = move.lower.length();
     auto generatorAt = [&](double t) {
       const Vec2 a = move.lower.pointAt(t), b = up.pointAt(t);

@@ -29,8 +29,11 @@ void* glfwLoader(const char* name) { return reinterpret_cast<void*>(glfwGetProcA
 std::string glfwMessage;
 void onGlfwError(int /*code*/, const char* description) { glfwMessage = description ? description : ""; }
 
-constexpr float kTextPanel = 0.30f;   // of the window's width
-constexpr float kSidePanel = 290.0f;  // pixels
+constexpr float kTextPanel = 0.30f;
+// Above this many triangles the view is drawn from a coarse scene while it moves (orbit, pan, zoom,
+// playback): a surface within half a pixel of the exact one at the fitted zoom, no forced pieces.
+constexpr std::size_t kCoarseAbove = 250'000;  // of the window's width
+constexpr float kSidePanel = 290.0f;           // pixels
 
 struct State {
   const WindowRequest* request = nullptr;
@@ -246,7 +249,11 @@ bool runWindow(const WindowRequest& request, std::string& error) {
 
   {
     render::Renderer renderer;
+    render::Renderer coarseRenderer;
+    std::optional<render::Scene> coarse;
     render::OffscreenTarget target;
+    unsigned char* fontPixels = nullptr;
+    int fontW = 0, fontH = 0;
     if (ok) ok = renderer.init(error);
     if (ok) {
       unsigned char* pixels = nullptr;
@@ -255,6 +262,9 @@ bool runWindow(const WindowRequest& request, std::string& error) {
       io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
       renderer.setOverlayTexture(fw, fh, pixels);
       renderer.setScene(*request.scene);
+      fontPixels = pixels;
+      fontW = fw;
+      fontH = fh;
     }
     int targetW = 0, targetH = 0;
     bool fittedOnce = false;
@@ -286,6 +296,20 @@ bool runWindow(const WindowRequest& request, std::string& error) {
                                      viewH, 0.08, 36);
         if (!fittedOnce) s.camera = s.fitted;
         fittedOnce = true;
+        if (!coarse && request.scene->triangles() > kCoarseAbove) {
+          render::SceneOptions so = request.sceneOptions;
+          so.tolerance = std::max(so.tolerance, 0.5 * s.fitted.mmPerPixel(viewH));
+          so.minTaperPieces = 1;
+          coarse = render::buildScene(*request.toolpath, request.findings, so);
+          if (!coarseRenderer.init(error)) {
+            ok = false;
+            break;
+          }
+          coarseRenderer.setScene(*coarse);
+          coarseRenderer.setOverlayTexture(fontW, fontH, fontPixels);
+          std::fprintf(stderr, "kerf view: %zu triangles; %zu drawn while the view moves\n", request.scene->triangles(),
+                       coarse->triangles());
+        }
       }
 
       ImGui_ImplGlfw_NewFrame();
@@ -319,6 +343,10 @@ bool runWindow(const WindowRequest& request, std::string& error) {
         const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;
         s.camera.target += -mm * dx * s.camera.right() + mm * dy * s.camera.up();
       }
+      const bool moving = request.coarseFrames || s.playing ||
+                          (dragging && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) ||
+                          (inView && (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 1.0f) ||
+                                      ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 1.0f) || io.MouseWheel != 0.0f));
       if (inView && io.MouseWheel != 0.0f) s.camera.halfHeight *= std::pow(0.85, static_cast<double>(io.MouseWheel));
 
       if (s.playing) {
@@ -327,6 +355,7 @@ bool runWindow(const WindowRequest& request, std::string& error) {
       }
       if (s.playback != lastPlaybackDrawn) {
         renderer.setExtraLines(wireAt(*request.toolpath, request.scene->planes, s.playback), 3.0f);
+        if (coarse) coarseRenderer.setExtraLines(wireAt(*request.toolpath, request.scene->planes, s.playback), 3.0f);
         lastPlaybackDrawn = s.playback;
         if (s.playback >= 0 && !request.toolpath->moves.empty()) {
           const auto m =
@@ -359,14 +388,15 @@ bool runWindow(const WindowRequest& request, std::string& error) {
       ImGui::Render();
 
       target.bind();
-      renderer.render(s.camera, options, viewW, viewH);
+      render::Renderer& drawing = moving && coarse ? coarseRenderer : renderer;
+      drawing.render(s.camera, options, viewW, viewH);
       const render::GlApi& g = render::gl();
       g.BindFramebuffer(GL_FRAMEBUFFER, 0);
       g.Viewport(0, 0, fbW, fbH);
       g.ClearColor(0.94f, 0.94f, 0.94f, 1.0f);
       g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       target.resolveTo(0, viewX, 0);
-      renderer.drawOverlay(ui::convertDrawData(*ImGui::GetDrawData()), fbW, fbH);
+      drawing.drawOverlay(ui::convertDrawData(*ImGui::GetDrawData()), fbW, fbH);
       ++frame;
       const bool last = request.frames > 0 && frame >= request.frames;
       if (screenshot || (last && request.screenshot)) {
@@ -393,10 +423,13 @@ bool runWindow(const WindowRequest& request, std::string& error) {
       double sum = 0;
       for (double v : sorted) sum += v;
       const double mean = sum / static_cast<double>(sorted.size());
+      const double median = sorted[sorted.size() / 2], worst = sorted[sorted.size() - 1];
+      const bool coarseShown = coarse.has_value() && request.coarseFrames;
+      const std::size_t drawn = coarseShown ? coarse.value().triangles() : request.scene->triangles();
       std::fprintf(
           stderr,
-          "kerf view: %zu frames, %zu triangles, frame time mean %.1f ms, median %.1f ms, max %.1f ms (%.1f fps)\n",
-          sorted.size(), request.scene->triangles(), mean * 1e3, sorted[sorted.size() / 2] * 1e3, sorted.back() * 1e3,
+          "kerf view: %zu frames, %zu triangles%s, frame time mean %.1f ms, median %.1f ms, max %.1f ms (%.1f fps)\n",
+          sorted.size(), drawn, coarseShown ? " (coarse level)" : "", mean * 1e3, median * 1e3, worst * 1e3,
           1.0 / mean);
     }
   }

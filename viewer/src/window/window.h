@@ -20,6 +20,8 @@ struct WindowRequest {
   const converter::Toolpath* toolpath = nullptr;
   std::vector<converter::Diagnostic> findings;
   const render::Scene* scene = nullptr;
+  render::SceneOptions sceneOptions;  ///< what `scene` was built with (the coarse level starts from it)
+  bool coarseFrames = false;          ///< draw every frame at the coarse level (benchmarks what orbiting costs)
   render::RenderOptions options;
   ui::Annotation annotation;
   double step = 0.1;  ///< initial interpolation step k, mm

@@ -56,7 +56,7 @@ struct Marker {
 struct SceneOptions {
   double tolerance = 0.01;      ///< mm: largest distance of the drawn surface and contours from the exact ones
   double displayHeight = 0.0;   ///< 2-axis parts: height of the wall drawn, mm (0: 8 % of the part's size)
-  std::size_t generators = 72;  ///< about this many generator lines along the whole cut
+  std::size_t generators = 72;  ///< about this many generator lines along the whole cut (0: none)
   std::size_t maxTriangles = 20'000'000;
   std::size_t minTaperPieces = 16;  ///< pieces along a leaning patch at least, so the slope colours vary inside it
   bool noteMarkers = false;         ///< notes get markers too (errors and warnings always do)

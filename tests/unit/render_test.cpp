@@ -258,7 +258,8 @@ class Export : public ::testing::Test {
 };
 
 TEST_F(Export, vtp_carries_move_line_slope_and_findings) {
-  // A frustum whose last side is too steep for --max-taper 12: findings on one move.
+  // The frustum: every cell names its move and that move's line, and its slope lies between the
+  // mid-side (atan 0.2) and the corner (atan 0.2 sqrt 2) generators.
   const Part p = analyse(kFrustum);
   const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags->all(), {}, false);
   const std::string path = (dir_ / "part.vtp").string();

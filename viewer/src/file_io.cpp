@@ -8,6 +8,7 @@
 #include <iostream>
 #include <system_error>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -53,46 +54,32 @@ bool writeOutput(const std::string& path, const std::string& input, const std::s
     std::cout.flush();
     return static_cast<bool>(std::cout);
   }
-  std::error_code ec;
-  if (fs::exists(path, ec) && fs::equivalent(path, input, ec)) {
-    error = "refusing to write the output over the input file '" + input + "'";
-    return false;
-  }
-  const fs::path target(path);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::string tmpl = (dir / ("." + target.filename().string() + ".kerf-XXXXXX")).string();
-  const int fd = mkstemp(tmpl.data());
-  if (fd < 0) {
-    error = "cannot create a file in '" + dir.string() + "': " + std::strerror(errno);
-    return false;
-  }
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      error = "cannot write '" + path + "': " + std::strerror(errno);
-      ::close(fd);
-      std::remove(tmpl.c_str());
-      return false;
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  // Files are created 0600 by mkstemp; give the usual permissions the umask allows.
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    error = "cannot write '" + path + "': " + std::strerror(errno);
-    std::remove(tmpl.c_str());
-    return false;
-  }
-  if (std::rename(tmpl.c_str(), path.c_str()) != 0) {
-    error = "cannot write '" + path + "': " + std::strerror(errno);
-    std::remove(tmpl.c_str());
-    return false;
-  }
-  return true;
+  return writeOutputVia(
+      path, input,
+      [&text, &path](const std::string& temporary, std::string& err) {
+        const int fd = ::open(temporary.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+        if (fd < 0) {
+          err = "cannot write '" + path + "': " + std::strerror(errno);
+          return false;
+        }
+        std::size_t done = 0;
+        while (done < text.size()) {
+          const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+          if (n < 0) {
+            if (errno == EINTR) continue;
+            err = "cannot write '" + path + "': " + std::strerror(errno);
+            ::close(fd);
+            return false;
+          }
+          done += static_cast<std::size_t>(n);
+        }
+        if (::fsync(fd) != 0 || ::close(fd) != 0) {
+          err = "cannot write '" + path + "': " + std::strerror(errno);
+          return false;
+        }
+        return true;
+      },
+      error);
 }
 
 bool writeOutputVia(const std::string& path, const std::string& input,

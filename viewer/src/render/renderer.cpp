@@ -286,7 +286,6 @@ void Renderer::setScene(const Scene& scene) {
   g.BindVertexArray(0);
   slopeMin_ = scene.minSlopeDegrees;
   slopeMax_ = scene.maxSlopeDegrees;
-  taper_ = scene.taper;
 }
 
 void Renderer::setExtraLines(const std::vector<LineVertex>& lines, float width) {
@@ -392,7 +391,7 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
   }
 
   if (options.triad) {
-    const TriadLayout t = triadLayout(camera, width, height);
+    const TriadLayout t = triadLayout(camera, height);
     // Rotation only, scaled so a unit arrow is as long as in triadLayout, placed at its origin.
     Camera c = camera;
     c.target = {0, 0, 0};
@@ -409,14 +408,13 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
   g.BindVertexArray(0);
 }
 
-TriadLayout triadLayout(const Camera& camera, int width, int height) {
+TriadLayout triadLayout(const Camera& camera, int height) {
   TriadLayout t;
   const double arm = 0.09 * height;  // pixels per unit arrow
   t.origin = {arm * 1.3, height - arm * 1.3};
   const geometry::Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   for (int i = 0; i < 3; ++i)
     t.tips[i] = t.origin + arm * Eigen::Vector2d(axes[i].dot(camera.right()), -axes[i].dot(camera.up()));
-  (void)width;
   return t;
 }
 

@@ -89,8 +89,9 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
                  const SceneOptions& options) {
   Scene scene;
   scene.taper = toolpath.isTaper();
-  scene.planes = displayPlanes(toolpath, options.displayHeight);
   scene.moves = toolpath.moves.size();
+  const CutSurface cut = meshCutSurface(toolpath, options);
+  scene.planes = cut.planes;
   const geometry::Planes& planes = scene.planes;
   const std::size_t n = toolpath.moves.size();
 
@@ -114,7 +115,6 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     scene.findings.push_back(std::move(m));
   }
 
-  const CutSurface cut = meshCutSurface(toolpath, options);
   const geometry::Mesh& mesh = cut.mesh;
   const std::vector<std::size_t>& cutMove = cut.patchMove;
   scene.truncated = mesh.truncated;

@@ -115,7 +115,7 @@ void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render:
 
   // Triad letters.
   if (options.triad) {
-    const render::TriadLayout t = render::triadLayout(camera, width, height);
+    const render::TriadLayout t = render::triadLayout(camera, height);
     const char* names[3] = {"X", "Y", "Z"};
     const ImU32 colours[3] = {IM_COL32(200, 30, 30, 255), IM_COL32(30, 140, 30, 255), IM_COL32(30, 60, 210, 255)};
     for (int i = 0; i < 3; ++i) {

@@ -271,7 +271,6 @@ bool runWindow(const WindowRequest& request, std::string& error) {
     std::vector<double> frameSeconds;
     int frame = 0;
     double lastPlaybackDrawn = -2;
-    std::optional<std::size_t> lastSelected;
     bool dragging = false;
     Eigen::Vector2d pressAt{0, 0};
     while (ok && !glfwWindowShouldClose(window)) {
@@ -367,7 +366,6 @@ bool runWindow(const WindowRequest& request, std::string& error) {
           }
         }
       }
-      if (s.selected != lastSelected) lastSelected = s.selected;
 
       // The annotations of the picture, in the view's area.
       // Drawn in the view's own coordinates (ImGui culls text against the clip rectangle as it

@@ -79,9 +79,6 @@ class Renderer {
   /// Draws 2D geometry on top (no depth test, blended, scissored per command).
   void drawOverlay(const OverlayDrawData& data, int width, int height);
 
-  [[nodiscard]] double slopeMin() const { return slopeMin_; }
-  [[nodiscard]] double slopeMax() const { return slopeMax_; }
-
  private:
   struct Buffer {
     unsigned vao = 0, vbo = 0;
@@ -98,19 +95,18 @@ class Renderer {
   float extraWidth_ = 3.0f;
   std::size_t findingMarkers_ = 0;
   double slopeMin_ = 0.0, slopeMax_ = 0.0;
-  bool taper_ = false;
 };
 
 }  // namespace kerf::render
 
 namespace kerf::render {
 
-/// Where the axis triad's X, Y and Z arrows end, in pixels of a width x height image (origin top
-/// left), so labels drawn in the overlay sit at the renderer's arrows.
+/// Where the axis triad's X, Y and Z arrows end, in pixels of an image `height` pixels high (origin
+/// top left, the triad in the bottom-left corner), so labels drawn in the overlay sit at the renderer's arrows.
 struct TriadLayout {
   Eigen::Vector2d origin;
   std::array<Eigen::Vector2d, 3> tips;
 };
-TriadLayout triadLayout(const Camera& camera, int width, int height);
+TriadLayout triadLayout(const Camera& camera, int height);
 
 }  // namespace kerf::render

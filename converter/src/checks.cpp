@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -44,6 +45,34 @@ bool isRetrace(const geometry::Segment& earlier, const geometry::Segment& later,
   return c.opposite && (later.end - earlier.start).norm() <= tol;
 }
 
+/// A touch that closes the contour: the loop from the first visit of the point to the second is
+/// the part, and nothing is cut after it — the path ends there, or runs back along its way in (a
+/// lead-out over the lead-in written in one block). The same path with that block split at the
+/// point meets itself only at shared vertices, which is no contact: this keeps the verdict the
+/// same however the blocks are split.
+bool closesTheContour(std::span<const geometry::Segment> path, const geometry::Contact& x, double tol) {
+  const geometry::Segment& a = path[x.first];
+  const geometry::Segment& b = path[x.second];
+  const double ta = a.parameterOf(x.point), tb = b.parameterOf(x.point);
+  double head = ta * a.length(), tail = (1.0 - tb) * b.length();
+  for (std::size_t k = 0; k < x.first; ++k) head += path[k].length();
+  for (std::size_t k = x.second + 1; k < path.size(); ++k) tail += path[k].length();
+  if (tail <= tol) return true;
+  if ((path.back().end - path.front().start).norm() > tol) return false;
+  if (std::abs(tail - head) > 4 * tol + 1e-9 * (head + tail)) return false;
+  auto onHead = [&](const geometry::Vec2& p) {
+    for (std::size_t k = 0; k <= x.first; ++k)
+      if (path[k].distanceTo(p) <= tol) return true;
+    return false;
+  };
+  for (double s : {0.0, 0.25, 0.5, 0.75, 1.0})
+    if (!onHead(b.pointAt(tb + (1.0 - tb) * s))) return false;
+  for (std::size_t k = x.second + 1; k < path.size(); ++k)
+    for (double s : {0.0, 0.25, 0.5, 0.75, 1.0})
+      if (!onHead(path[k].pointAt(s))) return false;
+  return true;
+}
+
 using MovePairs = std::set<std::pair<std::size_t, std::size_t>>;
 
 /// Two moves whose lower segments share an end point: where a taper starts and finishes at the
@@ -72,7 +101,7 @@ bool atSeam(const Toolpath& tp, std::size_t a, std::size_t b, double tol) {
 
 void seamNote(const Toolpath& tp, const SourceFile* src, std::size_t mi, std::size_t mj, const geometry::Vec3& p,
               const std::string& where, Diagnostics& diags) {
-  diags.report(finding(Severity::Note, Code::PathRetraces, src, tp.moves[mj], mj, p,
+  diags.report(finding(Severity::Note, Code::TaperSeam, src, tp.moves[mj], mj, p,
                        "the wire passes the start point twice" + where + " (the move on line " +
                            std::to_string(tp.moves[mi].line) + " leans the other way): the taper's seam"));
 }
@@ -116,8 +145,18 @@ void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const
                              name + " crosses itself at " + at(x.point) + ": this move crosses the move on " + other));
         break;
       case geometry::ContactKind::Touch:
-        diags.report(finding(Severity::Error, Code::PathTouchesItself, src, later, mj, p,
-                             name + " touches itself at " + at(x.point) + ": this move meets the move on " + other));
+        if (closesTheContour(c.segments, x, options.tolerance)) {
+          const double tail = (1.0 - c.segments[x.second].parameterOf(x.point)) * c.segments[x.second].length();
+          const bool ends = tail <= options.tolerance && x.second + 1 == c.segments.size();
+          diags.report(finding(Severity::Note, Code::LoopClosesInsideMove, src, later, mj, p,
+                               name + " closes its loop at " + at(x.point) + ", where this move meets the move on " +
+                                   other +
+                                   (ends ? ": the cut ends there" : ": what follows runs back along the way in") +
+                                   " (as if the block were split at that point)"));
+        } else {
+          diags.report(finding(Severity::Error, Code::PathTouchesItself, src, later, mj, p,
+                               name + " touches itself at " + at(x.point) + ": this move meets the move on " + other));
+        }
         break;
       case geometry::ContactKind::Overlap:
         if (isRetrace(c.segments[x.first], c.segments[x.second], x, options.tolerance)) {
@@ -270,8 +309,8 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   if (path.segments.empty()) {
     // With errors, those say why; alone, this says the program is empty of cuts.
     if (!diags.hasErrors())
-      diags.warning(Code::NothingCut, src, SourceSpan::wholeFile(),
-                    "the program cuts nothing (no G01, G02 or G03 move)");
+      diags.error(Code::NothingCut, src, SourceSpan::wholeFile(), "the program cuts nothing (no G01, G02 or G03 move)",
+                  "a wire program needs at least one cutting move");
     return;
   }
   const auto& moves = toolpath.moves;

@@ -4,12 +4,27 @@
 
 namespace kerf::converter {
 
+Analysis analyse(const SourceFile& source, const InterpreterOptions& options, Diagnostics& diags) {
+  InterpreterOptions io = options;
+  if (!io.machine) {
+    Diagnostics scratch(0);
+    io.machine = detectMachine(parseProgram(source, scratch)).profile;
+  }
+  ParseOptions parse;
+  parse.semicolonEndsBlock = io.machine->semicolonEndsBlock;
+  parse.upperAxesUZ = io.machine->upperAxesUZ;
+  Analysis a;
+  a.program = parseProgram(source, diags, parse);
+  a.toolpath = interpret(a.program, io, diags);
+  return a;
+}
+
 void pairUpper(Toolpath& lower, const Toolpath& upper, const SourceFile* lowerSource, const SourceFile* upperSource,
                Diagnostics& diags) {
   for (const auto& [tp, src] :
        {std::pair<const Toolpath*, const SourceFile*>{&lower, lowerSource}, {&upper, upperSource}}) {
     if (tp->dialect != Dialect::Plain) {
-      diags.error(Code::BlockCountMismatch, src, SourceSpan::wholeFile(),
+      diags.error(Code::TwoFileNotPlain, src, SourceSpan::wholeFile(),
                   std::string("two-file input pairs two 2-axis programs, and this one is ") + dialectName(tp->dialect));
       return;
     }

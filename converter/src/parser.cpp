@@ -1,12 +1,15 @@
 // ISO block parser.
 //
 // Sections: 1. character classes and number scanning
-//           2. one line: settings, comments, words
-//           3. the whole text: '%' frame, blocks
+//           2. values that are not numbers: registers, macro variables
+//           3. one block: settings, macro statements, comments, words
+//           4. the sides of a 4-axis block
+//           5. the whole text: byte-order mark, lines, '%' frame
 #include "kerf/converter/program.h"
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace kerf::converter {
@@ -16,14 +19,20 @@ namespace {
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+bool isLowerLetter(char c) { return c >= 'a' && c <= 'z'; }
+char upper(char c) { return isLowerLetter(c) ? static_cast<char>(c - 'a' + 'A') : c; }
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
-/// Letters that are words in ISO wire programs. B and W are not (B belongs to 3B code).
-bool isWordLetter(char u) { return u != 'B' && u != 'W'; }
+/// Letters that are words in ISO wire programs. B is not: it belongs to 3B code.
+bool isWordLetter(char u) { return u != 'B'; }
 
-/// Letters whose numbers are lengths: they decide --integer-unit heuristics.
+/// Letters whose numbers are lengths: they decide --integer-unit evidence.
 bool isLengthLetter(char u) { return u == 'X' || u == 'Y' || u == 'U' || u == 'V' || u == 'I' || u == 'J' || u == 'R'; }
+
+/// Axis letters that may stand alone after G28 / G30 (home these axes).
+bool isAxisLetter(char u) {
+  return u == 'X' || u == 'Y' || u == 'Z' || u == 'U' || u == 'V' || u == 'W' || u == 'A' || u == 'C';
+}
 
 constexpr std::array<double, 19> kPowersOfTen = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8, 1e9,
                                                  1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18};
@@ -42,16 +51,16 @@ struct NumberScan {
 
 /// [sign] digits [. digits] — no exponent, no spaces inside. The value is mantissa / 10^k with
 /// both exact doubles, so it is correctly rounded (the same as strtod) for up to 15 digits.
-NumberScan scanNumber(std::string_view text, std::size_t pos) {
+NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit) {
   NumberScan s;
   std::size_t i = pos;
   bool negative = false;
-  if (i < text.size() && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
+  if (i < limit && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
   std::uint64_t mantissa = 0;
   int digits = 0, fraction = 0;
   bool anyDigit = false;
   auto takeDigits = [&](bool afterPoint) {
-    while (i < text.size() && isDigit(text[i])) {
+    while (i < limit && isDigit(text[i])) {
       anyDigit = true;
       if (mantissa == 0 && text[i] == '0') {  // leading zeros do not count as digits
         if (afterPoint) ++fraction;
@@ -69,7 +78,7 @@ NumberScan scanNumber(std::string_view text, std::size_t pos) {
     }
   };
   takeDigits(false);
-  if (i < text.size() && text[i] == '.') {
+  if (i < limit && text[i] == '.') {
     s.hasPoint = true;
     ++i;
     takeDigits(true);
@@ -97,32 +106,131 @@ std::string describeChar(char c) {
   return std::string("'") + c + "'";
 }
 
-// ---- 2. one line ------------------------------------------------------------------------------
+/// Does text[i, limit) start with the keyword (case-insensitive)?
+bool startsWithKeyword(std::string_view text, std::size_t i, std::size_t limit, std::string_view keyword) {
+  if (limit - i < keyword.size()) return false;
+  for (std::size_t k = 0; k < keyword.size(); ++k)
+    if (upper(text[i + k]) != keyword[k]) return false;
+  return true;
+}
+
+// ---- 2. values known only at the machine --------------------------------------------------------
+
+/// `H111`, `H111 + H112`, `H104 / 2`: a Sodick register reference and arithmetic on it. Returns
+/// the end of the expression, or pos when there is none at pos.
+std::size_t scanRegisterExpression(std::string_view text, std::size_t pos, std::size_t limit) {
+  auto registerAt = [&](std::size_t i) { return i + 1 < limit && upper(text[i]) == 'H' && isDigit(text[i + 1]); };
+  std::size_t i = pos;
+  if (i < limit && (text[i] == '+' || text[i] == '-')) ++i;
+  if (!registerAt(i)) return pos;
+  i += 1;
+  while (i < limit && isDigit(text[i])) ++i;
+  for (;;) {
+    std::size_t j = i;
+    while (j < limit && isBlank(text[j])) ++j;
+    if (j >= limit || (text[j] != '+' && text[j] != '-' && text[j] != '*' && text[j] != '/')) return i;
+    ++j;
+    while (j < limit && isBlank(text[j])) ++j;
+    if (registerAt(j)) {
+      j += 1;
+      while (j < limit && isDigit(text[j])) ++j;
+    } else {
+      const NumberScan n = scanNumber(text, j, limit);
+      if (n.status == NumberScan::Missing) return i;
+      j = n.end;
+    }
+    i = j;
+  }
+}
+
+/// `#100`, `-#5`, `[#1 + 2.5]`: a macro B value. Returns its end, or pos when there is none.
+std::size_t scanMacroValue(std::string_view text, std::size_t pos, std::size_t limit) {
+  std::size_t i = pos;
+  if (i < limit && (text[i] == '+' || text[i] == '-')) ++i;
+  if (i < limit && text[i] == '#') {
+    ++i;
+    const std::size_t digits = i;
+    while (i < limit && isDigit(text[i])) ++i;
+    return i > digits ? i : pos;
+  }
+  if (i < limit && text[i] == '[') {
+    int depth = 0;
+    for (; i < limit; ++i) {
+      if (text[i] == '[') ++depth;
+      if (text[i] == ']' && --depth == 0) return i + 1;
+    }
+  }
+  return pos;
+}
+
+// ---- 3. one block ----------------------------------------------------------------------------
 
 class LineParser {
  public:
-  LineParser(const SourceFile& src, Program& program, Diagnostics& diags)
-      : src_(src), text_(src.text()), program_(program), diags_(diags) {}
+  LineParser(const SourceFile& src, Program& program, Diagnostics& diags, const ParseOptions& options)
+      : src_(src), text_(src.text()), program_(program), diags_(diags), options_(options) {}
 
-  /// Parses [begin, end) — one line without its line break.
+  /// Parses [begin, end) — one line without its line break: one block, or several when `;` ends
+  /// blocks (ParseOptions::semicolonEndsBlock).
   void parseLine(std::size_t begin, std::size_t end, std::uint32_t line) {
     std::size_t i = begin;
+    while (i < end) i = parseBlock(i, end, line);
+  }
+
+  /// The macro B statements of the file: one diagnostic at the first, naming how many there are.
+  void reportMacroStatements() const {
+    if (macroStatements_ == 0) return;
+    std::string where;
+    if (macroStatements_ > 1)
+      where = " (" + std::to_string(macroStatements_) + " macro lines, on lines " + std::to_string(firstMacroLine_) +
+              " to " + std::to_string(lastMacroLine_) + ")";
+    diags_.error(Code::MacroStatement, &src_, firstMacro_,
+                 "macro B statement: variables, loops and jumps (#, WHILE, IF, GOTO) are evaluated by the control, "
+                 "and Kerf does not run them" +
+                     where,
+                 "the blocks around them are read once, in order, as if the macro lines were absent; a value "
+                 "written as #n is known only at the machine");
+  }
+
+ private:
+  /// Parses one block from i; returns where the next block on this line starts (or end).
+  std::size_t parseBlock(std::size_t i, std::size_t end, std::uint32_t line) {
     while (i < end && isBlank(text_[i])) ++i;
-    if (i >= end) return;
-    if (trySetting(i, end, line)) return;
+    if (i >= end) return end;
+    if (trySetting(i, end, line)) return end;
 
     Block block;
     block.firstWord = static_cast<std::uint32_t>(program_.words.size());
     block.offset = static_cast<std::uint32_t>(i);
     block.line = line;
-    std::size_t blockEnd = end;
     if (text_[i] == '/') {
       block.blockDelete = true;
       ++i;
+      while (i < end && isBlank(text_[i])) ++i;
     }
-    std::uint32_t seen = 0;  // letters already on this side of the block (bit per letter)
-    upperStarted_ = false;
+    std::size_t blockEnd = end;  // the block's text ends here (';' or the end of the line)
+    std::size_t next = end;      // the next block starts here
+    if (isMacroStatement(i, end)) {
+      block.kind = BlockKind::MacroB;
+      blockEnd = findBlockEnd(i, end, next);
+      noteMacroStatement(i, blockEnd, line);
+      finish(block, blockEnd);
+      return next;
+    }
+    if (const std::size_t callEnd = scanMacroCall(i, end); callEnd != i) {
+      block.kind = BlockKind::MacroCall;
+      blockEnd = findBlockEnd(callEnd, end, next);
+      finish(block, blockEnd);
+      return next;
+    }
+
+    pending_.clear();
+    largestPending_ = -1;
+    blockLargest_ = 0.0;
+    splitAt_ = -1;
+    colon_ = false;
     sawCoordinate_ = false;
+    homing_ = false;
     while (i < end) {
       const char c = text_[i];
       if (isBlank(c)) {
@@ -135,32 +243,30 @@ class LineParser {
         if (inner < end && (close == std::string_view::npos || inner < close)) {
           error(block, Code::NestedComment, inner, 1, "'(' inside a comment: comments cannot nest",
                 "use [ ] or another character inside the comment");
-          blockEnd = end;
           break;
         }
         if (close == std::string_view::npos || close >= end) {
           error(block, Code::UnterminatedComment, i, 1, "comment is not closed on its line",
                 "add ')' — a comment cannot span lines");
-          blockEnd = end;
           break;
         }
         readHeightComment(i, close, line);
         i = close + 1;
         continue;
       }
-      if (c == ';') {  // end of block; the rest of the line is a comment
+      if (c == ';') {  // end of block; the rest of the line is a comment, or the next block
         blockEnd = i;
+        if (options_.semicolonEndsBlock) next = i + 1;
         break;
       }
-      if (c == ':') {  // Sodick: the lower contour before, the upper after (FORMATS.md §2)
-        if (upperStarted_) {
+      if (c == ':') {  // Sodick: the lower contour before, the upper after (docs/taper.md)
+        if (splitAt_ >= 0) {
           error(block, Code::UnexpectedCharacter, i, 1,
-                block.colon ? "a second ':' in one block" : "':' after the upper contour's words have begun");
-          blockEnd = end;
+                colon_ ? "a second ':' in one block" : "':' after the upper contour's words have begun");
           break;
         }
-        startUpper(block, seen);
-        block.colon = true;
+        splitAt_ = static_cast<int>(pending_.size());
+        colon_ = true;
         ++i;
         continue;
       }
@@ -168,39 +274,98 @@ class LineParser {
         if (c == ')') {
           error(block, Code::UnexpectedCharacter, i, 1, "')' without an opening '('");
         } else if (isDigit(c) || c == '.' || c == '-' || c == '+') {
-          const NumberScan n = scanNumber(text_, i);
+          const NumberScan n = scanNumber(text_, i, end);
           const std::size_t len = std::max<std::size_t>(1, n.end - i);
           error(block, Code::UnexpectedCharacter, i, len,
                 "number without a letter: every value needs an address letter",
                 "write it as a word, e.g. X" + std::string(text_.substr(i, len)));
-          blockEnd = end;
-          break;
         } else {
           error(block, Code::UnexpectedCharacter, i, 1, "unexpected " + describeChar(c) + " in a block");
         }
-        blockEnd = end;
         break;
       }
-      i = parseWord(block, i, end, seen);
-      if (block.hasError) {  // one error per block: what follows is likely noise from it
-        blockEnd = end;
-        break;
-      }
+      if (isLowerLetter(c)) block.lowerCase = true;
+      i = parseWord(block, i, end);
+      if (block.hasError) break;  // one error per block: what follows is likely noise from it
     }
-    // Trim trailing blanks from the block's text span.
+    if (!block.hasError) assignSides(block);
+    finish(block, blockEnd);
+    return next;
+  }
+
+  /// Trims the block's text span, counts its words and keeps it when it has content.
+  void finish(Block& block, std::size_t blockEnd) {
     std::size_t last = blockEnd;
     while (last > block.offset && isBlank(text_[last - 1])) --last;
     block.length = static_cast<std::uint32_t>(last - block.offset);
     block.wordCount = static_cast<std::uint32_t>(program_.words.size()) - block.firstWord;
-    if (!upperStarted_) block.upperFrom = block.wordCount;
-    if (block.wordCount > 0 || block.hasError) program_.blocks.push_back(block);
+    if (block.kind == BlockKind::Words && block.upperFrom == 0 && block.wordCount > 0 && !hasUpper_)
+      block.upperFrom = block.wordCount;
+    hasUpper_ = false;
+    if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) program_.blocks.push_back(block);
   }
 
- private:
-  void startUpper(Block& block, std::uint32_t& seen) {
-    upperStarted_ = true;
-    block.upperFrom = static_cast<std::uint32_t>(program_.words.size()) - block.firstWord;
-    seen = 0;  // the upper side has its own X Y I J R
+  /// Where the block that runs from `from` ends: a ';' (then `next` is after it when ';' ends
+  /// blocks, else the end of the line) or the end of the line.
+  std::size_t findBlockEnd(std::size_t from, std::size_t end, std::size_t& next) const {
+    for (std::size_t k = from; k < end; ++k) {
+      if (text_[k] == '(') {
+        const std::size_t close = text_.find(')', k);
+        if (close == std::string_view::npos || close >= end) break;
+        k = close;
+        continue;
+      }
+      if (text_[k] == ';') {
+        next = options_.semicolonEndsBlock ? k + 1 : end;
+        return k;
+      }
+    }
+    next = end;
+    return end;
+  }
+
+  /// Fanuc macro B: `#100 = ...`, `WHILE[...]DO1`, `END1`, `IF[...]GOTO10`, `GOTO10`, `DO1`.
+  bool isMacroStatement(std::size_t i, std::size_t end) const {
+    if (text_[i] == '#') return true;
+    if (startsWithKeyword(text_, i, end, "WHILE") || startsWithKeyword(text_, i, end, "GOTO")) return true;
+    if (startsWithKeyword(text_, i, end, "IF")) {
+      std::size_t k = i + 2;
+      while (k < end && isBlank(text_[k])) ++k;
+      return k < end && text_[k] == '[';
+    }
+    for (std::string_view kw : {std::string_view("END"), std::string_view("DO")})
+      if (startsWithKeyword(text_, i, end, kw) && i + kw.size() < end && isDigit(text_[i + kw.size()])) return true;
+    return false;
+  }
+
+  void noteMacroStatement(std::size_t begin, std::size_t blockEnd, std::uint32_t line) {
+    if (macroStatements_++ == 0) {
+      std::size_t last = blockEnd;
+      while (last > begin && isBlank(text_[last - 1])) --last;
+      firstMacro_ = {static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(last - begin)};
+      firstMacroLine_ = line;
+    }
+    lastMacroLine_ = line;
+  }
+
+  /// A Sodick macro call: Q, a name of letters and digits, '(' arguments ')', and an optional L
+  /// repeat (`QAIC(2,1,0.1250);`, `Q99()LH114;`). Returns its end, or i when there is none.
+  std::size_t scanMacroCall(std::size_t i, std::size_t end) const {
+    if (upper(text_[i]) != 'Q') return i;
+    std::size_t k = i + 1;
+    while (k < end && (isLetter(text_[k]) || isDigit(text_[k]))) ++k;
+    if (k >= end || text_[k] != '(') return i;
+    const std::size_t close = text_.find(')', k);
+    if (close == std::string_view::npos || close >= end) return i;
+    k = close + 1;
+    while (k < end && isBlank(text_[k])) ++k;
+    if (k < end && upper(text_[k]) == 'L') {
+      ++k;
+      std::size_t r = scanRegisterExpression(text_, k, end);
+      if (r == k) r = scanNumber(text_, k, end).end;
+      k = r;
+    }
+    return k;
   }
 
   /// LinuxCNC's `(AXIS,XY_Z_POS,z)` and `(AXIS,UV_Z_POS,z)`: the heights of the two planes.
@@ -216,7 +381,7 @@ class LineParser {
     else
       return;
     const std::string number = inner.substr(14);
-    const NumberScan n = scanNumber(number, 0);
+    const NumberScan n = scanNumber(number, 0, number.size());
     h.span = {static_cast<std::uint32_t>(open), static_cast<std::uint32_t>(close + 1 - open)};
     h.line = line;
     if (n.status != NumberScan::Ok || n.end != number.size()) {
@@ -230,7 +395,7 @@ class LineParser {
   /// Sodick `TP<z>` (program plane) and `TN<z>` (lower plane).
   bool tryHeightWord(Block& block, std::size_t start, std::size_t i, std::size_t end, std::size_t& next) {
     if (i >= end || (upper(text_[i]) != 'P' && upper(text_[i]) != 'N')) return false;
-    const NumberScan n = scanNumber(text_, i + 1);
+    const NumberScan n = scanNumber(text_, i + 1, end);
     if (n.status != NumberScan::Ok) return false;
     HeightWord h;
     h.kind = upper(text_[i]) == 'P' ? HeightWord::Kind::SodickProgramPlane : HeightWord::Kind::SodickLowerPlane;
@@ -281,22 +446,52 @@ class LineParser {
     return true;
   }
 
-  std::size_t parseWord(Block& block, std::size_t i, std::size_t end, std::uint32_t& seen) {
+  void push(std::size_t start, std::size_t stop, char letter, WordValue kind, double value, bool hasPoint) {
+    Word w;
+    w.letter = letter;
+    w.kind = kind;
+    w.hasPoint = hasPoint;
+    w.offset = static_cast<std::uint32_t>(start);
+    w.length = static_cast<std::uint16_t>(std::min<std::size_t>(stop - start, 0xFFFF));
+    w.value = value;
+    pending_.push_back(w);
+  }
+
+  std::size_t parseWord(Block& block, std::size_t i, std::size_t end) {
     const std::size_t start = i;
-    const char letter = upper(text_[i]);
+    char letter = upper(text_[i]);
+    if (letter == 'Z' && options_.upperAxesUZ) letter = 'V';
     ++i;
     while (i < end && isBlank(text_[i])) ++i;  // "X 10." is accepted
     if (!isWordLetter(letter)) {
       // Skip the number that follows, if any, so one bad word is one diagnostic.
-      const NumberScan n = scanNumber(text_, i);
+      const NumberScan n = scanNumber(text_, i, end);
       const std::size_t stop = n.status == NumberScan::Missing ? start + 1 : n.end;
       error(block, Code::UnknownWord, start, stop - start, std::string("unknown word letter '") + letter + "'",
             letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code" : std::string{});
       return std::max(stop, start + 1);
     }
     if (std::size_t next = 0; letter == 'T' && tryHeightWord(block, start, i, end, next)) return next;
-    const NumberScan n = scanNumber(text_, i);
+    // Values known only at the machine.
+    if (const std::size_t r = scanRegisterExpression(text_, i, end); r != i) {
+      push(start, r, letter, WordValue::Register, 0.0, false);
+      return r;
+    }
+    if (const std::size_t m = scanMacroValue(text_, i, end); m != i) {
+      push(start, m, letter, WordValue::Macro, 0.0, false);
+      return m;
+    }
+    const NumberScan n = scanNumber(text_, i, end);
     if (n.status == NumberScan::Missing) {
+      // `Y+` / `X-`: a direction (edge sensing); an axis alone after G28/G30: home it.
+      if (i < end && (text_[i] == '+' || text_[i] == '-') && (i + 1 >= end || !isDigit(text_[i + 1]))) {
+        push(start, i + 1, letter, WordValue::Direction, text_[i] == '-' ? -1.0 : 1.0, false);
+        return i + 1;
+      }
+      if (homing_ && isAxisLetter(letter)) {
+        push(start, start + 1, letter, WordValue::Bare, 0.0, false);
+        return start + 1;
+      }
       std::string read = i < end ? describeChar(text_[i]) : std::string("the end of the line");
       std::string help;
       if (i < end && (text_[i] == 'O' || text_[i] == 'o') && (letter == 'G' || letter == 'M'))
@@ -323,6 +518,18 @@ class LineParser {
       error(block, Code::MalformedNumber, start, j - start, "number has a second decimal point");
       return j;
     }
+    if (stop + 1 < end && text_[stop] == ',' && isDigit(text_[stop + 1]) && !n.hasPoint) {
+      std::size_t j = stop + 1;
+      while (j < end && isDigit(text_[j])) ++j;
+      const std::string written(text_.substr(start, j - start));
+      std::string meant = written;
+      meant[stop - start] = '.';
+      meant[0] = letter;
+      error(block, Code::DecimalComma, start, j - start,
+            "'" + written + "' has a comma where a decimal point belongs: NC numbers take a point",
+            "did you mean " + meant + "?");
+      return j;
+    }
     if (stop < end && (text_[stop] == 'e' || text_[stop] == 'E')) {
       std::size_t j = stop + 1;
       if (j < end && (text_[j] == '+' || text_[j] == '-')) ++j;
@@ -335,58 +542,115 @@ class LineParser {
     }
     if (stop < end && (text_[stop] == '+' || text_[stop] == '-') && stop + 1 < end && isDigit(text_[stop + 1])) {
       error(block, Code::MalformedNumber, start, stop + 1 - start, "sign inside a number");
-      NumberScan rest = scanNumber(text_, stop + 1);
+      NumberScan rest = scanNumber(text_, stop + 1, end);
       return rest.end;
     }
     if (std::abs(n.value) >= kLargestNumber) {
       error(block, Code::NumberOutOfRange, start, stop - start, "number is out of range (limit 1e9)");
       return stop;
     }
-    // The upper side of an xyuv-abs block starts at its first U/V word or at a second motion
-    // word after a coordinate (`G2 X Y I J G1 U V`); its I J R may repeat the lower side's.
-    if (!upperStarted_ &&
-        (letter == 'U' || letter == 'V' ||
-         (letter == 'G' && sawCoordinate_ && n.value >= 0 && n.value <= 3 && n.value == std::floor(n.value))))
-      startUpper(block, seen);
-    if (letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R') sawCoordinate_ = true;
-    const std::uint32_t bit = 1u << (letter - 'A');
-    if ((seen & bit) && letter != 'G' && letter != 'M') {
-      error(block, Code::RepeatedWord, start, stop - start,
-            std::string("word '") + letter + "' appears twice in one block");
-      return stop;
+    // A second motion word after a coordinate opens the upper side (`G2 X Y I J G1 U V`, cnc3).
+    const bool motionG = letter == 'G' && n.value >= 0 && n.value <= 3 && n.value == std::floor(n.value);
+    if (splitAt_ < 0 && motionG && sawCoordinate_) splitAt_ = static_cast<int>(pending_.size());
+    if (letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'U' ||
+        letter == 'V')
+      sawCoordinate_ = true;
+    if (letter == 'G' && (n.value == 28 || n.value == 30)) homing_ = true;
+    if (isLengthLetter(letter) && !n.hasPoint && std::abs(n.value) > blockLargest_) {
+      blockLargest_ = std::abs(n.value);
+      largestPending_ = static_cast<int>(pending_.size());
     }
-    seen |= bit;
-    Word w;
-    w.letter = letter;
-    w.hasPoint = n.hasPoint;
-    w.offset = static_cast<std::uint32_t>(start);
-    w.length = static_cast<std::uint16_t>(std::min<std::size_t>(stop - start, 0xFFFF));
-    w.value = n.value;
-    if (isLengthLetter(letter)) {
-      if (n.hasPoint) {
-        program_.anyDecimalPoint = true;
-      } else if (std::abs(n.value) > program_.largestInteger) {
-        program_.largestInteger = std::abs(n.value);
-        program_.largestIntegerWord = static_cast<std::uint32_t>(program_.words.size());
+    push(start, stop, letter, WordValue::Number, n.value, n.hasPoint);
+    return stop;
+  }
+
+  // ---- 4. the sides of a 4-axis block ----------------------------------------------------------
+
+  /// Places the block's words into the program, lower side first, and reports a letter written
+  /// twice on one side. Positional sides after ':' or a second motion word; otherwise by letter.
+  void assignSides(Block& block) {
+    const std::size_t n = pending_.size();
+    std::vector<std::uint8_t> side(n, 0);  // 0 lower, 1 upper
+    if (splitAt_ >= 0) {
+      for (std::size_t k = static_cast<std::size_t>(splitAt_); k < n; ++k) side[k] = 1;
+      block.colon = colon_;
+      block.twoMotions = !colon_;
+    } else {
+      bool upperLetters = false;
+      for (const Word& w : pending_)
+        upperLetters |= w.letter == 'U' || w.letter == 'V' || w.letter == 'K' || w.letter == 'L';
+      std::uint32_t seenLower = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const char c = pending_[k].letter;
+        const std::uint32_t bit = 1u << (c - 'A');
+        if (c == 'U' || c == 'V' || c == 'K' || c == 'L') {
+          side[k] = 1;
+        } else if ((c == 'I' || c == 'J' || c == 'R') && (seenLower & bit) && upperLetters) {
+          side[k] = 1;  // a second centre for the upper arc: `G2 X Y I J U V I J`
+        } else {
+          seenLower |= bit;
+        }
       }
     }
-    program_.words.push_back(w);
-    return stop;
+    // A letter twice on one side (G and M may repeat).
+    std::uint32_t seen[2] = {0, 0};
+    for (std::size_t k = 0; k < n; ++k) {
+      const Word& w = pending_[k];
+      const std::uint32_t bit = 1u << (w.letter - 'A');
+      if ((seen[side[k]] & bit) && w.letter != 'G' && w.letter != 'M') {
+        error(block, Code::RepeatedWord, w.offset, w.length,
+              std::string("word '") + w.letter + "' appears twice in one block");
+        return;
+      }
+      seen[side[k]] |= bit;
+    }
+    std::uint32_t placed = 0;
+    for (int s = 0; s < 2; ++s) {
+      for (std::size_t k = 0; k < n; ++k) {
+        if (side[k] != s) continue;
+        const Word& w = pending_[k];
+        if (isLengthLetter(w.letter) && w.isNumber()) {
+          if (w.hasPoint) {
+            program_.anyDecimalPoint = true;
+          } else {
+            ++program_.integerLengthWords;
+            if (static_cast<int>(k) == largestPending_ && blockLargest_ > program_.largestInteger) {
+              program_.largestInteger = blockLargest_;
+              program_.largestIntegerWord = static_cast<std::uint32_t>(program_.words.size());
+            }
+          }
+        }
+        program_.words.push_back(w);
+        if (s == 0) ++placed;
+      }
+    }
+    block.upperFrom = placed;
+    hasUpper_ = true;
   }
 
   const SourceFile& src_;
   std::string_view text_;
   Program& program_;
   Diagnostics& diags_;
-  bool upperStarted_ = false;   ///< this block's upper side has begun
-  bool sawCoordinate_ = false;  ///< X Y I J R seen in this block
+  const ParseOptions& options_;
+  std::vector<Word> pending_;   ///< this block's words, in the order written
+  int splitAt_ = -1;            ///< index in pending_ where a positional upper side starts
+  bool colon_ = false;          ///< that split was a ':'
+  bool sawCoordinate_ = false;  ///< X Y I J R U V seen in this block
+  bool homing_ = false;         ///< G28 or G30 seen in this block: bare axis letters allowed
+  bool hasUpper_ = false;       ///< assignSides set upperFrom for this block
+  int largestPending_ = -1;     ///< pending_ index of this block's largest integer length word
+  double blockLargest_ = 0.0;   ///< its |value|
+  std::size_t macroStatements_ = 0;
+  SourceSpan firstMacro_;
+  std::uint32_t firstMacroLine_ = 0, lastMacroLine_ = 0;
 };
 
 }  // namespace
 
-// ---- 3. the whole text ------------------------------------------------------------------------
+// ---- 5. the whole text ------------------------------------------------------------------------
 
-Program parseProgram(const SourceFile& source, Diagnostics& diags) {
+Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOptions& options) {
   Program program;
   program.source = &source;
   const std::string_view text = source.text();
@@ -398,28 +662,25 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags) {
                 "the file contains NUL bytes: it is not an NC text file");
     return program;
   }
-  LineParser parser(source, program, diags);
-  std::size_t pos = 0;
-  std::uint32_t line = 1;
+  // A UTF-8 byte-order mark (some Windows editors write one) is not part of the program.
+  const std::size_t bom = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+  LineParser parser(source, program, diags, options);
   bool sawContent = false;
-  while (pos < text.size()) {
-    std::size_t nl = text.find('\n', pos);
-    if (nl == std::string_view::npos) nl = text.size();
-    std::size_t end = nl;
-    if (end > pos && text[end - 1] == '\r') --end;
+  for (std::uint32_t line = 1; line <= source.lineCount(); ++line) {
+    auto [begin, end] = source.lineRange(line);
+    if (line == 1) begin = static_cast<std::uint32_t>(std::min<std::size_t>(bom, end));
     // A '%' line opens the program; a '%' line after content closes it (the rest is ignored).
-    std::size_t first = pos;
+    std::size_t first = begin;
     while (first < end && isBlank(text[first])) ++first;
     if (first < end && text[first] == '%') {
       if (sawContent) break;
-    } else {
-      const std::size_t before = program.blocks.size() + program.settings.size();
-      parser.parseLine(pos, end, line);
-      if (program.blocks.size() + program.settings.size() != before) sawContent = true;
+      continue;
     }
-    pos = nl + 1;
-    ++line;
+    const std::size_t before = program.blocks.size() + program.settings.size();
+    parser.parseLine(begin, end, line);
+    if (program.blocks.size() + program.settings.size() != before) sawContent = true;
   }
+  parser.reportMacroStatements();
   return program;
 }
 

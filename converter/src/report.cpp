@@ -86,6 +86,9 @@ std::string pairingReason(const Toolpath& tp, const Move& m) {
     case Dialect::XyuvRel:
       return "the upper side is the programmed point plus the U V offset (upper minus lower) at each end; an arc's "
              "upper centre is the lower centre moved by K L";
+    case Dialect::XyuvLinuxCnc:
+      return "the upper side is the block's U V words (absolute, same frame as X Y), moved in a straight line "
+             "during the block even when X Y follow an arc (LinuxCNC moves extra axes so)";
     case Dialect::SodickColon: return "the upper side is the words after ':' (absolute, its own modal motion)";
     case Dialect::TaperAngle:
       if (m.taperDegrees == 0.0f) return "no taper is in force here: the wire is vertical";

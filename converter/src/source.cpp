@@ -6,8 +6,10 @@ namespace kerf::converter {
 
 SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
   lineStarts_.push_back(0);
-  for (std::size_t i = 0; i < text_.size(); ++i)
-    if (text_[i] == '\n') lineStarts_.push_back(static_cast<std::uint32_t>(i + 1));
+  for (std::size_t i = 0; i < text_.size(); ++i) {
+    if (text_[i] == '\n' || (text_[i] == '\r' && (i + 1 == text_.size() || text_[i + 1] != '\n')))
+      lineStarts_.push_back(static_cast<std::uint32_t>(i + 1));
+  }
 }
 
 SourceLocation SourceFile::locate(std::uint32_t offset) const {
@@ -16,12 +18,18 @@ SourceLocation SourceFile::locate(std::uint32_t offset) const {
   return {line, offset - lineStarts_[line - 1] + 1};
 }
 
-std::string_view SourceFile::lineText(std::uint32_t line) const {
-  if (line == 0 || line > lineStarts_.size()) return {};
-  const std::size_t begin = lineStarts_[line - 1];
-  std::size_t end = line < lineStarts_.size() ? lineStarts_[line] - 1 : text_.size();
+std::pair<std::uint32_t, std::uint32_t> SourceFile::lineRange(std::uint32_t line) const {
+  if (line == 0 || line > lineStarts_.size()) return {0, 0};
+  const std::uint32_t begin = lineStarts_[line - 1];
+  std::uint32_t end = line < lineStarts_.size() ? lineStarts_[line] : static_cast<std::uint32_t>(text_.size());
+  // Drop the line break: LF, CR LF or CR.
+  if (end > begin && text_[end - 1] == '\n') --end;
   if (end > begin && text_[end - 1] == '\r') --end;
-  if (end < begin) end = begin;
+  return {begin, end};
+}
+
+std::string_view SourceFile::lineText(std::uint32_t line) const {
+  const auto [begin, end] = lineRange(line);
   return std::string_view(text_).substr(begin, end - begin);
 }
 

@@ -84,4 +84,19 @@ Segment Segment::reversed() const {
   return s;
 }
 
+double Segment::parameterOf(const Vec2& p) const {
+  if (kind == SegmentKind::Line) {
+    const Vec2 d = end - start;
+    const double len2 = d.squaredNorm();
+    return len2 > 0 ? std::clamp((p - start).dot(d) / len2, 0.0, 1.0) : 0.0;
+  }
+  if (sweep == 0.0) return 0.0;
+  const double along = detail::angleAlong(*this, angleOf(p - centre));
+  if (along <= std::abs(sweep)) return along / std::abs(sweep);
+  // Off the arc: the nearer end.
+  return (p - start).norm() <= (p - end).norm() ? 0.0 : 1.0;
+}
+
+double Segment::distanceTo(const Vec2& p) const { return (pointAt(parameterOf(p)) - p).norm(); }
+
 }  // namespace kerf::geometry

@@ -1,7 +1,7 @@
 (Bad part: inside G141 every move must give its upper contour after ':', and one does not:)
 (the two planes would have different block counts.)
 (sodick-colon; TP is taken as the upper plane.)
-(Expect: error K0220)
+(Expect: error K0226)
 TN0 TP20.
 G90 G92 X0 Y0
 G141

@@ -1,13 +1,11 @@
-// tests/golden/<case>/: input.nc, an optional `options` file (key = value lines), and the
-// expected outputs: expected.trace (Toolpath + diagnostics) and expected.bp95d (the point file,
-// or the diagnostics when it cannot be written). Byte compare; a capped diff on failure.
-// KERF_UPDATE_GOLDEN=1 rewrites the expectations instead of comparing.
-#include "kerf/converter/analysis.h"
-#include "kerf/converter/checks.h"
-#include "kerf/converter/dialect.h"
-#include "kerf/converter/points.h"
-#include "kerf/converter/report.h"
-
+// tests/golden/<case>/: input.nc, an optional `options` file (`key = value` lines: kerf's options
+// without their dashes, e.g. `integer-unit = um`, `step = 0.5`), and what the kerf program gives:
+//   expected.trace           `kerf check input.nc --trace`: the toolpath and every diagnostic;
+//   expected.bp95d           what `kerf convert input.nc --to bp95d -o -` writes (empty when it
+//                            writes nothing), and expected.bp95d.log its exit code and messages;
+//   expected.points4(.log)   the same for `--to points4`, for taper programs.
+// Each runs the kerf program in the case's folder, so messages name input.nc. Byte compare; a
+// capped diff on failure; KERF_UPDATE_GOLDEN=1 rewrites the expectations instead of comparing.
 #include "data_test_support.h"
 
 #include <gtest/gtest.h>
@@ -15,9 +13,10 @@
 #include <cstdlib>
 #include <map>
 
+#include <sys/wait.h>
+
 namespace {
 
-using namespace kerf::converter;
 namespace fs = std::filesystem;
 
 std::map<std::string, std::string> readOptions(const fs::path& file) {
@@ -36,78 +35,53 @@ std::map<std::string, std::string> readOptions(const fs::path& file) {
   return out;
 }
 
+struct KerfRun {
+  int exit = -1;
+  std::string out, err;
+};
+
+/// Runs kerf in dir with args (already quoted where needed); stdout and stderr captured apart.
+KerfRun runKerf(const fs::path& dir, const std::string& args) {
+  const fs::path scratch = fs::path(KERF_GOLDEN_WORK) / dir.filename();
+  fs::create_directories(scratch);
+  const fs::path out = scratch / "stdout", err = scratch / "stderr";
+  const std::string command = "cd '" + dir.string() + "' && '" + std::string(KERF_PROGRAM) + "' " + args + " > '" +
+                              out.string() + "' 2> '" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  KerfRun r;
+  r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = kerf::test::readFile(out);
+  r.err = kerf::test::readFile(err);
+  return r;
+}
+
 class GoldenTest : public testing::Test {
  public:
   explicit GoldenTest(fs::path dir) : dir_(std::move(dir)) {}
 
   void TestBody() override {
-    const auto opt = readOptions(dir_ / "options");
-    InterpreterOptions io;
-    if (opt.count("integer_unit") && opt.at("integer_unit") == "um") io.integerUnit = IntegerUnit::Micrometre;
-    if (opt.count("arc_centre")) {
-      const std::string& m = opt.at("arc_centre");
-      io.arcCentre = m == "reversed"   ? ArcCentreMode::Reversed
-                     : m == "absolute" ? ArcCentreMode::Absolute
-                                       : ArcCentreMode::Incremental;
+    std::string readArgs, emitArgs;
+    for (const auto& [key, value] : readOptions(dir_ / "options")) {
+      // Sampling and reading options go to every command; the rest to convert.
+      const bool emitter = key == "max-points" || key == "profile" || key == "start-block" || key == "plane";
+      (emitter ? emitArgs : readArgs) += " --" + key + " '" + value + "'";
     }
-    if (opt.count("dialect")) io.dialect = parseDialect(opt.at("dialect"));
-    if (opt.count("thickness")) io.thickness = std::stod(opt.at("thickness"));
-    if (opt.count("upper_z")) io.upperZ = std::stod(opt.at("upper_z"));
-    if (opt.count("program_z")) io.programZ = std::stod(opt.at("program_z"));
-    PointRequest req;
-    if (opt.count("step")) req.sampling = kerf::geometry::Sampling::step(std::stod(opt.at("step")));
-    if (opt.count("tolerance")) req.sampling = kerf::geometry::Sampling::tolerance(std::stod(opt.at("tolerance")));
-    if (opt.count("max_points")) req.maxPoints = std::stoul(opt.at("max_points"));
-    if (opt.count("start_line")) req.startLine = static_cast<std::uint32_t>(std::stoul(opt.at("start_line")));
-
-    SourceFile src("input.nc", kerf::test::readFile(dir_ / "input.nc"));
-    Diagnostics diags(200);
-    const Analysis a = analyse(src, io, diags);
-    checkToolpath(a.toolpath, &src, {}, diags);
-    diags.sortByPosition();
-    compare("expected.trace", formatTrace(a.toolpath, diags));
-
-    PointProfile profile = bp95dProfile();
-    std::optional<SourceFile> profileSource;
-    Diagnostics emitDiags(50);
-    if (opt.count("profile")) {
-      profileSource.emplace(opt.at("profile"), kerf::test::readFile(dir_ / opt.at("profile")));
-      auto parsed = parseProfile(*profileSource, emitDiags);
-      ASSERT_TRUE(parsed.has_value()) << "profile does not parse";
-      profile = *parsed;
-    }
-    std::string points;
-    std::optional<Toolpath> flat;
-    if (!diags.hasErrors()) {
-      // A taper program is written at its `plane` (default lower), and both planes as points4.
-      const auto plane = parsePlane(opt.count("plane") ? opt.at("plane") : "lower");
-      ASSERT_TRUE(plane.has_value()) << "bad plane option";
-      flat = toolpathAtPlane(a.toolpath, *plane, 0.001, &src, emitDiags);
-    }
-    if (flat) {
-      const auto out = emitPoints(*flat, &src, profile, req, emitDiags);
-      if (out) {
-        points = "# " + std::to_string(out->points) + " points, " +
-                 (out->sampling.mode == kerf::geometry::SamplingMode::Step ? "step " : "tolerance ") +
-                 formatFixed(out->sampling.value, 9) + (out->fitted ? " (fitted)" : "") + ", max deviation " +
-                 formatFixed(out->stats.maxDeviation, 9) + "\n" + out->text;
-      }
-      for (const auto& d : emitDiags.all()) points += "# " + formatDiagnostic(d);
-    } else {
-      points = "# not written: the program has errors\n";
-    }
-    compare("expected.bp95d", points);
-    if (a.toolpath.isTaper()) {
-      std::string both;
-      Diagnostics d4(50);
-      if (!diags.hasErrors()) {
-        const auto out = emitPoints4(a.toolpath, &src, profile, req, false, d4);
-        if (out) both = "# " + std::to_string(out->points) + " point pairs\n" + out->text;
-        for (const auto& d : d4.all()) both += "# " + formatDiagnostic(d);
-      } else {
-        both = "# not written: the program has errors\n";
-      }
-      compare("expected.points4", both);
+    const KerfRun trace = runKerf(dir_, "check input.nc --trace" + readArgs);
+    ASSERT_LT(trace.exit, 2) << trace.err;
+    compare("expected.trace", trace.out);
+    const bool taper = trace.out.find("\ndialect ") != std::string::npos;
+    std::string bp95dArgs = "convert input.nc --to bp95d -o -" + readArgs + emitArgs;
+    if (taper && emitArgs.find("--plane") == std::string::npos) bp95dArgs += " --plane lower";
+    const KerfRun bp95d = runKerf(dir_, bp95dArgs);
+    compare("expected.bp95d", bp95d.out);
+    compare("expected.bp95d.log", "exit " + std::to_string(bp95d.exit) + "\n" + bp95d.err);
+    if (taper) {
+      std::string points4Args = "convert input.nc --to points4 -o -" + readArgs;
+      if (const auto o = readOptions(dir_ / "options"); o.count("profile"))
+        points4Args += " --profile '" + o.at("profile") + "'";
+      const KerfRun points4 = runKerf(dir_, points4Args);
+      compare("expected.points4", points4.out);
+      compare("expected.points4.log", "exit " + std::to_string(points4.exit) + "\n" + points4.err);
     }
   }
 

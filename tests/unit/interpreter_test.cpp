@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace kerf::converter;
@@ -171,10 +172,26 @@ TEST(interpreter, missing_program_end_is_a_warning) {
   EXPECT_FALSE(r->diags.hasErrors());
 }
 
-TEST(interpreter, unknown_g_code_suggests_neighbours) {
-  auto r = run("G010 X1.\nM02\n");
+TEST(interpreter, unknown_g_code_names_the_profile_that_knows_it) {
+  // G60 is no standard code: the generic profile refuses it and says which profile knows it,
+  // instead of guessing at typos ("G00 or G20 ...").
+  InterpreterOptions io;
+  io.machine = findBuiltinMachine("generic");
+  auto r = run("G60\nG01 X1.\nM02\n", io);
   ASSERT_TRUE(r->hasCode(Code::UnknownGCode));
-  EXPECT_NE(r->diags.all()[0].help.find("G01"), std::string::npos);
+  EXPECT_NE(r->diags.all()[0].help.find("--machine robofil"), std::string::npos) << r->diags.all()[0].help;
+  // Under the robofil profile it is a note, once.
+  io.machine = findBuiltinMachine("robofil");
+  auto known = run("G60\nG01 X1.\nG60\nM02\n", io);
+  EXPECT_FALSE(known->diags.hasErrors());
+  EXPECT_EQ(std::count_if(known->diags.all().begin(), known->diags.all().end(),
+                          [](const Diagnostic& d) { return d.code == Code::MachineCode; }),
+            1);
+  // A code no profile knows gets no help at all.
+  io.machine = findBuiltinMachine("generic");
+  auto unknown = run("G05 X1.\nM02\n", io);
+  ASSERT_TRUE(unknown->hasCode(Code::UnknownGCode));
+  EXPECT_TRUE(unknown->diags.all()[0].help.empty());
 }
 
 TEST(checks, retrace_is_a_note_and_crossing_an_error) {

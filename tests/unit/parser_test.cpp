@@ -96,7 +96,7 @@ TEST(parser, one_error_per_block_and_parsing_goes_on) {
 }
 
 TEST(diagnostics, long_lines_are_shown_as_a_window_around_the_column) {
-  const std::string line = "G01 X1. (" + std::string(5000, 'a') + ") W5";
+  const std::string line = "G01 X1. (" + std::string(5000, 'a') + ") B5";
   SourceFile src("p.nc", line + "\n");
   Diagnostics d;
   parseProgram(src, d);
@@ -104,7 +104,7 @@ TEST(diagnostics, long_lines_are_shown_as_a_window_around_the_column) {
   const std::string text = formatDiagnostic(d.all()[0]);
   EXPECT_LT(text.size(), 400u);
   EXPECT_NE(text.find("...aaaa"), std::string::npos);
-  // The caret still sits under the W.
+  // The caret still sits under the B.
   const auto lines = [&] {
     std::vector<std::string> v;
     std::size_t at = 0;
@@ -113,7 +113,7 @@ TEST(diagnostics, long_lines_are_shown_as_a_window_around_the_column) {
     return v;
   }();
   ASSERT_GE(lines.size(), 3u);
-  EXPECT_EQ(lines[1][lines[2].find('^')], 'W');
+  EXPECT_EQ(lines[1][lines[2].find('^')], 'B');
 }
 
 TEST(parser, random_bytes_never_crash_and_always_terminate) {

@@ -76,7 +76,8 @@ TEST(Taper, EveryDialectParsesAndIsDetected) {
 }
 
 TEST(Taper, AmbiguousUvIsAnErrorUntilTheDialectIsGiven) {
-  const std::string text = "G92 X0 Y0 U0 V0\nG1 X10 Y0 U11 V0\nM2\n";
+  // |U - X| + |V - Y| = 3 against |U| + |V| = 5: the numbers decide nothing.
+  const std::string text = "G92 X0 Y0 U0 V0\nG1 X1. Y1. U2. V3.\nM2\n";
   auto r = run(text);
   EXPECT_TRUE(r->hasCode(Code::DialectAmbiguous));
   InterpreterOptions io;
@@ -84,13 +85,30 @@ TEST(Taper, AmbiguousUvIsAnErrorUntilTheDialectIsGiven) {
   io.dialect = Dialect::XyuvAbs;
   auto a = run(text, io);
   EXPECT_FALSE(a->diags.hasErrors()) << kerf::test::dump(a->diags);
-  EXPECT_NEAR(a->path().upper[0].end.x(), 11.0, 1e-12);
+  EXPECT_NEAR(a->path().upper[0].end.x(), 2.0, 1e-12);
   io.dialect = Dialect::XyuvRel;
   auto rel = run(text, io);
   EXPECT_FALSE(rel->diags.hasErrors());
-  EXPECT_NEAR(rel->path().upper[0].end.x(), 21.0, 1e-12);  // lower 10 + offset 11
+  EXPECT_NEAR(rel->path().upper[0].end.x(), 3.0, 1e-12);  // lower 1 + offset 2
   io.dialect = Dialect::Plain;
   EXPECT_TRUE(run(text, io)->hasCode(Code::WordNotInDialect));
+}
+
+TEST(Taper, AbsoluteOrRelativeUvDecidedByTheNumbers) {
+  // U V that follow X Y are the upper contour itself; U V that stay small against X Y are the
+  // deviation of the upper contour (docs/taper.md). The note names the numbers.
+  auto abs = run("G92 X0 Y0 U0 V0\nG1 X10. Y0 U10.5 V0\nX10. Y10. U10.5 V9.5\nX0 Y0 U0 V0\nM2\n");
+  EXPECT_EQ(abs->path().dialect, Dialect::XyuvAbs);
+  auto rel = run("G92 X0 Y0 U0 V0\nG1 X10. Y0 U0.5 V0\nX10. Y10. U0.5 V-0.5\nX0 Y0 U0 V0\nM2\n");
+  EXPECT_EQ(rel->path().dialect, Dialect::XyuvRel);
+  for (const auto* r : {abs.get(), rel.get()}) {
+    bool named = false;
+    for (const auto& d : r->diags.all())
+      named |= d.code == Code::DialectChosen && d.message.find("the numbers") != std::string::npos;
+    EXPECT_TRUE(named) << kerf::test::dump(r->diags);
+  }
+  // Incremental programs compare increments: U V moving with X Y are absolute.
+  EXPECT_EQ(run("G91\nG1 X10. U10. Y0 V0\nX0 Y10. U-0.5 V10.\nM2\n")->path().dialect, Dialect::XyuvAbs);
 }
 
 TEST(Taper, HeightsComeFromOptionsFirstThenTheProgram) {
@@ -222,8 +240,8 @@ TEST(TaperChecks, TaperStartedOrEndedOnAnArc) {
 }
 
 TEST(TaperChecks, SodickBlockWithoutUpperSideInsideG141) {
-  EXPECT_TRUE(run("TP20.\nG141\nG01 X10 Y0 : X10 Y0\nG01 X10 Y10\nG140\nM02\n")->hasCode(Code::BlockCountMismatch));
-  EXPECT_FALSE(run("TP20.\nG141\nG01 X10 Y0 : X10 Y0\nG140\nG01 X10 Y10\nM02\n")->hasCode(Code::BlockCountMismatch));
+  EXPECT_TRUE(run("TP20.\nG141\nG01 X10 Y0 : X10 Y0\nG01 X10 Y10\nG140\nM02\n")->hasCode(Code::UpperSideMissing));
+  EXPECT_FALSE(run("TP20.\nG141\nG01 X10 Y0 : X10 Y0\nG140\nG01 X10 Y10\nM02\n")->hasCode(Code::UpperSideMissing));
 }
 
 TEST(TaperChecks, TwoFilePairingCountsMoves) {

@@ -1,4 +1,4 @@
-// The GLSL sources of shaders/, compiled in (cmake/KerfEmbedShaders.cmake).
+// The GLSL sources of shaders/, compiled in (cmake/KerfEmbedText.cmake).
 #pragma once
 
 namespace kerf::render::shaders {

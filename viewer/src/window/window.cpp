@@ -1,7 +1,7 @@
 // Index: GL loading through GLFW; the window's state; picking; panels; the frame loop.
 #include "window/window.h"
 
-#include "file_io.h"
+#include "cli/file_io.h"
 #include "kerf/geometry/tessellation.h"
 #include "kerf/headless/png.h"
 #include "kerf/render/gl.h"
@@ -403,7 +403,7 @@ bool runWindow(const WindowRequest& request, std::string& error) {
         const std::string png = headless::encodePng(render::readFramebufferRgba(fbW, fbH), fbW, fbH);
         const std::string path = last && request.screenshot ? *request.screenshot : "kerf-screenshot.png";
         std::string writeError;
-        if (png.empty() || !cli::writeOutput(path, request.source->name(), png, writeError)) {
+        if (png.empty() || !cli::writeOutput(path, request.inputs, png, writeError)) {
           error = "cannot write the screenshot '" + path + "': " + (png.empty() ? "PNG encoding failed" : writeError);
           ok = false;
         } else {

@@ -31,6 +31,7 @@ struct WindowRequest {
   bool benchmark = false;                 ///< print frame times when closing
   std::optional<std::size_t> selectLine;  ///< start with the move on this source line selected
   double playback = -1;                   ///< start the wire at this fraction of the path (< 0: hidden)
+  std::vector<std::string> inputs;        ///< every file read: a screenshot may replace none of them
 };
 
 /// Runs the window until it is closed (or `frames` are drawn). False with a message when no

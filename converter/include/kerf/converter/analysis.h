@@ -1,4 +1,6 @@
-// The reading pipeline every command shares: text -> Program -> Toolpath.
+// Reading one program with fixed options: text -> Program -> Toolpath. The commands go through
+// pipeline.h, which also decides the conventions from the evidence and runs the checks; this is
+// the part of it that tests and benchmarks call with options of their own.
 #pragma once
 
 #include "kerf/converter/interpreter.h"
@@ -12,13 +14,10 @@ struct Analysis {
   Toolpath toolpath;
 };
 
-/// Parses and interprets. The source must outlive the result (spans point into it).
-inline Analysis analyse(const SourceFile& source, const InterpreterOptions& options, Diagnostics& diags) {
-  Analysis a;
-  a.program = parseProgram(source, diags);
-  a.toolpath = interpret(a.program, options, diags);
-  return a;
-}
+/// Parses and interprets. The source must outlive the result (spans point into it). With no
+/// machine in the options, the profile is detected from the program (machine.h); the integer unit
+/// and arc-centre convention are the options' either way.
+Analysis analyse(const SourceFile& source, const InterpreterOptions& options, Diagnostics& diags);
 
 /// Two-file input (`kerf check lower.nc --upper upper.nc`): both programs read as plain 2-axis
 /// programs, the second one's moves become the upper contour of the first's, move by move. A

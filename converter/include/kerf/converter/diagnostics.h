@@ -33,6 +33,8 @@ enum class Code : std::uint16_t {
   TooManyMCodes = 111,
   NestedComment = 109,
   MalformedSetting = 110,
+  DecimalComma = 112,
+  MacroStatement = 113,
   // Words and modal state
   UnknownGCode = 201,
   UnknownMCode = 202,
@@ -56,12 +58,29 @@ enum class Code : std::uint16_t {
   TaperOnArc = 219,
   BlockCountMismatch = 220,
   OffsetCollapses = 221,
+  CentreOnStraightMove = 222,
+  DwellWordsIgnored = 223,
+  TaperAngleTwice = 224,
+  ParameterMissing = 225,
+  UpperSideMissing = 226,
+  TwoFileNotPlain = 227,
+  NegativeDwell = 228,
+  OffsetOnArc = 229,
+  // Machine profiles (machine.h)
+  MachineDetected = 230,
+  MachineCode = 231,
+  CodeNotModelled = 232,
+  PositionUnknown = 233,
+  DirectionWord = 234,
+  UpperAxesNamedUZ = 235,
+  PolarNotSupported = 236,
   // Arcs
   ArcWithoutCentre = 301,
   RadiusTooSmall = 302,
   FullCircleWithRadius = 303,
   ArcEndOffCircle = 304,
   ZeroRadius = 305,
+  UpperArcOffCircle = 306,
   // Motion
   ZeroLengthMove = 402,
   // Program flow and subprograms
@@ -81,6 +100,8 @@ enum class Code : std::uint16_t {
   PathOpen = 605,
   NothingCut = 606,
   RapidInsideCut = 607,
+  LoopClosesInsideMove = 608,
+  TaperSeam = 609,
   // Geometry of the ruled surface (4-axis taper)
   TaperTooSteep = 650,
   SurfaceSelfIntersection = 651,
@@ -96,6 +117,7 @@ enum class Code : std::uint16_t {
   ProfileError = 802,
   StartBlockNotFound = 803,
   TaperFlattened = 804,
+  MachineProfileError = 810,
   TooManyDiagnostics = 899,
 };
 

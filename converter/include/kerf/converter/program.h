@@ -1,7 +1,7 @@
 // Program: the blocks of an ISO (RS-274 / ISO 6983) NC text, word by word, with positions.
 //
 // The parser checks only what one block can tell (syntax, numbers, repeated words); what the
-// words mean is the interpreter's job (interpreter.h).
+// words mean is the interpreter's job (interpreter.h). docs/formats.md describes the syntax read.
 #pragma once
 
 #include "kerf/converter/diagnostics.h"
@@ -14,14 +14,25 @@
 
 namespace kerf::converter {
 
+/// What stands after a word's letter.
+enum class WordValue : std::uint8_t {
+  Number,     ///< a number: Word::value
+  Bare,       ///< nothing: an axis letter alone after G28 / G30 (`G28 X Y U V`: home these axes)
+  Direction,  ///< a sign alone (`Y+`, Sodick edge sensing): Word::value is +1 or -1
+  Register,   ///< a register expression (`XH111 + H112`, Sodick): known only at the machine
+  Macro,      ///< a macro B value (`X#100`, `X[#1+2]`): known only at the machine
+};
+
 struct Word {
-  char letter = 0;           ///< upper case A-Z
-  bool hasPoint = false;     ///< the number was written with a decimal point
-  std::uint16_t length = 0;  ///< bytes of the whole word in the source (letter + number)
-  std::uint32_t offset = 0;  ///< byte offset of the letter
-  double value = 0.0;        ///< as written (no unit conversion)
+  char letter = 0;                     ///< upper case A-Z
+  bool hasPoint = false;               ///< the number was written with a decimal point
+  WordValue kind = WordValue::Number;  ///< what the value is
+  std::uint16_t length = 0;            ///< bytes of the whole word in the source (letter + value)
+  std::uint32_t offset = 0;            ///< byte offset of the letter
+  double value = 0.0;                  ///< as written (no unit conversion); 0 unless a Number
 
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
+  [[nodiscard]] bool isNumber() const { return kind == WordValue::Number; }
 };
 
 /// A setting line kept verbatim, e.g. a Sodick register `H001 = +000000.1300` or a condition
@@ -33,23 +44,34 @@ struct Setting {
   std::uint32_t line = 0;
 };
 
+enum class BlockKind : std::uint8_t {
+  Words,      ///< an ordinary block of words
+  MacroCall,  ///< a Sodick macro call `QAIC(2,1,...)` or `Q99()LH114`: name and arguments, no words
+  MacroB,     ///< a Fanuc macro B statement (`#100 = ...`, `WHILE[...]DO1`, `END1`, `IF`, `GOTO`)
+};
+
 struct Block {
   std::uint32_t firstWord = 0;
   std::uint32_t wordCount = 0;
-  std::uint32_t offset = 0;  ///< start of the line
+  std::uint32_t offset = 0;  ///< start of the block's text
   std::uint32_t length = 0;  ///< to the end of the block's text (without the line break)
   std::uint32_t line = 0;    ///< 1-based
-  /// Words from this index on (relative to firstWord) describe the upper contour: those after a
-  /// Sodick ':', or from the first U/V word, or from a second motion G after a coordinate
-  /// (FORMATS.md §2). Equal to wordCount when the block has no upper side.
+  /// Words from this index on (relative to firstWord) describe the upper contour. The parser
+  /// orders a block's words so that the lower side's come first: those before a Sodick ':' or a
+  /// second motion word after a coordinate (`G2 X Y I J G1 U V`, cnc3) in the order written;
+  /// otherwise by letter — U V K L, and a second I J or R, belong to the upper side, whatever the
+  /// order (RS274 gives word order no meaning). Equal to wordCount when the block has no upper side.
   std::uint32_t upperFrom = 0;
+  BlockKind kind = BlockKind::Words;
   bool colon = false;        ///< the upper side was opened with ':'
+  bool twoMotions = false;   ///< the upper side was opened by a second motion word (cnc3)
   bool blockDelete = false;  ///< started with '/'
   bool hasError = false;     ///< the parser reported an error in this block
+  bool lowerCase = false;    ///< some word letter was written in lower case
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
 };
 
-/// A plane height written in the program outside the word set (FORMATS.md §2): Sodick `TP` /
+/// A plane height written in the program outside the word set (docs/taper.md): Sodick `TP` /
 /// `TN` words and LinuxCNC `(AXIS,XY_Z_POS,z)` / `(AXIS,UV_Z_POS,z)` comments.
 struct HeightWord {
   enum class Kind : std::uint8_t { SodickProgramPlane, SodickLowerPlane, LinuxCncXyPlane, LinuxCncUvPlane } kind{};
@@ -59,15 +81,25 @@ struct HeightWord {
   std::uint32_t line = 0;
 };
 
+/// How a machine's text is split into blocks (its profile says, machine.h).
+struct ParseOptions {
+  /// true: `;` ends a block and what follows on the line is another block (Sodick);
+  /// false: `;` starts a comment that runs to the end of the line (LinuxCNC, most controls).
+  bool semicolonEndsBlock = false;
+  /// The second plane's axes are named U Z: read Z as V (some hot-wire firmware).
+  bool upperAxesUZ = false;
+};
+
 struct Program {
   const SourceFile* source = nullptr;
   std::vector<Word> words;
-  std::vector<Block> blocks;  ///< only blocks with at least one word
+  std::vector<Block> blocks;  ///< only blocks with at least one word, a macro statement or an error
   std::vector<Setting> settings;
   std::vector<HeightWord> heights;
-  bool anyDecimalPoint = false;          ///< some coordinate word was written with a decimal point
+  bool anyDecimalPoint = false;          ///< some length word was written with a decimal point
   double largestInteger = 0.0;           ///< largest |value| of a length word written without a point
   std::uint32_t largestIntegerWord = 0;  ///< index of that word in words
+  std::uint32_t integerLengthWords = 0;  ///< length words written without a decimal point
 
   [[nodiscard]] std::span<const Word> wordsOf(const Block& b) const {
     return {words.data() + b.firstWord, b.wordCount};
@@ -78,10 +110,13 @@ struct Program {
   [[nodiscard]] std::span<const Word> upperWordsOf(const Block& b) const {
     return {words.data() + b.firstWord + b.upperFrom, b.wordCount - b.upperFrom};
   }
+  /// The block's text as written.
+  [[nodiscard]] std::string_view textOf(const Block& b) const { return source->text().substr(b.offset, b.length); }
 };
 
 /// Parses the whole text. Errors go to diags; a block with an error is kept (hasError) so the
-/// interpreter can skip it and go on finding more problems.
-Program parseProgram(const SourceFile& source, Diagnostics& diags);
+/// interpreter can skip it and go on finding more problems. A UTF-8 byte-order mark is skipped;
+/// lines end at LF, CR LF or a lone CR.
+Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOptions& options = {});
 
 }  // namespace kerf::converter

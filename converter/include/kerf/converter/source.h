@@ -1,12 +1,14 @@
 // Source text and positions in it.
 //
 // The text is kept exactly as read; nothing rewrites it (no in-place lowercasing). Positions are
-// byte offsets; lines and columns are 1-based, columns count bytes.
+// byte offsets; lines and columns are 1-based, columns count bytes. A line ends at LF, at CR LF
+// or at a lone CR (old Mac and some controllers' files), so every reader counts lines alike.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace kerf::converter {
@@ -37,6 +39,8 @@ class SourceFile {
   [[nodiscard]] SourceLocation locate(std::uint32_t offset) const;
   /// The text of a 1-based line, without its line break.
   [[nodiscard]] std::string_view lineText(std::uint32_t line) const;
+  /// Byte offsets [begin, end) of a 1-based line, without its line break.
+  [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> lineRange(std::uint32_t line) const;
   [[nodiscard]] std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
 
  private:

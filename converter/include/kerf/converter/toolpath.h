@@ -20,8 +20,8 @@ enum class WireOffset : std::uint8_t { Off, Left, Right };
 
 struct Move {
   MoveKind kind = MoveKind::Line;
-  // The contour on the lower plane. The upper contour of a 4-axis program (DESIGN.md: Move {lower,
-  // upper | none}) lives in Toolpath::upper, parallel to the moves, so 2-axis programs do not
+  // The contour on the lower plane. The upper contour of a 4-axis program (Move {lower, upper |
+  // none} in the design) lives in Toolpath::upper, parallel to the moves, so 2-axis programs do not
   // pay 80 bytes a move for it.
   geometry::Segment lower;
   std::uint32_t block = 0;  ///< index into Program::blocks
@@ -42,18 +42,29 @@ struct Move {
 
 enum class LengthUnit : std::uint8_t { Millimetre, Inch };
 
-/// How a program gives its upper contour (FORMATS.md §2). Plain programs have none: the wire is
-/// vertical.
-enum class Dialect : std::uint8_t {
-  Plain,        ///< 2-axis: no upper contour
-  XyuvAbs,      ///< U V: the upper contour, absolute
-  XyuvRel,      ///< U V: upper minus lower; K L: lower centre to upper centre
-  SodickColon,  ///< `lower : upper`
-  TaperAngle,   ///< G51/G52 with A or T: the upper contour is an offset of the programmed one
-  TwoFile,      ///< lower and upper contours from two plain files, paired move by move
+/// What coordinates written without a decimal point mean (docs/formats.md).
+enum class IntegerUnit : std::uint8_t { Millimetre, Micrometre };
+
+/// How I J give an arc's centre (docs/formats.md).
+enum class ArcCentreMode : std::uint8_t {
+  Incremental,  ///< centre - start (ISO default)
+  Reversed,     ///< start - centre (some Agie/Charmilles/Mitsubishi posts)
+  Absolute,     ///< the centre itself (Charmilles Robofil)
 };
 
-/// "plain", "xyuv-abs", "xyuv-rel", "sodick-colon", "taper-angle", "two-file".
+/// How a program gives its upper contour (docs/taper.md). Plain programs have none: the wire is
+/// vertical.
+enum class Dialect : std::uint8_t {
+  Plain,         ///< 2-axis: no upper contour
+  XyuvAbs,       ///< U V: the upper contour, absolute; its own motion word and centre (cnc3)
+  XyuvRel,       ///< U V: upper minus lower; K L: lower centre to upper centre
+  XyuvLinuxCnc,  ///< U V: the upper contour, absolute; U V move linearly during an XY arc (LinuxCNC)
+  SodickColon,   ///< `lower : upper`
+  TaperAngle,    ///< G51/G52 with A or T: the upper contour is an offset of the programmed one
+  TwoFile,       ///< lower and upper contours from two plain files, paired move by move
+};
+
+/// "plain", "xyuv-abs", "xyuv-rel", "xyuv-linuxcnc", "sodick-colon", "taper-angle", "two-file".
 const char* dialectName(Dialect d);
 
 /// Where the heights of the planes came from.
@@ -64,8 +75,16 @@ struct PlaneHeights {
   std::string source;       ///< "M101 P (line 3)", "--thickness", ...
 };
 
+/// How the program was read: the machine profile and the conventions in force (machine.h).
+struct Reading {
+  std::string machine = "generic";
+  IntegerUnit integerUnit = IntegerUnit::Millimetre;
+  ArcCentreMode arcCentre = ArcCentreMode::Incremental;
+};
+
 struct Toolpath {
   std::vector<Move> moves;
+  Reading reading;
   geometry::Vec2 start{0, 0};                       ///< where the wire is before the first move
   LengthUnit programUnit = LengthUnit::Millimetre;  ///< the last G20/G21 in force
   bool endedProperly = false;                       ///< an M02 or M30 was reached

@@ -46,6 +46,10 @@ struct Segment {
   [[nodiscard]] Box bounds() const;
   /// The same path travelled the other way.
   [[nodiscard]] Segment reversed() const;
+  /// Parameter t in [0, 1] (proportional to length) of the segment's point nearest p.
+  [[nodiscard]] double parameterOf(const Vec2& p) const;
+  /// Distance (mm) from p to the nearest point of the segment.
+  [[nodiscard]] double distanceTo(const Vec2& p) const;
 };
 
 }  // namespace kerf::geometry

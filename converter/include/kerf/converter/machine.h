@@ -1,0 +1,98 @@
+// Machine profiles: what one controller means by its words (docs/machines.md).
+//
+// A profile sets the arc-centre convention, the unit of integer coordinates, what U V mean, how
+// `;` splits blocks, the machine's taper and U/V limits, and the codes that machine knows beyond
+// the standard ISO set, each with what it does. Built-in profiles live in converter/machines/ as
+// text, compiled in; a user's own is the same text format (`--machine FILE`). When no profile is
+// named, detectMachine() picks one from the program's evidence and says why.
+#pragma once
+
+#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/program.h"
+#include "kerf/converter/source.h"
+#include "kerf/converter/toolpath.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace kerf::converter {
+
+const char* integerUnitName(IntegerUnit u);  ///< "mm", "um"
+const char* arcCentreName(ArcCentreMode m);  ///< "incremental", "reversed", "absolute"
+std::optional<ArcCentreMode> parseArcCentre(std::string_view name);
+
+/// What a code the profile knows does on that machine.
+enum class CodeEffect : std::uint8_t {
+  Harmless,     ///< no effect on the programmed path: a note, once per code
+  NotModelled,  ///< changes the path in a way Kerf does not model: a warning, once per code
+  Position,     ///< moves the wire to a place known only at the machine (edge sensing, homing)
+  NoMotion,     ///< the block's axis words are parameters, not a destination (`G83 Y101`)
+  Thickness,    ///< P is the workpiece thickness: the upper plane is that far above the lower
+  Guides,       ///< P Q give the wire guides' geometry: accepted, not needed for the part
+  ProgramEnd,   ///< ends the program, as M02 does
+};
+const char* codeEffectName(CodeEffect e);
+
+struct KnownCode {
+  std::string key;  ///< "G60", "M28", "T84", "G12.1"; a letter alone ("C") for any value; "QAIC" for a macro call
+  CodeEffect effect = CodeEffect::Harmless;
+  std::string note;  ///< one line: what it does on this machine
+};
+
+struct MachineProfile {
+  std::string name = "generic";
+  std::string summary;               ///< one line for `kerf machines`
+  std::vector<std::string> sources;  ///< where its facts come from
+  /// nothing: decided by the arcs (incremental unless every I J arc closes only another way).
+  std::optional<ArcCentreMode> arcCentre;
+  /// nothing: decided by the numbers (micrometres when no length has a decimal point and the
+  /// largest integer is above integerThreshold).
+  std::optional<IntegerUnit> integerUnit;
+  double integerThreshold = 1000.0;
+  /// What U V mean when the words alone do not say (XyuvAbs, XyuvRel or XyuvLinuxCnc); nothing:
+  /// decided by the numbers.
+  std::optional<Dialect> uvDialect;
+  bool semicolonEndsBlock = false;       ///< `;` ends a block (Sodick) instead of starting a comment
+  bool upperAxesUZ = false;              ///< the second plane's axes are named U Z
+  bool bareSetPositionIsOrigin = false;  ///< a bare `G92`: the current position becomes the origin (Robofil)
+  bool legacyTaperCodes = false;         ///< cnc3's earlier M106 P L Q H / M107 P T, recognised by M106 with P and Q
+  double maxTaperDegrees = 30.0;         ///< the machine's largest wire slope
+  std::optional<double> uvRange;         ///< largest |upper - lower| per axis, mm
+  std::optional<double> thickness;       ///< default workpiece thickness, mm
+  std::vector<KnownCode> codes;
+  std::string text;  ///< the profile as written (`kerf machines show`)
+
+  /// The entry for a code: "G60", "T84", "QAIC"; a letter-only entry matches any value of it.
+  [[nodiscard]] const KnownCode* find(std::string_view key) const;
+};
+
+/// Parses a profile file (docs/machines.md). Nothing, with errors (K0810) at file:line:col, when
+/// a line is wrong. `name` defaults to the file's name without its folder and extension.
+std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagnostics& diags);
+
+/// The built-in profiles in `kerf machines` order: generic, robofil, sodick, linuxcnc, cnc3,
+/// ncvc, fanuc.
+const std::vector<MachineProfile>& builtinMachines();
+/// A built-in profile by name, or null.
+const MachineProfile* findBuiltinMachine(std::string_view name);
+/// The built-in profiles, other than `except`, that know a code (for "did you mean" help).
+std::vector<const MachineProfile*> machinesKnowing(std::string_view key, const MachineProfile* except);
+
+struct MachineEvidence {
+  std::string what;  ///< "G60 on line 3"
+  SourceSpan span;
+  int weight = 0;
+};
+
+/// Which built-in machine a program was written for, from its words (docs/machines.md lists the
+/// evidence each profile looks for). The generic profile when nothing points elsewhere.
+struct MachineDetection {
+  const MachineProfile* profile = nullptr;
+  std::vector<MachineEvidence> evidence;  ///< for the profile chosen, strongest first
+};
+MachineDetection detectMachine(const Program& program);
+
+}  // namespace kerf::converter

@@ -1,0 +1,79 @@
+// The one pipeline every command takes: read -> interpret -> check, with one options struct.
+//
+// check, explain, convert, render, view and export all call runPipeline with the options the
+// user gave; so a picture, a mesh or a converted program carries exactly the findings `kerf check`
+// reports with the same options. The pipeline reads no files and prints nothing: the caller gives
+// it the texts and turns the result into output and an exit code.
+//
+//   text ──parse──▶ Program ──machine profile (given, or detected from the evidence)──▶
+//        ──integer unit, arc-centre convention (given, the profile's, or from the evidence)──▶
+//        ──interpret──▶ Toolpath ──[two files: pair]──▶ checks ──▶ Findings
+#pragma once
+
+#include "kerf/converter/checks.h"
+#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/interpreter.h"
+#include "kerf/converter/machine.h"
+#include "kerf/converter/program.h"
+#include "kerf/converter/source.h"
+#include "kerf/converter/summary.h"
+#include "kerf/converter/toolpath.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace kerf::converter {
+
+/// A named text: a program, a machine profile.
+struct SourceText {
+  std::string name;
+  std::string text;
+};
+
+/// What the program means. Every field is an override: nothing means "as the machine profile
+/// says, or as the program's evidence shows" (docs/machines.md gives the order).
+struct ReadOptions {
+  std::optional<std::string> machine;     ///< --machine NAME: a built-in profile
+  std::optional<SourceText> machineFile;  ///< --machine FILE: a profile's text
+  std::optional<IntegerUnit> integerUnit;
+  std::optional<ArcCentreMode> arcCentre;
+  std::optional<Dialect> dialect;
+  std::optional<double> lowerZ, upperZ, thickness, programZ;  ///< mm
+  std::optional<double> wireOffset;                           ///< --offset, mm
+  std::optional<bool> upperAxesUZ;                            ///< --upper-axes uz
+};
+
+/// The checks' settings; nothing: the machine profile's value.
+struct CheckSettings {
+  std::optional<double> maxTaperDegrees;  ///< --max-taper
+  std::optional<double> uvRange;          ///< --uv-range, mm
+};
+
+struct PipelineOptions {
+  ReadOptions read;
+  CheckSettings check;
+};
+
+/// Everything a command needs after reading and checking a program. The sources live as long as
+/// the result (diagnostics and spans point into them).
+struct Pipeline {
+  std::unique_ptr<SourceFile> source;
+  std::unique_ptr<SourceFile> upperSource;    ///< two-file input
+  std::unique_ptr<SourceFile> machineSource;  ///< --machine FILE
+  Program program;
+  Toolpath toolpath;
+  MachineProfile machine;        ///< the profile in force
+  bool machineDetected = false;  ///< chosen from the evidence, not given
+  SurfaceMeasures measures;      ///< per move, for a taper program whose heights are known
+  CheckOptions checkOptions;     ///< the settings the checks ran with
+  Diagnostics diags{100000};     ///< every diagnostic, sorted by position
+  /// false: nothing was read (the machine profile file is wrong); diags says why.
+  bool read = false;
+};
+
+/// Reads, interprets and checks `input` (with `upper` as the upper contour's program: two-file
+/// input). Never throws on bad input: problems are diagnostics.
+Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::optional<SourceText> upper = {});
+
+}  // namespace kerf::converter

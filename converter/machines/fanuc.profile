@@ -1,0 +1,19 @@
+# Kerf machine profile (docs/machines.md).
+name = fanuc
+summary = Fanuc-style controls (Star Swiss-type lathes among them): G112/G113 polar milling, macro B, T tool words, G98/G99
+source = a real Star program (d-creations/ncplot7py data/nc-examples/O6POINT); Fanuc 15i-MA manual on polar coordinate interpolation
+arc_centre = incremental
+integer_unit = mm
+integer_threshold = 1000
+uv_words = auto
+semicolon = comment
+upper_axes = uv
+bare_g92 = error
+legacy_taper_codes = no
+max_taper = 30
+uv_range = none
+thickness = none
+code T = harmless: tool selection (turret position and offset)
+code W = not-modelled: incremental Z on a lathe (Kerf reads the XY plane only)
+code C = not-modelled: the rotary axis (an angle outside G112, a virtual linear axis inside)
+code G65 = position: calls a macro program with arguments; its moves are known only at the machine

@@ -1,0 +1,20 @@
+# Kerf machine profile (docs/machines.md).
+name = ncvc
+summary = NCVC wire mode: U V the upper deviation from the end point, K L the upper centre's, G51/G52 T taper, G92 I J heights
+source = NCVC-CAM/NCVC docs/GcodeWire.txt (the wire-mode G-code table, in Japanese)
+arc_centre = incremental
+integer_unit = mm
+integer_threshold = 1000
+uv_words = xyuv-rel
+semicolon = comment
+upper_axes = uv
+bare_g92 = error
+legacy_taper_codes = no
+max_taper = 30
+uv_range = none
+thickness = none
+code G60 = not-modelled: different upper and lower corner radii (R upper, K lower)
+code G61 = not-modelled: conical corner radius, form A (R)
+code G62 = not-modelled: conical corner radius, form B (R)
+code G63 = not-modelled: conical corner radius, form C (R)
+code G93 = not-modelled: a local coordinate system at X Y

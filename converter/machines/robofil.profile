@@ -1,0 +1,25 @@
+# Kerf machine profile (docs/machines.md).
+name = robofil
+summary = Charmilles Robofil (GF Machining Solutions): absolute arc centres, micrometre integers, G60/G38/G39/M28
+source = real Robofil programs in Insignifi4nt/wireedm-gcode-parser (testing_gcode_files, artifacts/robofil-v2), including a post its authors cut on a Robofil 100
+# I J are the centre itself: G03X-8500Y0I0J0 is an arc about the origin.
+arc_centre = absolute
+# Files write either decimal millimetres or integers in micrometres (X6500): with no decimal point
+# anywhere, integers are micrometres.
+integer_unit = auto
+integer_threshold = 0
+uv_words = auto
+semicolon = comment
+upper_axes = uv
+# A bare G92 makes the current position the origin (PinZ15, 2K-Filera open with it).
+bare_g92 = origin
+legacy_taper_codes = no
+max_taper = 30
+uv_range = none
+thickness = none
+# What the real programs write around each contour. Their exact meaning is not published; none
+# moves the wire, and the programs cut the part they draw.
+code G60 = harmless: written at the start of every program and contour (a corner or start-hole function); meaning not modelled [assumed: no effect on the path]
+code G38 = harmless: written after G60 before the wire offset starts; meaning not modelled [assumed: no effect on the path]
+code G39 = harmless: written before G40 between contours (the post's compensation cycle); meaning not modelled [assumed: no effect on the path]
+code M28 = harmless: written after G60 at the start of a program; meaning not modelled [assumed: no effect on the path]

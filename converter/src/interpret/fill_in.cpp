@@ -1,0 +1,50 @@
+// Phase 2 (fill in): what the block does once what it leaves out is taken from the modal state.
+// Nothing changes here; execute applies the plan in order.
+#include "interpreter_impl.h"
+
+namespace kerf::converter::interp {
+namespace {
+
+bool isValueUnknown(const Word* w) { return w && (w->kind == WordValue::Register || w->kind == WordValue::Macro); }
+
+}  // namespace
+
+BlockPlan Interpreter::fillIn(const Block& block, const BlockWords& bw, const BlockWords& ubw) const {
+  (void)block;
+  BlockPlan p;
+  if (const Word* mw = bw.group(ModalGroup::Motion)) {
+    p.motion = motionOf(bw.code(ModalGroup::Motion));
+    p.motionWord = mw;
+  } else {
+    p.motion = motion_;
+    p.motionWord = motionWord_;
+  }
+  p.incremental = bw.group(ModalGroup::Distance) ? bw.code(ModalGroup::Distance) == GCode::Incremental : incremental_;
+  if (bw.group(ModalGroup::Units)) {
+    const GCode u = bw.code(ModalGroup::Units);
+    p.inch = u == GCode::Inch || u == GCode::InchOld;
+  } else {
+    p.inch = inch_;
+  }
+  p.setPosition = bw.hasCode(GCode::SetPosition);
+  p.dwell = bw.hasCode(GCode::Dwell);
+  p.homing =
+      bw.hasCode(GCode::ReferenceReturn) || bw.hasCode(GCode::SecondReference) || bw.hasCode(GCode::MachineCoordinates);
+  p.lowerWords = bw.has('X') || bw.has('Y') || bw.has('I') || bw.has('J') || bw.has('R');
+  for (char c : {'U', 'V', 'X', 'Y', 'I', 'J', 'R', 'K', 'L'}) p.upperWords |= ubw.has(c);
+  p.upperWords |= bw.has('U') || bw.has('V');
+  for (const BlockWords* side : {&bw, &ubw})
+    for (char c : {'X', 'Y', 'U', 'V', 'I', 'J', 'R', 'K', 'L'})
+      if (!p.unknownValue && isValueUnknown((*side)[c])) p.unknownValue = (*side)[c];
+  for (std::size_t k = 0; k < bw.machineCount; ++k) {
+    const KnownCode* code = bw.machine[k].second;
+    if (code->effect == CodeEffect::Position && !p.positionCode) {
+      p.positionCode = code;
+      p.positionCodeWord = bw.machine[k].first;
+    }
+    if (code->effect == CodeEffect::NoMotion) p.noMotion = true;
+  }
+  return p;
+}
+
+}  // namespace kerf::converter::interp

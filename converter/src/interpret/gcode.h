@@ -1,0 +1,118 @@
+// G and M codes as names: the table of every code Kerf knows under every machine profile, with
+// its modal group and what it does (docs/interpreter.md). Codes a single machine knows beyond
+// these come from its profile (machine.h).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace kerf::converter::interp {
+
+/// Modal groups: two codes of one group cannot share a block (K0203).
+enum class ModalGroup : std::uint8_t {
+  Motion,       ///< G00-G03
+  NonModal,     ///< G04, G09, G28, G30, G53, G92
+  Plane,        ///< G17-G19
+  Units,        ///< G20/G21, G70/G71
+  WireOffset,   ///< G40-G42
+  ToolLength,   ///< G49
+  Taper,        ///< G50-G52
+  WorkOffset,   ///< G54-G59
+  PathControl,  ///< G61, G64
+  Distance,     ///< G90/G91
+  FeedMode,     ///< G94/G95
+  ReturnMode,   ///< G98/G99
+  Polar,        ///< G12.1/G13.1 (G112/G113)
+  ColonMode,    ///< G140-G142 (Sodick)
+  Count
+};
+
+enum class GCode : std::uint8_t {
+  Rapid,                ///< G00
+  Line,                 ///< G01
+  ArcClockwise,         ///< G02
+  ArcCounterClockwise,  ///< G03
+  Dwell,                ///< G04
+  ExactStopOnce,        ///< G09
+  PolarOn,              ///< G12.1 = G112
+  PolarOff,             ///< G13.1 = G113
+  PlaneXY,              ///< G17
+  PlaneXZ,              ///< G18
+  PlaneYZ,              ///< G19
+  Inch,                 ///< G20
+  Millimetre,           ///< G21
+  ReferenceReturn,      ///< G28
+  SecondReference,      ///< G30
+  OffsetCancel,         ///< G40
+  OffsetLeft,           ///< G41
+  OffsetRight,          ///< G42
+  ToolLengthCancel,     ///< G49
+  TaperCancel,          ///< G50
+  TaperLeft,            ///< G51
+  TaperRight,           ///< G52
+  MachineCoordinates,   ///< G53
+  WorkOffset1,          ///< G54
+  WorkOffset2,          ///< G55
+  WorkOffset3,          ///< G56
+  WorkOffset4,          ///< G57
+  WorkOffset5,          ///< G58
+  WorkOffset6,          ///< G59
+  ExactStopMode,        ///< G61
+  PathBlending,         ///< G64
+  InchOld,              ///< G70
+  MillimetreOld,        ///< G71
+  Absolute,             ///< G90
+  Incremental,          ///< G91
+  SetPosition,          ///< G92
+  FeedPerMinute,        ///< G94
+  FeedPerRevolution,    ///< G95
+  ReturnInitial,        ///< G98
+  ReturnPlane,          ///< G99
+  ColonOff,             ///< G140 (Sodick: upper and lower alike)
+  ColonOn,              ///< G141 (Sodick: different upper and lower contours)
+  ColonOnAlternate,     ///< G142
+};
+
+struct GCodeInfo {
+  GCode code;
+  int number;    ///< G number before the point
+  int fraction;  ///< the digit after the point (G12.1: 1), else 0
+  ModalGroup group;
+  const char* meaning;  ///< one line, for messages and docs
+};
+
+/// The code written as `value` (G2, G02, G12.1, G112), or nothing when it is not in the table.
+const GCodeInfo* findGCode(double value);
+const GCodeInfo& info(GCode code);
+/// "G02", "G12.1".
+std::string gName(int number, int fraction = 0);
+std::string gName(GCode code);
+/// The number written, split as (number, fraction); false when it is not a whole number or one
+/// with a single decimal.
+bool splitGNumber(double value, int& number, int& fraction);
+
+/// M codes every profile knows.
+enum class MCode : std::uint8_t {
+  ProgramStop,           ///< M00
+  OptionalStop,          ///< M01
+  ProgramEnd,            ///< M02
+  SpindleOn,             ///< M03 (the hot wire on a foam cutter)
+  SpindleReverse,        ///< M04
+  SpindleOff,            ///< M05
+  FlushingMist,          ///< M07
+  FlushingOn,            ///< M08
+  FlushingOff,           ///< M09
+  ProgramEndRewind,      ///< M30
+  CallSubprogram,        ///< M98
+  ReturnFromSubprogram,  ///< M99
+};
+struct MCodeInfo {
+  MCode code;
+  int number;
+  const char* meaning;
+};
+const MCodeInfo* findMCode(double value);
+
+}  // namespace kerf::converter::interp

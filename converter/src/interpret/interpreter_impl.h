@@ -1,0 +1,232 @@
+// The interpreter's state and its phases (interpreter.h gives the order). One class, its member
+// functions defined by phase in the files of this folder:
+//   run.cpp            the block loop, limits, labels; the end of the program
+//   read_block.cpp     phase 1: words -> BlockWords
+//   fill_in.cpp        phase 2: BlockWords + modal state -> BlockPlan
+//   check_block.cpp    phase 3: what cannot mean anything
+//   execute.cpp        phase 4: feed, dwell, plane, units, taper, distance, work offset, G92
+//   motion.cpp         phase 4: the motion, arcs from R or I J
+//   upper_side.cpp     the upper side of a 4-axis move, by dialect
+//   wire_offset.cpp    G40/G41/G42 with D/H
+//   program_flow.cpp   M codes, M98/M99
+//   machine_codes.cpp  codes the machine profile knows; positions known only at the machine
+//   heights.cpp        the plane heights, after the last block
+//   taper_offsets.cpp  taper-angle and xyuv-rel contours, after the last block
+#pragma once
+
+#include "gcode.h"
+#include "kerf/converter/interpreter.h"
+#include "kerf/geometry/arc.h"
+#include "kerf/geometry/offset.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace kerf::converter::interp {
+
+using geometry::Segment;
+using geometry::Vec2;
+
+std::string fmt3(double v);
+
+enum class Motion : std::uint8_t { None, Rapid, Line, Clockwise, CounterClockwise };
+Motion motionOf(GCode code);
+
+/// Phase 1: one side of a block's words — one value per letter, G codes by modal group.
+struct BlockWords {
+  std::array<const Word*, 26> letter{};  // X Y I J R F P L D H ... (not G, M)
+  std::array<const Word*, static_cast<std::size_t>(ModalGroup::Count)> g{};
+  std::array<GCode, static_cast<std::size_t>(ModalGroup::Count)> gCode{};
+  std::array<const Word*, 4> m{};  // M codes the standard set or no profile knows
+  std::size_t mCount = 0;
+  /// Codes the machine profile knows (G, M, T, C ... and macro calls), in the order written.
+  std::array<std::pair<const Word*, const KnownCode*>, 6> machine{};
+  std::size_t machineCount = 0;
+  bool bad = false;
+
+  [[nodiscard]] const Word* operator[](char c) const { return letter[static_cast<std::size_t>(c - 'A')]; }
+  [[nodiscard]] bool has(char c) const { return (*this)[c] != nullptr; }
+  [[nodiscard]] const Word* group(ModalGroup gr) const { return g[static_cast<std::size_t>(gr)]; }
+  [[nodiscard]] GCode code(ModalGroup gr) const { return gCode[static_cast<std::size_t>(gr)]; }
+  [[nodiscard]] bool hasCode(GCode c) const {
+    const ModalGroup gr = info(c).group;
+    return group(gr) && code(gr) == c;
+  }
+};
+
+/// Phase 2: what the block does, with what it leaves out taken from the modal state.
+struct BlockPlan {
+  Motion motion = Motion::None;  ///< the motion in force for this block
+  const Word* motionWord = nullptr;
+  bool incremental = false;                 ///< G91 in force
+  bool inch = false;                        ///< G20/G70 in force
+  bool setPosition = false;                 ///< G92
+  bool dwell = false;                       ///< G04
+  bool homing = false;                      ///< G28 / G30 / G53: the wire goes where only the machine knows
+  bool lowerWords = false;                  ///< X Y I J R on the lower side
+  bool upperWords = false;                  ///< U V (X Y I J R K L after ':' or a second motion word)
+  const Word* unknownValue = nullptr;       ///< a coordinate known only at the machine (register, macro)
+  const KnownCode* positionCode = nullptr;  ///< a profile code that moves the wire somewhere unknown
+  const Word* positionCodeWord = nullptr;
+  bool noMotion = false;  ///< a profile code takes the axis words as parameters
+};
+
+struct Frame {
+  std::size_t returnTo = 0;  // block index to continue at after the last repeat
+  std::size_t start = 0;     // first block of the subprogram
+  long remaining = 1;        // repeats left including the current one
+  std::size_t callBlock = 0;
+};
+
+enum class TaperPhase : std::uint8_t { Off, Starting, On, Ending };
+
+/// xyuv-rel: what a move's words said, resolved into contours once the heights are known.
+struct RelRecord {
+  std::size_t index = 0;                    // the move
+  Vec2 offsetStart{0, 0}, offsetEnd{0, 0};  // upper minus lower at the move's ends
+  Vec2 centreShift{0, 0};                   // K L: lower centre to upper centre
+  geometry::ArcTolerance tolerance;
+};
+
+/// taper-angle: the lean of a move, resolved into offsets once the heights are known.
+struct TaperRecord {
+  std::size_t index = 0;
+  double tanLeft = 0.0;  // tan(angle), > 0 leaning left of travel
+  bool start = false;    // the move that starts the taper (its start stays vertical)
+  bool end = false;      // the move that ends it (its end is vertical again)
+};
+
+struct Height {
+  double value = 0.0;  // mm
+  std::string source;
+};
+
+/// The wire's position known only at the machine, from a cause until a block gives it again:
+/// one diagnostic for the whole stretch (machine_codes.cpp).
+struct UnknownPosition {
+  bool active = false;
+  std::string cause;  ///< "G28 (return to the machine's reference point)", "XH111 + H112 (a register)"
+  SourceSpan span;
+  std::string help;
+  bool silent = false;  ///< the cause was reported already (an unsupported polar section)
+  std::size_t skippedMoves = 0, skippedCuts = 0;
+  std::uint32_t firstSkippedLine = 0, lastSkippedLine = 0;
+};
+
+enum class Flow : std::uint8_t { Continue, Stop };
+
+class Interpreter {
+ public:
+  Interpreter(const Program& program, const InterpreterOptions& options, Diagnostics& diags);
+  Interpretation run();
+
+ private:
+  // run.cpp
+  void chooseDialect();
+  void indexLabels();
+  void findLegacyTaperCodes();
+  void warnIntegerUnit();
+  Flow executeBlock(std::size_t pc, std::size_t& next);
+  // read_block.cpp (phase 1)
+  bool readBlock(const Block& block, BlockWords& bw, BlockWords& ubw);
+  void readWord(const Word& w, BlockWords& bw);
+  bool splitsBlocks() const;
+  // fill_in.cpp (phase 2)
+  BlockPlan fillIn(const Block& block, const BlockWords& bw, const BlockWords& ubw) const;
+  // check_block.cpp (phase 3)
+  bool checkBlock(const Block& block, const BlockWords& bw, const BlockWords& ubw, const BlockPlan& plan);
+  bool checkDialectWords(const Block& block, const BlockWords& bw, const BlockWords& ubw, bool setPosition);
+  // execute.cpp (phase 4)
+  void warnIgnoredWords(const BlockWords& bw, const BlockPlan& plan);
+  bool executeSetPosition(const BlockWords& bw, const BlockWords& ubw, const Block& block);
+  bool executeTaperAngle(const BlockWords& bw);
+  void setHeight(std::optional<Height>& slot, double value, const char* what, std::uint32_t line);
+  double length(const Word& w) const;
+  // motion.cpp
+  bool executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan,
+                     std::uint32_t blockIndex);
+  bool buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
+                 const std::string& side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
+                 Move* record);
+  void tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift, geometry::ArcDirection dir,
+                      bool closedAsUsed, std::uint32_t line);
+  void reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block, const std::string& side);
+  void push(Move&& m, const Segment& upper);
+  // upper_side.cpp
+  bool buildUpper(const BlockWords& bw, const BlockWords& ubw, const Block& block, Move& move, Segment& upper);
+  // wire_offset.cpp
+  void executeWireOffset(const BlockWords& bw, const Word& o);
+  // program_flow.cpp
+  Flow executeM(const Word& m, const BlockWords& bw, std::size_t pc, std::size_t& next);
+  Flow call(const Word& m, const BlockWords& bw, std::size_t pc, std::size_t& next);
+  // machine_codes.cpp
+  Flow executeMachineCodes(const BlockWords& bw, const Block& block);
+  Flow executeMacroCall(const Block& block);
+  void positionUnknown(std::string cause, SourceSpan span, std::string help = {}, bool silent = false);
+  void skipMove(const Block& block, bool cut);
+  void positionKnownAgain(const Block& block);
+  void flushUnknown(const Block* knownAgain);
+  bool skipPolarSection(std::size_t pc, std::size_t& next, const Word& polarWord);
+  // heights.cpp
+  Height heightOf(const HeightWord& w) const;
+  void resolveHeights();
+  // taper_offsets.cpp
+  void resolveRel();
+  void resolveTaperAngle();
+  void reportOffsetIssues(const geometry::OffsetChainResult& r, const std::vector<std::size_t>& moveOf,
+                          const std::vector<double>& distance, const char* plane);
+
+  SourceSpan spanOf(const Word* w, const Block& b) const { return w ? w->span() : b.span(); }
+
+  const Program& program_;
+  const SourceFile* src_;
+  const InterpreterOptions& options_;
+  const MachineProfile& machine_;
+  Diagnostics& diags_;
+  Toolpath toolpath_;
+  ArcCentreTally tally_;
+
+  // Modal state (the interpreter's "settings").
+  Dialect dialect_ = Dialect::Plain;
+  Vec2 position_{0, 0};  // in the toolpath frame
+  Vec2 shift_{0, 0};     // program coordinates = toolpath coordinates + shift (G92)
+  Motion motion_ = Motion::None;
+  const Word* motionWord_ = nullptr;
+  bool incremental_ = false;
+  bool inch_ = false;
+  double feed_ = 0.0;
+  WireOffset wireOffset_ = WireOffset::Off;
+  geometry::ArcTolerance tolerance_{};
+  std::vector<Frame> stack_;
+  std::unordered_map<long, std::size_t> oLabels_, nLabels_;
+  UnknownPosition unknown_;
+  const Word* pendingOffset_ = nullptr;  // G40/G41/G42 not yet carried out by a move
+  bool programHasV_ = false;             // some word is V (for the U Z diagnostic)
+
+  // 4-axis state.
+  Vec2 upperPosition_{0, 0};  // xyuv-abs, xyuv-linuxcnc, sodick-colon: where the upper contour is
+  Vec2 upperShift_{0, 0};     // xyuv-abs, xyuv-linuxcnc: G92 U V
+  Motion upperMotion_ = Motion::None;
+  const Word* upperMotionWord_ = nullptr;
+  Vec2 uvOffset_{0, 0};     // xyuv-rel: upper minus lower, the modal U V
+  bool colonMode_ = false;  // G141/G142 in force
+  TaperPhase taperPhase_ = TaperPhase::Off;
+  int taperSide_ = 1;  // +1 G51 (wire leans left of travel), -1 G52
+  double taperDegrees_ = 0.0;
+  std::vector<RelRecord> relRecords_;
+  std::vector<TaperRecord> taperRecords_;
+  std::optional<Height> fileThickness_, fileProgramZ_;
+  bool legacyTaperCodes_ = false;  // cnc3's earlier M106/M107 numbering is in use
+
+  // Say it once.
+  std::unordered_set<char> warnedLetters_;
+  std::unordered_set<long> warnedM_;
+  std::unordered_set<std::string> notedCodes_;
+  bool warnedOffset_ = false, warnedOffsetUnknown_ = false, warnedWorkOffset_ = false, warnedUz_ = false;
+};
+
+}  // namespace kerf::converter::interp

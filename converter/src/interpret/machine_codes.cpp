@@ -1,0 +1,197 @@
+// Codes the machine profile knows beyond the standard set (machine.h), Sodick macro calls, the
+// polar section Kerf does not read, and the wire's position where only the machine knows it.
+#include "interpreter_impl.h"
+
+#include <cmath>
+
+namespace kerf::converter::interp {
+namespace {
+
+std::string written(const SourceFile* src, const Word& w) {
+  return std::string(src->text().substr(w.offset, w.length));
+}
+
+std::string keyOf(const Word& w) {
+  std::string key(1, w.letter);
+  if (!w.isNumber()) return key;
+  int number = 0, fraction = 0;
+  if (!splitGNumber(std::abs(w.value), number, fraction)) return key;
+  key += std::to_string(number);
+  if (fraction) key += "." + std::to_string(fraction);
+  return key;
+}
+
+}  // namespace
+
+Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) {
+  for (std::size_t k = 0; k < bw.machineCount; ++k) {
+    const Word& w = *bw.machine[k].first;
+    const KnownCode& code = *bw.machine[k].second;
+    const std::string key = keyOf(w);
+    const std::string as = written(src_, w);
+    CodeEffect effect = code.effect;
+    // cnc3's earlier numbering: M106 P L Q H gave the guides (said once, with the numbering) and
+    // M107 P T the thickness.
+    if (legacyTaperCodes_ && key == "M106") continue;
+    if (legacyTaperCodes_ && key == "M107") effect = CodeEffect::Thickness;
+    switch (effect) {
+      case CodeEffect::Guides:
+        if (notedCodes_.insert(key).second)
+          diags_.note(Code::MachineCode, src_, w.span(),
+                      bw.has('P') || bw.has('Q')
+                          ? as + ": " + code.note + " (accepted: the part's geometry does not need it) [" +
+                                machine_.name + " profile]"
+                          : as +
+                                " without P and Q gives no guide geometry (older cnc3 programs write it alone, "
+                                "as 'Apply') [" +
+                                machine_.name + " profile]");
+        break;
+      case CodeEffect::Harmless:
+      case CodeEffect::NoMotion:
+        if (notedCodes_.insert(key).second)
+          diags_.note(Code::MachineCode, src_, w.span(), as + ": " + code.note + " [" + machine_.name + " profile]");
+        break;
+      case CodeEffect::NotModelled:
+        if (notedCodes_.insert(key).second)
+          diags_.warning(Code::CodeNotModelled, src_, w.span(),
+                         as + ": " + code.note +
+                             ": Kerf does not model it, so the geometry, the checks and the "
+                             "picture do not show what it changes [" +
+                             machine_.name + " profile]");
+        break;
+      case CodeEffect::Thickness:
+        if (const Word* p = bw['P']; p && p->isNumber()) {
+          setHeight(fileThickness_, length(*p), (key + " P").c_str(), block.line);
+        } else {
+          diags_.warning(Code::ParameterMissing, src_, w.span(),
+                         as + " sets the workpiece thickness with P, and has none");
+        }
+        break;
+      case CodeEffect::Position:    // executeBlock: the wire goes where only the machine knows
+      case CodeEffect::ProgramEnd:  // executeBlock: after the motion, as M02
+        break;
+    }
+  }
+  return Flow::Continue;
+}
+
+Flow Interpreter::executeMacroCall(const Block& block) {
+  const std::string_view text = program_.textOf(block);
+  std::string name = "Q";
+  for (std::size_t k = 1; k < text.size() && text[k] != '('; ++k)
+    name += static_cast<char>(text[k] >= 'a' && text[k] <= 'z' ? text[k] - 'a' + 'A' : text[k]);
+  const KnownCode* code = machine_.find(name);
+  const std::string call(text.substr(0, text.find(')') + 1));
+  if (!code) {
+    std::string help;
+    if (const auto others = machinesKnowing(name, &machine_); !others.empty())
+      help = "the " + others.front()->name + " profile knows " + name + " (" + others.front()->find(name)->note +
+             "): read the program with --machine " + others.front()->name;
+    positionUnknown("the macro call " + call + " (its moves are stored in the controller, and the " + machine_.name +
+                        " profile does not know it)",
+                    block.span(), help);
+    return Flow::Continue;
+  }
+  switch (code->effect) {
+    case CodeEffect::Position: positionUnknown(call + " (" + code->note + ")", block.span()); break;
+    case CodeEffect::NotModelled:
+      if (notedCodes_.insert(name).second)
+        diags_.warning(Code::CodeNotModelled, src_, block.span(),
+                       call + ": " + code->note + ": Kerf does not model it [" + machine_.name + " profile]");
+      break;
+    case CodeEffect::ProgramEnd: toolpath_.endedProperly = true; return Flow::Stop;
+    default:
+      if (notedCodes_.insert(name).second)
+        diags_.note(Code::MachineCode, src_, block.span(),
+                    call + ": " + code->note + " [" + machine_.name + " profile]");
+      break;
+  }
+  return Flow::Continue;
+}
+
+void Interpreter::positionUnknown(std::string cause, SourceSpan span, std::string help, bool silent) {
+  if (unknown_.active) return;  // one diagnostic for the whole stretch
+  unknown_ = UnknownPosition{};
+  unknown_.active = true;
+  unknown_.cause = std::move(cause);
+  unknown_.span = span;
+  unknown_.help = std::move(help);
+  unknown_.silent = silent;
+}
+
+void Interpreter::skipMove(const Block& block, bool cut) {
+  ++unknown_.skippedMoves;
+  if (cut) ++unknown_.skippedCuts;
+  if (unknown_.firstSkippedLine == 0) unknown_.firstSkippedLine = block.line;
+  unknown_.lastSkippedLine = block.line;
+}
+
+void Interpreter::positionKnownAgain(const Block& block) { flushUnknown(&block); }
+
+void Interpreter::flushUnknown(const Block* knownAgain) {
+  if (!unknown_.active) return;
+  const UnknownPosition u = unknown_;
+  unknown_ = UnknownPosition{};
+  if (u.silent && u.skippedCuts == 0) return;
+  std::string message = u.cause + ": the wire's position after it is known only at the machine";
+  if (u.skippedMoves > 0) {
+    message += "; the " + std::to_string(u.skippedMoves) + (u.skippedMoves == 1 ? " move" : " moves") + " on line" +
+               (u.firstSkippedLine == u.lastSkippedLine
+                    ? " " + std::to_string(u.firstSkippedLine)
+                    : "s " + std::to_string(u.firstSkippedLine) + " to " + std::to_string(u.lastSkippedLine)) +
+               " (" + std::to_string(u.skippedCuts) + " cut) cannot be drawn or checked";
+  }
+  message += knownAgain ? "; line " + std::to_string(knownAgain->line) + " gives it again"
+                        : "; it stays unknown to the end of the program";
+  std::string help = u.help;
+  if (help.empty() && u.skippedCuts > 0)
+    help = "give the position before the cut with G92 X Y or an absolute move with X and Y";
+  Diagnostic d;
+  d.severity = u.skippedCuts > 0 ? Severity::Error : Severity::Note;
+  d.code = Code::PositionUnknown;
+  d.source = src_;
+  d.span = u.span;
+  d.message = std::move(message);
+  d.help = std::move(help);
+  diags_.report(std::move(d));
+}
+
+bool Interpreter::skipPolarSection(std::size_t pc, std::size_t& next, const Word& polarWord) {
+  // The section runs to G13.1 (G113); without one, to the program's end (M02/M30 still end it).
+  std::size_t end = program_.blocks.size();
+  bool cancelled = false;
+  std::string cancelWord = "G13.1";
+  for (std::size_t k = pc + 1; k < program_.blocks.size() && end == program_.blocks.size(); ++k) {
+    for (const Word& w : program_.wordsOf(program_.blocks[k])) {
+      if (w.letter == 'G' && w.isNumber()) {
+        if (const GCodeInfo* g = findGCode(w.value); g && g->code == GCode::PolarOff) {
+          end = k + 1;
+          cancelled = true;
+          cancelWord = written(src_, w);
+          break;
+        }
+      }
+      if (w.letter == 'M' && w.isNumber() && (std::lround(w.value) == 2 || std::lround(w.value) == 30)) {
+        end = k;
+        break;
+      }
+    }
+  }
+  const std::string what = written(src_, polarWord);
+  std::string message = what + " (polar coordinate interpolation, X and C words) is not supported yet: ";
+  if (cancelled)
+    message += "the blocks up to " + cancelWord + " on line " + std::to_string(program_.blocks[end - 1].line) +
+               " are not read";
+  else if (end > pc + 1)
+    message += "the blocks from here to line " + std::to_string(program_.blocks[end - 1].line) +
+               " are not read (no G13.1 follows)";
+  else
+    message += "no G13.1 follows it";
+  diags_.error(Code::PolarNotSupported, src_, polarWord.span(), message,
+               "Kerf reads X Y programs: write the section with X and Y to have it checked");
+  next = end;
+  positionUnknown("the polar section", polarWord.span(), {}, true);
+  return true;
+}
+
+}  // namespace kerf::converter::interp

@@ -1,0 +1,216 @@
+// Phase 4 (execute), the motion: a block's end point, its arc from R or I J, the move.
+#include "interpreter_impl.h"
+
+#include <cmath>
+
+namespace kerf::converter::interp {
+
+void Interpreter::reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block,
+                            const std::string& side) {
+  const double unit = inch_ ? 25.4 : 1.0;
+  const char* u = inch_ ? " in" : " mm";
+  switch (build.status) {
+    case geometry::ArcStatus::RadiusTooSmall:
+      diags_.error(Code::RadiusTooSmall, src_, bw['R']->span(),
+                   side + "arc radius " + fmt3(std::abs(length(*bw['R'])) / unit) + " is shorter than half the chord " +
+                       fmt3(build.halfChord / unit) + u);
+      break;
+    case geometry::ArcStatus::FullCircleWithRadius:
+      diags_.error(Code::FullCircleWithRadius, src_, bw['R']->span(),
+                   side + "arc ends where it starts, and R cannot describe a full circle", "give the centre with I J");
+      break;
+    case geometry::ArcStatus::ZeroRadius:
+      diags_.error(Code::ZeroRadius, src_,
+                   spanOf(bw.has('R')   ? bw['R']
+                          : bw.has('I') ? bw['I']
+                                        : bw['J'],
+                          block),
+                   side + "arc radius is zero",
+                   bw.has('R') || options_.arcCentre == ArcCentreMode::Absolute
+                       ? std::string{}
+                       : "if the post writes I J as absolute centres (Charmilles Robofil does), use --arc-centre "
+                         "absolute or --machine robofil");
+      break;
+    case geometry::ArcStatus::EndOffCircle:
+      diags_.error(Code::ArcEndOffCircle, src_, spanOf(bw.has('I') ? bw['I'] : bw['J'], block),
+                   side + "arc end point is " + fmt3(std::abs(build.radiusError) / unit) + u +
+                       " off the circle through the start (limit " + fmt3(tolerance_.centreAbsolute / unit) + u + ")",
+                   options_.arcCentre == ArcCentreMode::Incremental
+                       ? "if the post writes I J as start minus centre or as absolute centres, use --arc-centre "
+                         "reversed|absolute"
+                       : std::string{});
+      break;
+    case geometry::ArcStatus::Ok: break;
+  }
+}
+
+/// Which conventions would close this I J arc: evidence for detecting the convention.
+void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift,
+                                 geometry::ArcDirection dir, bool closedAsUsed, std::uint32_t line) {
+  ++tally_.arcs;
+  const Vec2 centres[3] = {start + ij, start - ij, ij - shift};
+  for (int k = 0; k < 3; ++k)
+    if (geometry::arcFromCentre(start, end, centres[k], dir, tolerance_).status == geometry::ArcStatus::Ok)
+      ++tally_.closes[k];
+  if (!closedAsUsed && tally_.firstFailLine == 0) tally_.firstFailLine = line;
+}
+
+bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
+                            const std::string& side, const Block& block, const Word* motionWord, Segment& out,
+                            Vec2& end, Move* record) {
+  const bool hasCentre = w.has('I') || w.has('J');
+  const bool hasRadius = w.has('R');
+  Vec2 endProgram = start + shift;  // in program coordinates; unwritten axes stay
+  if (const Word* x = w[xl]) endProgram.x() = incremental_ ? endProgram.x() + length(*x) : length(*x);
+  if (const Word* y = w[yl]) endProgram.y() = incremental_ ? endProgram.y() + length(*y) : length(*y);
+  end = endProgram - shift;
+  if (motion == Motion::Rapid || motion == Motion::Line) {
+    if (hasCentre || hasRadius) {
+      const Word* c = hasRadius ? w['R'] : w.has('I') ? w['I'] : w['J'];
+      diags_.warning(Code::CentreOnStraightMove, src_, c->span(),
+                     std::string("'") + c->letter + "' has no meaning on a straight move and is ignored");
+    }
+    out = Segment::line(start, end);
+    return true;
+  }
+  const geometry::ArcDirection dir =
+      motion == Motion::Clockwise ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise;
+  if (hasRadius && hasCentre) {
+    diags_.error(Code::RadiusAndCentre, src_, w['R']->span(), side + "arc has both R and I/J: give one of them");
+    return false;
+  }
+  if (!hasRadius && !hasCentre) {
+    diags_.error(Code::ArcWithoutCentre, src_,
+                 motionWord && motionWord->offset >= block.offset ? motionWord->span() : block.span(),
+                 side + "arc needs its centre (I J) or its radius (R)",
+                 side.empty() ? std::string{} : "in xyuv-abs and sodick-colon the upper arc has its own I J or R");
+    return false;
+  }
+  geometry::ArcBuild build;
+  if (hasRadius) {
+    const double r = length(*w['R']);
+    if (record) {
+      record->centreForm = CentreForm::Radius;
+      record->programmedRadius = r;
+    }
+    build = geometry::arcFromRadius(start, end, r, dir, tolerance_);
+  } else {
+    Vec2 ij(0, 0);
+    if (const Word* i = w['I']) ij.x() = length(*i);
+    if (const Word* j = w['J']) ij.y() = length(*j);
+    Vec2 centre;
+    CentreForm form = CentreForm::Incremental;
+    switch (options_.arcCentre) {
+      case ArcCentreMode::Incremental: centre = start + ij; break;
+      case ArcCentreMode::Reversed:
+        centre = start - ij;
+        form = CentreForm::Reversed;
+        break;
+      case ArcCentreMode::Absolute:
+        centre = ij - shift;
+        form = CentreForm::Absolute;
+        break;
+    }
+    if (record) {
+      record->programmedCentreWords = ij;
+      record->centreForm = form;
+    }
+    build = geometry::arcFromCentre(start, end, centre, dir, tolerance_);
+    if (record) tallyArcCentre(start, end, ij, shift, dir, build.status == geometry::ArcStatus::Ok, block.line);
+  }
+  if (build.status != geometry::ArcStatus::Ok) {
+    reportArc(build, w, block, side);
+    return false;
+  }
+  out = build.arc;
+  if (record) record->radiusError = build.radiusError;
+  return true;
+}
+
+bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan,
+                                std::uint32_t blockIndex) {
+  const bool hasEnd = bw.has('X') || bw.has('Y');
+  if (!plan.lowerWords && !plan.upperWords) return true;  // modal words only
+  if (motion_ == Motion::None) {
+    const Word* w = bw.has('X')   ? bw['X']
+                    : bw.has('Y') ? bw['Y']
+                    : bw.has('I') ? bw['I']
+                    : bw.has('J') ? bw['J']
+                    : bw.has('R') ? bw['R']
+                                  : nullptr;
+    diags_.error(Code::NoMotionMode, src_, w ? w->span() : block.span(), "coordinates without a motion command",
+                 "start the block (or an earlier one) with G00, G01, G02 or G03");
+    return false;
+  }
+  if (unknown_.active) {
+    // Only a destination given in full, absolutely, tells where the wire is again; the move that
+    // reaches it has an unknown start and is not drawn.
+    if (!incremental_ && bw.has('X') && bw.has('Y')) {
+      position_ = Vec2(length(*bw['X']), length(*bw['Y']));
+      shift_ = Vec2::Zero();
+      const Word* u = ubw.has('U') ? ubw['U'] : bw['U'];
+      const Word* v = ubw.has('V') ? ubw['V'] : bw['V'];
+      upperPosition_ = position_;
+      upperShift_ = Vec2::Zero();
+      if (u && v && (dialect_ == Dialect::XyuvAbs || dialect_ == Dialect::XyuvLinuxCnc))
+        upperPosition_ = Vec2(length(*u), length(*v));
+      skipMove(block, motion_ != Motion::Rapid);
+      positionKnownAgain(block);
+    } else {
+      skipMove(block, motion_ != Motion::Rapid);
+    }
+    return true;
+  }
+  Move move;
+  move.block = blockIndex;
+  move.line = block.line;
+  move.span = block.span();
+  move.feed = feed_;
+  move.wireOffset = wireOffset_;
+  move.callDepth = static_cast<std::uint16_t>(stack_.size());
+
+  const Vec2 start = position_;
+  Vec2 end = start;
+  Segment lower;
+  if (!buildSide(bw, 'X', 'Y', motion_, start, shift_, "", block, motionWord_, lower, end, &move)) {
+    position_ = end;
+    return false;
+  }
+  const bool straight = motion_ == Motion::Rapid || motion_ == Motion::Line;
+  if (straight && !hasEnd && !plan.upperWords) return true;  // I J R alone on a line: warned, no move
+  move.kind = motion_ == Motion::Rapid ? MoveKind::Rapid : straight ? MoveKind::Line : MoveKind::Arc;
+  move.lower = lower;
+
+  Segment upper = lower;
+  if (!buildUpper(bw, ubw, block, move, upper)) {
+    position_ = end;
+    return false;
+  }
+  if (move.kind == MoveKind::Line && lower.length() <= 1e-9 && upper.length() <= 1e-9)
+    diags_.warning(Code::ZeroLengthMove, src_, block.span(), "move has zero length");
+  // The wire offset starts and ends on a straight move: the control cannot ramp it along an arc.
+  if (pendingOffset_) {
+    if (move.kind == MoveKind::Arc) {
+      const bool cancel = wireOffset_ == WireOffset::Off;
+      diags_.error(Code::OffsetOnArc, src_, block.span(),
+                   std::string("the wire offset is ") + (cancel ? "cancelled" : "started") + " (" +
+                       std::string(src_->text().substr(pendingOffset_->offset, pendingOffset_->length)) + " on line " +
+                       std::to_string(src_->locate(pendingOffset_->offset).line) + ") on this arc: a control " +
+                       (cancel ? "cancels" : "starts") + " it on a straight move",
+                   std::string("put a straight ") + (cancel ? "lead-out" : "lead-in") + " move after " +
+                       std::string(src_->text().substr(pendingOffset_->offset, pendingOffset_->length)));
+    }
+    pendingOffset_ = nullptr;
+  }
+  push(std::move(move), upper);
+  position_ = end;
+  return true;
+}
+
+void Interpreter::push(Move&& m, const Segment& upper) {
+  if (toolpath_.moves.empty()) toolpath_.start = position_;  // the move starts here (in the toolpath frame)
+  toolpath_.moves.push_back(std::move(m));
+  if (dialect_ != Dialect::Plain) toolpath_.upper.push_back(upper);
+}
+
+}  // namespace kerf::converter::interp

@@ -1,0 +1,84 @@
+// Program flow: M codes, subprogram calls (M98 P L) and returns (M99).
+#include "interpreter_impl.h"
+
+#include <cmath>
+
+namespace kerf::converter::interp {
+
+Flow Interpreter::executeM(const Word& m, const BlockWords& bw, std::size_t pc, std::size_t& next) {
+  const MCodeInfo* info = findMCode(m.value);
+  if (!info) {
+    const long code = std::lround(m.value);
+    if (warnedM_.insert(code).second) {
+      const std::string key = "M" + std::to_string(code);
+      std::string help;
+      if (const auto others = machinesKnowing(key, &machine_); !others.empty())
+        help = "the " + others.front()->name + " profile knows " + key + " (" + others.front()->find(key)->note +
+               "): read the program with --machine " + others.front()->name;
+      diags_.warning(Code::UnknownMCode, src_, m.span(),
+                     key + " is a machine function Kerf does not know; it has no effect on the path", help);
+    }
+    return Flow::Continue;
+  }
+  switch (info->code) {
+    case MCode::ProgramEnd:
+    case MCode::ProgramEndRewind: toolpath_.endedProperly = true; return Flow::Stop;
+    case MCode::CallSubprogram: return call(m, bw, pc, next);
+    case MCode::ReturnFromSubprogram:
+      if (stack_.empty()) {
+        diags_.warning(Code::ReturnOutsideSubprogram, src_, m.span(), "M99 in the main program ends it here");
+        toolpath_.endedProperly = true;
+        return Flow::Stop;
+      }
+      if (--stack_.back().remaining > 0) {
+        next = stack_.back().start;
+      } else {
+        next = stack_.back().returnTo;
+        stack_.pop_back();
+      }
+      return Flow::Continue;
+    default: return Flow::Continue;  // stops, spindle (hot wire), flushing: the wire path goes on
+  }
+}
+
+Flow Interpreter::call(const Word& m, const BlockWords& bw, std::size_t pc, std::size_t& next) {
+  const Word* p = bw['P'];
+  if (!p) {
+    diags_.error(Code::CallWithoutProgram, src_, m.span(), "M98 needs the subprogram number in P");
+    return Flow::Continue;
+  }
+  const long label = std::lround(p->value);
+  long repeats = 1;
+  if (const Word* l = bw['L']) {
+    repeats = std::lround(l->value);
+    if (!l->isNumber() || repeats < 1 || repeats > 9999 || std::abs(l->value - static_cast<double>(repeats)) > 1e-9) {
+      diags_.error(Code::BadRepeatCount, src_, l->span(), "repeat count L must be a whole number from 1 to 9999");
+      return Flow::Continue;
+    }
+  }
+  std::size_t target = 0;
+  if (auto it = oLabels_.find(label); it != oLabels_.end()) {
+    target = it->second;
+  } else if (auto jt = nLabels_.find(label); jt != nLabels_.end() && jt->second != pc) {
+    target = jt->second;
+  } else {
+    std::string help;
+    long best = -1;
+    for (const auto& [k, v] : oLabels_)
+      if (best < 0 || std::abs(k - label) < std::abs(best - label)) best = k;
+    if (best >= 0) help = "the nearest program number is O" + std::to_string(best);
+    diags_.error(Code::SubprogramNotFound, src_, p->span(),
+                 "no subprogram O" + std::to_string(label) + " or N" + std::to_string(label) + " in this file", help);
+    return Flow::Continue;
+  }
+  if (stack_.size() >= options_.maxCallDepth) {
+    diags_.error(Code::CallTooDeep, src_, m.span(),
+                 "subprogram calls nest deeper than " + std::to_string(options_.maxCallDepth) + " levels (recursion?)");
+    return Flow::Stop;
+  }
+  stack_.push_back({pc + 1, target, repeats, pc});
+  next = target;
+  return Flow::Continue;
+}
+
+}  // namespace kerf::converter::interp

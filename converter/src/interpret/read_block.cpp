@@ -1,0 +1,139 @@
+// Phase 1 (read): the block's words into BlockWords — one value per letter, G codes by modal
+// group, M codes in order, and the codes the machine profile knows.
+#include "interpreter_impl.h"
+
+#include <cmath>
+
+namespace kerf::converter::interp {
+namespace {
+
+bool isMotionG(const Word& w) { return w.value >= 0 && w.value <= 3 && w.value == std::floor(w.value); }
+
+bool isUpperLetter(char c) {
+  return c == 'X' || c == 'Y' || c == 'U' || c == 'V' || c == 'I' || c == 'J' || c == 'R' || c == 'K' || c == 'L';
+}
+
+/// Letters a profile may name as codes (T84) or as a whole letter (C): never the geometry's.
+bool profileMayName(char c) {
+  return c == 'A' || c == 'C' || c == 'E' || c == 'Q' || c == 'S' || c == 'T' || c == 'W' || c == 'Z';
+}
+
+/// "G60", "G12.1", "M28", "T84": the key a profile uses.
+std::string codeKey(char letter, double value) {
+  int number = 0, fraction = 0;
+  if (!splitGNumber(std::abs(value), number, fraction)) return {};
+  std::string key(1, letter);
+  key += std::to_string(number);
+  if (fraction) key += "." + std::to_string(fraction);
+  return key;
+}
+
+/// "the robofil profile knows G60 (...): --machine robofil".
+std::string profileHint(const std::string& key, const MachineProfile& current) {
+  const auto others = machinesKnowing(key, &current);
+  if (others.empty()) return {};
+  const KnownCode* k = others.front()->find(key);
+  std::string names;
+  for (const MachineProfile* m : others) names += std::string(names.empty() ? "" : " or ") + "--machine " + m->name;
+  return "the " + others.front()->name + " profile knows " + key + " (" + k->note + "): read the program with " + names;
+}
+
+}  // namespace
+
+bool Interpreter::splitsBlocks() const {
+  return dialect_ == Dialect::XyuvAbs || dialect_ == Dialect::XyuvRel || dialect_ == Dialect::XyuvLinuxCnc ||
+         dialect_ == Dialect::SodickColon;
+}
+
+void Interpreter::readWord(const Word& w, BlockWords& bw) {
+  auto addMachine = [&](const KnownCode* k) {
+    if (bw.machineCount == bw.machine.size()) {
+      diags_.error(Code::TooManyMCodes, src_, w.span(),
+                   "more than " + std::to_string(bw.machine.size()) + " machine codes in one block");
+      bw.bad = true;
+      return;
+    }
+    bw.machine[bw.machineCount++] = {&w, k};
+  };
+  if (w.letter == 'G') {
+    int number = 0, fraction = 0;
+    if (!w.isNumber() || !splitGNumber(w.value, number, fraction)) {
+      diags_.error(Code::UnknownGCode, src_, w.span(), "G code must be a whole number or have one decimal");
+      bw.bad = true;
+      return;
+    }
+    const std::string key = codeKey('G', w.value);
+    if (const KnownCode* k = machine_.find(key)) {  // the profile's meaning wins over the standard one
+      addMachine(k);
+      return;
+    }
+    const GCodeInfo* gi = findGCode(w.value);
+    if (!gi) {
+      const std::string_view raw = src_->text().substr(w.offset, w.length);
+      diags_.error(Code::UnknownGCode, src_, w.span(),
+                   "unknown G code " + std::string(raw) +
+                       (machine_.name == "generic" ? std::string{} : " (the " + machine_.name + " profile)"),
+                   profileHint(key, machine_));
+      bw.bad = true;
+      return;
+    }
+    const auto gi_ = static_cast<std::size_t>(gi->group);
+    if (bw.g[gi_]) {
+      diags_.error(
+          Code::ModalGroupConflict, src_, w.span(),
+          gName(gi->code) + " and " + gName(bw.gCode[gi_]) + " are in the same group and cannot share a block");
+      bw.bad = true;
+      return;
+    }
+    bw.g[gi_] = &w;
+    bw.gCode[gi_] = gi->code;
+    return;
+  }
+  if (w.letter == 'M') {
+    if (w.isNumber())
+      if (const KnownCode* k = machine_.find(codeKey('M', w.value))) {
+        addMachine(k);
+        return;
+      }
+    if (bw.mCount == bw.m.size()) {
+      diags_.error(Code::TooManyMCodes, src_, w.span(),
+                   "more than " + std::to_string(bw.m.size()) + " M codes in one block");
+      bw.bad = true;
+      return;
+    }
+    bw.m[bw.mCount++] = &w;
+    return;
+  }
+  if (profileMayName(w.letter)) {
+    const KnownCode* k = w.isNumber() ? machine_.find(codeKey(w.letter, w.value)) : nullptr;
+    if (!k) k = machine_.find(std::string(1, w.letter));
+    if (k) {
+      addMachine(k);
+      return;
+    }
+  }
+  const auto li = static_cast<std::size_t>(w.letter - 'A');
+  if (bw.letter[li]) {
+    diags_.error(Code::RepeatedWord, src_, w.span(),
+                 std::string("word '") + w.letter + "' appears twice on the same side of the block");
+    bw.bad = true;
+    return;
+  }
+  bw.letter[li] = &w;
+}
+
+/// In a two-sided dialect the upper side's coordinates and motion word go to ubw; every other word
+/// (F, M, modal G codes) belongs to the block as a whole.
+bool Interpreter::readBlock(const Block& block, BlockWords& bw, BlockWords& ubw) {
+  const bool split = splitsBlocks();
+  const auto words = program_.wordsOf(block);
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    const Word& w = words[k];
+    const bool upperSide =
+        split && k >= block.upperFrom && (isUpperLetter(w.letter) || (w.letter == 'G' && isMotionG(w)));
+    readWord(w, upperSide ? ubw : bw);
+  }
+  return !bw.bad && !ubw.bad;
+}
+
+}  // namespace kerf::converter::interp

@@ -1,0 +1,414 @@
+// Machine profiles: the text format, the built-in profiles (converter/machines/, compiled in) and
+// detection from a program's evidence.
+//
+// Sections: 1. names  2. the profile file  3. built-ins  4. detection
+#include "kerf/converter/machine.h"
+
+#include "kerf/converter/dialect.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+namespace kerf::converter {
+
+namespace machines {
+struct EmbeddedFile {
+  const char* name;
+  const char* text;
+};
+extern const EmbeddedFile kFiles[];
+extern const std::size_t kFileCount;
+}  // namespace machines
+
+// ---- 1. names -----------------------------------------------------------------------------------
+
+const char* integerUnitName(IntegerUnit u) { return u == IntegerUnit::Micrometre ? "um" : "mm"; }
+
+const char* arcCentreName(ArcCentreMode m) {
+  switch (m) {
+    case ArcCentreMode::Incremental: return "incremental";
+    case ArcCentreMode::Reversed: return "reversed";
+    case ArcCentreMode::Absolute: return "absolute";
+  }
+  return "incremental";
+}
+
+std::optional<ArcCentreMode> parseArcCentre(std::string_view name) {
+  for (ArcCentreMode m : {ArcCentreMode::Incremental, ArcCentreMode::Reversed, ArcCentreMode::Absolute})
+    if (name == arcCentreName(m)) return m;
+  return std::nullopt;
+}
+
+const char* codeEffectName(CodeEffect e) {
+  switch (e) {
+    case CodeEffect::Harmless: return "harmless";
+    case CodeEffect::NotModelled: return "not-modelled";
+    case CodeEffect::Position: return "position";
+    case CodeEffect::NoMotion: return "no-motion";
+    case CodeEffect::Thickness: return "thickness";
+    case CodeEffect::Guides: return "guides";
+    case CodeEffect::ProgramEnd: return "program-end";
+  }
+  return "harmless";
+}
+
+const KnownCode* MachineProfile::find(std::string_view key) const {
+  for (const KnownCode& c : codes)
+    if (c.key == key) return &c;
+  return nullptr;
+}
+
+// ---- 2. the profile file ------------------------------------------------------------------------
+
+namespace {
+
+std::string trim(std::string_view s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r')) ++b;
+  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
+  return std::string(s.substr(b, e - b));
+}
+
+std::string upperCase(std::string s) {
+  for (char& c : s)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return s;
+}
+
+/// "G02" -> "G2", "g12.1" -> "G12.1", "qaic" -> "QAIC", "c" -> "C". Empty when it is no code.
+std::string normaliseKey(std::string_view raw) {
+  const std::string key = upperCase(trim(raw));
+  if (key.empty() || key[0] < 'A' || key[0] > 'Z') return {};
+  if (key.size() == 1) return key;
+  if (key[0] == 'Q' &&
+      std::all_of(key.begin() + 1, key.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); }))
+    return key;  // a Sodick macro call name
+  char* end = nullptr;
+  const std::string number = key.substr(1);
+  const double v = std::strtod(number.c_str(), &end);
+  if (end != number.c_str() + number.size() || v < 0) return {};
+  const long tenths = std::lround(v * 10);
+  if (std::abs(v * 10 - static_cast<double>(tenths)) > 1e-9) return {};
+  std::string out(1, key[0]);
+  out += std::to_string(tenths / 10);
+  if (tenths % 10) out += "." + std::to_string(tenths % 10);
+  return out;
+}
+
+std::optional<double> number(const std::string& value) {
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::string baseName(const std::string& path) {
+  std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  if (const auto dot = name.find('.'); dot != std::string::npos && dot > 0) name.resize(dot);
+  return name;
+}
+
+}  // namespace
+
+std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagnostics& diags) {
+  MachineProfile p;
+  p.name = baseName(file.name());
+  p.text = std::string(file.text());
+  bool ok = true;
+  for (std::uint32_t line = 1; line <= file.lineCount(); ++line) {
+    const auto [begin, end] = file.lineRange(line);
+    const std::string_view text = file.text().substr(begin, end - begin);
+    const std::string t = trim(text);
+    if (t.empty() || t[0] == '#') continue;
+    const std::size_t lead = text.find_first_not_of(" \t");
+    auto fail = [&](std::size_t at, std::size_t length, std::string message, std::string help = {}) {
+      diags.error(
+          Code::MachineProfileError, &file,
+          {static_cast<std::uint32_t>(begin + at), static_cast<std::uint32_t>(std::max<std::size_t>(1, length))},
+          std::move(message), std::move(help));
+      ok = false;
+    };
+    const std::size_t eq = text.find('=');
+    if (eq == std::string_view::npos) {
+      fail(lead, text.size() - lead, "expected 'key = value'");
+      continue;
+    }
+    std::string key = trim(text.substr(0, eq));
+    const std::string value = trim(text.substr(eq + 1));
+    const std::size_t valueAt = std::min(text.size(), text.find_first_not_of(" \t", eq + 1));
+    auto badValue = [&](const std::string& allowed) {
+      fail(valueAt, value.size(), "'" + value + "' is not a value of " + key, "allowed: " + allowed);
+    };
+    if (key.rfind("code ", 0) == 0 || key.rfind("code\t", 0) == 0) {
+      KnownCode c;
+      c.key = normaliseKey(key.substr(5));
+      if (c.key.empty()) {
+        fail(lead, eq - lead, "'" + trim(key.substr(5)) + "' is not a code", "write G60, M28, T84, C or QAIC");
+        continue;
+      }
+      const std::size_t colon = value.find(':');
+      const std::string effect = trim(value.substr(0, colon));
+      c.note = colon == std::string::npos ? std::string{} : trim(value.substr(colon + 1));
+      bool known = false;
+      for (CodeEffect e : {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
+                           CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd})
+        if (effect == codeEffectName(e)) {
+          c.effect = e;
+          known = true;
+        }
+      if (!known) {
+        badValue("harmless, not-modelled, position, no-motion, thickness, guides or program-end, then ': note'");
+        continue;
+      }
+      if (c.note.empty()) {
+        fail(valueAt, value.size(), "code " + c.key + " needs a note: what it does on this machine",
+             "write 'harmless: meaning not modelled' when it is not known");
+        continue;
+      }
+      if (p.find(c.key)) {
+        fail(lead, eq - lead, "code " + c.key + " is listed twice");
+        continue;
+      }
+      p.codes.push_back(std::move(c));
+      continue;
+    }
+    if (key == "name") {
+      if (value.empty() || value.find_first_of(" \t/") != std::string::npos)
+        badValue("one word");
+      else
+        p.name = value;
+    } else if (key == "summary") {
+      p.summary = value;
+    } else if (key == "source") {
+      p.sources.push_back(value);
+    } else if (key == "arc_centre") {
+      if (value == "auto")
+        p.arcCentre.reset();
+      else if (auto m = parseArcCentre(value))
+        p.arcCentre = m;
+      else
+        badValue("incremental, reversed, absolute or auto");
+    } else if (key == "integer_unit") {
+      if (value == "auto")
+        p.integerUnit.reset();
+      else if (value == "mm")
+        p.integerUnit = IntegerUnit::Millimetre;
+      else if (value == "um")
+        p.integerUnit = IntegerUnit::Micrometre;
+      else
+        badValue("mm, um or auto");
+    } else if (key == "integer_threshold") {
+      if (auto v = number(value); v && *v >= 0)
+        p.integerThreshold = *v;
+      else
+        badValue("a number of 0 or more");
+    } else if (key == "uv_words") {
+      const auto d = parseDialect(value);
+      if (value == "auto")
+        p.uvDialect.reset();
+      else if (d && (*d == Dialect::XyuvAbs || *d == Dialect::XyuvRel || *d == Dialect::XyuvLinuxCnc))
+        p.uvDialect = d;
+      else
+        badValue("xyuv-abs, xyuv-rel, xyuv-linuxcnc or auto");
+    } else if (key == "semicolon") {
+      if (value == "comment" || value == "end-of-block")
+        p.semicolonEndsBlock = value == "end-of-block";
+      else
+        badValue("comment or end-of-block");
+    } else if (key == "upper_axes") {
+      if (value == "uv" || value == "uz")
+        p.upperAxesUZ = value == "uz";
+      else
+        badValue("uv or uz");
+    } else if (key == "bare_g92") {
+      if (value == "error" || value == "origin")
+        p.bareSetPositionIsOrigin = value == "origin";
+      else
+        badValue("error or origin");
+    } else if (key == "legacy_taper_codes") {
+      if (value == "no" || value == "detect")
+        p.legacyTaperCodes = value == "detect";
+      else
+        badValue("no or detect");
+    } else if (key == "max_taper") {
+      if (auto v = number(value); v && *v >= 0 && *v <= 89)
+        p.maxTaperDegrees = *v;
+      else
+        badValue("degrees from 0 to 89");
+    } else if (key == "uv_range" || key == "thickness") {
+      std::optional<double>& slot = key == "uv_range" ? p.uvRange : p.thickness;
+      if (value == "none")
+        slot.reset();
+      else if (auto v = number(value); v && *v > 0)
+        slot = v;
+      else
+        badValue("none or a length in mm above 0");
+    } else {
+      fail(lead, eq - lead, "unknown key '" + key + "'",
+           "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
+           "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, code <CODE>");
+    }
+  }
+  if (!ok) return std::nullopt;
+  return p;
+}
+
+// ---- 3. built-ins ---------------------------------------------------------------------------------
+
+const std::vector<MachineProfile>& builtinMachines() {
+  static const std::vector<MachineProfile> all = [] {
+    static constexpr std::array<const char*, 7> kOrder = {"generic", "robofil", "sodick", "linuxcnc",
+                                                          "cnc3",    "ncvc",    "fanuc"};
+    std::vector<MachineProfile> out;
+    for (const char* name : kOrder) {
+      for (std::size_t k = 0; k < machines::kFileCount; ++k) {
+        if (std::string(machines::kFiles[k].name) != std::string(name) + ".profile") continue;
+        const SourceFile file(machines::kFiles[k].name, machines::kFiles[k].text);
+        Diagnostics diags;
+        // The built-in files are tested (machine_test.cpp): a profile that does not parse is
+        // left out rather than half read.
+        if (std::optional<MachineProfile> p = parseMachineProfile(file, diags)) out.push_back(std::move(*p));
+      }
+    }
+    return out;
+  }();
+  return all;
+}
+
+const MachineProfile* findBuiltinMachine(std::string_view name) {
+  for (const MachineProfile& m : builtinMachines())
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+std::vector<const MachineProfile*> machinesKnowing(std::string_view key, const MachineProfile* except) {
+  std::vector<const MachineProfile*> out;
+  for (const MachineProfile& m : builtinMachines()) {
+    if (&m == except || (except && m.name == except->name)) continue;
+    if (key == "bare G92" ? m.bareSetPositionIsOrigin : m.find(key) != nullptr) out.push_back(&m);
+  }
+  return out;
+}
+
+// ---- 4. detection ---------------------------------------------------------------------------------
+
+namespace {
+
+std::string onLine(const std::string& what, std::uint32_t line) { return what + " on line " + std::to_string(line); }
+
+/// Evidence for one profile: each kind of evidence counted once, at its first place.
+struct Tally {
+  std::vector<MachineEvidence> items;
+  std::map<std::string, bool> seen;
+  void add(const std::string& kind, const std::string& what, SourceSpan span, int weight) {
+    if (seen[kind]) return;
+    seen[kind] = true;
+    items.push_back({what, span, weight});
+  }
+  [[nodiscard]] int score() const {
+    int s = 0;
+    for (const MachineEvidence& e : items) s += e.weight;
+    return s;
+  }
+};
+
+}  // namespace
+
+MachineDetection detectMachine(const Program& program) {
+  std::map<std::string, Tally> t;
+  const std::string_view text = program.source->text();
+  // Robofil names the program in its first line: % (MEM:F17A15.ISO)
+  const std::string_view first = program.source->lineText(1);
+  if (const auto at = first.find("(MEM:"); at != std::string_view::npos)
+    t["robofil"].add("mem", "the (MEM:...) header on line 1", {static_cast<std::uint32_t>(at), 5}, 3);
+  for (const Setting& s : program.settings) {
+    if (s.name[0] == 'C')
+      t["sodick"].add("conditions", onLine("the condition table (" + s.name + " = ...)", s.line), s.span, 3);
+    if (s.name[0] == 'H')
+      t["sodick"].add("offsets", onLine("the offset table (" + s.name + " = ...)", s.line), s.span, 1);
+  }
+  for (const HeightWord& h : program.heights) {
+    if (h.kind == HeightWord::Kind::SodickProgramPlane || h.kind == HeightWord::Kind::SodickLowerPlane)
+      t["sodick"].add("tp", onLine("TP/TN plane heights", h.line), h.span, 2);
+    else
+      t["linuxcnc"].add("axis", onLine("an (AXIS,..._Z_POS,z) comment", h.line), h.span, 3);
+  }
+  for (const Block& b : program.blocks) {
+    if (b.kind == BlockKind::MacroCall) {
+      const std::string_view call = program.textOf(b).substr(0, program.textOf(b).find('('));
+      t["sodick"].add("call", onLine("the macro call " + std::string(call) + "(...)", b.line), b.span(), 3);
+      continue;
+    }
+    if (b.kind == BlockKind::MacroB) {
+      t["fanuc"].add("macro", onLine("macro B", b.line), b.span(), 2);
+      continue;
+    }
+    if (b.twoMotions) t["cnc3"].add("two", onLine("two motion words in one block", b.line), b.span(), 3);
+    if (b.lowerCase) t["linuxcnc"].add("lower", onLine("lower-case words", b.line), b.span(), 1);
+    bool p = false, q = false, uv = false, kl = false, g92 = false, ij = false, taper = false, tWord = false;
+    for (const Word& w : program.wordsOf(b)) {
+      p |= w.letter == 'P';
+      q |= w.letter == 'Q';
+      uv |= w.letter == 'U' || w.letter == 'V';
+      kl |= w.letter == 'K' || w.letter == 'L';
+      ij |= w.letter == 'I' || w.letter == 'J';
+      tWord |= w.letter == 'T';
+      if (w.kind == WordValue::Macro) t["fanuc"].add("macro", onLine("a macro B value", b.line), w.span(), 2);
+      if (w.kind == WordValue::Register) t["sodick"].add("register", onLine("a register value", b.line), w.span(), 2);
+    }
+    for (const Word& w : program.wordsOf(b)) {
+      if (!w.isNumber()) continue;
+      const long n = std::lround(w.value);
+      const bool whole = std::abs(w.value - static_cast<double>(n)) < 1e-9;
+      if (w.letter == 'G') {
+        const long tenths = std::lround(w.value * 10);
+        if (whole && (n == 60 || n == 38 || n == 39))
+          t["robofil"].add("G" + std::to_string(n), onLine("G" + std::to_string(n), b.line), w.span(), 2);
+        if (whole && n >= 140 && n <= 142)
+          t["sodick"].add("colon", onLine("G" + std::to_string(n), b.line), w.span(), 2);
+        if ((whole && (n == 112 || n == 113)) || tenths == 121 || tenths == 131)
+          t["fanuc"].add("polar",
+                         onLine("polar interpolation (" + std::string(text.substr(w.offset, w.length)) + ")", b.line),
+                         w.span(), 3);
+        if (whole && (n == 98 || n == 99)) t["fanuc"].add("g98", onLine("G" + std::to_string(n), b.line), w.span(), 1);
+        if (whole && (n == 61 || n == 64))
+          t["linuxcnc"].add("path", onLine("G" + std::to_string(n) + " path control", b.line), w.span(), 1);
+        g92 |= whole && n == 92;
+        taper |= whole && (n == 51 || n == 52);
+      } else if (w.letter == 'M' && whole) {
+        if (n == 28) t["robofil"].add("M28", onLine("M28", b.line), w.span(), 2);
+        if ((n == 100 || n == 101) && p)
+          t["cnc3"].add("geometry", onLine("M" + std::to_string(n) + " P (taper geometry)", b.line), w.span(), 3);
+        if (n >= 105 && n <= 107 && p)
+          t["cnc3"].add("generator", onLine("M" + std::to_string(n) + " P (generator and wire settings)", b.line),
+                        w.span(), 2);
+        if (n == 40 || n == 41 || (n >= 82 && n <= 85))
+          t["cnc3"].add("M" + std::to_string(n), onLine("M" + std::to_string(n), b.line), w.span(), 1);
+        if (n == 199) t["sodick"].add("M199", onLine("M199", b.line), w.span(), 1);
+      } else if (w.letter == 'T' && whole && (n == 84 || n == 85 || n == 94)) {
+        t["sodick"].add("T" + std::to_string(n), onLine("T" + std::to_string(n), b.line), w.span(), 1);
+      }
+    }
+    if (g92 && ij) t["ncvc"].add("g92ij", onLine("G92 with I J (plane heights)", b.line), b.span(), 3);
+    if (uv && kl) t["ncvc"].add("kl", onLine("K L beside U V", b.line), b.span(), 2);
+    if (taper && tWord) t["ncvc"].add("t", onLine("G51/G52 with a T angle", b.line), b.span(), 2);
+  }
+  MachineDetection d;
+  d.profile = findBuiltinMachine("generic");
+  int best = 1;  // a single weak hint is not enough
+  for (const MachineProfile& m : builtinMachines()) {
+    const auto it = t.find(m.name);
+    if (it == t.end() || it->second.score() <= best) continue;
+    best = it->second.score();
+    d.profile = &m;
+    d.evidence = it->second.items;
+  }
+  std::stable_sort(d.evidence.begin(), d.evidence.end(),
+                   [](const MachineEvidence& a, const MachineEvidence& b) { return a.weight > b.weight; });
+  return d;
+}
+
+}  // namespace kerf::converter

@@ -1,0 +1,195 @@
+// Sections: 1. the machine profile  2. the conventions from the evidence  3. the pipeline
+#include "kerf/converter/pipeline.h"
+
+#include "kerf/converter/analysis.h"
+
+#include <cstdio>
+
+namespace kerf::converter {
+namespace {
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.15g", v);
+  return buf;
+}
+
+void merge(const Diagnostics& from, Diagnostics& to) {
+  for (const Diagnostic& d : from.all()) to.report(d);
+}
+
+ParseOptions parseOptionsOf(const MachineProfile& m, const ReadOptions& o) {
+  ParseOptions p;
+  p.semicolonEndsBlock = m.semicolonEndsBlock;
+  p.upperAxesUZ = o.upperAxesUZ.value_or(m.upperAxesUZ);
+  return p;
+}
+
+bool sameParse(const ParseOptions& a, const ParseOptions& b) {
+  return a.semicolonEndsBlock == b.semicolonEndsBlock && a.upperAxesUZ == b.upperAxesUZ;
+}
+
+// ---- 2. conventions from the evidence --------------------------------------------------------
+
+/// Integers without a decimal point: micrometres when no length word has a point and the largest
+/// is above the profile's threshold (docs/machines.md).
+std::optional<std::string> integerEvidence(const Program& p, const MachineProfile& m) {
+  if (p.anyDecimalPoint || p.integerLengthWords == 0 || p.largestInteger <= m.integerThreshold) return std::nullopt;
+  return "µm integers: " + std::to_string(p.integerLengthWords) + " coordinates without a decimal point, largest " +
+         number(p.largestInteger);
+}
+
+const char* centreAdjective(ArcCentreMode m) {
+  switch (m) {
+    case ArcCentreMode::Incremental: return "incremental";
+    case ArcCentreMode::Reversed: return "reversed (start minus centre)";
+    case ArcCentreMode::Absolute: return "absolute";
+  }
+  return "";
+}
+
+/// The convention every I J arc closes by, when the one used fails some and another fails none.
+std::optional<ArcCentreMode> betterCentre(const ArcCentreTally& t, ArcCentreMode used) {
+  if (t.arcs == 0 || t.closes[static_cast<int>(used)] == t.arcs) return std::nullopt;
+  for (ArcCentreMode m : {ArcCentreMode::Incremental, ArcCentreMode::Absolute, ArcCentreMode::Reversed})
+    if (m != used && t.closes[static_cast<int>(m)] == t.arcs) return m;
+  return std::nullopt;
+}
+
+std::string centreEvidence(const ArcCentreTally& t, ArcCentreMode m) {
+  const std::size_t closes = t.closes[static_cast<int>(m)];
+  std::size_t others = 0;
+  for (int k = 0; k < 3; ++k)
+    if (k != static_cast<int>(m)) others = std::max(others, t.closes[k]);
+  return std::string(centreAdjective(m)) + " centres: " + std::to_string(closes) + " of " + std::to_string(t.arcs) +
+         (t.arcs == 1 ? " arc closes" : " arcs close") + (others == 0 ? " only that way" : " that way");
+}
+
+}  // namespace
+
+// ---- 3. the pipeline -----------------------------------------------------------------------
+
+Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::optional<SourceText> upper) {
+  Pipeline out;
+  out.source = std::make_unique<SourceFile>(std::move(input.name), std::move(input.text));
+  const ReadOptions& ro = options.read;
+
+  // 1. The machine profile: a file, a name, or (after parsing) the evidence.
+  const MachineProfile* given = nullptr;
+  if (ro.machineFile) {
+    out.machineSource = std::make_unique<SourceFile>(ro.machineFile->name, ro.machineFile->text);
+    std::optional<MachineProfile> parsed = parseMachineProfile(*out.machineSource, out.diags);
+    if (!parsed) return out;
+    out.machine = std::move(*parsed);
+    given = &out.machine;
+  } else if (ro.machine) {
+    given = findBuiltinMachine(*ro.machine);
+    if (!given) {
+      out.diags.error(Code::MachineProfileError, nullptr, SourceSpan::wholeFile(),
+                      "there is no built-in machine profile named '" + *ro.machine + "'",
+                      "kerf machines lists them; --machine also takes a profile file");
+      return out;
+    }
+    out.machine = *given;
+  }
+  out.read = true;
+
+  Diagnostics readDiags(100000);
+  ParseOptions parse = parseOptionsOf(given ? *given : *findBuiltinMachine("generic"), ro);
+  out.program = parseProgram(*out.source, readDiags, parse);
+  MachineDetection detection;
+  if (!given) {
+    detection = detectMachine(out.program);
+    out.machine = *detection.profile;
+    out.machineDetected = true;
+    if (const ParseOptions p = parseOptionsOf(out.machine, ro); !sameParse(p, parse)) {
+      readDiags = Diagnostics(100000);
+      parse = p;
+      out.program = parseProgram(*out.source, readDiags, parse);
+    }
+  }
+  const MachineProfile& machine = out.machine;
+
+  // 2. The conventions: the options, the profile, or the evidence.
+  InterpreterOptions io;
+  io.machine = &machine;
+  io.dialect = ro.dialect;
+  io.lowerZ = ro.lowerZ;
+  io.upperZ = ro.upperZ;
+  io.thickness = ro.thickness;
+  io.programZ = ro.programZ;
+  io.wireOffset = ro.wireOffset;
+  std::vector<std::string> evidence;
+  if (ro.integerUnit) {
+    io.integerUnit = *ro.integerUnit;
+  } else if (machine.integerUnit) {
+    io.integerUnit = *machine.integerUnit;
+  } else if (auto e = integerEvidence(out.program, machine)) {
+    io.integerUnit = IntegerUnit::Micrometre;
+    evidence.push_back(*e);
+  }
+  const bool centreFixed = ro.arcCentre || machine.arcCentre;
+  io.arcCentre = ro.arcCentre ? *ro.arcCentre : machine.arcCentre.value_or(ArcCentreMode::Incremental);
+  if (upper) io.dialect = Dialect::Plain;
+
+  Diagnostics interpretDiags(100000);
+  Interpretation in = interpretProgram(out.program, io, interpretDiags);
+  if (!centreFixed) {
+    if (const std::optional<ArcCentreMode> better = betterCentre(in.arcs, io.arcCentre)) {
+      io.arcCentre = *better;
+      interpretDiags = Diagnostics(100000);
+      in = interpretProgram(out.program, io, interpretDiags);
+      evidence.push_back(centreEvidence(in.arcs, *better));
+    }
+  } else if (machine.arcCentre && !ro.arcCentre && in.arcs.arcs > 0 &&
+             *machine.arcCentre != ArcCentreMode::Incremental) {
+    evidence.push_back(centreEvidence(in.arcs, *machine.arcCentre));
+  }
+  out.toolpath = std::move(in.toolpath);
+  merge(readDiags, out.diags);
+
+  // The note that says how the program was read, and why.
+  const bool namedMachine = out.machineDetected && machine.name != "generic";
+  if (namedMachine || !evidence.empty()) {
+    std::string message;
+    SourceSpan span = SourceSpan::wholeFile();
+    if (namedMachine) {
+      message = "read for the " + machine.name + " machine, from ";
+      for (std::size_t k = 0; k < detection.evidence.size() && k < 4; ++k)
+        message += std::string(k ? ", " : "") + detection.evidence[k].what;
+      if (detection.evidence.size() > 4) message += " and " + std::to_string(detection.evidence.size() - 4) + " more";
+      span = detection.evidence.front().span;
+    } else {
+      message = "read with the " + machine.name + " profile";
+    }
+    for (const std::string& e : evidence) message += "; " + e;
+    out.diags.note(
+        Code::MachineDetected, out.source.get(), span, message,
+        "override with --machine NAME or FILE, --integer-unit, --arc-centre (kerf machines lists the profiles)");
+  }
+  merge(interpretDiags, out.diags);
+
+  if (upper) {
+    out.upperSource = std::make_unique<SourceFile>(std::move(upper->name), std::move(upper->text));
+    Diagnostics upperDiags(100000);
+    const Program upperProgram = parseProgram(*out.upperSource, upperDiags, parse);
+    const Toolpath upperPath = interpret(upperProgram, io, upperDiags);
+    merge(upperDiags, out.diags);
+    pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
+  }
+
+  // 3. The checks, with the machine's limits unless the user gave others.
+  out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(machine.maxTaperDegrees);
+  out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : machine.uvRange;
+  if (out.program.blocks.empty()) {
+    out.diags.error(Code::NothingCut, out.source.get(), SourceSpan::wholeFile(),
+                    "the file holds no program (no block of words): nothing to cut");
+  } else {
+    out.measures = measureSurface(out.toolpath);
+    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
+  }
+  out.diags.sortByPosition();
+  return out;
+}
+
+}  // namespace kerf::converter

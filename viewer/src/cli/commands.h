@@ -1,0 +1,96 @@
+// The commands of the kerf program: each declares its own options (besides the common groups of
+// options.h) and runs through the pipeline; main() only dispatches and returns the exit code.
+#pragma once
+
+#include "options.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace kerf::cli {
+
+struct CheckArgs {
+  CommonOptions common;
+  bool json = false;
+  bool trace = false;
+};
+CLI::App* addCheckCommand(CLI::App& app, CheckArgs& args);
+int runCheck(const CheckArgs& args);
+
+struct ExplainArgs {
+  CommonOptions common;
+  bool json = false;
+};
+CLI::App* addExplainCommand(CLI::App& app, ExplainArgs& args);
+int runExplain(const ExplainArgs& args);
+
+struct ConvertArgs {
+  CommonOptions common;
+  std::string to;
+  std::optional<std::string> plane;
+  std::string uv = "absolute";
+  std::string output = "-";
+  std::optional<std::size_t> maxPoints;
+  std::optional<std::string> profile;
+  std::optional<std::uint32_t> startBlock;
+  bool force = false;
+};
+CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& args);
+int runConvert(const ConvertArgs& args);
+
+struct RenderArgs {
+  CommonOptions common;
+  std::string output;
+  std::string view = "iso";
+  std::string size = "800x600";
+  std::optional<std::string> colourBy;
+  bool highlight = false;
+  std::string backend = "auto";
+  int samples = 0;
+  std::optional<double> meshTolerance;
+  std::optional<std::size_t> generators;
+  bool timings = false;
+};
+CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args);
+int runRender(const RenderArgs& args);
+
+struct ExportArgs {
+  CommonOptions common;
+  std::string output;
+  std::optional<double> meshTolerance;
+  bool caps = false;
+};
+CLI::App* addExportCommand(CLI::App& app, ExportArgs& args);
+int runExport(const ExportArgs& args);
+
+struct ViewArgs {
+  CommonOptions common;
+  std::optional<std::string> screenshot;
+  int frames = 0;
+  std::string size = "1280x800";
+  bool benchmark = false;
+  std::optional<std::size_t> line;
+  double playback = -1;
+  std::optional<double> meshTolerance;
+  std::optional<std::size_t> generators;
+  bool colourBy = false;
+  bool coarse = false;
+};
+CLI::App* addViewCommand(CLI::App& app, ViewArgs& args);
+int runView(const ViewArgs& args);
+
+struct MachinesArgs {
+  std::optional<std::string> show;
+};
+CLI::App* addMachinesCommand(CLI::App& app, MachinesArgs& args);
+int runMachines(const MachinesArgs& args);
+
+/// WIDTHxHEIGHT between 16 and 8192.
+bool parseSize(const std::string& text, int& width, int& height);
+
+}  // namespace kerf::cli

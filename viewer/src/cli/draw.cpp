@@ -1,0 +1,30 @@
+#include "draw.h"
+
+#include "file_io.h"
+#include "kerf/converter/dialect.h"
+
+namespace kerf::cli {
+
+ui::Annotation annotationOf(const std::string& input, const converter::Pipeline& p) {
+  ui::Annotation a;
+  const std::string name = displayName(input);
+  const auto slash = name.find_last_of('/');
+  a.title = slash == std::string::npos ? name : name.substr(slash + 1);
+  const converter::Toolpath& tp = p.toolpath;
+  const std::size_t errors = p.diags.errorCount(), warnings = p.diags.warningCount();
+  a.subtitle =
+      std::string(tp.isTaper() ? converter::dialectName(tp.dialect) : "2-axis") + " | " +
+      std::to_string(tp.moves.size()) + " moves | " +
+      (errors ? std::to_string(errors) + (errors == 1 ? " error" : " errors") : std::string("no errors")) +
+      (warnings ? ", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") : std::string());
+  return a;
+}
+
+render::SceneOptions sceneOptionsOf(std::optional<double> meshTolerance, std::optional<std::size_t> generators) {
+  render::SceneOptions so;
+  if (meshTolerance) so.tolerance = *meshTolerance;
+  if (generators) so.generators = *generators;
+  return so;
+}
+
+}  // namespace kerf::cli

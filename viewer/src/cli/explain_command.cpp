@@ -1,0 +1,31 @@
+// kerf explain FILE: how each block's geometry follows from its words.
+#include "commands.h"
+#include "load.h"
+
+#include "kerf/converter/report.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+namespace kerf::cli {
+
+CLI::App* addExplainCommand(CLI::App& app, ExplainArgs& a) {
+  CLI::App* cmd = app.add_subcommand("explain", "how each block's geometry follows from its words");
+  addCommonOptions(*cmd, a.common, false);
+  cmd->add_flag("--json", a.json, "machine-readable output on stdout");
+  return cmd;
+}
+
+int runExplain(const ExplainArgs& a) {
+  std::optional<Loaded> in = load(a.common, a.common.input.files.front());
+  if (!in) return kExitUsage;
+  const converter::Pipeline& p = in->pipeline;
+  printDiagnostics(p.diags, a.common);
+  const auto sampling = a.common.sampling.sampling();
+  std::cout << (a.json ? converter::explainJson(p.program, p.toolpath, sampling)
+                       : converter::explainText(p.program, p.toolpath, sampling));
+  return verdictExit(p);
+}
+
+}  // namespace kerf::cli

@@ -1,0 +1,231 @@
+#include "file_io.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <system_error>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace kerf::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string errnoText() { return std::strerror(errno); }
+
+bool writeAll(int fd, const char* data, std::size_t size) {
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t n = ::write(fd, data + done, size - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+/// Copies a finished file's bytes into what is already open for writing (a device, a FIFO).
+bool copyInto(const std::string& from, int to) {
+  const int in = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
+  if (in < 0) return false;
+  char buf[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(in, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      ::close(in);
+      return n == 0;
+    }
+    if (!writeAll(to, buf, static_cast<std::size_t>(n))) {
+      ::close(in);
+      return false;
+    }
+  }
+}
+
+/// "part.ply" -> ".ply"; "" when the name has no extension.
+std::string extensionOf(const fs::path& p) { return p.has_extension() ? p.extension().string() : std::string{}; }
+
+/// A new temporary file in dir, named after the output and ending in its extension.
+std::optional<std::string> makeTemporary(const fs::path& dir, const fs::path& target, std::string& error) {
+  const std::string ext = extensionOf(target);
+  std::string name = (dir / ("." + target.stem().string() + ".kerf-XXXXXX" + ext)).string();
+  const int fd = ::mkstemps(name.data(), static_cast<int>(ext.size()));
+  if (fd < 0) {
+    error = "cannot create a file in '" + dir.string() + "': " + errnoText();
+    return std::nullopt;
+  }
+  ::close(fd);
+  return name;
+}
+
+}  // namespace
+
+std::string displayName(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+std::optional<std::string> readTextFile(const std::string& path, std::size_t maxBytes, std::string& error) {
+  std::string text;
+  char buf[1 << 16];
+  if (path == "-") {
+    while (std::cin.read(buf, sizeof buf) || std::cin.gcount() > 0) {
+      text.append(buf, static_cast<std::size_t>(std::cin.gcount()));
+      if (text.size() > maxBytes) {
+        error = "standard input holds more than " + std::to_string(maxBytes) + " bytes";
+        return std::nullopt;
+      }
+    }
+    if (std::cin.bad()) {
+      error = "error reading standard input";
+      return std::nullopt;
+    }
+    return text;
+  }
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) {
+    error = "cannot open '" + path + "': no such file";
+    return std::nullopt;
+  }
+  if (fs::is_directory(st)) {
+    error = "'" + path + "' is a folder, not a file";
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = "cannot open '" + path + "': " + errnoText();
+    return std::nullopt;
+  }
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    text.append(buf, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > maxBytes) {
+      error = "'" + path + "' is larger than " + std::to_string(maxBytes) + " bytes";
+      return std::nullopt;
+    }
+  }
+  if (in.bad()) {
+    error = "error reading '" + path + "'";
+    return std::nullopt;
+  }
+  return text;
+}
+
+bool writeOutput(const std::string& path, const std::vector<std::string>& inputs, const std::string& text,
+                 std::string& error) {
+  if (path == "-") {
+    std::cout << text;
+    std::cout.flush();
+    if (!std::cout) {
+      error = "cannot write to standard output: " + errnoText();
+      return false;
+    }
+    return true;
+  }
+  return writeOutputVia(
+      path, inputs,
+      [&text, &path](const std::string& temporary, std::string& err) {
+        const int fd = ::open(temporary.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+        if (fd < 0) {
+          err = "cannot write '" + path + "': " + errnoText();
+          return false;
+        }
+        if (!writeAll(fd, text.data(), text.size()) || ::fsync(fd) != 0) {
+          err = "cannot write '" + path + "': " + errnoText();
+          ::close(fd);
+          return false;
+        }
+        if (::close(fd) != 0) {
+          err = "cannot write '" + path + "': " + errnoText();
+          return false;
+        }
+        return true;
+      },
+      error);
+}
+
+bool writeOutputVia(const std::string& path, const std::vector<std::string>& inputs,
+                    const std::function<bool(const std::string& temporary, std::string& error)>& writer,
+                    std::string& error) {
+  std::error_code ec;
+  // A symbolic link is followed: its target is the output (the link itself stays).
+  fs::path target = fs::weakly_canonical(fs::path(path), ec);
+  if (ec) target = fs::absolute(fs::path(path), ec);
+  struct stat st {};
+  const bool exists = ::stat(target.c_str(), &st) == 0;
+  for (const std::string& in : inputs) {
+    if (in.empty() || in == "-") continue;
+    if (exists && fs::equivalent(target, in, ec)) {
+      error = "refusing to write the output over the input file '" + in + "'";
+      return false;
+    }
+  }
+  if (exists && !S_ISREG(st.st_mode)) {
+    if (S_ISDIR(st.st_mode)) {
+      error = "'" + path + "' is a folder: give a file name for the output";
+      return false;
+    }
+    if (!S_ISCHR(st.st_mode) && !S_ISFIFO(st.st_mode)) {
+      error = "'" + path + "' is not a regular file, a character device or a pipe: refusing to write to it";
+      return false;
+    }
+    // A device or a pipe is written through, never replaced (renaming over /dev/null as root
+    // would destroy the device node).
+    const std::optional<std::string> temporary = makeTemporary(fs::temp_directory_path(ec), target, error);
+    if (!temporary) return false;
+    bool ok = writer(*temporary, error);
+    if (ok) {
+      const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+      ok = fd >= 0 && copyInto(*temporary, fd);
+      if (!ok) error = "cannot write '" + path + "': " + errnoText();
+      if (fd >= 0 && ::close(fd) != 0 && ok) {
+        error = "cannot write '" + path + "': " + errnoText();
+        ok = false;
+      }
+    }
+    std::remove(temporary->c_str());
+    return ok;
+  }
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  const std::optional<std::string> temporary = makeTemporary(dir, target, error);
+  if (!temporary) return false;
+  // The new file keeps the permissions of the one it replaces; a new one gets the umask's.
+  mode_t mode = 0;
+  if (exists) {
+    mode = st.st_mode & 07777;
+  } else {
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    mode = 0666 & ~mask;
+  }
+  ::chmod(temporary->c_str(), mode);
+  if (!writer(*temporary, error)) {
+    std::remove(temporary->c_str());
+    return false;
+  }
+  if (std::rename(temporary->c_str(), target.c_str()) != 0) {
+    error = "cannot write '" + path + "': " + errnoText();
+    std::remove(temporary->c_str());
+    return false;
+  }
+  return true;
+}
+
+bool finishStandardOutput(std::string& error) {
+  std::cout.flush();
+  if (!std::cout || std::fflush(stdout) != 0) {
+    error = "cannot write to standard output: " + errnoText();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace kerf::cli

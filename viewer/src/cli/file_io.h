@@ -1,0 +1,43 @@
+// Reading inputs and writing outputs for the kerf program: the one writer every command uses.
+//
+// Outputs never replace an input (any of them: the program, the --upper program, a profile),
+// never replace what is not a regular file, and are written atomically:
+//   - "-" is standard output; a failed write there is an error;
+//   - a symbolic link is followed: the file it names is written, the link stays;
+//   - a character device or a FIFO (/dev/null, a pipe) is written through, never renamed over;
+//   - a folder, a block device or a socket is refused;
+//   - a regular file, or a new one, is written to a temporary file in the same folder (keeping
+//     the output's extension, which some writers insist on) and renamed over it, keeping the
+//     permissions of the file it replaces.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kerf::cli {
+
+/// The whole file ("-": standard input), or nothing with a message in error (missing, unreadable,
+/// a folder, too big).
+std::optional<std::string> readTextFile(const std::string& path, std::size_t maxBytes, std::string& error);
+
+/// The name a file is shown under: "<stdin>" for "-".
+std::string displayName(const std::string& path);
+
+/// Writes text to path ("-" is standard output). Refuses to write over any of `inputs`.
+bool writeOutput(const std::string& path, const std::vector<std::string>& inputs, const std::string& text,
+                 std::string& error);
+
+/// Writes path through `writer`, which must create the file at the temporary path it is given.
+/// Refuses to write over any of `inputs`; no "-".
+bool writeOutputVia(const std::string& path, const std::vector<std::string>& inputs,
+                    const std::function<bool(const std::string& temporary, std::string& error)>& writer,
+                    std::string& error);
+
+/// Flushes standard output; false with a message when something written there was lost (a full
+/// disk, a closed pipe).
+bool finishStandardOutput(std::string& error);
+
+}  // namespace kerf::cli

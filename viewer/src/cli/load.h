@@ -1,0 +1,40 @@
+// Reading a program for a command: the files (the program, --upper, --machine FILE) into the
+// pipeline, and the diagnostics onto the terminal.
+#pragma once
+
+#include "options.h"
+
+#include "kerf/converter/pipeline.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kerf::cli {
+
+constexpr int kExitOk = 0;      ///< no errors (warnings and notes allowed)
+constexpr int kExitErrors = 1;  ///< the program has errors
+constexpr int kExitUsage = 2;   ///< a usage or file problem
+
+struct Loaded {
+  converter::Pipeline pipeline;
+  std::vector<std::string> inputs;  ///< every file read: an output may replace none of them
+};
+
+/// Reads `file` (with --upper and --machine) and runs the pipeline. Nothing, with the reason
+/// printed, when a file cannot be read or the machine profile is wrong (exit 2).
+std::optional<Loaded> load(const CommonOptions& options, const std::string& file);
+
+/// The first `cap` diagnostics, with every one still counted.
+converter::Diagnostics capped(const converter::Diagnostics& all, std::size_t cap);
+
+/// The diagnostics on standard error, compiler style, at most options.checks.maxDiagnostics.
+void printDiagnostics(const converter::Diagnostics& diags, const CommonOptions& options);
+
+/// 1 when the program has errors, else 0.
+int verdictExit(const converter::Pipeline& pipeline);
+
+/// Prints "kerf: error: message" on standard error.
+void reportError(const std::string& message);
+
+}  // namespace kerf::cli

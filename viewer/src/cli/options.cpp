@@ -1,0 +1,121 @@
+#include "options.h"
+
+#include "file_io.h"
+#include "kerf/converter/dialect.h"
+#include "kerf/converter/machine.h"
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+
+namespace kerf::cli {
+
+geometry::Sampling SamplingOptions::sampling() const {
+  if (tolerance) return geometry::Sampling::tolerance(*tolerance);
+  return geometry::Sampling::step(step.value_or(kDefaultStep));
+}
+
+std::vector<std::string> builtinMachineNames() {
+  std::vector<std::string> names;
+  for (const converter::MachineProfile& m : converter::builtinMachines()) names.push_back(m.name);
+  return names;
+}
+
+void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
+  // Input.
+  if (manyFiles)
+    cmd.add_option("files", o.input.files, "NC programs ('-' reads standard input)")->required();
+  else
+    cmd.add_option("file", o.input.files, "NC program ('-' reads standard input)")->required()->expected(1);
+  cmd.add_option("--upper", o.input.upper, "two-file input: the upper contour's program, paired move by move")
+      ->group("Input");
+  cmd.add_option("--machine", o.input.machine,
+                 "machine profile: a built-in name (kerf machines lists them) or a profile file; "
+                 "default: detected from the program")
+      ->group("Input");
+
+  // Reading: what the words mean.
+  const std::string reading = "Reading (default: the machine profile's, else the program's evidence)";
+  cmd.add_option("--integer-unit", o.reading.integerUnit, "unit of coordinates written without a decimal point")
+      ->check(CLI::IsMember({"mm", "um"}))
+      ->group(reading);
+  cmd.add_option("--arc-centre", o.reading.arcCentre, "how I J give an arc's centre")
+      ->check(CLI::IsMember({"incremental", "reversed", "absolute"}))
+      ->group(reading);
+  cmd.add_option("--offset", o.reading.offset,
+                 "wire offset in mm for G41/G42 without D or H (recorded, not applied yet)")
+      ->group(reading);
+  cmd.add_option("--dialect", o.reading.dialect, "4-axis dialect (docs/taper.md); auto: detected from the words")
+      ->check(CLI::IsMember({"auto", "plain", "xyuv-abs", "xyuv-rel", "xyuv-linuxcnc", "sodick-colon", "taper-angle"}))
+      ->group(reading);
+  cmd.add_option("--upper-axes", o.reading.upperAxes,
+                 "names of the second plane's axes: uv, or uz (some hot-wire firmware)")
+      ->check(CLI::IsMember({"uv", "uz"}))
+      ->group(reading);
+  cmd.add_option("--lower-z", o.reading.lowerZ, "z of the lower contour's plane, mm (default 0)")->group(reading);
+  auto* upperZ = cmd.add_option("--upper-z", o.reading.upperZ, "z of the upper contour's plane, mm")->group(reading);
+  auto* thickness = cmd.add_option("--thickness", o.reading.thickness, "upper minus lower plane, mm")
+                        ->check(CLI::PositiveNumber)
+                        ->group(reading);
+  upperZ->excludes(thickness);
+  cmd.add_option("--program-z", o.reading.programZ, "z of the programmed contour (taper-angle, xyuv-rel), mm")
+      ->group(reading);
+
+  // Checks.
+  const std::string checks = "Checks (default: the machine profile's limits)";
+  cmd.add_option("--max-taper", o.checks.maxTaper, "the machine's largest wire slope, degrees (generic: 30)")
+      ->check(CLI::Range(0.0, 89.0))
+      ->group(checks);
+  cmd.add_option("--uv-range", o.checks.uvRange, "largest U/V travel from the lower guide, mm")
+      ->check(CLI::PositiveNumber)
+      ->group(checks);
+  cmd.add_option("--max-diagnostics", o.checks.maxDiagnostics, "show at most this many diagnostics (default 50)")
+      ->check(CLI::Range(1, 100000))
+      ->group(checks);
+
+  // Sampling of arcs.
+  auto* step = cmd.add_option("--step", o.sampling.step, "arc interpolation step k in mm (chord length; default 0.1)")
+                   ->check(CLI::PositiveNumber)
+                   ->group("Sampling");
+  auto* tol = cmd.add_option("--tolerance", o.sampling.tolerance,
+                             "arc chord tolerance in mm (max deviation), instead of --step")
+                  ->check(CLI::PositiveNumber)
+                  ->group("Sampling");
+  step->excludes(tol);
+}
+
+bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, std::string& error) {
+  using namespace converter;
+  ReadOptions& r = out.read;
+  if (o.input.machine) {
+    if (findBuiltinMachine(*o.input.machine)) {
+      r.machine = *o.input.machine;
+    } else {
+      std::error_code ec;
+      if (!std::filesystem::exists(*o.input.machine, ec)) {
+        std::string names;
+        for (const std::string& n : builtinMachineNames()) names += (names.empty() ? "" : ", ") + n;
+        error = "--machine '" + *o.input.machine + "' is neither a built-in profile (" + names + ") nor a file";
+        return false;
+      }
+      std::optional<std::string> text = readTextFile(*o.input.machine, 1 << 20, error);
+      if (!text) return false;
+      r.machineFile = SourceText{*o.input.machine, std::move(*text)};
+    }
+  }
+  if (o.reading.integerUnit)
+    r.integerUnit = *o.reading.integerUnit == "um" ? IntegerUnit::Micrometre : IntegerUnit::Millimetre;
+  if (o.reading.arcCentre) r.arcCentre = parseArcCentre(*o.reading.arcCentre);
+  r.dialect = parseDialect(o.reading.dialect);
+  r.lowerZ = o.reading.lowerZ;
+  r.upperZ = o.reading.upperZ;
+  r.thickness = o.reading.thickness;
+  r.programZ = o.reading.programZ;
+  r.wireOffset = o.reading.offset;
+  if (o.reading.upperAxes) r.upperAxesUZ = *o.reading.upperAxes == "uz";
+  out.check.maxTaperDegrees = o.checks.maxTaper;
+  out.check.uvRange = o.checks.uvRange;
+  return true;
+}
+
+}  // namespace kerf::cli

@@ -1,0 +1,68 @@
+// The options of the kerf program, one group per concern, each declared once and added to the
+// commands that take it; every default lives here, in the member initialisers.
+#pragma once
+
+#include "kerf/converter/pipeline.h"
+#include "kerf/geometry/tessellation.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace kerf::cli {
+
+/// The programs to read.
+struct InputOptions {
+  std::vector<std::string> files;      ///< "-" is standard input
+  std::optional<std::string> upper;    ///< --upper: two-file input
+  std::optional<std::string> machine;  ///< --machine NAME or FILE
+};
+
+/// What the program means (docs/machines.md: options first, then the profile, then the evidence).
+struct ReadingOptions {
+  std::optional<std::string> integerUnit;  ///< mm | um
+  std::optional<std::string> arcCentre;    ///< incremental | reversed | absolute
+  std::optional<double> offset;            ///< --offset, mm
+  std::string dialect = "auto";
+  std::optional<double> lowerZ, upperZ, thickness, programZ;
+  std::optional<std::string> upperAxes;  ///< uv | uz
+};
+
+/// The checks' settings (defaults: the machine profile's).
+struct CheckOptions {
+  std::optional<double> maxTaper;  ///< degrees
+  std::optional<double> uvRange;   ///< mm
+  std::size_t maxDiagnostics = 50;
+};
+
+struct SamplingOptions {
+  static constexpr double kDefaultStep = 0.1;  ///< mm: the seed's finest interpolation step
+  std::optional<double> step;
+  std::optional<double> tolerance;
+  [[nodiscard]] geometry::Sampling sampling() const;
+};
+
+/// What every command that reads a program takes.
+struct CommonOptions {
+  InputOptions input;
+  ReadingOptions reading;
+  CheckOptions checks;
+  SamplingOptions sampling;
+};
+
+/// Adds the input, reading, check and sampling groups to a command. manyFiles: the command takes
+/// several programs (kerf check).
+void addCommonOptions(CLI::App& command, CommonOptions& options, bool manyFiles);
+
+/// The pipeline's options from the command line, reading --machine FILE when it names a file.
+/// False with a message when a file cannot be read.
+bool pipelineOptions(const CommonOptions& options, converter::PipelineOptions& out, std::string& error);
+
+/// The machine profile names `--machine` accepts besides a file.
+std::vector<std::string> builtinMachineNames();
+
+}  // namespace kerf::cli

@@ -230,6 +230,7 @@ class LineParser {
     splitAt_ = -1;
     colon_ = false;
     sawCoordinate_ = false;
+    sawMotion_ = false;
     homing_ = false;
     while (i < end) {
       const char c = text_[i];
@@ -549,9 +550,11 @@ class LineParser {
       error(block, Code::NumberOutOfRange, start, stop - start, "number is out of range (limit 1e9)");
       return stop;
     }
-    // A second motion word after a coordinate opens the upper side (`G2 X Y I J G1 U V`, cnc3).
+    // A second motion word after a coordinate opens the upper side (`G2 X Y I J G1 U V`, cnc3); a
+    // single motion word may stand anywhere (`X10 Y5 G1`).
     const bool motionG = letter == 'G' && n.value >= 0 && n.value <= 3 && n.value == std::floor(n.value);
-    if (splitAt_ < 0 && motionG && sawCoordinate_) splitAt_ = static_cast<int>(pending_.size());
+    if (splitAt_ < 0 && motionG && sawCoordinate_ && sawMotion_) splitAt_ = static_cast<int>(pending_.size());
+    sawMotion_ |= motionG;
     if (letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'U' ||
         letter == 'V')
       sawCoordinate_ = true;
@@ -637,6 +640,7 @@ class LineParser {
   int splitAt_ = -1;            ///< index in pending_ where a positional upper side starts
   bool colon_ = false;          ///< that split was a ':'
   bool sawCoordinate_ = false;  ///< X Y I J R U V seen in this block
+  bool sawMotion_ = false;      ///< a motion word (G00-G03) seen in this block
   bool homing_ = false;         ///< G28 or G30 seen in this block: bare axis letters allowed
   bool hasUpper_ = false;       ///< assignSides set upperFrom for this block
   int largestPending_ = -1;     ///< pending_ index of this block's largest integer length word

@@ -1,6 +1,7 @@
 // Sections: 1. number formatting  2. check (text, JSON)  3. explain (text, JSON)
 #include "kerf/converter/report.h"
 
+#include "kerf/converter/machine.h"
 #include "kerf/converter/points.h"
 #include "kerf/geometry/arc.h"
 
@@ -115,6 +116,8 @@ std::string formatDiagnosticsText(const Diagnostics& diags) {
 std::string formatSummaryText(const std::string& file, const Summary& s, const Diagnostics& diags) {
   std::string out;
   out += file + ": " + plural(diags.errorCount(), "error") + ", " + plural(diags.warningCount(), "warning") + "\n";
+  out += "  read for the " + s.reading.machine + " machine: integers in " + integerUnitName(s.reading.integerUnit) +
+         ", I J " + arcCentreName(s.reading.arcCentre) + "\n";
   out += "  blocks " + std::to_string(s.blocks) + ", moves " + std::to_string(s.moves) + " (" +
          std::to_string(s.cutMoves) + " cut: " + plural(s.lines, "line") + ", " + plural(s.arcs, "arc") + "; " +
          std::to_string(s.rapidMoves) + " rapid)\n";
@@ -166,6 +169,10 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
   }
   j["diagnostics"] = std::move(list);
   json sum;
+  sum["machine"] = s.reading.machine;
+  sum["integer_unit"] = integerUnitName(s.reading.integerUnit);
+  sum["arc_centre"] = arcCentreName(s.reading.arcCentre);
+  sum["dialect"] = dialectName(s.dialect);
   sum["blocks"] = s.blocks;
   sum["moves"] = s.moves;
   sum["cut_moves"] = s.cutMoves;

@@ -67,6 +67,8 @@ TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) 
 Summary summarize(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling,
                   const SurfaceMeasures* measures) {
   Summary s;
+  s.reading = toolpath.reading;
+  s.dialect = toolpath.dialect;
   s.blocks = program.blocks.size();
   s.moves = toolpath.moves.size();
   for (const Move& m : toolpath.moves) {

@@ -92,16 +92,18 @@ bool Interpreter::checkBlock(const Block& block, const BlockWords& bw, const Blo
                      "Sodick writes G80 X+ (contact sensing); read such a program with --machine sodick");
         return false;
       }
-  // The second plane named U Z: ask, do not guess.
-  if (!warnedUz_ && !machine_.upperAxesUZ && !programHasV_) {
+  // The second plane named U Z: ask, do not guess. Said once; every such block is left unread,
+  // so no contour half made of guesses follows.
+  if (!machine_.upperAxesUZ && !programHasV_) {
     const Word* u = bw.has('U') ? bw['U'] : ubw['U'];
     const Word* z = bw['Z'];
-    if (u && z && !plan.setPosition) {
+    if (u && z) {
+      if (!warnedUz_)
+        diags_.error(Code::UpperAxesNamedUZ, src_, z->span(),
+                     "Z beside U and no V anywhere in the program: the second plane's axes may be named U Z",
+                     "if this machine names them so, read Z as V with --upper-axes uz (or a machine profile with "
+                     "upper_axes = uz)");
       warnedUz_ = true;
-      diags_.error(Code::UpperAxesNamedUZ, src_, z->span(),
-                   "Z beside U and no V anywhere in the program: the second plane's axes may be named U Z",
-                   "if this machine names them so, read Z as V with --upper-axes uz (or a machine profile with "
-                   "upper_axes = uz)");
       return false;
     }
   }

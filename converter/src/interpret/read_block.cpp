@@ -104,7 +104,9 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
     bw.m[bw.mCount++] = &w;
     return;
   }
-  if (profileMayName(w.letter)) {
+  // In a taper-angle program A and T are the angle (execute.cpp), whatever else a profile says.
+  const bool taperAngleWord = (w.letter == 'A' || w.letter == 'T') && dialect_ == Dialect::TaperAngle;
+  if (profileMayName(w.letter) && !taperAngleWord) {
     const KnownCode* k = w.isNumber() ? machine_.find(codeKey(w.letter, w.value)) : nullptr;
     if (!k) k = machine_.find(std::string(1, w.letter));
     if (k) {

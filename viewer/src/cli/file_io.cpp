@@ -156,9 +156,14 @@ bool writeOutputVia(const std::string& path, const std::vector<std::string>& inp
                     const std::function<bool(const std::string& temporary, std::string& error)>& writer,
                     std::string& error) {
   std::error_code ec;
-  // A symbolic link is followed: its target is the output (the link itself stays).
-  fs::path target = fs::weakly_canonical(fs::path(path), ec);
-  if (ec) target = fs::absolute(fs::path(path), ec);
+  // A symbolic link is followed, even one whose file does not exist yet: its target is the
+  // output, and the link itself stays.
+  fs::path target(path);
+  for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(target, ec)); ++hops) {
+    const fs::path next = fs::read_symlink(target, ec);
+    if (ec) break;
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
   struct stat st {};
   const bool exists = ::stat(target.c_str(), &st) == 0;
   for (const std::string& in : inputs) {

@@ -38,6 +38,8 @@ struct TaperSummary {
 };
 
 struct Summary {
+  Reading reading;                   ///< machine profile and conventions the program was read with
+  Dialect dialect = Dialect::Plain;  ///< how the upper contour was given
   std::size_t blocks = 0;
   std::size_t moves = 0;
   std::size_t cutMoves = 0;

@@ -86,10 +86,11 @@ std::string normaliseKey(std::string_view raw) {
   if (key[0] == 'Q' &&
       std::all_of(key.begin() + 1, key.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); }))
     return key;  // a Sodick macro call name
-  char* end = nullptr;
   const std::string number = key.substr(1);
-  const double v = std::strtod(number.c_str(), &end);
-  if (end != number.c_str() + number.size() || v < 0) return {};
+  if (number.find_first_not_of("0123456789.") != std::string::npos || number.front() == '.' ||
+      std::count(number.begin(), number.end(), '.') > 1)
+    return {};
+  const double v = std::strtod(number.c_str(), nullptr);
   const long tenths = std::lround(v * 10);
   if (std::abs(v * 10 - static_cast<double>(tenths)) > 1e-9) return {};
   std::string out(1, key[0]);

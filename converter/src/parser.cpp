@@ -257,7 +257,7 @@ class LineParser {
       }
       if (c == ';') {  // end of block; the rest of the line is a comment, or the next block
         blockEnd = i;
-        if (options_.semicolonEndsBlock) next = i + 1;
+        if (options_.semicolonEndsBlock && startsBlock(i + 1, end)) next = i + 1;
         break;
       }
       if (c == ':') {  // Sodick: the lower contour before, the upper after (docs/taper.md)
@@ -306,6 +306,18 @@ class LineParser {
     if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) program_.blocks.push_back(block);
   }
 
+  /// Does a block start after a ';' that ends blocks? Only words, a comment or '/' do; other text
+  /// after ';' (`; a remark`) stays a comment, as on controls where ';' starts one.
+  bool startsBlock(std::size_t i, std::size_t end) const {
+    while (i < end && isBlank(text_[i])) ++i;
+    if (i >= end) return false;
+    if (text_[i] == '(' || text_[i] == '/' || text_[i] == '#') return true;
+    if (!isLetter(text_[i])) return false;
+    std::size_t k = i + 1;
+    while (k < end && isBlank(text_[k])) ++k;  // "X 10." is a word
+    return k < end && (isDigit(text_[k]) || text_[k] == '-' || text_[k] == '+' || text_[k] == '.');
+  }
+
   /// Where the block that runs from `from` ends: a ';' (then `next` is after it when ';' ends
   /// blocks, else the end of the line) or the end of the line.
   std::size_t findBlockEnd(std::size_t from, std::size_t end, std::size_t& next) const {
@@ -317,7 +329,7 @@ class LineParser {
         continue;
       }
       if (text_[k] == ';') {
-        next = options_.semicolonEndsBlock ? k + 1 : end;
+        next = options_.semicolonEndsBlock && startsBlock(k + 1, end) ? k + 1 : end;
         return k;
       }
     }

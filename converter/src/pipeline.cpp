@@ -182,8 +182,9 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : machine.uvRange;
   if (out.program.blocks.empty()) {
-    out.diags.error(Code::NothingCut, out.source.get(), SourceSpan::wholeFile(),
-                    "the file holds no program (no block of words): nothing to cut");
+    if (!out.diags.hasErrors())  // with errors, those say why nothing was read
+      out.diags.error(Code::NothingCut, out.source.get(), SourceSpan::wholeFile(),
+                      "the file holds no program (no block of words): nothing to cut");
   } else {
     out.measures = measureSurface(out.toolpath);
     checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);

@@ -1,7 +1,7 @@
 // tests/bad/*.nc: each file's first line is `; LINE:COL: error: MESSAGE [CODE]`, the first error
-// `kerf check` must report. One gtest per file.
-#include "kerf/converter/analysis.h"
-#include "kerf/converter/checks.h"
+// `kerf check` must report. One gtest per file, through the pipeline every command takes (the same
+// files also run through the kerf program: cli.bad.*).
+#include "kerf/converter/pipeline.h"
 
 #include "data_test_support.h"
 
@@ -19,15 +19,12 @@ class BadCorpusTest : public testing::Test {
     const std::string firstLine = text.substr(0, text.find('\n'));
     ASSERT_EQ(firstLine.rfind("; ", 0), 0u) << "first line must hold the expected diagnostic";
     const std::string expected = firstLine.substr(2);
-    SourceFile src(file_.filename().string(), text);
-    Diagnostics diags(100);
-    const Analysis a = analyse(src, {}, diags);
-    checkToolpath(a.toolpath, &src, {}, diags);
-    diags.sortByPosition();
-    ASSERT_TRUE(diags.hasErrors()) << "no error reported";
-    for (const Diagnostic& d : diags.all()) {
+    const Pipeline p = runPipeline({file_.filename().string(), text}, {});
+    ASSERT_TRUE(p.diags.hasErrors()) << "no error reported";
+    for (const Diagnostic& d : p.diags.all()) {
       if (d.severity != Severity::Error) continue;
-      const SourceLocation loc = src.locate(d.span.offset);
+      ASSERT_FALSE(d.span.isWholeFile()) << "the first error has no place in the file: " << d.message;
+      const SourceLocation loc = p.source->locate(d.span.offset);
       const std::string got = std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": error: " + d.message +
                               " [" + codeName(d.code) + "]";
       EXPECT_EQ(got, expected);

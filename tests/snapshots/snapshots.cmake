@@ -17,10 +17,10 @@ kerf_snapshot_test(NAME taper_punch_top ARGS samples/taper_punch_2deg.nc ${s} --
 kerf_snapshot_test(NAME taper_punch_slope ARGS samples/taper_punch_2deg.nc ${s} --color-by slope)
 kerf_snapshot_test(NAME circle_under_square_slope ARGS samples/circle_under_square.nc ${s} --color-by slope --view front)
 # Findings highlighted: a 2-axis crossing, and taper faults.
-kerf_snapshot_test(NAME path_crosses_highlight ARGS tests/bad/path_crosses_itself.nc ${s} --highlight-findings --view top)
-kerf_snapshot_test(NAME too_steep_highlight ARGS samples/bad/too_steep.nc ${s} --highlight-findings --color-by slope)
-kerf_snapshot_test(NAME surface_meets_itself_highlight ARGS samples/bad/surface_meets_itself.nc ${s} --highlight-findings)
-kerf_snapshot_test(NAME wire_crossing_highlight ARGS samples/bad/wire_crossing.nc ${s} --highlight-findings)
+kerf_snapshot_test(NAME path_crosses_highlight EXIT 1 ARGS tests/bad/path_crosses_itself.nc ${s} --highlight-findings --view top)
+kerf_snapshot_test(NAME too_steep_highlight EXIT 1 ARGS samples/bad/too_steep.nc ${s} --highlight-findings --color-by slope)
+kerf_snapshot_test(NAME surface_meets_itself_highlight EXIT 1 ARGS samples/bad/surface_meets_itself.nc ${s} --highlight-findings)
+kerf_snapshot_test(NAME wire_crossing_highlight EXIT 1 ARGS samples/bad/wire_crossing.nc ${s} --highlight-findings)
 # The headless back ends must agree: the same picture through EGL.
 kerf_snapshot_test(NAME taper_punch_iso_egl ARGS samples/taper_punch_2deg.nc ${s} --backend egl)
 

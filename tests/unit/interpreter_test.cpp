@@ -216,3 +216,50 @@ TEST(checks, open_path_is_a_warning) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(checks, a_touch_that_closes_the_contour_is_a_note_however_the_blocks_are_split) {
+  // IGK1-style: the last block closes the contour at the lead-in's end and runs on down the
+  // lead-in. Split at that point it meets itself only at shared vertices: the same verdict.
+  const std::string whole = "G92 X0 Y0\nG01 Y10.\nX-20.\nY20.\nX0\nY0\nM02\n";
+  const std::string split = "G92 X0 Y0\nG01 Y10.\nX-20.\nY20.\nX0\nY10.\nY0\nM02\n";
+  auto a = run(whole, {}, true), b = run(split, {}, true);
+  EXPECT_FALSE(a->diags.hasErrors()) << kerf::test::dump(a->diags);
+  EXPECT_FALSE(b->diags.hasErrors()) << kerf::test::dump(b->diags);
+  EXPECT_TRUE(a->hasCode(Code::LoopClosesInsideMove));
+  // A loop closing on the lead-in and ending there (the cut ends at the closure).
+  auto c = run("G92 X0 Y0\nG01 X10. Y0\nX10. Y5.\nX5.\nY0\nM02\n", {}, true);
+  EXPECT_FALSE(c->diags.hasErrors()) << kerf::test::dump(c->diags);
+  EXPECT_TRUE(c->hasCode(Code::LoopClosesInsideMove));
+  // A pinch: the path touches itself and goes on cutting something else. A true touch: an error.
+  auto pinch = run("G92 X0 Y0\nG01 X10. Y0\nX10. Y10.\nX5. Y0\nX0 Y10.\nX0 Y0\nM02\n", {}, true);
+  EXPECT_TRUE(pinch->hasCode(Code::PathTouchesItself));
+  EXPECT_FALSE(pinch->hasCode(Code::LoopClosesInsideMove));
+}
+
+TEST(interpreter, a_bare_g92_makes_the_current_position_the_origin_on_robofil) {
+  InterpreterOptions io;
+  io.machine = findBuiltinMachine("robofil");
+  auto r = run("G01 X5. Y2.\nG92\nG01 X1. Y0\nM02\n", io);
+  EXPECT_FALSE(r->diags.hasErrors()) << kerf::test::dump(r->diags);
+  ASSERT_EQ(r->path().moves.size(), 2u);
+  // X1 Y0 is now 1 mm right of (5, 2).
+  EXPECT_NEAR((r->path().moves[1].lower.end - kerf::geometry::Vec2(6, 2)).norm(), 0.0, 1e-12);
+}
+
+TEST(interpreter, the_polar_section_is_one_error_and_what_follows_is_said_once) {
+  // The section's blocks are not read (one error); where it left the wire is unknown, so the cut
+  // after it cannot be checked (one more error, for every such move together).
+  auto r = run("G92 X0 Y0\nG01 X10.\nG112\nG1 X5. C1.\nG3 X4. C2. R1.\nG113\nG01 X20.\nX30.\nM30\n");
+  std::vector<Code> errors;
+  for (const auto& d : r->diags.all())
+    if (d.severity == Severity::Error) errors.push_back(d.code);
+  EXPECT_EQ(errors, (std::vector<Code>{Code::PolarNotSupported, Code::PositionUnknown})) << kerf::test::dump(r->diags);
+  EXPECT_EQ(r->path().moves.size(), 1u);
+  // A polar section that ends the program leaves nothing to say after it.
+  auto end = run("G92 X0 Y0\nG01 X10.\nG112\nG1 X5. C1.\nG113\nM30\n");
+  EXPECT_FALSE(end->hasCode(Code::PositionUnknown)) << kerf::test::dump(end->diags);
+}
+
+}  // namespace

@@ -180,3 +180,134 @@ TEST(parser, plane_heights_outside_the_words) {
 }
 
 }  // namespace
+
+namespace {
+
+using kerf::converter::BlockKind;
+using kerf::converter::ParseOptions;
+using kerf::converter::WordValue;
+
+std::string lettersOf(const Program& p, const kerf::converter::Block& b, bool upperSide) {
+  std::string out;
+  for (const auto& w : upperSide ? p.upperWordsOf(b) : p.lowerWordsOf(b)) out += w.letter;
+  return out;
+}
+
+}  // namespace
+
+TEST(parser, lines_end_at_lf_cr_lf_or_a_lone_cr) {
+  for (const char* text :
+       {"G1 X1.\nG1 Y2.\nM2\n", "G1 X1.\r\nG1 Y2.\r\nM2\r\n", "G1 X1.\rG1 Y2.\rM2\r", "G1 X1.\nG1 Y2.\nM2"}) {
+    SourceFile src("p.nc", text);
+    Diagnostics d;
+    const Program p = parse(src, d);
+    EXPECT_FALSE(d.hasErrors());
+    ASSERT_EQ(p.blocks.size(), 3u) << text;
+    EXPECT_EQ(p.blocks[2].line, 3u);
+    EXPECT_EQ(src.lineText(2), "G1 Y2.");
+  }
+}
+
+TEST(parser, a_byte_order_mark_is_not_part_of_the_program) {
+  SourceFile src("p.nc", "\xEF\xBB\xBFG1 X1.\nM2\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_FALSE(d.hasErrors());
+  ASSERT_EQ(p.blocks.size(), 2u);
+  EXPECT_EQ(p.words.front().letter, 'G');
+  EXPECT_EQ(src.locate(p.words.front().offset).column, 4u);  // columns still count the file's bytes
+}
+
+TEST(parser, single_motion_blocks_take_any_word_order) {
+  // RS274 gives word order no meaning: U V belong to the upper side wherever they stand; a second
+  // I J goes with them (cnc3's `G2 X Y I J U V I J`).
+  SourceFile src("p.nc", "X10. U11. Y5. V6. G1\nG2 X1. Y0 I1. J0 U2. V0 I2. J0\nG1 X10. Y15. G2 U15. V-5. R10.\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_FALSE(d.hasErrors());
+  ASSERT_EQ(p.blocks.size(), 3u);
+  EXPECT_EQ(lettersOf(p, p.blocks[0], false), "XYG");
+  EXPECT_EQ(lettersOf(p, p.blocks[0], true), "UV");
+  EXPECT_FALSE(p.blocks[0].twoMotions);
+  EXPECT_EQ(lettersOf(p, p.blocks[1], false), "GXYIJ");
+  EXPECT_EQ(lettersOf(p, p.blocks[1], true), "UVIJ");
+  EXPECT_TRUE(p.blocks[2].twoMotions);
+  EXPECT_EQ(lettersOf(p, p.blocks[2], true), "GUVR");
+}
+
+TEST(parser, values_known_only_at_the_machine) {
+  SourceFile src("p.nc", "G28 X Y U V\nG80 Y+\nG00 XH111 + H112 Y-H113\nG01 X#100 Y[#1 + 2.5]\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_FALSE(d.hasErrors()) << kerf::test::dump(d);
+  auto kindOf = [&](std::size_t block, char letter) {
+    for (const auto& w : p.wordsOf(p.blocks[block]))
+      if (w.letter == letter) return w.kind;
+    return WordValue::Number;
+  };
+  EXPECT_EQ(kindOf(0, 'X'), WordValue::Bare);
+  EXPECT_EQ(kindOf(0, 'V'), WordValue::Bare);
+  EXPECT_EQ(kindOf(1, 'Y'), WordValue::Direction);
+  EXPECT_EQ(kindOf(2, 'X'), WordValue::Register);
+  EXPECT_EQ(kindOf(2, 'Y'), WordValue::Register);
+  EXPECT_EQ(kindOf(3, 'X'), WordValue::Macro);
+  EXPECT_EQ(kindOf(3, 'Y'), WordValue::Macro);
+  // Outside G28 / G30 a letter alone is still an error.
+  SourceFile bare("b.nc", "G01 X Y\n");
+  Diagnostics e;
+  parse(bare, e);
+  ASSERT_TRUE(e.hasErrors());
+  EXPECT_EQ(e.all()[0].code, Code::ExpectedNumber);
+}
+
+TEST(parser, sodick_calls_and_macro_b_are_statements_not_syntax_errors) {
+  SourceFile src("p.nc",
+                 "QAIC(2,1,0.1250,001.0);\nQ99()LH114;\n#100 = 0\nWHILE[#100 LT 2]DO1\n#100 = #100 + 1\nEND1\n"
+                 "IF [#1 EQ 0] GOTO 10\nG01 X1.\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  ASSERT_EQ(p.blocks.size(), 8u);
+  EXPECT_EQ(p.blocks[0].kind, BlockKind::MacroCall);
+  EXPECT_EQ(p.blocks[1].kind, BlockKind::MacroCall);
+  for (int k = 2; k < 7; ++k) EXPECT_EQ(p.blocks[static_cast<std::size_t>(k)].kind, BlockKind::MacroB) << k;
+  EXPECT_EQ(p.blocks[7].kind, BlockKind::Words);
+  // One diagnostic for all five macro lines, at the first.
+  ASSERT_EQ(d.errorCount(), 1u);
+  EXPECT_EQ(d.all()[0].code, Code::MacroStatement);
+  EXPECT_EQ(src.locate(d.all()[0].span.offset).line, 3u);
+  EXPECT_NE(d.all()[0].message.find("5 macro lines, on lines 3 to 7"), std::string::npos) << d.all()[0].message;
+}
+
+TEST(parser, a_decimal_comma_says_which_number_it_probably_means) {
+  SourceFile src("p.nc", "G01 X10. F12,9285\n");
+  Diagnostics d;
+  parse(src, d);
+  ASSERT_EQ(d.errorCount(), 1u);
+  EXPECT_EQ(d.all()[0].code, Code::DecimalComma);
+  EXPECT_EQ(d.all()[0].help, "did you mean F12.9285?");
+}
+
+TEST(parser, a_semicolon_ends_the_block_where_the_profile_says_so) {
+  const char* text = "G01 X1.; G01 X2.;\nG01 X3.; a remark\n";
+  SourceFile src("p.nc", text);
+  Diagnostics d;
+  EXPECT_EQ(parse(src, d).blocks.size(), 2u);  // ';' starts a comment
+  ParseOptions sodick;
+  sodick.semicolonEndsBlock = true;
+  Diagnostics e;
+  const Program p = kerf::converter::parseProgram(src, e, sodick);
+  EXPECT_FALSE(e.hasErrors()) << kerf::test::dump(e);
+  EXPECT_EQ(p.blocks.size(), 3u);  // ';' ends blocks; a remark after it stays a remark
+}
+
+TEST(parser, the_second_plane_named_u_z_is_read_as_u_v_only_when_asked) {
+  SourceFile src("p.nc", "G01 X1. U2. Y3. Z4.\n");
+  ParseOptions uz;
+  uz.upperAxesUZ = true;
+  Diagnostics d;
+  const Program p = kerf::converter::parseProgram(src, d, uz);
+  EXPECT_EQ(lettersOf(p, p.blocks[0], true), "UV");
+  Diagnostics e;
+  const Program plain = parse(src, e);
+  EXPECT_EQ(lettersOf(plain, plain.blocks[0], true), "U");
+}

@@ -346,3 +346,40 @@ TEST(TaperMetamorphic, SamplesKeepTheirVerdicts) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Taper, LinuxCncMovesUvInAStraightLineDuringAnArc) {
+  // LinuxCNC moves the extra axes linearly during an arc (as Z in a helix): the upper side of the
+  // arc block is a line, and needs no centre of its own.
+  const std::string text =
+      "(AXIS,XY_Z_POS,0)\n(AXIS,UV_Z_POS,20)\nG0 X35 Y60 U35 V60\nG2 R25 X60 Y35 U60 V35 F200\nM30\n";
+  auto r = run(text);
+  EXPECT_EQ(r->path().dialect, Dialect::XyuvLinuxCnc);
+  EXPECT_FALSE(r->diags.hasErrors()) << kerf::test::dump(r->diags);
+  ASSERT_EQ(r->path().moves.size(), 2u);
+  EXPECT_TRUE(r->path().moves[1].lower.isArc());
+  EXPECT_FALSE(r->path().upper[1].isArc());
+  EXPECT_NEAR((r->path().upper[1].end - Vec2(60, 35)).norm(), 0.0, 1e-12);
+  // A centre of its own on the upper side belongs to another dialect.
+  InterpreterOptions io;
+  io.dialect = Dialect::XyuvLinuxCnc;
+  auto own = run("(AXIS,UV_Z_POS,20)\nG0 X0 Y0 U0 V0\nG2 X10 Y0 I5 J0 U10 V0 I5 J0\nM30\n", io);
+  EXPECT_TRUE(own->hasCode(Code::WordNotInDialect));
+  // Left to detection, the words point both ways: it asks.
+  EXPECT_TRUE(
+      run("(AXIS,UV_Z_POS,20)\nG0 X0 Y0 U0 V0\nG2 X10 Y0 I5 J0 U10 V0 I5 J0\nM30\n")->hasCode(Code::DialectAmbiguous));
+}
+
+TEST(Taper, XyuvAbsUpperSideWithoutItsOwnCentreIsAStraightLine) {
+  // cnc3 takes a missing upper centre as the start point and draws that arc as a line; LinuxCNC
+  // moves U V linearly. Both say: U V without a centre of their own move straight.
+  auto r = run("M101 P10\nG92 X0 Y0 U0 V0\nG2 X10. Y0 I5. J0 U10. V0\nM2\n");
+  EXPECT_FALSE(r->diags.hasErrors()) << kerf::test::dump(r->diags);
+  ASSERT_EQ(r->path().upper.size(), 1u);
+  EXPECT_FALSE(r->path().upper[0].isArc());
+  // With its own motion word it must have its own centre (tests/bad/upper_arc_without_centre.nc).
+  EXPECT_TRUE(run("M101 P10\nG92 X0 Y0 U0 V0\nG2 X10. Y0 I5. J0 G2 U10. V0\nM2\n")->hasCode(Code::ArcWithoutCentre));
+}
+
+}  // namespace

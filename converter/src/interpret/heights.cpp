@@ -60,7 +60,7 @@ void Interpreter::resolveHeights() {
     diags_.error(Code::HeightsMissing, src_, where,
                  "the upper plane (z " + fmt3(upper->value) + ", " + upper->source +
                      ") is not above the lower plane (z " + fmt3(lower.value) + ", " + lower.source + ")");
-  } else if (dialect_ != Dialect::Plain) {
+  } else if (dialect_ != Dialect::Plain && !warnedUz_) {  // with U Z unresolved the upper side is unread
     // On a hot-wire foam cutter the two planes are the carriages: the part's "thickness" is the
     // machine's width, written in a header comment if anywhere, never in a word.
     const bool xyuv = dialect_ == Dialect::XyuvAbs || dialect_ == Dialect::XyuvLinuxCnc || dialect_ == Dialect::XyuvRel;

@@ -190,7 +190,9 @@ bool Interpreter::skipPolarSection(std::size_t pc, std::size_t& next, const Word
   diags_.error(Code::PolarNotSupported, src_, polarWord.span(), message,
                "Kerf reads X Y programs: write the section with X and Y to have it checked");
   next = end;
-  positionUnknown("the polar section", polarWord.span(), {}, true);
+  positionUnknown(
+      "the polar section (" + what + " on line " + std::to_string(src_->locate(polarWord.offset).line) + ")",
+      polarWord.span(), {}, true);
   return true;
 }
 

@@ -1,0 +1,189 @@
+// Machine profiles: the built-ins, the text format, detection from a program's evidence, and what
+// a profile changes in the reading (through the pipeline every command takes).
+#include "kerf/converter/machine.h"
+#include "kerf/converter/pipeline.h"
+#include "kerf/converter/report.h"
+
+#include "converter_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace {
+
+using namespace kerf::converter;
+
+Pipeline read(const std::string& text, PipelineOptions options = {}) { return runPipeline({"p.nc", text}, options); }
+
+bool has(const Pipeline& p, Code c) {
+  return std::any_of(p.diags.all().begin(), p.diags.all().end(), [c](const Diagnostic& d) { return d.code == c; });
+}
+
+const Diagnostic& first(const Pipeline& p, Code c) {
+  static const Diagnostic none{};
+  for (const Diagnostic& d : p.diags.all())
+    if (d.code == c) return d;
+  ADD_FAILURE() << "no " << codeName(c) << " reported";
+  return none;
+}
+
+TEST(machine_test, every_built_in_profile_parses_and_is_listed_in_order) {
+  const auto& all = builtinMachines();
+  std::vector<std::string> names;
+  for (const MachineProfile& m : all) names.push_back(m.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"generic", "robofil", "sodick", "linuxcnc", "cnc3", "ncvc", "fanuc"}));
+  for (const MachineProfile& m : all) {
+    EXPECT_FALSE(m.summary.empty()) << m.name;
+    EXPECT_FALSE(m.sources.empty()) << m.name;
+    for (const KnownCode& c : m.codes) EXPECT_FALSE(c.note.empty()) << m.name << " " << c.key;
+    // What `kerf machines show` prints reads back as the same profile.
+    SourceFile file(m.name + ".profile", m.text);
+    Diagnostics d;
+    const auto again = parseMachineProfile(file, d);
+    ASSERT_TRUE(again.has_value()) << m.name;
+    EXPECT_EQ(again->codes.size(), m.codes.size());
+  }
+}
+
+TEST(machine_test, profile_lines_are_checked_at_their_place) {
+  SourceFile file("my.profile",
+                  "name = mine\narc_centre = sideways\ncode G0x2 = harmless: x\nsize = 3\ncode G60 = harmless\n");
+  Diagnostics d;
+  EXPECT_FALSE(parseMachineProfile(file, d).has_value());
+  ASSERT_EQ(d.errorCount(), 4u);
+  for (const Diagnostic& x : d.all()) EXPECT_EQ(x.code, Code::MachineProfileError);
+  EXPECT_EQ(file.locate(d.all()[0].span.offset).line, 2u);
+  EXPECT_EQ(file.locate(d.all()[0].span.offset).column, 14u);
+  EXPECT_EQ(file.locate(d.all()[3].span.offset).line, 5u);  // a code needs its note
+}
+
+TEST(machine_test, codes_are_written_any_way_and_found_one_way) {
+  SourceFile file(
+      "m.profile",
+      "code g02.0 = harmless: a\ncode G12.1 = harmless: b\ncode qaic = harmless: c\ncode c = harmless: d\n");
+  Diagnostics d;
+  const auto m = parseMachineProfile(file, d);
+  ASSERT_TRUE(m.has_value()) << kerf::test::dump(d);
+  EXPECT_NE(m->find("G2"), nullptr);
+  EXPECT_NE(m->find("G12.1"), nullptr);
+  EXPECT_NE(m->find("QAIC"), nullptr);
+  EXPECT_NE(m->find("C"), nullptr);
+  EXPECT_EQ(m->name, "m");  // from the file's name when the file names none
+}
+
+TEST(machine_test, detected_from_the_evidence_and_said_once) {
+  struct Case {
+    const char* text;
+    const char* machine;
+  } cases[] = {
+      {"% (MEM:A.ISO)\nG92X0Y0\nG60\nG01X100Y0\nM02\n", "robofil"},
+      {"C000 = 012 014;\nH000 = +000000.0100 ;\nG92 X0 Y0;\nG01 X1.;\nM02;\n", "sodick"},
+      {"(AXIS,XY_Z_POS,0)\n(AXIS,UV_Z_POS,10)\ng1 x1 y1 u1 v1\nm2\n", "linuxcnc"},
+      {"M100 P375 Q117\nM101 P20\nG92 X0 Y0 U0 V0\nG1 X5 Y0 G1 U5 V0\nM2\n", "cnc3"},
+      {"G92 X0 Y0 I20. J0\nG01 X10. Y0 U1. V0\nM02\n", "ncvc"},
+      {"O0001\nG112\nG1 X1. C1.\nG113\nM30\n", "fanuc"},
+      {"G92 X0 Y0\nG01 X10. Y0\nM02\n", "generic"},
+  };
+  for (const Case& c : cases) {
+    const Pipeline p = read(c.text);
+    EXPECT_EQ(p.machine.name, c.machine) << c.text;
+    EXPECT_TRUE(p.machineDetected);
+    const auto notes = std::count_if(p.diags.all().begin(), p.diags.all().end(),
+                                     [](const Diagnostic& d) { return d.code == Code::MachineDetected; });
+    EXPECT_EQ(notes, std::string(c.machine) == "generic" ? 0 : 1) << c.text;
+  }
+  // A single weak hint is not enough.
+  EXPECT_EQ(read("G92 X0 Y0\nG99\nG01 X10.\nM02\n").machine.name, "generic");
+}
+
+TEST(machine_test, micrometres_and_absolute_centres_from_the_evidence) {
+  // No decimal point anywhere and integers in the thousands: micrometres; the arcs close only
+  // about absolute centres. The note names both pieces of evidence.
+  const std::string text = "G92X0Y0\nG01X6500Y0\nG03X-6500Y0I0J0\nG03X6500Y0I0J0\nM02\n";
+  const Pipeline p = read(text);
+  EXPECT_EQ(p.toolpath.reading.integerUnit, IntegerUnit::Micrometre);
+  EXPECT_EQ(p.toolpath.reading.arcCentre, ArcCentreMode::Absolute);
+  EXPECT_FALSE(p.diags.hasErrors()) << kerf::test::dump(p.diags);
+  const std::string& note = first(p, Code::MachineDetected).message;
+  EXPECT_NE(note.find("µm integers: 12 coordinates without a decimal point, largest 6500"), std::string::npos) << note;
+  EXPECT_NE(note.find("absolute centres: 2 of 2 arcs close only that way"), std::string::npos) << note;
+  EXPECT_NEAR(p.toolpath.moves[1].lower.radius, 6.5, 1e-12);
+  // Explicit options win over the evidence.
+  PipelineOptions o;
+  o.read.integerUnit = IntegerUnit::Millimetre;
+  o.read.arcCentre = ArcCentreMode::Incremental;
+  const Pipeline forced = read(text, o);
+  EXPECT_TRUE(has(forced, Code::ZeroRadius));
+  EXPECT_NE(first(forced, Code::ZeroRadius).help.find("--arc-centre absolute"), std::string::npos);
+}
+
+TEST(machine_test, a_code_the_profile_knows_is_a_note_and_others_stay_errors) {
+  PipelineOptions robofil;
+  robofil.read.machine = "robofil";
+  const Pipeline known = read("G92\nG60\nG38\nG41 D0\nG01 X10. Y0\nG40\nM02\n", robofil);
+  EXPECT_FALSE(known.diags.hasErrors()) << kerf::test::dump(known.diags);
+  EXPECT_TRUE(has(known, Code::MachineCode));
+  PipelineOptions generic;
+  generic.read.machine = "generic";
+  const Pipeline unknown = read("G92\nG60\nG01 X10. Y0\nM02\n", generic);
+  EXPECT_TRUE(has(unknown, Code::UnknownGCode));
+  EXPECT_TRUE(has(unknown, Code::SetPositionWithoutAxis));  // the bare G92 is Robofil's
+  // The standard codes that do not move the wire are known everywhere.
+  const Pipeline standard = read("G17 G21 G90 G94 G49 G61 G98\nG64\nG28 X Y\nG92 X0 Y0\nG01 X10.\nM02\n", generic);
+  EXPECT_FALSE(standard.diags.hasErrors()) << kerf::test::dump(standard.diags);
+  EXPECT_TRUE(has(standard, Code::PositionUnknown));  // G28 homes the axes: a note, nothing cut is lost
+  EXPECT_EQ(first(standard, Code::PositionUnknown).severity, Severity::Note);
+}
+
+TEST(machine_test, a_profile_sets_the_limits_of_the_checks) {
+  // A foam cutter's carriages are not limited like a wire guide (linuxcnc: 60 degrees).
+  const std::string foam =
+      "(AXIS,XY_Z_POS,0)\n(AXIS,UV_Z_POS,10)\nG0 X0 Y0 U0 V0\nG1 X10. Y0 U18. V0\nX10. Y10. U18. V10.\nM2\n";
+  EXPECT_FALSE(read(foam).diags.hasErrors());
+  PipelineOptions strict;
+  strict.check.maxTaperDegrees = 30.0;
+  EXPECT_TRUE(has(read(foam, strict), Code::TaperTooSteep));
+}
+
+TEST(machine_test, legacy_cnc3_numbering_gives_the_thickness) {
+  // 15831944/cnc3 wrote M106 P<L> Q<H> and M107 P<T>; the current editor writes M100/M101 and uses
+  // M106/M107 for the generator.
+  const std::string body = "G92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U11 V0\nG1 X10 Y10 G1 U10 V10\nM2\n";
+  const Pipeline legacy = read("M106 P150 Q50\nM107 P30\n" + body);
+  ASSERT_TRUE(legacy.toolpath.heights.known) << kerf::test::dump(legacy.diags);
+  EXPECT_NEAR(legacy.toolpath.heights.planes.height(), 30.0, 1e-12);
+  const Pipeline current = read("M106 P1\nM107 P30 Q8\n" + body);
+  EXPECT_FALSE(current.toolpath.heights.known);
+  EXPECT_TRUE(has(current, Code::HeightsMissing));
+}
+
+TEST(machine_test, sodick_header_reads_without_a_cascade) {
+  const std::string text =
+      "(      =    ON OFF  IP);\nC000   =   012 014 2215;\nH000   = +000000.0100  ;\n"
+      "QAIC(2,1,0.1250,001.0,0.1650,0.0200,010.0,0016,0032,15,040);\nG80Y+;\nG83Y101;\nG00 XH111 + H112;\n"
+      "Y-H113;\nG92 X10.0 Y5.0 Z0;\nTP29.8;\nTN27.8;\nG29;\nT94;\nT84;\nC000;\nA0 G41 H000 G01 X12.0 Y5.0;\n"
+      "G01 X12.0 Y15.0;\nG02 X22.0 Y15.0 I5.0 J0;\nG01 X22.0 Y5.0;\nG01 X12.0 Y5.0;\nG01 G40 H000 X10.0 Y5.0;\n"
+      "T85;\nG149 G249;\nM199;\n";
+  const Pipeline p = read(text);
+  EXPECT_EQ(p.machine.name, "sodick");
+  EXPECT_FALSE(p.diags.hasErrors()) << kerf::test::dump(p.diags);
+  // The edge sensing and the register moves are one note, ended by the G92.
+  const auto unknown = std::count_if(p.diags.all().begin(), p.diags.all().end(),
+                                     [](const Diagnostic& d) { return d.code == Code::PositionUnknown; });
+  EXPECT_EQ(unknown, 1);
+  EXPECT_EQ(p.toolpath.moves.size(), 6u);
+  EXPECT_TRUE(p.toolpath.endedProperly);  // M199
+}
+
+TEST(machine_test, a_cut_from_a_register_value_is_an_error_once) {
+  const Pipeline p = read("G92 X0 Y0\nG01 XH111 Y0\nX5. YH2\nX20. Y10.\nX0 Y0\nM02\n");
+  const auto errors = std::count_if(p.diags.all().begin(), p.diags.all().end(), [](const Diagnostic& d) {
+    return d.code == Code::PositionUnknown && d.severity == Severity::Error;
+  });
+  EXPECT_EQ(errors, 1);
+  EXPECT_NE(first(p, Code::PositionUnknown).message.find("lines 2 to 4 (3 cut)"), std::string::npos)
+      << first(p, Code::PositionUnknown).message;
+}
+
+}  // namespace

@@ -1,20 +1,33 @@
 #include "kerf/converter/analysis.h"
 
+#include <algorithm>
 #include <string>
 
 namespace kerf::converter {
 
 Analysis analyse(const SourceFile& source, const InterpreterOptions& options, Diagnostics& diags) {
   InterpreterOptions io = options;
-  if (!io.machine) {
-    Diagnostics scratch(0);
-    io.machine = detectMachine(parseProgram(source, scratch)).profile;
-  }
-  ParseOptions parse;
-  parse.semicolonEndsBlock = io.machine->semicolonEndsBlock;
-  parse.upperAxesUZ = io.machine->upperAxesUZ;
+  auto parseOptionsOf = [](const MachineProfile& m) {
+    ParseOptions p;
+    p.semicolonEndsBlock = m.semicolonEndsBlock;
+    p.upperAxesUZ = m.upperAxesUZ;
+    return p;
+  };
+  // Parsed once with the profile's options; a detected profile that splits blocks differently
+  // (Sodick's ';') reads the text again.
+  const ParseOptions first = io.machine ? parseOptionsOf(*io.machine) : ParseOptions{};
+  Diagnostics parseDiags(std::max<std::size_t>(diags.cap(), 100000));
   Analysis a;
-  a.program = parseProgram(source, diags, parse);
+  a.program = parseProgram(source, parseDiags, first);
+  if (!io.machine) {
+    io.machine = detectMachine(a.program).profile;
+    const ParseOptions again = parseOptionsOf(*io.machine);
+    if (again.semicolonEndsBlock != first.semicolonEndsBlock || again.upperAxesUZ != first.upperAxesUZ) {
+      parseDiags = Diagnostics(std::max<std::size_t>(diags.cap(), 100000));
+      a.program = parseProgram(source, parseDiags, again);
+    }
+  }
+  for (const Diagnostic& d : parseDiags.all()) diags.report(d);
   a.toolpath = interpret(a.program, io, diags);
   return a;
 }

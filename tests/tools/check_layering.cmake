@@ -1,4 +1,4 @@
-# The dependency direction of DESIGN.md, checked on the sources:
+# The dependency direction of the design (README: layout), checked on the sources:
 #  - geometry includes only its own headers, Eigen and the standard library;
 #  - converter includes no viewer, window or GL header;
 #  - libraries never touch the process: no printing to the terminal, no exit(), no opening files.
@@ -22,7 +22,7 @@ foreach(f IN LISTS converter_files)
     endif()
   endforeach()
 endforeach()
-# The renderer and the headless contexts know nothing of windows or ImGui (DESIGN.md).
+# The renderer and the headless contexts know nothing of windows or ImGui (README: layout).
 file(GLOB_RECURSE render_files "${SOURCE}/viewer/include/kerf/*.h" "${SOURCE}/viewer/src/render/*"
      "${SOURCE}/viewer/src/headless/*" "${SOURCE}/viewer/src/export/*" "${SOURCE}/shaders/*")
 foreach(f IN LISTS render_files)

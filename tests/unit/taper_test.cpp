@@ -383,3 +383,17 @@ TEST(Taper, XyuvAbsUpperSideWithoutItsOwnCentreIsAStraightLine) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Taper, NcvcHeightsInTheSetPositionOfAnXyuvRelProgram) {
+  // G92 X0 Y0 U0 V0 I20 J0: U V the starting deviation, I J NCVC's thickness and program plane.
+  // It is what makes the program xyuv-rel; it must not then be refused for its I J.
+  auto r = run("G92 X0 Y0 U0 V0 I20. J0\nG01 X10. Y0 U0.5 V0\nX10. Y10. U0.5 V0.5\nX0 Y0 U0 V0\nM02\n");
+  EXPECT_EQ(r->path().dialect, Dialect::XyuvRel);
+  EXPECT_FALSE(r->diags.hasErrors()) << kerf::test::dump(r->diags);
+  ASSERT_TRUE(r->path().heights.known);
+  EXPECT_NEAR(r->path().heights.planes.height(), 20.0, 1e-12);
+}
+
+}  // namespace

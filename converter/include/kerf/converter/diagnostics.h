@@ -152,6 +152,7 @@ class Diagnostics {
   [[nodiscard]] std::size_t errorCount() const { return errors_; }
   [[nodiscard]] std::size_t warningCount() const { return warnings_; }
   [[nodiscard]] std::size_t dropped() const { return dropped_; }
+  [[nodiscard]] std::size_t cap() const { return cap_; }
   [[nodiscard]] bool hasErrors() const { return errors_ > 0; }
   /// Stable order for output: by file position, then as reported.
   void sortByPosition();

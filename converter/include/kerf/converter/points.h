@@ -1,6 +1,6 @@
 // Point-sequence emitter for point-driven 2-axis controllers (the BP-95d and its kin).
 //
-// No public description of the BP-95d format exists (FORMATS.md §3): the output is driven by a
+// No public description of the BP-95d format exists (docs/bp95d.md): the output is driven by a
 // profile, and the built-in `bp95d` profile is our documented assumption — one point per line,
 // `X Y` absolute, millimetres, 3 decimals, one space, no header, the start point first.
 #pragma once
@@ -30,7 +30,7 @@ struct PointProfile {
   std::optional<std::size_t> maxPoints;  ///< the controller's capacity
 };
 
-/// The built-in profile (FORMATS.md §3).
+/// The built-in profile (docs/bp95d.md).
 PointProfile bp95dProfile();
 
 /// Reads a profile file: `key = value` lines, `#` comments. Keys: name, decimals,

@@ -4,7 +4,7 @@
 // travel): a line stays a line, an arc stays concentric with its radius grown or shrunk. Where two
 // offset elements do not meet, the corner is sharp: both are extended (lines as infinite lines,
 // arcs as full circles) to the intersection nearest the original joint, the rule NC controls use
-// for sharp taper corners (FORMATS.md §2). Where they already meet (a tangent joint with equal
+// for sharp taper corners (docs/taper.md). Where they already meet (a tangent joint with equal
 // distances) that common point is the corner.
 #pragma once
 

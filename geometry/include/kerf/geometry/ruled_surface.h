@@ -2,7 +2,7 @@
 //
 // A patch joins a lower segment L (on z = planes.lower) and an upper segment U (on z =
 // planes.upper): the wire at parameter t in [0, 1] is the straight generator from L(t) to U(t),
-// with t proportional to arc length on each side (FORMATS.md §2). A point of the patch is
+// with t proportional to arc length on each side (docs/taper.md). A point of the patch is
 //   P(t, s) = ((1 - s) L(t) + s U(t), lower + s H),   s in [0, 1], H = upper - lower.
 // Every evaluation here is exact; the extremes over t are exact where a closed form exists
 // (line paired with line) and sampled-and-refined otherwise (docs/geometry.md says which).

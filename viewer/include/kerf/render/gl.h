@@ -1,6 +1,6 @@
 // The OpenGL 3.3 core functions the renderer uses, loaded through whichever context is current
 // (OSMesa, EGL or a GLFW window). No GLEW or libepoxy: both fail with an OSMesa context on
-// Debian 12 (../shared/spec/PLATFORM.md).
+// Debian 12 (docs/rendering.md).
 #pragma once
 
 #include <GL/glcorearb.h>

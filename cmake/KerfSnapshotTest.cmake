@@ -26,7 +26,11 @@ function(kerf_snapshot_test)
                    -DMODE=${mode} -DXVFB=${KERF_XVFB_RUN} "-DARGS=${ARG_ARGS}"
                    -P ${PROJECT_SOURCE_DIR}/tests/tools/snapshot_test.cmake
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
-  set_tests_properties(${prefix}.${ARG_NAME} PROPERTIES LABELS snapshot ENVIRONMENT "${KERF_MESA_LSAN}")
+  set(environment "${KERF_MESA_LSAN}")
+  if(ARG_WINDOW OR "${ARG_ARGS}" MATCHES "--backend;egl")
+    set(environment "${KERF_UNLOADED_DRIVER_LSAN}")  # Mesa unloads these drivers (tests/CMakeLists.txt)
+  endif()
+  set_tests_properties(${prefix}.${ARG_NAME} PROPERTIES LABELS snapshot ENVIRONMENT "${environment}")
   if(ARG_WINDOW)  # xvfb-run -a races with another xvfb-run starting at the same moment
     set_tests_properties(${prefix}.${ARG_NAME} PROPERTIES RESOURCE_LOCK xvfb)
   endif()

@@ -61,6 +61,16 @@ const KnownCode* MachineProfile::find(std::string_view key) const {
   return nullptr;
 }
 
+const KnownCode* MachineProfile::find(char letter, int number, int fraction) const {
+  const KnownCode* any = nullptr;
+  for (const KnownCode& c : codes) {
+    if (c.letter != letter) continue;
+    if (c.number == number && c.fraction == fraction) return &c;
+    if (c.number == -1) any = &c;
+  }
+  return any;
+}
+
 // ---- 2. the profile file ------------------------------------------------------------------------
 
 namespace {
@@ -149,6 +159,14 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       if (c.key.empty()) {
         fail(lead, eq - lead, "'" + trim(key.substr(5)) + "' is not a code", "write G60, M28, T84, C or QAIC");
         continue;
+      }
+      c.letter = c.key[0];
+      if (c.key.size() > 1 && c.key[0] == 'Q' && (c.key[1] < '0' || c.key[1] > '9')) {
+        c.number = -2;  // a macro call's name
+      } else if (c.key.size() > 1) {
+        const double v = std::strtod(c.key.c_str() + 1, nullptr);
+        c.number = static_cast<int>(v);
+        c.fraction = static_cast<int>(std::lround((v - c.number) * 10));
       }
       const std::size_t colon = value.find(':');
       const std::string effect = trim(value.substr(0, colon));

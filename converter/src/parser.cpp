@@ -585,7 +585,8 @@ class LineParser {
   /// twice on one side. Positional sides after ':' or a second motion word; otherwise by letter.
   void assignSides(Block& block) {
     const std::size_t n = pending_.size();
-    std::vector<std::uint8_t> side(n, 0);  // 0 lower, 1 upper
+    std::vector<std::uint8_t>& side = sides_;  // 0 lower, 1 upper (kept between blocks: no allocation)
+    side.assign(n, 0);
     if (splitAt_ >= 0) {
       for (std::size_t k = static_cast<std::size_t>(splitAt_); k < n; ++k) side[k] = 1;
       block.colon = colon_;
@@ -648,15 +649,16 @@ class LineParser {
   Program& program_;
   Diagnostics& diags_;
   const ParseOptions& options_;
-  std::vector<Word> pending_;   ///< this block's words, in the order written
-  int splitAt_ = -1;            ///< index in pending_ where a positional upper side starts
-  bool colon_ = false;          ///< that split was a ':'
-  bool sawCoordinate_ = false;  ///< X Y I J R U V seen in this block
-  bool sawMotion_ = false;      ///< a motion word (G00-G03) seen in this block
-  bool homing_ = false;         ///< G28 or G30 seen in this block: bare axis letters allowed
-  bool hasUpper_ = false;       ///< assignSides set upperFrom for this block
-  int largestPending_ = -1;     ///< pending_ index of this block's largest integer length word
-  double blockLargest_ = 0.0;   ///< its |value|
+  std::vector<Word> pending_;        ///< this block's words, in the order written
+  std::vector<std::uint8_t> sides_;  ///< assignSides' side of each pending word
+  int splitAt_ = -1;                 ///< index in pending_ where a positional upper side starts
+  bool colon_ = false;               ///< that split was a ':'
+  bool sawCoordinate_ = false;       ///< X Y I J R U V seen in this block
+  bool sawMotion_ = false;           ///< a motion word (G00-G03) seen in this block
+  bool homing_ = false;              ///< G28 or G30 seen in this block: bare axis letters allowed
+  bool hasUpper_ = false;            ///< assignSides set upperFrom for this block
+  int largestPending_ = -1;          ///< pending_ index of this block's largest integer length word
+  double blockLargest_ = 0.0;        ///< its |value|
   std::size_t macroStatements_ = 0;
   SourceSpan firstMacro_;
   std::uint32_t firstMacroLine_ = 0, lastMacroLine_ = 0;

@@ -18,7 +18,7 @@ bool profileMayName(char c) {
   return c == 'A' || c == 'C' || c == 'E' || c == 'Q' || c == 'S' || c == 'T' || c == 'W' || c == 'Z';
 }
 
-/// "G60", "G12.1", "M28", "T84": the key a profile uses.
+/// "G60", "G12.1", "M28", "T84": the key a profile uses (for messages only).
 std::string codeKey(char letter, double value) {
   int number = 0, fraction = 0;
   if (!splitGNumber(std::abs(value), number, fraction)) return {};
@@ -26,6 +26,14 @@ std::string codeKey(char letter, double value) {
   key += std::to_string(number);
   if (fraction) key += "." + std::to_string(fraction);
   return key;
+}
+
+/// The profile's entry for a word's code (G60, T84) or its letter (C); null when it has none.
+const KnownCode* profileCode(const MachineProfile& m, const Word& w) {
+  if (m.codes.empty()) return nullptr;
+  int number = -1, fraction = 0;
+  if (!w.isNumber() || !splitGNumber(std::abs(w.value), number, fraction)) number = -1;
+  return m.find(w.letter, number, fraction);
 }
 
 /// "the robofil profile knows G60 (...): --machine robofil".
@@ -62,8 +70,7 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
       bw.bad = true;
       return;
     }
-    const std::string key = codeKey('G', w.value);
-    if (const KnownCode* k = machine_.find(key)) {  // the profile's meaning wins over the standard one
+    if (const KnownCode* k = profileCode(machine_, w); k && k->number >= 0) {  // the profile's meaning wins
       addMachine(k);
       return;
     }
@@ -73,7 +80,7 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
       diags_.error(Code::UnknownGCode, src_, w.span(),
                    "unknown G code " + std::string(raw) +
                        (machine_.name == "generic" ? std::string{} : " (the " + machine_.name + " profile)"),
-                   profileHint(key, machine_));
+                   profileHint(codeKey('G', w.value), machine_));
       bw.bad = true;
       return;
     }
@@ -90,11 +97,10 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
     return;
   }
   if (w.letter == 'M') {
-    if (w.isNumber())
-      if (const KnownCode* k = machine_.find(codeKey('M', w.value))) {
-        addMachine(k);
-        return;
-      }
+    if (const KnownCode* k = profileCode(machine_, w); k && k->number >= 0) {
+      addMachine(k);
+      return;
+    }
     if (bw.mCount == bw.m.size()) {
       diags_.error(Code::TooManyMCodes, src_, w.span(),
                    "more than " + std::to_string(bw.m.size()) + " M codes in one block");
@@ -107,9 +113,7 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
   // In a taper-angle program A and T are the angle (execute.cpp), whatever else a profile says.
   const bool taperAngleWord = (w.letter == 'A' || w.letter == 'T') && dialect_ == Dialect::TaperAngle;
   if (profileMayName(w.letter) && !taperAngleWord) {
-    const KnownCode* k = w.isNumber() ? machine_.find(codeKey(w.letter, w.value)) : nullptr;
-    if (!k) k = machine_.find(std::string(1, w.letter));
-    if (k) {
+    if (const KnownCode* k = profileCode(machine_, w)) {
       addMachine(k);
       return;
     }

@@ -52,8 +52,7 @@ struct RenderArgs {
   bool highlight = false;
   std::string backend = "auto";
   int samples = 0;
-  std::optional<double> meshTolerance;
-  std::optional<std::size_t> generators;
+  MeshOptions mesh;
   bool timings = false;
 };
 CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args);
@@ -62,7 +61,7 @@ int runRender(const RenderArgs& args);
 struct ExportArgs {
   CommonOptions common;
   std::string output;
-  std::optional<double> meshTolerance;
+  MeshOptions mesh;
   bool caps = false;
 };
 CLI::App* addExportCommand(CLI::App& app, ExportArgs& args);
@@ -76,8 +75,7 @@ struct ViewArgs {
   bool benchmark = false;
   std::optional<std::size_t> line;
   double playback = -1;
-  std::optional<double> meshTolerance;
-  std::optional<std::size_t> generators;
+  MeshOptions mesh;
   bool colourBy = false;
   bool coarse = false;
 };
@@ -89,8 +87,5 @@ struct MachinesArgs {
 };
 CLI::App* addMachinesCommand(CLI::App& app, MachinesArgs& args);
 int runMachines(const MachinesArgs& args);
-
-/// WIDTHxHEIGHT between 16 and 8192.
-bool parseSize(const std::string& text, int& width, int& height);
 
 }  // namespace kerf::cli

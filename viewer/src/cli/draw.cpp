@@ -20,10 +20,10 @@ ui::Annotation annotationOf(const std::string& input, const converter::Pipeline&
   return a;
 }
 
-render::SceneOptions sceneOptionsOf(std::optional<double> meshTolerance, std::optional<std::size_t> generators) {
+render::SceneOptions sceneOptionsOf(const MeshOptions& mesh) {
   render::SceneOptions so;
-  if (meshTolerance) so.tolerance = *meshTolerance;
-  if (generators) so.generators = *generators;
+  if (mesh.tolerance) so.tolerance = *mesh.tolerance;
+  if (mesh.generators) so.generators = *mesh.generators;
   return so;
 }
 

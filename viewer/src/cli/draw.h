@@ -1,6 +1,8 @@
 // What the commands that draw share: the picture's title and the scene's options.
 #pragma once
 
+#include "options.h"
+
 #include "kerf/converter/pipeline.h"
 #include "kerf/render/scene.h"
 #include "ui/overlay.h"
@@ -13,6 +15,6 @@ namespace kerf::cli {
 /// Title (the file's name) and subtitle (dialect, moves, errors and warnings) of a picture.
 ui::Annotation annotationOf(const std::string& input, const converter::Pipeline& pipeline);
 
-render::SceneOptions sceneOptionsOf(std::optional<double> meshTolerance, std::optional<std::size_t> generators = {});
+render::SceneOptions sceneOptionsOf(const MeshOptions& mesh);
 
 }  // namespace kerf::cli

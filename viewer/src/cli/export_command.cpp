@@ -17,10 +17,7 @@ CLI::App* addExportCommand(CLI::App& app, ExportArgs& a) {
   CLI::App* cmd = app.add_subcommand("export", "the ruled surface as a .vtp, .stl or .ply mesh (VTK)");
   addCommonOptions(*cmd, a.common, false);
   cmd->add_option("-o,--output", a.output, "mesh file to write: .vtp, .stl or .ply")->required()->group("Mesh");
-  cmd->add_option("--mesh-tolerance", a.meshTolerance,
-                  "largest distance of the mesh from the exact surface, mm (default 0.01)")
-      ->check(CLI::Range(1e-5, 100.0))
-      ->group("Mesh");
+  addMeshOptions(*cmd, a.mesh, false);
   cmd->add_flag("--caps", a.caps, "close closed contours with flat caps (a solid for CAD)")->group("Mesh");
   return cmd;
 }
@@ -35,8 +32,7 @@ int runExport(const ExportArgs& a) {
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   printDiagnostics(p.diags, a.common);
-  const exporter::SurfaceData data =
-      exporter::surfaceData(p.toolpath, p.diags.all(), sceneOptionsOf(a.meshTolerance), a.caps);
+  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), a.caps);
   if (data.surface.mesh.triangles.empty()) {
     reportError("nothing is cut, so there is no surface to export");
     return kExitErrors;

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <filesystem>
 
 namespace kerf::cli {
@@ -82,6 +83,26 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
                   ->check(CLI::PositiveNumber)
                   ->group("Sampling");
   step->excludes(tol);
+}
+
+void addMeshOptions(CLI::App& cmd, MeshOptions& o, bool generators) {
+  cmd.add_option("--mesh-tolerance", o.tolerance,
+                 "largest distance of the mesh from the exact surface, mm (default 0.01)")
+      ->check(CLI::Range(1e-5, 100.0))
+      ->group("Mesh");
+  if (generators)
+    cmd.add_option("--generators", o.generators, "about this many wire lines along the cut (default 72; 0: none)")
+        ->check(CLI::Range(std::size_t{0}, std::size_t{100000}))
+        ->group("Mesh");
+}
+
+bool sizeOption(const std::string& text, int& w, int& h) {
+  int consumed = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%n", &w, &h, &consumed) == 2 && consumed == static_cast<int>(text.size()) &&
+      w >= 16 && h >= 16 && w <= 8192 && h <= 8192)
+    return true;
+  std::fprintf(stderr, "kerf: error: --size takes WIDTHxHEIGHT between 16 and 8192, not '%s'\n", text.c_str());
+  return false;
 }
 
 bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, std::string& error) {

@@ -46,6 +46,12 @@ struct SamplingOptions {
   [[nodiscard]] geometry::Sampling sampling() const;
 };
 
+/// How the part is meshed for a picture, the window or a mesh file.
+struct MeshOptions {
+  std::optional<double> tolerance;        ///< --mesh-tolerance, mm (default 0.01, render/scene.h)
+  std::optional<std::size_t> generators;  ///< --generators: wire lines drawn along the cut
+};
+
 /// What every command that reads a program takes.
 struct CommonOptions {
   InputOptions input;
@@ -57,6 +63,12 @@ struct CommonOptions {
 /// Adds the input, reading, check and sampling groups to a command. manyFiles: the command takes
 /// several programs (kerf check).
 void addCommonOptions(CLI::App& command, CommonOptions& options, bool manyFiles);
+
+/// Adds --mesh-tolerance (and --generators for the commands that draw lines) to a command.
+void addMeshOptions(CLI::App& command, MeshOptions& options, bool generators);
+
+/// WIDTHxHEIGHT between 16 and 8192; false after saying what is wrong.
+bool sizeOption(const std::string& text, int& width, int& height);
 
 /// The pipeline's options from the command line, reading --machine FILE when it names a file.
 /// False with a message when a file cannot be read.

@@ -12,17 +12,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cstdio>
 #include <iostream>
 
 namespace kerf::cli {
-
-bool parseSize(const std::string& text, int& w, int& h) {
-  int consumed = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%n", &w, &h, &consumed) != 2 || consumed != static_cast<int>(text.size()))
-    return false;
-  return w >= 16 && h >= 16 && w <= 8192 && h <= 8192;
-}
 
 CLI::App* addRenderCommand(CLI::App& app, RenderArgs& a) {
   CLI::App* cmd = app.add_subcommand("render", "a picture of the part as PNG, with no display and no GPU");
@@ -44,23 +36,14 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& a) {
                   "multisampling (1: none; default 4, or 1 when the triangles outnumber half the pixels)")
       ->check(CLI::Range(1, 16))
       ->group(g);
-  cmd->add_option("--mesh-tolerance", a.meshTolerance,
-                  "largest distance of the drawn surface from the exact one, mm (default 0.01)")
-      ->check(CLI::Range(1e-5, 100.0))
-      ->group(g);
   cmd->add_flag("--timings", a.timings, "print the time of each stage")->group(g);
-  cmd->add_option("--generators", a.generators, "about this many wire lines along the cut (default 72; 0: none)")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{100000}))
-      ->group(g);
+  addMeshOptions(*cmd, a.mesh, true);
   return cmd;
 }
 
 int runRender(const RenderArgs& a) {
   ui::PictureRequest request;
-  if (!parseSize(a.size, request.width, request.height)) {
-    reportError("--size takes WIDTHxHEIGHT between 16 and 8192, not '" + a.size + "'");
-    return kExitUsage;
-  }
+  if (!sizeOption(a.size, request.width, request.height)) return kExitUsage;
   request.view = *render::parseView(a.view);
   request.backend = *headless::parseBackend(a.backend);
   request.samples = a.samples;
@@ -71,8 +54,7 @@ int runRender(const RenderArgs& a) {
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   printDiagnostics(p.diags, a.common);
-  const render::Scene scene =
-      render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.meshTolerance, a.generators));
+  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh));
   request.annotation = annotationOf(file, p);
   request.annotation.legend = request.options.colourBySlope;
   request.annotation.labels = a.highlight;

@@ -22,23 +22,15 @@ CLI::App* addViewCommand(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--playback", a.playback, "show the wire at this fraction of the path, 0 to 1")
       ->check(CLI::Range(0.0, 1.0))
       ->group(g);
-  cmd->add_option("--mesh-tolerance", a.meshTolerance, "largest distance of the drawn surface from the exact one, mm")
-      ->check(CLI::Range(1e-5, 100.0))
-      ->group(g);
   cmd->add_flag("--coarse", a.coarse, "draw every frame as while the view moves (with --benchmark)")->group(g);
-  cmd->add_option("--generators", a.generators, "about this many wire lines along the cut (default 72)")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{100000}))
-      ->group(g);
+  addMeshOptions(*cmd, a.mesh, true);
   cmd->add_flag("--color-by-slope,--colour-by-slope", a.colourBy, "start with the surface coloured by slope")->group(g);
   return cmd;
 }
 
 int runView(const ViewArgs& a) {
   window::WindowRequest request;
-  if (!parseSize(a.size, request.width, request.height)) {
-    reportError("--size takes WIDTHxHEIGHT between 16 and 8192, not '" + a.size + "'");
-    return kExitUsage;
-  }
+  if (!sizeOption(a.size, request.width, request.height)) return kExitUsage;
   if (a.screenshot && a.frames <= 0) {
     reportError("--screenshot needs --frames N: the window is saved after N frames");
     return kExitUsage;
@@ -48,13 +40,12 @@ int runView(const ViewArgs& a) {
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   printDiagnostics(p.diags, a.common);
-  const render::Scene scene =
-      render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.meshTolerance, a.generators));
+  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh));
   request.source = p.source.get();
   request.toolpath = &p.toolpath;
   request.findings = p.diags.all();
   request.scene = &scene;
-  request.sceneOptions = sceneOptionsOf(a.meshTolerance, a.generators);
+  request.sceneOptions = sceneOptionsOf(a.mesh);
   request.coarseFrames = a.coarse;
   request.annotation = annotationOf(file, p);
   request.annotation.legend = true;

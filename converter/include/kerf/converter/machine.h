@@ -40,6 +40,11 @@ struct KnownCode {
   std::string key;  ///< "G60", "M28", "T84", "G12.1"; a letter alone ("C") for any value; "QAIC" for a macro call
   CodeEffect effect = CodeEffect::Harmless;
   std::string note;  ///< one line: what it does on this machine
+  // The key as numbers, to look codes up without building strings: letter, number (-1: any value
+  // of the letter) and the digit after the point. A macro call has number -2.
+  char letter = 0;
+  int number = -1;
+  int fraction = 0;
 };
 
 struct MachineProfile {
@@ -67,6 +72,8 @@ struct MachineProfile {
 
   /// The entry for a code: "G60", "T84", "QAIC"; a letter-only entry matches any value of it.
   [[nodiscard]] const KnownCode* find(std::string_view key) const;
+  /// The entry for letter + number (G 12 1 is G12.1), else the letter's own entry, else null.
+  [[nodiscard]] const KnownCode* find(char letter, int number, int fraction) const;
 };
 
 /// Parses a profile file (docs/machines.md). Nothing, with errors (K0810) at file:line:col, when

@@ -130,7 +130,8 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
   p.text = std::string(file.text());
   bool ok = true;
   for (std::uint32_t line = 1; line <= file.lineCount(); ++line) {
-    const auto [begin, end] = file.lineRange(line);
+    const auto range = file.lineRange(line);
+    const std::uint32_t begin = range.first, end = range.second;
     const std::string_view text = file.text().substr(begin, end - begin);
     const std::string t = trim(text);
     if (t.empty() || t[0] == '#') continue;
@@ -367,10 +368,9 @@ MachineDetection detectMachine(const Program& program) {
     }
     if (b.twoMotions) t["cnc3"].add("two", onLine("two motion words in one block", b.line), b.span(), 3);
     if (b.lowerCase) t["linuxcnc"].add("lower", onLine("lower-case words", b.line), b.span(), 1);
-    bool p = false, q = false, uv = false, kl = false, g92 = false, ij = false, taper = false, tWord = false;
+    bool p = false, uv = false, kl = false, g92 = false, ij = false, taper = false, tWord = false;
     for (const Word& w : program.wordsOf(b)) {
       p |= w.letter == 'P';
-      q |= w.letter == 'Q';
       uv |= w.letter == 'U' || w.letter == 'V';
       kl |= w.letter == 'K' || w.letter == 'L';
       ij |= w.letter == 'I' || w.letter == 'J';

@@ -119,6 +119,8 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   io.thickness = ro.thickness;
   io.programZ = ro.programZ;
   io.wireOffset = ro.wireOffset;
+  io.maxExecutedBlocks = ro.maxExecutedBlocks;
+  io.maxMoves = ro.maxMoves;
   std::vector<std::string> evidence;
   if (ro.integerUnit) {
     io.integerUnit = *ro.integerUnit;

@@ -1,9 +1,9 @@
-// Fuzz entry point for lexer + parser + interpreter + checks + point emitter (libFuzzer ABI).
+// Fuzz entry point for the pipeline every command takes (parser, machine detection, conventions
+// from the evidence, interpreter, checks) and the point emitters (libFuzzer ABI).
 // Built as a real fuzzer with clang (-DKERF_BUILD_FUZZERS=ON, tests/fuzz/run.sh), and always
 // as kerf_fuzz_replay, which feeds it every file of the bad corpus, the samples and
 // tests/fuzz/corpus so CI replays what the fuzzer found.
-#include "kerf/converter/analysis.h"
-#include "kerf/converter/checks.h"
+#include "kerf/converter/pipeline.h"
 #include "kerf/converter/points.h"
 #include "kerf/converter/report.h"
 #include "kerf/converter/summary.h"
@@ -16,15 +16,17 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace kerf::converter;
-  SourceFile src("fuzz.nc", std::string(reinterpret_cast<const char*>(data), size));
+  PipelineOptions options;
+  options.read.maxExecutedBlocks = 200000;  // keep each input fast; the limits themselves are tested
+  options.read.maxMoves = 100000;
+  const Pipeline p = runPipeline({"fuzz.nc", std::string(reinterpret_cast<const char*>(data), size)}, options);
+  struct {
+    const Program& program;
+    const Toolpath& toolpath;
+  } a{p.program, p.toolpath};
+  const SourceFile& src = *p.source;
   Diagnostics diags(20);
-  InterpreterOptions options;
-  options.maxExecutedBlocks = 200000;  // keep each input fast; the limits themselves are tested
-  options.maxMoves = 100000;
-  const Analysis a = analyse(src, options, diags);
-  const SurfaceMeasures measures = measureSurface(a.toolpath);
-  checkToolpath(a.toolpath, &src, {}, diags, &measures);
-  for (const Diagnostic& d : diags.all()) (void)formatDiagnostic(d);
+  for (const Diagnostic& d : p.diags.all()) (void)formatDiagnostic(d);
   (void)formatTrace(a.toolpath, diags);
   (void)explainText(a.program, a.toolpath, kerf::geometry::Sampling::step(0.5));
   PointRequest request;

@@ -86,6 +86,15 @@ bool splitGNumber(double value, int& number, int& fraction) {
   return true;
 }
 
+std::string codeKey(char letter, double value) {
+  std::string key(1, letter);
+  int number = 0, fraction = 0;
+  if (!splitGNumber(std::abs(value), number, fraction)) return key;
+  key += std::to_string(number);
+  if (fraction) key += "." + std::to_string(fraction);
+  return key;
+}
+
 const GCodeInfo* findGCode(double value) {
   int number = 0, fraction = 0;
   if (!splitGNumber(value, number, fraction)) return nullptr;

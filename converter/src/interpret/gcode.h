@@ -89,6 +89,9 @@ const GCodeInfo& info(GCode code);
 /// "G02", "G12.1".
 std::string gName(int number, int fraction = 0);
 std::string gName(GCode code);
+/// "G60", "G12.1", "M28", "T84": a word's code as profiles and messages name it (the letter alone
+/// when the value is no code number).
+std::string codeKey(char letter, double value);
 /// The number written, split as (number, fraction); false when it is not a whole number or one
 /// with a single decimal.
 bool splitGNumber(double value, int& number, int& fraction);

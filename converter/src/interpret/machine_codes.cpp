@@ -11,23 +11,13 @@ std::string written(const SourceFile* src, const Word& w) {
   return std::string(src->text().substr(w.offset, w.length));
 }
 
-std::string keyOf(const Word& w) {
-  std::string key(1, w.letter);
-  if (!w.isNumber()) return key;
-  int number = 0, fraction = 0;
-  if (!splitGNumber(std::abs(w.value), number, fraction)) return key;
-  key += std::to_string(number);
-  if (fraction) key += "." + std::to_string(fraction);
-  return key;
-}
-
 }  // namespace
 
 Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) {
   for (std::size_t k = 0; k < bw.machineCount; ++k) {
     const Word& w = *bw.machine[k].first;
     const KnownCode& code = *bw.machine[k].second;
-    const std::string key = keyOf(w);
+    const std::string key = w.isNumber() ? codeKey(w.letter, w.value) : std::string(1, w.letter);
     const std::string as = written(src_, w);
     CodeEffect effect = code.effect;
     // cnc3's earlier numbering: M106 P L Q H gave the guides (said once, with the numbering) and

@@ -18,16 +18,6 @@ bool profileMayName(char c) {
   return c == 'A' || c == 'C' || c == 'E' || c == 'Q' || c == 'S' || c == 'T' || c == 'W' || c == 'Z';
 }
 
-/// "G60", "G12.1", "M28", "T84": the key a profile uses (for messages only).
-std::string codeKey(char letter, double value) {
-  int number = 0, fraction = 0;
-  if (!splitGNumber(std::abs(value), number, fraction)) return {};
-  std::string key(1, letter);
-  key += std::to_string(number);
-  if (fraction) key += "." + std::to_string(fraction);
-  return key;
-}
-
 /// The profile's entry for a word's code (G60, T84) or its letter (C); null when it has none.
 const KnownCode* profileCode(const MachineProfile& m, const Word& w) {
   if (m.codes.empty()) return nullptr;

@@ -42,6 +42,8 @@ struct ReadOptions {
   std::optional<double> lowerZ, upperZ, thickness, programZ;  ///< mm
   std::optional<double> wireOffset;                           ///< --offset, mm
   std::optional<bool> upperAxesUZ;                            ///< --upper-axes uz
+  std::size_t maxExecutedBlocks = 20'000'000;                 ///< the interpreter's limits (InterpreterOptions)
+  std::size_t maxMoves = 10'000'000;
 };
 
 /// The checks' settings; nothing: the machine profile's value.

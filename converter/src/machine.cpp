@@ -322,11 +322,13 @@ std::string onLine(const std::string& what, std::uint32_t line) { return what + 
 /// Evidence for one profile: each kind of evidence counted once, at its first place.
 struct Tally {
   std::vector<MachineEvidence> items;
-  std::map<std::string, bool> seen;
-  void add(const std::string& kind, const std::string& what, SourceSpan span, int weight) {
-    if (seen[kind]) return;
-    seen[kind] = true;
-    items.push_back({what, span, weight});
+  std::vector<std::string> seen;
+  /// Counts `kind` once, at its first place; `what` is only built then.
+  template <typename What>
+  void add(const std::string& kind, What&& what, SourceSpan span, int weight) {
+    if (std::find(seen.begin(), seen.end(), kind) != seen.end()) return;
+    seen.push_back(kind);
+    items.push_back({what(), span, weight});
   }
   [[nodiscard]] int score() const {
     int s = 0;
@@ -343,77 +345,120 @@ MachineDetection detectMachine(const Program& program) {
   // Robofil names the program in its first line: % (MEM:F17A15.ISO)
   const std::string_view first = program.source->lineText(1);
   if (const auto at = first.find("(MEM:"); at != std::string_view::npos)
-    t["robofil"].add("mem", "the (MEM:...) header on line 1", {static_cast<std::uint32_t>(at), 5}, 3);
+    t["robofil"].add(
+        "mem", [] { return std::string("the (MEM:...) header on line 1"); }, {static_cast<std::uint32_t>(at), 5}, 3);
   for (const Setting& s : program.settings) {
     if (s.name[0] == 'C')
-      t["sodick"].add("conditions", onLine("the condition table (" + s.name + " = ...)", s.line), s.span, 3);
+      t["sodick"].add(
+          "conditions", [&] { return onLine("the condition table (" + s.name + " = ...)", s.line); }, s.span, 3);
     if (s.name[0] == 'H')
-      t["sodick"].add("offsets", onLine("the offset table (" + s.name + " = ...)", s.line), s.span, 1);
+      t["sodick"].add(
+          "offsets", [&] { return onLine("the offset table (" + s.name + " = ...)", s.line); }, s.span, 1);
   }
   for (const HeightWord& h : program.heights) {
     if (h.kind == HeightWord::Kind::SodickProgramPlane || h.kind == HeightWord::Kind::SodickLowerPlane)
-      t["sodick"].add("tp", onLine("TP/TN plane heights", h.line), h.span, 2);
+      t["sodick"].add(
+          "tp", [&] { return onLine("TP/TN plane heights", h.line); }, h.span, 2);
     else
-      t["linuxcnc"].add("axis", onLine("an (AXIS,..._Z_POS,z) comment", h.line), h.span, 3);
+      t["linuxcnc"].add(
+          "axis", [&] { return onLine("an (AXIS,..._Z_POS,z) comment", h.line); }, h.span, 3);
   }
   for (const Block& b : program.blocks) {
     if (b.kind == BlockKind::MacroCall) {
       const std::string_view call = program.textOf(b).substr(0, program.textOf(b).find('('));
-      t["sodick"].add("call", onLine("the macro call " + std::string(call) + "(...)", b.line), b.span(), 3);
+      t["sodick"].add(
+          "call", [&] { return onLine("the macro call " + std::string(call) + "(...)", b.line); }, b.span(), 3);
       continue;
     }
     if (b.kind == BlockKind::MacroB) {
-      t["fanuc"].add("macro", onLine("macro B", b.line), b.span(), 2);
+      t["fanuc"].add(
+          "macro", [&] { return onLine("macro B", b.line); }, b.span(), 2);
       continue;
     }
-    if (b.twoMotions) t["cnc3"].add("two", onLine("two motion words in one block", b.line), b.span(), 3);
-    if (b.lowerCase) t["linuxcnc"].add("lower", onLine("lower-case words", b.line), b.span(), 1);
-    bool p = false, uv = false, kl = false, g92 = false, ij = false, taper = false, tWord = false;
+    if (b.twoMotions)
+      t["cnc3"].add(
+          "two", [&] { return onLine("two motion words in one block", b.line); }, b.span(), 3);
+    if (b.lowerCase)
+      t["linuxcnc"].add(
+          "lower", [&] { return onLine("lower-case words", b.line); }, b.span(), 1);
+    std::uint32_t letters = 0;  // a bit per letter the block has
+    for (const Word& w : program.wordsOf(b)) letters |= 1u << (w.letter - 'A');
+    auto has = [&](char c) { return (letters & (1u << (c - 'A'))) != 0; };
+    const bool p = has('P'), uv = has('U') || has('V'), kl = has('K') || has('L'), ij = has('I') || has('J');
+    const bool tWord = has('T');
+    bool g92 = false, taper = false;
+    if (b.unusualValues)
+      for (const Word& w : program.wordsOf(b)) {
+        if (w.kind == WordValue::Macro)
+          t["fanuc"].add(
+              "macro", [&] { return onLine("a macro B value", b.line); }, w.span(), 2);
+        if (w.kind == WordValue::Register)
+          t["sodick"].add(
+              "register", [&] { return onLine("a register value", b.line); }, w.span(), 2);
+      }
     for (const Word& w : program.wordsOf(b)) {
-      p |= w.letter == 'P';
-      uv |= w.letter == 'U' || w.letter == 'V';
-      kl |= w.letter == 'K' || w.letter == 'L';
-      ij |= w.letter == 'I' || w.letter == 'J';
-      tWord |= w.letter == 'T';
-      if (w.kind == WordValue::Macro) t["fanuc"].add("macro", onLine("a macro B value", b.line), w.span(), 2);
-      if (w.kind == WordValue::Register) t["sodick"].add("register", onLine("a register value", b.line), w.span(), 2);
-    }
-    for (const Word& w : program.wordsOf(b)) {
-      if (!w.isNumber()) continue;
+      if (!w.isNumber() || (w.letter != 'G' && w.letter != 'M' && w.letter != 'T')) continue;
+      // The common codes (G00-G03, G90-G92, M02 ...) are no evidence: out before any arithmetic.
+      if (w.value < 28 || (w.value >= 90 && w.value <= 95 && w.letter == 'G')) {
+        if (!(w.letter == 'G' && (std::abs(w.value - 12.1) < 1e-9 || std::abs(w.value - 13.1) < 1e-9)))
+          if (!(w.letter == 'G' && w.value == 92)) continue;
+      }
       const long n = std::lround(w.value);
       const bool whole = std::abs(w.value - static_cast<double>(n)) < 1e-9;
       if (w.letter == 'G') {
         const long tenths = std::lround(w.value * 10);
         if (whole && (n == 60 || n == 38 || n == 39))
-          t["robofil"].add("G" + std::to_string(n), onLine("G" + std::to_string(n), b.line), w.span(), 2);
+          t["robofil"].add(
+              "G" + std::to_string(n), [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
         if (whole && n >= 140 && n <= 142)
-          t["sodick"].add("colon", onLine("G" + std::to_string(n), b.line), w.span(), 2);
+          t["sodick"].add(
+              "colon", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
         if ((whole && (n == 112 || n == 113)) || tenths == 121 || tenths == 131)
-          t["fanuc"].add("polar",
-                         onLine("polar interpolation (" + std::string(text.substr(w.offset, w.length)) + ")", b.line),
-                         w.span(), 3);
-        if (whole && (n == 98 || n == 99)) t["fanuc"].add("g98", onLine("G" + std::to_string(n), b.line), w.span(), 1);
+          t["fanuc"].add(
+              "polar",
+              [&] {
+                return onLine("polar interpolation (" + std::string(text.substr(w.offset, w.length)) + ")", b.line);
+              },
+              w.span(), 3);
+        if (whole && (n == 98 || n == 99))
+          t["fanuc"].add(
+              "g98", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 1);
         if (whole && (n == 61 || n == 64))
-          t["linuxcnc"].add("path", onLine("G" + std::to_string(n) + " path control", b.line), w.span(), 1);
+          t["linuxcnc"].add(
+              "path", [&] { return onLine("G" + std::to_string(n) + " path control", b.line); }, w.span(), 1);
         g92 |= whole && n == 92;
         taper |= whole && (n == 51 || n == 52);
       } else if (w.letter == 'M' && whole) {
-        if (n == 28) t["robofil"].add("M28", onLine("M28", b.line), w.span(), 2);
+        if (n == 28)
+          t["robofil"].add(
+              "M28", [&] { return onLine("M28", b.line); }, w.span(), 2);
         if ((n == 100 || n == 101) && p)
-          t["cnc3"].add("geometry", onLine("M" + std::to_string(n) + " P (taper geometry)", b.line), w.span(), 3);
+          t["cnc3"].add(
+              "geometry", [&] { return onLine("M" + std::to_string(n) + " P (taper geometry)", b.line); }, w.span(), 3);
         if (n >= 105 && n <= 107 && p)
-          t["cnc3"].add("generator", onLine("M" + std::to_string(n) + " P (generator and wire settings)", b.line),
-                        w.span(), 2);
+          t["cnc3"].add(
+              "generator", [&] { return onLine("M" + std::to_string(n) + " P (generator and wire settings)", b.line); },
+              w.span(), 2);
         if (n == 40 || n == 41 || (n >= 82 && n <= 85))
-          t["cnc3"].add("M" + std::to_string(n), onLine("M" + std::to_string(n), b.line), w.span(), 1);
-        if (n == 199) t["sodick"].add("M199", onLine("M199", b.line), w.span(), 1);
+          t["cnc3"].add(
+              "M" + std::to_string(n), [&] { return onLine("M" + std::to_string(n), b.line); }, w.span(), 1);
+        if (n == 199)
+          t["sodick"].add(
+              "M199", [&] { return onLine("M199", b.line); }, w.span(), 1);
       } else if (w.letter == 'T' && whole && (n == 84 || n == 85 || n == 94)) {
-        t["sodick"].add("T" + std::to_string(n), onLine("T" + std::to_string(n), b.line), w.span(), 1);
+        t["sodick"].add(
+            "T" + std::to_string(n), [&] { return onLine("T" + std::to_string(n), b.line); }, w.span(), 1);
       }
     }
-    if (g92 && ij) t["ncvc"].add("g92ij", onLine("G92 with I J (plane heights)", b.line), b.span(), 3);
-    if (uv && kl) t["ncvc"].add("kl", onLine("K L beside U V", b.line), b.span(), 2);
-    if (taper && tWord) t["ncvc"].add("t", onLine("G51/G52 with a T angle", b.line), b.span(), 2);
+    if (g92 && ij)
+      t["ncvc"].add(
+          "g92ij", [&] { return onLine("G92 with I J (plane heights)", b.line); }, b.span(), 3);
+    if (uv && kl)
+      t["ncvc"].add(
+          "kl", [&] { return onLine("K L beside U V", b.line); }, b.span(), 2);
+    if (taper && tWord)
+      t["ncvc"].add(
+          "t", [&] { return onLine("G51/G52 with a T angle", b.line); }, b.span(), 2);
   }
   MachineDetection d;
   d.profile = findBuiltinMachine("generic");

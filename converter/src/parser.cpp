@@ -224,9 +224,7 @@ class LineParser {
       return next;
     }
 
-    pending_.clear();
-    largestPending_ = -1;
-    blockLargest_ = 0.0;
+    upperLetters_ = false;
     splitAt_ = -1;
     colon_ = false;
     sawCoordinate_ = false;
@@ -266,7 +264,7 @@ class LineParser {
                 colon_ ? "a second ':' in one block" : "':' after the upper contour's words have begun");
           break;
         }
-        splitAt_ = static_cast<int>(pending_.size());
+        splitAt_ = wordsSoFar(block);
         colon_ = true;
         ++i;
         continue;
@@ -339,7 +337,15 @@ class LineParser {
 
   /// Fanuc macro B: `#100 = ...`, `WHILE[...]DO1`, `END1`, `IF[...]GOTO10`, `GOTO10`, `DO1`.
   bool isMacroStatement(std::size_t i, std::size_t end) const {
-    if (text_[i] == '#') return true;
+    switch (upper(text_[i])) {  // the common block starts with G, M, N, X ...: out at once
+      case '#': return true;
+      case 'W':
+      case 'G':
+      case 'I':
+      case 'E':
+      case 'D': break;
+      default: return false;
+    }
     if (startsWithKeyword(text_, i, end, "WHILE") || startsWithKeyword(text_, i, end, "GOTO")) return true;
     if (startsWithKeyword(text_, i, end, "IF")) {
       std::size_t k = i + 2;
@@ -459,7 +465,11 @@ class LineParser {
     return true;
   }
 
-  void push(std::size_t start, std::size_t stop, char letter, WordValue kind, double value, bool hasPoint) {
+  /// Appends a word of the block being read to the program, keeping the integer-unit evidence.
+  void push(Block& block, std::size_t start, std::size_t stop, char letter, WordValue kind, double value,
+            bool hasPoint) {
+    upperLetters_ |= letter == 'U' || letter == 'V' || letter == 'K' || letter == 'L';
+    block.unusualValues |= kind != WordValue::Number;
     Word w;
     w.letter = letter;
     w.kind = kind;
@@ -467,7 +477,23 @@ class LineParser {
     w.offset = static_cast<std::uint32_t>(start);
     w.length = static_cast<std::uint16_t>(std::min<std::size_t>(stop - start, 0xFFFF));
     w.value = value;
-    pending_.push_back(w);
+    if (isLengthLetter(letter) && kind == WordValue::Number) {
+      if (hasPoint) {
+        program_.anyDecimalPoint = true;
+      } else {
+        ++program_.integerLengthWords;
+        if (std::abs(value) > program_.largestInteger) {
+          program_.largestInteger = std::abs(value);
+          program_.largestIntegerWord = static_cast<std::uint32_t>(program_.words.size());
+        }
+      }
+    }
+    program_.words.push_back(w);
+  }
+
+  /// How many words the block being read has so far.
+  [[nodiscard]] int wordsSoFar(const Block& block) const {
+    return static_cast<int>(program_.words.size() - block.firstWord);
   }
 
   std::size_t parseWord(Block& block, std::size_t i, std::size_t end) {
@@ -485,24 +511,30 @@ class LineParser {
       return std::max(stop, start + 1);
     }
     if (std::size_t next = 0; letter == 'T' && tryHeightWord(block, start, i, end, next)) return next;
-    // Values known only at the machine.
-    if (const std::size_t r = scanRegisterExpression(text_, i, end); r != i) {
-      push(start, r, letter, WordValue::Register, 0.0, false);
-      return r;
-    }
-    if (const std::size_t m = scanMacroValue(text_, i, end); m != i) {
-      push(start, m, letter, WordValue::Macro, 0.0, false);
-      return m;
+    // Values known only at the machine (a register H.., a macro value # or [..]).
+    const char lead = i < end && (text_[i] == '+' || text_[i] == '-') && i + 1 < end ? text_[i + 1]
+                      : i < end                                                      ? text_[i]
+                                                                                     : 0;
+    if (lead == 'H' || lead == 'h') {
+      if (const std::size_t r = scanRegisterExpression(text_, i, end); r != i) {
+        push(block, start, r, letter, WordValue::Register, 0.0, false);
+        return r;
+      }
+    } else if (lead == '#' || lead == '[') {
+      if (const std::size_t m = scanMacroValue(text_, i, end); m != i) {
+        push(block, start, m, letter, WordValue::Macro, 0.0, false);
+        return m;
+      }
     }
     const NumberScan n = scanNumber(text_, i, end);
     if (n.status == NumberScan::Missing) {
       // `Y+` / `X-`: a direction (edge sensing); an axis alone after G28/G30: home it.
       if (i < end && (text_[i] == '+' || text_[i] == '-') && (i + 1 >= end || !isDigit(text_[i + 1]))) {
-        push(start, i + 1, letter, WordValue::Direction, text_[i] == '-' ? -1.0 : 1.0, false);
+        push(block, start, i + 1, letter, WordValue::Direction, text_[i] == '-' ? -1.0 : 1.0, false);
         return i + 1;
       }
       if (homing_ && isAxisLetter(letter)) {
-        push(start, start + 1, letter, WordValue::Bare, 0.0, false);
+        push(block, start, start + 1, letter, WordValue::Bare, 0.0, false);
         return start + 1;
       }
       std::string read = i < end ? describeChar(text_[i]) : std::string("the end of the line");
@@ -565,43 +597,37 @@ class LineParser {
     // A second motion word after a coordinate opens the upper side (`G2 X Y I J G1 U V`, cnc3); a
     // single motion word may stand anywhere (`X10 Y5 G1`).
     const bool motionG = letter == 'G' && n.value >= 0 && n.value <= 3 && n.value == std::floor(n.value);
-    if (splitAt_ < 0 && motionG && sawCoordinate_ && sawMotion_) splitAt_ = static_cast<int>(pending_.size());
+    if (splitAt_ < 0 && motionG && sawCoordinate_ && sawMotion_) splitAt_ = wordsSoFar(block);
     sawMotion_ |= motionG;
     if (letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'U' ||
         letter == 'V')
       sawCoordinate_ = true;
     if (letter == 'G' && (n.value == 28 || n.value == 30)) homing_ = true;
-    if (isLengthLetter(letter) && !n.hasPoint && std::abs(n.value) > blockLargest_) {
-      blockLargest_ = std::abs(n.value);
-      largestPending_ = static_cast<int>(pending_.size());
-    }
-    push(start, stop, letter, WordValue::Number, n.value, n.hasPoint);
+    push(block, start, stop, letter, WordValue::Number, n.value, n.hasPoint);
     return stop;
   }
 
   // ---- 4. the sides of a 4-axis block ----------------------------------------------------------
 
-  /// Places the block's words into the program, lower side first, and reports a letter written
-  /// twice on one side. Positional sides after ':' or a second motion word; otherwise by letter.
+  /// Orders the block's words lower side first and reports a letter written twice on one side.
+  /// Positional sides after ':' or a second motion word; otherwise by letter.
   void assignSides(Block& block) {
-    const std::size_t n = pending_.size();
+    Word* words = program_.words.data() + block.firstWord;
+    const std::size_t n = program_.words.size() - block.firstWord;
     std::vector<std::uint8_t>& side = sides_;  // 0 lower, 1 upper (kept between blocks: no allocation)
     side.assign(n, 0);
     if (splitAt_ >= 0) {
       for (std::size_t k = static_cast<std::size_t>(splitAt_); k < n; ++k) side[k] = 1;
       block.colon = colon_;
       block.twoMotions = !colon_;
-    } else {
-      bool upperLetters = false;
-      for (const Word& w : pending_)
-        upperLetters |= w.letter == 'U' || w.letter == 'V' || w.letter == 'K' || w.letter == 'L';
+    } else if (upperLetters_) {
       std::uint32_t seenLower = 0;
       for (std::size_t k = 0; k < n; ++k) {
-        const char c = pending_[k].letter;
+        const char c = words[k].letter;
         const std::uint32_t bit = 1u << (c - 'A');
         if (c == 'U' || c == 'V' || c == 'K' || c == 'L') {
           side[k] = 1;
-        } else if ((c == 'I' || c == 'J' || c == 'R') && (seenLower & bit) && upperLetters) {
+        } else if ((c == 'I' || c == 'J' || c == 'R') && (seenLower & bit)) {
           side[k] = 1;  // a second centre for the upper arc: `G2 X Y I J U V I J`
         } else {
           seenLower |= bit;
@@ -610,8 +636,9 @@ class LineParser {
     }
     // A letter twice on one side (G and M may repeat).
     std::uint32_t seen[2] = {0, 0};
+    std::uint32_t placed = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      const Word& w = pending_[k];
+      const Word& w = words[k];
       const std::uint32_t bit = 1u << (w.letter - 'A');
       if ((seen[side[k]] & bit) && w.letter != 'G' && w.letter != 'M') {
         error(block, Code::RepeatedWord, w.offset, w.length,
@@ -619,29 +646,24 @@ class LineParser {
         return;
       }
       seen[side[k]] |= bit;
-    }
-    std::uint32_t placed = 0;
-    for (int s = 0; s < 2; ++s) {
-      for (std::size_t k = 0; k < n; ++k) {
-        if (side[k] != s) continue;
-        const Word& w = pending_[k];
-        if (isLengthLetter(w.letter) && w.isNumber()) {
-          if (w.hasPoint) {
-            program_.anyDecimalPoint = true;
-          } else {
-            ++program_.integerLengthWords;
-            if (static_cast<int>(k) == largestPending_ && blockLargest_ > program_.largestInteger) {
-              program_.largestInteger = blockLargest_;
-              program_.largestIntegerWord = static_cast<std::uint32_t>(program_.words.size());
-            }
-          }
-        }
-        program_.words.push_back(w);
-        if (s == 0) ++placed;
-      }
+      placed += side[k] == 0;
     }
     block.upperFrom = placed;
     hasUpper_ = true;
+    if (splitAt_ >= 0 || !upperLetters_) return;  // already in order
+    // By letter: the lower side first, each side in the order written.
+    const std::uint32_t largest = program_.largestIntegerWord;
+    const bool largestHere = largest >= block.firstWord && largest < block.firstWord + n;
+    const std::uint32_t largestOffset = largestHere ? program_.words[largest].offset : 0;
+    scratch_.assign(words, words + n);
+    std::size_t at = 0;
+    for (int s = 0; s < 2; ++s)
+      for (std::size_t k = 0; k < n; ++k)
+        if (side[k] == s) words[at++] = scratch_[k];
+    if (largestHere)
+      for (std::size_t k = 0; k < n; ++k)
+        if (words[k].offset == largestOffset)
+          program_.largestIntegerWord = block.firstWord + static_cast<std::uint32_t>(k);
   }
 
   const SourceFile& src_;
@@ -649,16 +671,15 @@ class LineParser {
   Program& program_;
   Diagnostics& diags_;
   const ParseOptions& options_;
-  std::vector<Word> pending_;        ///< this block's words, in the order written
-  std::vector<std::uint8_t> sides_;  ///< assignSides' side of each pending word
-  int splitAt_ = -1;                 ///< index in pending_ where a positional upper side starts
+  std::vector<std::uint8_t> sides_;  ///< assignSides' side of each of the block's words
+  std::vector<Word> scratch_;        ///< assignSides' copy of a block it reorders
+  bool upperLetters_ = false;        ///< U V K L among the block's words
+  int splitAt_ = -1;                 ///< index in the block's words where a positional upper side starts
   bool colon_ = false;               ///< that split was a ':'
   bool sawCoordinate_ = false;       ///< X Y I J R U V seen in this block
   bool sawMotion_ = false;           ///< a motion word (G00-G03) seen in this block
   bool homing_ = false;              ///< G28 or G30 seen in this block: bare axis letters allowed
   bool hasUpper_ = false;            ///< assignSides set upperFrom for this block
-  int largestPending_ = -1;          ///< pending_ index of this block's largest integer length word
-  double blockLargest_ = 0.0;        ///< its |value|
   std::size_t macroStatements_ = 0;
   SourceSpan firstMacro_;
   std::uint32_t firstMacroLine_ = 0, lastMacroLine_ = 0;

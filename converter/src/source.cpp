@@ -1,13 +1,21 @@
 #include "kerf/converter/source.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace kerf::converter {
 
 SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
   lineStarts_.push_back(0);
-  for (std::size_t i = 0; i < text_.size(); ++i) {
-    if (text_[i] == '\n' || (text_[i] == '\r' && (i + 1 == text_.size() || text_[i + 1] != '\n')))
+  const char* data = text_.data();
+  const std::size_t size = text_.size();
+  if (std::memchr(data, '\r', size) == nullptr) {  // LF only: the fast way
+    for (const char* p = data; (p = static_cast<const char*>(std::memchr(p, '\n', size - (p - data)))); ++p)
+      lineStarts_.push_back(static_cast<std::uint32_t>(p - data + 1));
+    return;
+  }
+  for (std::size_t i = 0; i < size; ++i) {
+    if (data[i] == '\n' || (data[i] == '\r' && (i + 1 == size || data[i + 1] != '\n')))
       lineStarts_.push_back(static_cast<std::uint32_t>(i + 1));
   }
 }

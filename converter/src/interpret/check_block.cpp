@@ -4,10 +4,11 @@
 namespace kerf::converter::interp {
 
 bool Interpreter::checkDialectWords(const Block& block, const BlockWords& bw, const BlockWords& ubw, bool setPosition) {
-  const std::string as = std::string(" (this program is read as ") + dialectName(dialect_) + ")";
-  const std::string choose = "choose the dialect with --dialect";
+  // Built only when a word is refused: this runs for every block.
+  const char* choose = "choose the dialect with --dialect";
   auto refuse = [&](const Word* w, const std::string& message, const std::string& help = {}) {
-    diags_.error(Code::WordNotInDialect, src_, w ? w->span() : block.span(), message + as, help);
+    diags_.error(Code::WordNotInDialect, src_, w ? w->span() : block.span(),
+                 message + " (this program is read as " + dialectName(dialect_) + ")", help);
     return false;
   };
   const bool upperContourWords =
@@ -15,16 +16,19 @@ bool Interpreter::checkDialectWords(const Block& block, const BlockWords& bw, co
   for (const BlockWords* side : {&bw, &ubw}) {
     if (!upperContourWords && !setPosition && (side->has('U') || side->has('V')))
       return refuse(side->has('U') ? (*side)['U'] : (*side)['V'], "U/V give the upper contour of a 4-axis program",
-                    dialect_ == Dialect::SodickColon ? "in sodick-colon the upper contour follows ':' as X Y"
-                                                     : choose + " xyuv-abs, xyuv-rel or xyuv-linuxcnc");
+                    dialect_ == Dialect::SodickColon
+                        ? std::string("in sodick-colon the upper contour follows ':' as X Y")
+                        : std::string(choose) + " xyuv-abs, xyuv-rel or xyuv-linuxcnc");
   }
   if (block.colon && dialect_ != Dialect::SodickColon)
     return refuse(nullptr, "':' separates the lower and upper contours of a Sodick 4-axis program",
-                  choose + " sodick-colon");
+                  std::string(choose) + " sodick-colon");
   if (const Word* t = bw.group(ModalGroup::Taper); t && dialect_ != Dialect::TaperAngle)
-    return refuse(t, gName(bw.code(ModalGroup::Taper)) + " is a taper-angle command", choose + " taper-angle");
+    return refuse(t, gName(bw.code(ModalGroup::Taper)) + " is a taper-angle command",
+                  std::string(choose) + " taper-angle");
   if (const Word* c = bw.group(ModalGroup::ColonMode); c && dialect_ != Dialect::SodickColon)
-    return refuse(c, gName(bw.code(ModalGroup::ColonMode)) + " is a Sodick 4-axis command", choose + " sodick-colon");
+    return refuse(c, gName(bw.code(ModalGroup::ColonMode)) + " is a Sodick 4-axis command",
+                  std::string(choose) + " sodick-colon");
   if (dialect_ == Dialect::XyuvAbs) {
     for (char c : {'X', 'Y', 'K', 'L'})
       if (ubw.has(c))
@@ -38,10 +42,10 @@ bool Interpreter::checkDialectWords(const Block& block, const BlockWords& bw, co
                       std::string("'") + c +
                           "' on the upper side: in xyuv-linuxcnc U V move in a straight line during the "
                           "block, so the upper side has no centre of its own",
-                      "for an upper arc with its own centre, " + choose + " xyuv-abs");
+                      "for an upper arc with its own centre, " + std::string(choose) + " xyuv-abs");
     if (const Word* g = ubw.group(ModalGroup::Motion))
       return refuse(g, "a second motion word: in xyuv-linuxcnc both sides share the block's motion",
-                    choose + " xyuv-abs");
+                    std::string(choose) + " xyuv-abs");
   }
   if (dialect_ == Dialect::XyuvRel) {
     for (char c : {'X', 'Y', 'I', 'J', 'R'})
@@ -83,18 +87,19 @@ bool Interpreter::checkBlock(const Block& block, const BlockWords& bw, const Blo
     return false;
   }
   // A direction alone (`Y+`) belongs to an edge-sensing code of the machine.
-  for (const BlockWords* side : {&bw, &ubw})
-    for (char c : {'X', 'Y', 'U', 'V', 'Z'})
-      if (const Word* w = (*side)[c]; w && w->kind == WordValue::Direction && !plan.positionCode) {
-        diags_.error(Code::DirectionWord, src_, w->span(),
-                     "'" + std::string(src_->text().substr(w->offset, w->length)) +
-                         "' gives a direction, not a coordinate: that belongs to an edge-sensing code",
-                     "Sodick writes G80 X+ (contact sensing); read such a program with --machine sodick");
-        return false;
-      }
+  if (block.unusualValues)
+    for (const BlockWords* side : {&bw, &ubw})
+      for (char c : {'X', 'Y', 'U', 'V', 'Z'})
+        if (const Word* w = (*side)[c]; w && w->kind == WordValue::Direction && !plan.positionCode) {
+          diags_.error(Code::DirectionWord, src_, w->span(),
+                       "'" + std::string(src_->text().substr(w->offset, w->length)) +
+                           "' gives a direction, not a coordinate: that belongs to an edge-sensing code",
+                       "Sodick writes G80 X+ (contact sensing); read such a program with --machine sodick");
+          return false;
+        }
   // The second plane named U Z: ask, do not guess. Said once; every such block is left unread,
   // so no contour half made of guesses follows.
-  if (!machine_.upperAxesUZ && !programHasV_) {
+  if (!programHasV_ && !machine_.upperAxesUZ && (bw.has('U') || ubw.has('U'))) {
     const Word* u = bw.has('U') ? bw['U'] : ubw['U'];
     const Word* z = bw['Z'];
     if (u && z) {

@@ -10,7 +10,6 @@ bool isValueUnknown(const Word* w) { return w && (w->kind == WordValue::Register
 }  // namespace
 
 BlockPlan Interpreter::fillIn(const Block& block, const BlockWords& bw, const BlockWords& ubw) const {
-  (void)block;
   BlockPlan p;
   if (const Word* mw = bw.group(ModalGroup::Motion)) {
     p.motion = motionOf(bw.code(ModalGroup::Motion));
@@ -31,11 +30,13 @@ BlockPlan Interpreter::fillIn(const Block& block, const BlockWords& bw, const Bl
   p.homing =
       bw.hasCode(GCode::ReferenceReturn) || bw.hasCode(GCode::SecondReference) || bw.hasCode(GCode::MachineCoordinates);
   p.lowerWords = bw.has('X') || bw.has('Y') || bw.has('I') || bw.has('J') || bw.has('R');
-  for (char c : {'U', 'V', 'X', 'Y', 'I', 'J', 'R', 'K', 'L'}) p.upperWords |= ubw.has(c);
-  p.upperWords |= bw.has('U') || bw.has('V');
-  for (const BlockWords* side : {&bw, &ubw})
-    for (char c : {'X', 'Y', 'U', 'V', 'I', 'J', 'R', 'K', 'L'})
-      if (!p.unknownValue && isValueUnknown((*side)[c])) p.unknownValue = (*side)[c];
+  p.upperWords = bw.has('U') || bw.has('V');
+  if (block.upperFrom < block.wordCount)
+    for (char c : {'U', 'V', 'X', 'Y', 'I', 'J', 'R', 'K', 'L'}) p.upperWords |= ubw.has(c);
+  if (block.unusualValues)
+    for (const BlockWords* side : {&bw, &ubw})
+      for (char c : {'X', 'Y', 'U', 'V', 'I', 'J', 'R', 'K', 'L'})
+        if (!p.unknownValue && isValueUnknown((*side)[c])) p.unknownValue = (*side)[c];
   for (std::size_t k = 0; k < bw.machineCount; ++k) {
     const KnownCode* code = bw.machine[k].second;
     if (code->effect == CodeEffect::Position && !p.positionCode) {

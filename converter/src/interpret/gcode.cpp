@@ -108,11 +108,15 @@ const GCodeInfo* findGCode(double value) {
   return nullptr;
 }
 
-const GCodeInfo& info(GCode code) {
-  for (const GCodeInfo& g : kGCodes)
-    if (g.code == code) return g;
-  return kGCodes.front();
+// The table is in the enum's order, so a code's entry is found by its value.
+constexpr bool inEnumOrder() {
+  for (std::size_t k = 0; k < kGCodes.size(); ++k)
+    if (static_cast<std::size_t>(kGCodes[k].code) != k) return false;
+  return true;
 }
+static_assert(inEnumOrder(), "kGCodes must list the codes in the order of enum GCode");
+
+const GCodeInfo& info(GCode code) { return kGCodes[static_cast<std::size_t>(code)]; }
 
 std::string gName(int number, int fraction) {
   char buf[24];

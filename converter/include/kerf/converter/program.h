@@ -24,16 +24,18 @@ enum class WordValue : std::uint8_t {
 };
 
 struct Word {
-  char letter = 0;                     ///< upper case A-Z
-  bool hasPoint = false;               ///< the number was written with a decimal point
-  WordValue kind = WordValue::Number;  ///< what the value is
-  std::uint16_t length = 0;            ///< bytes of the whole word in the source (letter + value)
-  std::uint32_t offset = 0;            ///< byte offset of the letter
-  double value = 0.0;                  ///< as written (no unit conversion); 0 unless a Number
+  char letter = 0;  ///< upper case A-Z
+  // One byte for both, so that a word stays 16 bytes (a program holds millions of them).
+  bool hasPoint : 1 = false;               ///< the number was written with a decimal point
+  WordValue kind : 3 = WordValue::Number;  ///< what the value is
+  std::uint16_t length = 0;                ///< bytes of the whole word in the source (letter + value)
+  std::uint32_t offset = 0;                ///< byte offset of the letter
+  double value = 0.0;                      ///< as written (no unit conversion); 0 unless a Number
 
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
   [[nodiscard]] bool isNumber() const { return kind == WordValue::Number; }
 };
+static_assert(sizeof(Word) == 16, "a Word is 16 bytes: a program holds millions of them");
 
 /// A setting line kept verbatim, e.g. a Sodick register `H001 = +000000.1300` or a condition
 /// `C000 = ...`, or SKD `E001= ...`. Kerf stores them; it does not interpret them.
@@ -63,11 +65,12 @@ struct Block {
   /// order (RS274 gives word order no meaning). Equal to wordCount when the block has no upper side.
   std::uint32_t upperFrom = 0;
   BlockKind kind = BlockKind::Words;
-  bool colon = false;        ///< the upper side was opened with ':'
-  bool twoMotions = false;   ///< the upper side was opened by a second motion word (cnc3)
-  bool blockDelete = false;  ///< started with '/'
-  bool hasError = false;     ///< the parser reported an error in this block
-  bool lowerCase = false;    ///< some word letter was written in lower case
+  bool colon = false;          ///< the upper side was opened with ':'
+  bool twoMotions = false;     ///< the upper side was opened by a second motion word (cnc3)
+  bool blockDelete = false;    ///< started with '/'
+  bool hasError = false;       ///< the parser reported an error in this block
+  bool lowerCase = false;      ///< some word letter was written in lower case
+  bool unusualValues = false;  ///< some word's value is not a number (WordValue other than Number)
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
 };
 

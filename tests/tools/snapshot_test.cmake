@@ -9,7 +9,9 @@ file(MAKE_DIRECTORY "${out_dir}")
 string(REGEX REPLACE "\\.png$" ".diff.png" diff "${OUTPUT}")
 file(REMOVE "${OUTPUT}" "${diff}")
 if(MODE STREQUAL "window")
-  execute_process(COMMAND ${XVFB} -a -s "-screen 0 1280x1024x24" ${KERF} view ${ARGS} --screenshot ${OUTPUT}
+  # Our own auth file: xvfb-run's temporary folder sometimes fails its clean-up (exit 5).
+  execute_process(COMMAND ${XVFB} -a -f "${out_dir}/xauthority" -s "-screen 0 1280x1024x24" ${KERF} view ${ARGS}
+                          --screenshot ${OUTPUT}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 else()
   execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY ${KERF} render ${ARGS} -o ${OUTPUT}

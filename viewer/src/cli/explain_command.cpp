@@ -18,10 +18,9 @@ CLI::App* addExplainCommand(CLI::App& app, ExplainArgs& a) {
 }
 
 int runExplain(const ExplainArgs& a) {
-  std::optional<Loaded> in = load(a.common, a.common.input.files.front());
+  std::optional<Loaded> in = loadOne(a.common);
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  printDiagnostics(p.diags, a.common);
   const auto sampling = a.common.sampling.sampling();
   std::cout << (a.json ? converter::explainJson(p.program, p.toolpath, sampling)
                        : converter::explainText(p.program, p.toolpath, sampling));

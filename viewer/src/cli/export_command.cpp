@@ -28,10 +28,9 @@ int runExport(const ExportArgs& a) {
     reportError("-o must end in .vtp, .stl or .ply, not '" + a.output + "'");
     return kExitUsage;
   }
-  std::optional<Loaded> in = load(a.common, a.common.input.files.front());
+  std::optional<Loaded> in = loadOne(a.common);
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  printDiagnostics(p.diags, a.common);
   const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), a.caps);
   if (data.surface.mesh.triangles.empty()) {
     reportError("nothing is cut, so there is no surface to export");

@@ -53,4 +53,10 @@ std::optional<Loaded> load(const CommonOptions& options, const std::string& file
   return out;
 }
 
+std::optional<Loaded> loadOne(const CommonOptions& options) {
+  std::optional<Loaded> in = load(options, options.input.files.front());
+  if (in) printDiagnostics(in->pipeline.diags, options);
+  return in;
+}
+
 }  // namespace kerf::cli

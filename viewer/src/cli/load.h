@@ -25,6 +25,9 @@ struct Loaded {
 /// printed, when a file cannot be read or the machine profile is wrong (exit 2).
 std::optional<Loaded> load(const CommonOptions& options, const std::string& file);
 
+/// For the commands that take one program: load() it and print its diagnostics, as check does.
+std::optional<Loaded> loadOne(const CommonOptions& options);
+
 /// The first `cap` diagnostics, with every one still counted.
 converter::Diagnostics capped(const converter::Diagnostics& all, std::size_t cap);
 

@@ -50,10 +50,9 @@ int runRender(const RenderArgs& a) {
   request.options.colourBySlope = a.colourBy.has_value();
   request.options.highlightFindings = a.highlight;
   const std::string& file = a.common.input.files.front();
-  std::optional<Loaded> in = load(a.common, file);
+  std::optional<Loaded> in = loadOne(a.common);
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  printDiagnostics(p.diags, a.common);
   const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh));
   request.annotation = annotationOf(file, p);
   request.annotation.legend = request.options.colourBySlope;

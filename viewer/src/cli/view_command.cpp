@@ -36,10 +36,9 @@ int runView(const ViewArgs& a) {
     return kExitUsage;
   }
   const std::string& file = a.common.input.files.front();
-  std::optional<Loaded> in = load(a.common, file);
+  std::optional<Loaded> in = loadOne(a.common);
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  printDiagnostics(p.diags, a.common);
   const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh));
   request.source = p.source.get();
   request.toolpath = &p.toolpath;

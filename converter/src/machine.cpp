@@ -1,7 +1,7 @@
 // Machine profiles: the text format, the built-in profiles (converter/machines/, compiled in) and
-// detection from a program's evidence.
+// detection from a program's evidence, and reading a program with its profile.
 //
-// Sections: 1. names  2. the profile file  3. built-ins  4. detection
+// Sections: 1. names  2. the profile file  3. built-ins  4. detection  5. reading for a machine
 #include "kerf/converter/machine.h"
 
 #include "kerf/converter/dialect.h"
@@ -154,6 +154,13 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
     auto badValue = [&](const std::string& allowed) {
       fail(valueAt, value.size(), "'" + value + "' is not a value of " + key, "allowed: " + allowed);
     };
+    // A key with two values: `off` sets the flag false, `on` sets it true.
+    auto either = [&](bool& flag, const char* off, const char* on) {
+      if (value == off || value == on)
+        flag = value == on;
+      else
+        badValue(std::string(off) + " or " + on);
+    };
     if (key.rfind("code ", 0) == 0 || key.rfind("code\t", 0) == 0) {
       KnownCode c;
       c.key = normaliseKey(key.substr(5));
@@ -234,25 +241,13 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       else
         badValue("xyuv-abs, xyuv-rel, xyuv-linuxcnc or auto");
     } else if (key == "semicolon") {
-      if (value == "comment" || value == "end-of-block")
-        p.semicolonEndsBlock = value == "end-of-block";
-      else
-        badValue("comment or end-of-block");
+      either(p.semicolonEndsBlock, "comment", "end-of-block");
     } else if (key == "upper_axes") {
-      if (value == "uv" || value == "uz")
-        p.upperAxesUZ = value == "uz";
-      else
-        badValue("uv or uz");
+      either(p.upperAxesUZ, "uv", "uz");
     } else if (key == "bare_g92") {
-      if (value == "error" || value == "origin")
-        p.bareSetPositionIsOrigin = value == "origin";
-      else
-        badValue("error or origin");
+      either(p.bareSetPositionIsOrigin, "error", "origin");
     } else if (key == "legacy_taper_codes") {
-      if (value == "no" || value == "detect")
-        p.legacyTaperCodes = value == "detect";
-      else
-        badValue("no or detect");
+      either(p.legacyTaperCodes, "no", "detect");
     } else if (key == "max_taper") {
       if (auto v = number(value); v && *v >= 0 && *v <= 89)
         p.maxTaperDegrees = *v;
@@ -473,6 +468,31 @@ MachineDetection detectMachine(const Program& program) {
   std::stable_sort(d.evidence.begin(), d.evidence.end(),
                    [](const MachineEvidence& a, const MachineEvidence& b) { return a.weight > b.weight; });
   return d;
+}
+
+// ---- 5. reading a program for its machine ---------------------------------------------------------
+
+ParseOptions parseOptionsFor(const MachineProfile& machine, std::optional<bool> upperAxesUZ) {
+  ParseOptions p;
+  p.semicolonEndsBlock = machine.semicolonEndsBlock;
+  p.upperAxesUZ = upperAxesUZ.value_or(machine.upperAxesUZ);
+  return p;
+}
+
+MachineReading readForMachine(const SourceFile& source, const MachineProfile* given, std::optional<bool> upperAxesUZ) {
+  MachineReading r;
+  r.machine = given ? given : findBuiltinMachine("generic");
+  r.parse = parseOptionsFor(*r.machine, upperAxesUZ);
+  r.program = parseProgram(source, r.diags, r.parse);
+  if (given) return r;
+  r.detection = detectMachine(r.program);
+  r.machine = r.detection.profile;
+  if (const ParseOptions again = parseOptionsFor(*r.machine, upperAxesUZ); again != r.parse) {
+    r.diags = Diagnostics(r.diags.cap());
+    r.parse = again;
+    r.program = parseProgram(source, r.diags, r.parse);
+  }
+  return r;
 }
 
 }  // namespace kerf::converter

@@ -6,28 +6,12 @@
 namespace kerf::converter {
 
 Analysis analyse(const SourceFile& source, const InterpreterOptions& options, Diagnostics& diags) {
+  MachineReading r = readForMachine(source, options.machine);
+  for (const Diagnostic& d : r.diags.all()) diags.report(d);
   InterpreterOptions io = options;
-  auto parseOptionsOf = [](const MachineProfile& m) {
-    ParseOptions p;
-    p.semicolonEndsBlock = m.semicolonEndsBlock;
-    p.upperAxesUZ = m.upperAxesUZ;
-    return p;
-  };
-  // Parsed once with the profile's options; a detected profile that splits blocks differently
-  // (Sodick's ';') reads the text again.
-  const ParseOptions first = io.machine ? parseOptionsOf(*io.machine) : ParseOptions{};
-  Diagnostics parseDiags(std::max<std::size_t>(diags.cap(), 100000));
+  io.machine = r.machine;
   Analysis a;
-  a.program = parseProgram(source, parseDiags, first);
-  if (!io.machine) {
-    io.machine = detectMachine(a.program).profile;
-    const ParseOptions again = parseOptionsOf(*io.machine);
-    if (again.semicolonEndsBlock != first.semicolonEndsBlock || again.upperAxesUZ != first.upperAxesUZ) {
-      parseDiags = Diagnostics(std::max<std::size_t>(diags.cap(), 100000));
-      a.program = parseProgram(source, parseDiags, again);
-    }
-  }
-  for (const Diagnostic& d : parseDiags.all()) diags.report(d);
+  a.program = std::move(r.program);
   a.toolpath = interpret(a.program, io, diags);
   return a;
 }

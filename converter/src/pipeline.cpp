@@ -18,17 +18,6 @@ void merge(const Diagnostics& from, Diagnostics& to) {
   for (const Diagnostic& d : from.all()) to.report(d);
 }
 
-ParseOptions parseOptionsOf(const MachineProfile& m, const ReadOptions& o) {
-  ParseOptions p;
-  p.semicolonEndsBlock = m.semicolonEndsBlock;
-  p.upperAxesUZ = o.upperAxesUZ.value_or(m.upperAxesUZ);
-  return p;
-}
-
-bool sameParse(const ParseOptions& a, const ParseOptions& b) {
-  return a.semicolonEndsBlock == b.semicolonEndsBlock && a.upperAxesUZ == b.upperAxesUZ;
-}
-
 // ---- 2. conventions from the evidence --------------------------------------------------------
 
 /// Integers without a decimal point: micrometres when no length word has a point and the largest
@@ -94,19 +83,12 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   }
   out.read = true;
 
-  Diagnostics readDiags(100000);
-  ParseOptions parse = parseOptionsOf(given ? *given : *findBuiltinMachine("generic"), ro);
-  out.program = parseProgram(*out.source, readDiags, parse);
-  MachineDetection detection;
+  MachineReading reading = readForMachine(*out.source, given, ro.upperAxesUZ);
+  out.program = std::move(reading.program);
+  const MachineDetection& detection = reading.detection;
   if (!given) {
-    detection = detectMachine(out.program);
-    out.machine = *detection.profile;
+    out.machine = *reading.machine;
     out.machineDetected = true;
-    if (const ParseOptions p = parseOptionsOf(out.machine, ro); !sameParse(p, parse)) {
-      readDiags = Diagnostics(100000);
-      parse = p;
-      out.program = parseProgram(*out.source, readDiags, parse);
-    }
   }
   const MachineProfile& machine = out.machine;
 
@@ -148,7 +130,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     evidence.push_back(centreEvidence(in.arcs, *machine.arcCentre));
   }
   out.toolpath = std::move(in.toolpath);
-  merge(readDiags, out.diags);
+  merge(reading.diags, out.diags);
 
   // The note that says how the program was read, and why.
   const bool namedMachine = out.machineDetected && machine.name != "generic";
@@ -174,7 +156,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   if (upper) {
     out.upperSource = std::make_unique<SourceFile>(std::move(upper->name), std::move(upper->text));
     Diagnostics upperDiags(100000);
-    const Program upperProgram = parseProgram(*out.upperSource, upperDiags, parse);
+    const Program upperProgram = parseProgram(*out.upperSource, upperDiags, reading.parse);
     const Toolpath upperPath = interpret(upperProgram, io, upperDiags);
     merge(upperDiags, out.diags);
     pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);

@@ -58,6 +58,23 @@ TEST(machine_test, profile_lines_are_checked_at_their_place) {
   EXPECT_EQ(file.locate(d.all()[3].span.offset).line, 5u);  // a code needs its note
 }
 
+TEST(machine_test, two_valued_keys_take_either_value_and_name_both_otherwise) {
+  SourceFile on("on.profile",
+                "semicolon = end-of-block\nupper_axes = uz\nbare_g92 = origin\nlegacy_taper_codes = detect\n");
+  SourceFile off("off.profile", "semicolon = comment\nupper_axes = uv\nbare_g92 = error\nlegacy_taper_codes = no\n");
+  Diagnostics d;
+  const auto a = parseMachineProfile(on, d);
+  const auto b = parseMachineProfile(off, d);
+  ASSERT_TRUE(a && b) << kerf::test::dump(d);
+  EXPECT_TRUE(a->semicolonEndsBlock && a->upperAxesUZ && a->bareSetPositionIsOrigin && a->legacyTaperCodes);
+  EXPECT_FALSE(b->semicolonEndsBlock || b->upperAxesUZ || b->bareSetPositionIsOrigin || b->legacyTaperCodes);
+  SourceFile bad("bad.profile", "upper_axes = uw\n");
+  EXPECT_FALSE(parseMachineProfile(bad, d).has_value());
+  ASSERT_EQ(d.errorCount(), 1u);
+  EXPECT_EQ(d.all()[0].help, "allowed: uv or uz");
+  EXPECT_EQ(bad.locate(d.all()[0].span.offset).column, 14u);
+}
+
 TEST(machine_test, codes_are_written_any_way_and_found_one_way) {
   SourceFile file(
       "m.profile",
@@ -174,6 +191,23 @@ TEST(machine_test, sodick_header_reads_without_a_cascade) {
   EXPECT_EQ(unknown, 1);
   EXPECT_EQ(p.toolpath.moves.size(), 6u);
   EXPECT_TRUE(p.toolpath.endedProperly);  // M199
+}
+
+TEST(machine_test, a_detected_sodick_program_is_parsed_again_with_its_block_ends) {
+  // Two blocks on one line: read first with ';' as a comment, the second is lost; the
+  // detected profile ends blocks at ';', so the text is parsed again and both are there.
+  const SourceFile src("p.nc", "C000 = 012 014;\nH000 = +000000.0100 ;\nG92 X0 Y0;\nG01 X5.; Y5.;\nM02;\n");
+  const MachineReading detected = readForMachine(src, nullptr);
+  ASSERT_NE(detected.machine, nullptr);
+  EXPECT_EQ(detected.machine->name, "sodick");
+  EXPECT_FALSE(detected.detection.evidence.empty());
+  EXPECT_TRUE(detected.parse.semicolonEndsBlock);
+  const MachineReading asGeneric = readForMachine(src, findBuiltinMachine("generic"));
+  EXPECT_EQ(asGeneric.machine->name, "generic");
+  EXPECT_TRUE(asGeneric.detection.evidence.empty());
+  EXPECT_EQ(detected.program.blocks.size(), asGeneric.program.blocks.size() + 1);
+  // --upper-axes wins over the profile's reading.
+  EXPECT_TRUE(readForMachine(src, nullptr, true).parse.upperAxesUZ);
 }
 
 TEST(machine_test, a_cut_from_a_register_value_is_an_error_once) {

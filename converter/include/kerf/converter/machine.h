@@ -102,4 +102,23 @@ struct MachineDetection {
 };
 MachineDetection detectMachine(const Program& program);
 
+/// How a profile splits the text into blocks; `upperAxesUZ` (--upper-axes) wins over the profile's.
+ParseOptions parseOptionsFor(const MachineProfile& machine, std::optional<bool> upperAxesUZ = std::nullopt);
+
+/// A program parsed for its machine. `machine` is `given`, or the detected profile when none was
+/// given; `diags` holds the parse's findings, for the caller to merge where it reports them.
+struct MachineReading {
+  Program program;
+  const MachineProfile* machine = nullptr;
+  MachineDetection detection;  ///< empty when a machine was given
+  ParseOptions parse;
+  Diagnostics diags{100000};
+};
+
+/// Parses with `given`'s rules (the generic profile's when null); with none given, detects the
+/// profile from the program and parses again when that profile splits blocks differently
+/// (Sodick's ';' ends a block). The one place a program meets its machine profile.
+MachineReading readForMachine(const SourceFile& source, const MachineProfile* given,
+                              std::optional<bool> upperAxesUZ = std::nullopt);
+
 }  // namespace kerf::converter

@@ -91,6 +91,8 @@ struct ParseOptions {
   bool semicolonEndsBlock = false;
   /// The second plane's axes are named U Z: read Z as V (some hot-wire firmware).
   bool upperAxesUZ = false;
+
+  bool operator==(const ParseOptions&) const = default;
 };
 
 struct Program {

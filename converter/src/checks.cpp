@@ -307,9 +307,11 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                    const SurfaceMeasures* measures) {
   const CutPath path = cutPath(toolpath);
   if (path.segments.empty()) {
-    // With errors, those say why; alone, this says the program is empty of cuts.
+    // With errors, those say why; alone, this says the program is empty of cuts. It points at
+    // the first move (a rapid), or where the program starts when nothing moves.
     if (!diags.hasErrors())
-      diags.error(Code::NothingCut, src, SourceSpan::wholeFile(), "the program cuts nothing (no G01, G02 or G03 move)",
+      diags.error(Code::NothingCut, src, toolpath.moves.empty() ? SourceSpan{0, 0} : toolpath.moves.front().span,
+                  "the program cuts nothing (no G01, G02 or G03 move)",
                   "a wire program needs at least one cutting move");
     return;
   }

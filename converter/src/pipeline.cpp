@@ -167,7 +167,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : machine.uvRange;
   if (out.program.blocks.empty()) {
     if (!out.diags.hasErrors())  // with errors, those say why nothing was read
-      out.diags.error(Code::NothingCut, out.source.get(), SourceSpan::wholeFile(),
+      out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},  // where a program would start
                       "the file holds no program (no block of words): nothing to cut");
   } else {
     out.measures = measureSurface(out.toolpath);

@@ -58,6 +58,61 @@ std::string centreEvidence(const ArcCentreTally& t, ArcCentreMode m) {
 
 // ---- 3. the pipeline -----------------------------------------------------------------------
 
+namespace {
+
+/// The checks, with the machine's limits unless the user gave others.
+void runChecks(Pipeline& out, const PipelineOptions& options) {
+  out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
+  out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
+  if (out.toolpath.blocks > 0) {
+    out.measures = measureSurface(out.toolpath);
+    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
+  }
+  out.diags.sortByPosition();
+}
+
+/// 3B: no machine conventions to choose; the reader gives the Toolpath, an upper file of its own
+/// (3B or ISO) pairs with it.
+void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::optional<SourceText> upper) {
+  ThreeBOptions tb;
+  if (options.read.start) tb.start = *options.read.start;
+  out.toolpath = readThreeB(*out.source, tb, out.diags);
+  const ReadOptions& ro = options.read;
+  PlaneHeights& h = out.toolpath.heights;  // 3B has no heights: only the options give them
+  h.planes.lower = ro.lowerZ.value_or(0.0);
+  h.programZ = ro.programZ.value_or(h.planes.lower);
+  const std::optional<double> upperZ = ro.upperZ      ? ro.upperZ
+                                       : ro.thickness ? std::optional<double>(h.planes.lower + *ro.thickness)
+                                       : out.machine.thickness
+                                           ? std::optional<double>(h.planes.lower + *out.machine.thickness)
+                                           : std::nullopt;
+  if (upperZ && *upperZ > h.planes.lower) {
+    h.planes.upper = *upperZ;
+    h.known = true;
+    h.source = "the options";
+  }
+  if (upper) {
+    out.upperSource = std::make_unique<SourceFile>(std::move(upper->name), std::move(upper->text));
+    Diagnostics upperDiags(100000);
+    Toolpath upperPath;
+    if (detectFormat(out.upperSource->text()).format == InputFormat::ThreeB) {
+      upperPath = readThreeB(*out.upperSource, tb, upperDiags);
+    } else {
+      MachineReading reading = readForMachine(*out.upperSource, &out.machine, std::nullopt);
+      merge(reading.diags, upperDiags);
+      InterpreterOptions io;
+      io.machine = &out.machine;
+      io.dialect = Dialect::Plain;
+      upperPath = interpret(reading.program, io, upperDiags);
+    }
+    merge(upperDiags, out.diags);
+    pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
+  }
+  runChecks(out, options);
+}
+
+}  // namespace
+
 Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::optional<SourceText> upper) {
   Pipeline out;
   out.source = std::make_unique<SourceFile>(std::move(input.name), std::move(input.text));
@@ -82,6 +137,12 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     out.machine = *given;
   }
   out.read = true;
+  out.format = ro.format ? *ro.format : detectFormat(out.source->text()).format;
+  if (out.format == InputFormat::ThreeB) {
+    if (!given) out.machine = *findBuiltinMachine("generic");
+    readThreeBPipeline(out, options, std::move(upper));
+    return out;
+  }
 
   MachineReading reading = readForMachine(*out.source, given, ro.upperAxesUZ);
   out.program = std::move(reading.program);
@@ -162,18 +223,10 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
   }
 
-  // 3. The checks, with the machine's limits unless the user gave others.
-  out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(machine.maxTaperDegrees);
-  out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : machine.uvRange;
-  if (out.program.blocks.empty()) {
-    if (!out.diags.hasErrors())  // with errors, those say why nothing was read
-      out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},  // where a program would start
-                      "the file holds no program (no block of words): nothing to cut");
-  } else {
-    out.measures = measureSurface(out.toolpath);
-    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
-  }
-  out.diags.sortByPosition();
+  if (out.program.blocks.empty() && !out.diags.hasErrors())  // with errors, those say why nothing was read
+    out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},  // where a program would start
+                    "the file holds no program (no block of words): nothing to cut");
+  runChecks(out, options);
   return out;
 }
 

@@ -61,8 +61,8 @@ const char* centreFormName(CentreForm f) {
   return "none";
 }
 
-std::string blockText(const Program& program, const Move& m) {
-  return std::string(program.source->text().substr(m.span.offset, m.span.length));
+std::string blockText(const SourceFile& source, const Move& m) {
+  return std::string(source.text().substr(m.span.offset, m.span.length));
 }
 
 std::string segmentText(const geometry::Segment& s, int decimals) {
@@ -116,11 +116,14 @@ std::string formatDiagnosticsText(const Diagnostics& diags) {
 std::string formatSummaryText(const std::string& file, const Summary& s, const Diagnostics& diags) {
   std::string out;
   out += file + ": " + plural(diags.errorCount(), "error") + ", " + plural(diags.warningCount(), "warning") + "\n";
-  out += "  read for the " + s.reading.machine + " machine: integers in " + integerUnitName(s.reading.integerUnit) +
-         ", I J " + arcCentreName(s.reading.arcCentre) + "\n";
-  out += "  blocks " + std::to_string(s.blocks) + ", moves " + std::to_string(s.moves) + " (" +
-         std::to_string(s.cutMoves) + " cut: " + plural(s.lines, "line") + ", " + plural(s.arcs, "arc") + "; " +
-         std::to_string(s.rapidMoves) + " rapid)\n";
+  if (s.format == InputFormat::ThreeB)
+    out += "  read as 3B code: whole micrometres, each record relative to where the last one ended\n";
+  else
+    out += "  read for the " + s.reading.machine + " machine: integers in " + integerUnitName(s.reading.integerUnit) +
+           ", I J " + arcCentreName(s.reading.arcCentre) + "\n";
+  out += std::string(s.format == InputFormat::ThreeB ? "  records " : "  blocks ") + std::to_string(s.blocks) +
+         ", moves " + std::to_string(s.moves) + " (" + std::to_string(s.cutMoves) + " cut: " + plural(s.lines, "line") +
+         ", " + plural(s.arcs, "arc") + "; " + std::to_string(s.rapidMoves) + " rapid)\n";
   out += "  cut length " + mm(s.cutLength) + " mm, rapid length " + mm(s.rapidLength) + " mm\n";
   if (!s.bounds.empty())
     out += "  bounds X " + mm(s.bounds.min.x()) + " .. " + mm(s.bounds.max.x()) + ", Y " + mm(s.bounds.min.y()) +
@@ -169,6 +172,7 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
   }
   j["diagnostics"] = std::move(list);
   json sum;
+  sum["format"] = s.format == InputFormat::ThreeB ? "3b" : "iso";
   sum["machine"] = s.reading.machine;
   sum["integer_unit"] = integerUnitName(s.reading.integerUnit);
   sum["arc_centre"] = arcCentreName(s.reading.arcCentre);
@@ -239,10 +243,10 @@ std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags) {
 
 // ---- 3. explain --------------------------------------------------------------------------------
 
-std::string explainText(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling) {
+std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling) {
   std::string out;
-  out += "Kerf explains " + program.source->name() + ": " + plural(toolpath.moves.size(), "move") +
-         ", arcs sampled at " + samplingText(sampling) + "\n";
+  out += "Kerf explains " + source.name() + ": " + plural(toolpath.moves.size(), "move") + ", arcs sampled at " +
+         samplingText(sampling) + "\n";
   out += "Angles: counter-clockwise from +X unless marked 'seed', which is the paper's clockwise convention.\n";
   out += "The wire starts at " + pt(toolpath.start) + ".\n";
   if (toolpath.isTaper()) {
@@ -257,7 +261,7 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     const Move& m = toolpath.moves[i];
     const geometry::Segment& s = m.lower;
-    out += "\nline " + std::to_string(m.line) + ": " + blockText(program, m) + "\n";
+    out += "\nline " + std::to_string(m.line) + ": " + blockText(source, m) + "\n";
     if (toolpath.isTaper()) {
       const geometry::Segment& u = toolpath.upper[i];
       out += "  upper: " + segmentText(u, 3) + ", length " + mm(u.length()) + " mm\n";
@@ -272,7 +276,12 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
       }
       out += "  lower:\n";
     }
+    const bool threeB = toolpath.format == InputFormat::ThreeB;
     if (m.kind != MoveKind::Arc) {
+      if (threeB)
+        out +=
+            "  3B line: x y give the direction (their signs from L, the end's quadrant), J the length along the "
+            "count axis G; end = start + (x, y) J / (x for GX, y for GY)\n";
       out += std::string("  ") + (m.kind == MoveKind::Rapid ? "rapid (G00, not cut)" : "straight cut (G01)") +
              " from " + pt(s.start) + " to " + pt(s.end) + ", length " + mm(s.length()) + " mm\n";
       if (m.kind == MoveKind::Line) out += "  a line adds only its end point to the point sequence\n";
@@ -289,6 +298,13 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
              mm((s.end - s.start).norm() / 2) + " mm; " +
              (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
              " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
+    } else if (threeB) {
+      const Vec2& xy = m.programmedCentreWords;
+      out += "  3B arc: x y = start - centre = (" + mm(xy.x()) + ", " + mm(xy.y()) +
+             ") (signs from the start's quadrant in SR/NR), so the centre is " + pt(s.centre) + ", radius " +
+             mm(s.radius) +
+             " mm; the arc ends where it has travelled J along the count axis, over every quadrant it "
+             "crosses\n";
     } else {
       const Vec2& ij = m.programmedCentreWords;
       std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"
@@ -315,11 +331,12 @@ std::string explainText(const Program& program, const Toolpath& toolpath, const 
   return out;
 }
 
-std::string explainJson(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling) {
+std::string explainJson(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling) {
   json j;
-  j["file"] = program.source->name();
+  j["file"] = source.name();
   j["sampling"] = samplingJson(sampling);
   j["start"] = vec(toolpath.start);
+  j["format"] = toolpath.format == InputFormat::ThreeB ? "3b" : "iso";
   json moves = json::array();
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     const Move& m = toolpath.moves[i];
@@ -327,7 +344,7 @@ std::string explainJson(const Program& program, const Toolpath& toolpath, const 
     json e;
     e["index"] = i;
     e["line"] = m.line;
-    e["block"] = blockText(program, m);
+    e["block"] = blockText(source, m);
     e["kind"] = kindName(m.kind);
     e["start"] = vec(s.start);
     e["end"] = vec(s.end);
@@ -356,8 +373,10 @@ std::string explainJson(const Program& program, const Toolpath& toolpath, const 
       e["radius"] = s.radius;
       e["direction"] = s.sweep < 0 ? "cw" : "ccw";
       e["sweep_deg"] = std::abs(s.sweep) * 180.0 / geometry::kPi;
-      e["centre_from"] = centreFormName(m.centreForm);
-      if (m.centreForm == CentreForm::Radius) {
+      e["centre_from"] = toolpath.format == InputFormat::ThreeB ? "3B-xy" : centreFormName(m.centreForm);
+      if (toolpath.format == InputFormat::ThreeB) {
+        e["xy"] = vec(m.programmedCentreWords);
+      } else if (m.centreForm == CentreForm::Radius) {
         e["R"] = m.programmedRadius;
         e["zn"] = geometry::seedSignFactor(
             s.sweep < 0 ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise,

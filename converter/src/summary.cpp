@@ -64,12 +64,13 @@ TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) 
 
 }  // namespace
 
-Summary summarize(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling,
+Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling,
                   const SurfaceMeasures* measures) {
   Summary s;
+  s.format = toolpath.format;
   s.reading = toolpath.reading;
   s.dialect = toolpath.dialect;
-  s.blocks = program.blocks.size();
+  s.blocks = toolpath.blocks;
   s.moves = toolpath.moves.size();
   for (const Move& m : toolpath.moves) {
     if (!m.isCut()) {

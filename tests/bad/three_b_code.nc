@@ -1,3 +1,3 @@
-; 2:1: error: unknown word letter 'B' [K0107]
-B9900 B0 B9900 GX L3
+; 2:23: error: a lost B: the y field starts with a number, not with B [K0120]
+B9900B0B9900GXL3B9900 9900B9900GXL1
 DD

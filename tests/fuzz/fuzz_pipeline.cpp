@@ -28,7 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Diagnostics diags(20);
   for (const Diagnostic& d : p.diags.all()) (void)formatDiagnostic(d);
   (void)formatTrace(a.toolpath, diags);
-  (void)explainText(a.program, a.toolpath, kerf::geometry::Sampling::step(0.5));
+  (void)explainText(src, a.toolpath, kerf::geometry::Sampling::step(0.5));
   PointRequest request;
   request.maxPoints = 500;
   (void)emitPoints(a.toolpath, &src, bp95dProfile(), request, diags);

@@ -46,6 +46,7 @@ Interpretation Interpreter::run() {
   // Most blocks of a wire program are moves: reserving avoids copying them while growing.
   toolpath_.moves.reserve(std::min(program_.blocks.size(), options_.maxMoves));
   for (const Setting& s : program_.settings) toolpath_.settings.push_back(s);
+  toolpath_.blocks = program_.blocks.size();
   warnIntegerUnit();
   std::size_t pc = 0;
   std::size_t executed = 0;

@@ -45,7 +45,7 @@ int runCheck(const CheckArgs& a) {
     }
     const converter::Pipeline& p = in->pipeline;
     const converter::Summary summary =
-        converter::summarize(p.program, p.toolpath, a.common.sampling.sampling(), &p.measures);
+        converter::summarize(p.toolpath, a.common.sampling.sampling(), &p.measures);
     const converter::Diagnostics shown = capped(p.diags, a.common.checks.maxDiagnostics);
     if (a.trace) {
       std::cout << converter::formatTrace(p.toolpath, p.diags);

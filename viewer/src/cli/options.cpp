@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -37,6 +38,10 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
 
   // Reading: what the words mean.
   const std::string reading = "Reading (default: the machine profile's, else the program's evidence)";
+  cmd.add_option("--format", o.reading.format, "input format; auto: detected from the content (docs/formats.md)")
+      ->check(CLI::IsMember({"auto", "iso", "3b"}))
+      ->group(reading);
+  cmd.add_option("--start", o.reading.start, "where a 3B program starts, X,Y in mm (default 0,0)")->group(reading);
   cmd.add_option("--integer-unit", o.reading.integerUnit, "unit of coordinates written without a decimal point")
       ->check(CLI::IsMember({"mm", "um"}))
       ->group(reading);
@@ -123,6 +128,18 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
       if (!text) return false;
       r.machineFile = SourceText{*o.input.machine, std::move(*text)};
     }
+  }
+  if (o.reading.format != "auto") r.format = parseInputFormat(o.reading.format);
+  if (o.reading.start) {
+    double x = 0, y = 0;
+    int consumed = 0;
+    const std::string& t = *o.reading.start;
+    if (std::sscanf(t.c_str(), "%lf,%lf%n", &x, &y, &consumed) != 2 || consumed != static_cast<int>(t.size()) ||
+        !std::isfinite(x) || !std::isfinite(y)) {
+      error = "--start takes X,Y in mm (for example 10,-5.5), not '" + t + "'";
+      return false;
+    }
+    r.start = geometry::Vec2(x, y);
   }
   if (o.reading.integerUnit)
     r.integerUnit = *o.reading.integerUnit == "um" ? IntegerUnit::Micrometre : IntegerUnit::Millimetre;

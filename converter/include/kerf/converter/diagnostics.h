@@ -35,6 +35,7 @@ enum class Code : std::uint16_t {
   MalformedSetting = 110,
   DecimalComma = 112,
   MacroStatement = 113,
+  ThreeBSyntax = 120,
   // Words and modal state
   UnknownGCode = 201,
   UnknownMCode = 202,
@@ -74,6 +75,8 @@ enum class Code : std::uint16_t {
   DirectionWord = 234,
   UpperAxesNamedUZ = 235,
   PolarNotSupported = 236,
+  RotaryJump = 237,
+  PolarAxisValue = 238,
   // Arcs
   ArcWithoutCentre = 301,
   RadiusTooSmall = 302,
@@ -81,6 +84,8 @@ enum class Code : std::uint16_t {
   ArcEndOffCircle = 304,
   ZeroRadius = 305,
   UpperArcOffCircle = 306,
+  CountContradicts = 307,
+  CountPastFullCircle = 308,
   // Motion
   ZeroLengthMove = 402,
   // Program flow and subprograms
@@ -117,6 +122,10 @@ enum class Code : std::uint16_t {
   ProfileError = 802,
   StartBlockNotFound = 803,
   TaperFlattened = 804,
+  PolarThroughCentre = 805,
+  NotInOutputFormat = 806,
+  OutputAdjusted = 807,
+  OutputUnsure = 808,
   MachineProfileError = 810,
   TooManyDiagnostics = 899,
 };

@@ -5,6 +5,7 @@
 // reports with the same options. The pipeline reads no files and prints nothing: the caller gives
 // it the texts and turns the result into output and an exit code.
 //
+//   text ──detect format──▶ [3B: readThreeB ──▶ Toolpath]
 //   text ──parse──▶ Program ──machine profile (given, or detected from the evidence)──▶
 //        ──integer unit, arc-centre convention (given, the profile's, or from the evidence)──▶
 //        ──interpret──▶ Toolpath ──[two files: pair]──▶ checks ──▶ Findings
@@ -15,6 +16,7 @@
 #include "kerf/converter/interpreter.h"
 #include "kerf/converter/machine.h"
 #include "kerf/converter/program.h"
+#include "kerf/converter/read.h"
 #include "kerf/converter/source.h"
 #include "kerf/converter/summary.h"
 #include "kerf/converter/toolpath.h"
@@ -34,6 +36,8 @@ struct SourceText {
 /// What the program means. Every field is an override: nothing means "as the machine profile
 /// says, or as the program's evidence shows" (docs/machines.md gives the order).
 struct ReadOptions {
+  std::optional<InputFormat> format;      ///< --format: nothing detects it from the content (read.h)
+  std::optional<geometry::Vec2> start;    ///< --start X,Y: where a 3B program starts, mm
   std::optional<std::string> machine;     ///< --machine NAME: a built-in profile
   std::optional<SourceText> machineFile;  ///< --machine FILE: a profile's text
   std::optional<IntegerUnit> integerUnit;
@@ -63,7 +67,8 @@ struct Pipeline {
   std::unique_ptr<SourceFile> source;
   std::unique_ptr<SourceFile> upperSource;    ///< two-file input
   std::unique_ptr<SourceFile> machineSource;  ///< --machine FILE
-  Program program;
+  InputFormat format = InputFormat::Iso;  ///< the format the program was read as
+  Program program;                        ///< ISO only (empty for 3B)
   Toolpath toolpath;
   MachineProfile machine;        ///< the profile in force
   bool machineDetected = false;  ///< chosen from the evidence, not given

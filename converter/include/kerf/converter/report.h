@@ -22,8 +22,8 @@ std::string checkReportJson(const std::string& file, const Summary& summary, con
 std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags);
 
 /// `kerf explain`: each move, how its geometry follows from its words.
-std::string explainText(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling);
+std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling);
 /// `kerf explain --json`: {"file", "sampling", "moves": [{line, kind, start, end, centre, ...}]}.
-std::string explainJson(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling);
+std::string explainJson(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling);
 
 }  // namespace kerf::converter

@@ -38,6 +38,7 @@ struct TaperSummary {
 };
 
 struct Summary {
+  InputFormat format = InputFormat::Iso;
   Reading reading;                   ///< machine profile and conventions the program was read with
   Dialect dialect = Dialect::Plain;  ///< how the upper contour was given
   std::size_t blocks = 0;
@@ -54,7 +55,7 @@ struct Summary {
   std::optional<TaperSummary> taper;  ///< taper programs whose heights are known
 };
 
-Summary summarize(const Program& program, const Toolpath& toolpath, const geometry::Sampling& sampling,
+Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling,
                   const SurfaceMeasures* measures = nullptr);
 
 }  // namespace kerf::converter

@@ -11,6 +11,12 @@
 
 namespace kerf::converter {
 
+/// The format a program was read from (read.h).
+enum class InputFormat : std::uint8_t {
+  Iso,     ///< ISO 6983 G-code, in any machine's dialect
+  ThreeB,  ///< Chinese fast-wire 3B code: `B x B y B J G Z`
+};
+
 enum class MoveKind : std::uint8_t { Rapid, Line, Arc };
 
 /// How an arc's centre was given in the program.
@@ -84,6 +90,8 @@ struct Reading {
 
 struct Toolpath {
   std::vector<Move> moves;
+  InputFormat format = InputFormat::Iso;
+  std::size_t blocks = 0;  ///< blocks (ISO) or records (3B) read: what Move::block indexes
   Reading reading;
   geometry::Vec2 start{0, 0};                       ///< where the wire is before the first move
   LengthUnit programUnit = LengthUnit::Millimetre;  ///< the last G20/G21 in force

@@ -1,0 +1,45 @@
+// Readers by format: the format is detected from the content, and every reader yields a Toolpath
+// whose moves carry the span of the text they came from (docs/formats.md, docs/3b.md).
+//
+//   ISO G-code ──parse──▶ Program ──interpret──▶ Toolpath      (pipeline.h: machine profiles)
+//   3B code    ──readThreeB──────────────────▶ Toolpath      (one Move per record)
+//
+// What follows the reader (checks, summary, explain, pictures, emitters) takes the source and the
+// Toolpath, so a 3B file gets the same treatment as a G-code file.
+#pragma once
+
+#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/source.h"
+#include "kerf/converter/toolpath.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace kerf::converter {
+
+/// "iso", "3b".
+const char* inputFormatName(InputFormat f);
+/// "iso" | "3b" (any case); nothing for another name.
+std::optional<InputFormat> parseInputFormat(std::string_view name);
+
+struct FormatDetection {
+  InputFormat format = InputFormat::Iso;
+  std::string why;  ///< "the first record, B9900 B0 B9900 GX L3, is 3B code" (empty for ISO)
+};
+
+/// The format of a text, from its content: 3B when the first thing that is not blank or a `;`
+/// comment is a B field and the text holds a count direction (GX or GY); ISO otherwise.
+FormatDetection detectFormat(std::string_view text);
+
+struct ThreeBOptions {
+  geometry::Vec2 start{0, 0};  ///< where the first record starts (3B is relative), mm
+};
+
+/// Reads 3B code (docs/3b.md): records `B x B y B J G Z` token by token, with or without line
+/// breaks between them, any spacing, empty fields (0), lower case, `;` comments to the end of the
+/// line, and `DD` or `FF` as the end. A malformed record is an error at its line and column and
+/// moves nothing; reading goes on at the next line. The result's blocks count the records.
+Toolpath readThreeB(const SourceFile& source, const ThreeBOptions& options, Diagnostics& diags);
+
+}  // namespace kerf::converter

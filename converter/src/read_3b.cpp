@@ -1,0 +1,495 @@
+// Sections: 1. 3B geometry (three_b.h)  2. format detection  3. the 3B reader
+//
+// The 3B rules are FORMATS §4, written out with a worked example in docs/3b.md.
+#include "kerf/converter/read.h"
+
+#include "kerf/converter/points.h"
+#include "three_b.h"
+
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <string>
+
+namespace kerf::converter {
+
+// ---- 1. 3B geometry ----------------------------------------------------------------------------
+
+namespace three_b {
+
+using geometry::kPi;
+using geometry::Vec2;
+
+Vec2 quadrantSigns(int q) {
+  switch (q) {
+    case 1: return {1, 1};
+    case 2: return {-1, 1};
+    case 3: return {-1, -1};
+    default: return {1, -1};
+  }
+}
+
+int lineQuadrant(double dx, double dy) {
+  if (dy == 0) return dx > 0 ? 1 : 3;
+  if (dx == 0) return dy > 0 ? 2 : 4;
+  if (dx > 0) return dy > 0 ? 1 : 4;
+  return dy > 0 ? 2 : 3;
+}
+
+Axis lineAxis(double dx, double dy) {
+  const double ax = std::abs(dx), ay = std::abs(dy);
+  if (ax > ay) return Axis::X;
+  if (ay > ax) return Axis::Y;
+  const int q = lineQuadrant(dx, dy);
+  return (q == 1 || q == 3) ? Axis::Y : Axis::X;
+}
+
+int arcQuadrant(double sx, double sy, bool ccw) {
+  if (sy == 0 && sx == 0) return 1;
+  if (ccw) {
+    if (sx > 0 && sy >= 0) return 1;  // +X moves into quadrant 1
+    if (sx <= 0 && sy > 0) return 2;  // +Y into 2
+    if (sx < 0 && sy <= 0) return 3;  // -X into 3
+    return 4;                         // -Y into 4
+  }
+  if (sx >= 0 && sy > 0) return 1;  // +Y moves clockwise into quadrant 1
+  if (sx < 0 && sy >= 0) return 2;  // -X into 2
+  if (sx <= 0 && sy < 0) return 3;  // -Y into 3
+  return 4;                         // +X into 4
+}
+
+Axis arcAxis(double ex, double ey) { return std::abs(ex) > std::abs(ey) ? Axis::Y : Axis::X; }
+
+namespace {
+
+/// The coordinate's extremes lie at offset + k pi; its value there is r (-1)^k.
+double extremeOffset(Axis axis) { return axis == Axis::X ? 0.0 : kPi / 2; }
+double extremeValue(double r, long long k) { return (k % 2 == 0) ? r : -r; }
+/// The index k of the first extreme strictly after angle a in direction dir.
+long long firstExtreme(double a, double dir, Axis axis) {
+  const double u = (a - extremeOffset(axis)) / kPi;
+  return dir > 0 ? static_cast<long long>(std::floor(u + 1e-12)) + 1 : static_cast<long long>(std::ceil(u - 1e-12)) - 1;
+}
+double coordinate(Axis axis, double r, double angle) {
+  return axis == Axis::X ? r * std::cos(angle) : r * std::sin(angle);
+}
+
+}  // namespace
+
+double arcCount(double a0, double sweep, double r, Axis axis, double startValue, double endValue) {
+  const double dir = sweep >= 0 ? 1.0 : -1.0;
+  const double a1 = a0 + sweep;
+  double total = 0.0, v = startValue;
+  for (long long k = firstExtreme(a0, dir, axis);; k += static_cast<long long>(dir)) {
+    const double e = extremeOffset(axis) + static_cast<double>(k) * kPi;
+    if (dir * (e - a1) >= -1e-12) break;  // at or past the end
+    const double ext = extremeValue(r, k);
+    total += std::abs(ext - v);
+    v = ext;
+  }
+  return total + std::abs(endValue - v);
+}
+
+bool arcEnd(const Vec2& startRel, bool ccw, Axis axis, double count, double slack, Vec2& endRel, double& sweep) {
+  const double dir = ccw ? 1.0 : -1.0;
+  const double r = startRel.norm();
+  const double a0 = std::atan2(startRel.y(), startRel.x());
+  const int ax = axis == Axis::X ? 0 : 1;
+  double remaining = count, v = startRel[ax], theta = a0;
+  long long k = firstExtreme(a0, dir, axis);
+  for (;;) {
+    double e = extremeOffset(axis) + static_cast<double>(k) * kPi;
+    double ext = extremeValue(r, k);
+    const bool last = dir * (e - (a0 + dir * 2 * kPi)) >= -1e-12;
+    if (last) {  // the piece that closes the circle
+      e = a0 + dir * 2 * kPi;
+      ext = startRel[ax];
+    }
+    const double travel = std::abs(ext - v);
+    if (remaining <= travel) {
+      const double target = v + (ext >= v ? remaining : -remaining);
+      double lo = theta, hi = e;
+      const double sLo = coordinate(axis, r, lo) - target;
+      for (int i = 0; i < 100; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        const double f = coordinate(axis, r, mid) - target;
+        if ((f >= 0) == (sLo >= 0))
+          lo = mid;
+        else
+          hi = mid;
+      }
+      const double t = 0.5 * (lo + hi);
+      endRel = Vec2(r * std::cos(t), r * std::sin(t));
+      sweep = t - a0;
+      if (remaining == travel && last) {  // exactly a full circle
+        endRel = startRel;
+        sweep = dir * 2 * kPi;
+      }
+      return true;
+    }
+    remaining -= travel;
+    if (last) {
+      if (remaining > slack) return false;
+      endRel = startRel;
+      sweep = dir * 2 * kPi;
+      return true;
+    }
+    theta = e;
+    v = ext;
+    k += static_cast<long long>(dir);
+  }
+}
+
+}  // namespace three_b
+
+// ---- 2. format detection -------------------------------------------------------------------------
+
+const char* inputFormatName(InputFormat f) { return f == InputFormat::ThreeB ? "3b" : "iso"; }
+
+std::optional<InputFormat> parseInputFormat(std::string_view name) {
+  std::string n;
+  for (char c : name) n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (n == "iso") return InputFormat::Iso;
+  if (n == "3b") return InputFormat::ThreeB;
+  return std::nullopt;
+}
+
+namespace {
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+char upper(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
+
+/// Skips blanks and `;` comments from i.
+std::size_t skipBlank(std::string_view t, std::size_t i) {
+  while (i < t.size()) {
+    if (isSpace(t[i])) {
+      ++i;
+    } else if (t[i] == ';') {
+      while (i < t.size() && t[i] != '\n' && t[i] != '\r') ++i;
+    } else {
+      break;
+    }
+  }
+  return i;
+}
+
+}  // namespace
+
+FormatDetection detectFormat(std::string_view text) {
+  FormatDetection d;
+  const std::size_t i = skipBlank(text, 0);
+  if (i >= text.size() || upper(text[i]) != 'B') return d;
+  // A B field: B, blanks, digits or the next B.
+  std::size_t j = i + 1;
+  while (j < text.size() && (text[j] == ' ' || text[j] == '\t')) ++j;
+  if (j < text.size() && !std::isdigit(static_cast<unsigned char>(text[j])) && upper(text[j]) != 'B') return d;
+  // A count direction somewhere in the first records.
+  const std::size_t window = std::min<std::size_t>(text.size(), i + 4096);
+  for (std::size_t k = i; k + 1 < window; ++k) {
+    if (upper(text[k]) != 'G') continue;
+    std::size_t m = k + 1;
+    while (m < window && (text[m] == ' ' || text[m] == '\t')) ++m;
+    if (m < window && (upper(text[m]) == 'X' || upper(text[m]) == 'Y')) {
+      std::size_t end = i;
+      while (end < text.size() && text[end] != '\n' && text[end] != '\r' && end - i < 40) ++end;
+      d.format = InputFormat::ThreeB;
+      d.why = "3B code: the text starts with a record, " + std::string(text.substr(i, end - i));
+      return d;
+    }
+  }
+  return d;
+}
+
+// ---- 3. the 3B reader ------------------------------------------------------------------------------
+
+namespace {
+
+using geometry::Vec2;
+using three_b::Axis;
+
+struct Record {
+  std::uint32_t begin = 0, end = 0;        ///< the record's text
+  std::array<std::uint64_t, 3> field{};    ///< x, y, J in µm
+  std::array<std::uint32_t, 3> fieldAt{};  ///< offset of each B
+  Axis axis = Axis::X;
+  std::uint32_t axisAt = 0;
+  bool arc = false, ccw = false;
+  int quadrant = 1;
+  std::uint32_t zAt = 0;
+};
+
+class ThreeBReader {
+ public:
+  ThreeBReader(const SourceFile& src, const ThreeBOptions& options, Diagnostics& diags)
+      : src_(src), t_(src.text()), diags_(diags), position_(options.start) {
+    path_.start = options.start;
+    path_.format = InputFormat::ThreeB;
+  }
+
+  Toolpath run() {
+    std::size_t i = 0;
+    std::size_t records = 0;
+    for (;;) {
+      i = skipBlank(t_, i);
+      if (i >= t_.size()) break;
+      const char c = upper(t_[i]);
+      if ((c == 'D' || c == 'F') && i + 1 < t_.size() && upper(t_[i + 1]) == c) {  // DD, FF: the end
+        path_.endedProperly = true;
+        const std::size_t after = skipBlank(t_, i + 2);
+        if (after < t_.size())
+          diags_.warning(Code::WordIgnored, &src_, span(after, after + 1),
+                         "text after the end (" + std::string(t_.substr(i, 2)) + ") is not read");
+        break;
+      }
+      if (c == 'D') {  // a single D: the machine stops here (no motion)
+        diags_.note(Code::WordIgnored, &src_, span(i, i + 1),
+                    "D: the machine stops here (a pause, as M00); it moves nothing");
+        ++i;
+        continue;
+      }
+      Record r;
+      std::size_t next = i;
+      if (parseRecord(i, r, next)) {
+        ++records;
+        apply(r, records - 1);
+        i = next;
+      } else {
+        i = lineEnd(next);  // go on at the next line
+      }
+    }
+    path_.blocks = records;
+    if (records == 0 && diags_.errorCount() == 0)
+      diags_.error(Code::NothingCut, &src_, SourceSpan{0, 0}, "the file holds no 3B record: nothing to cut");
+    else if (!path_.endedProperly && records > 0)
+      diags_.note(Code::MissingProgramEnd, &src_, SourceSpan::wholeFile(), "the 3B program has no end (DD)",
+                  "most 3B programs end with DD (some controls take FF); the machine stops after the last record");
+    return std::move(path_);
+  }
+
+ private:
+  SourceSpan span(std::size_t a, std::size_t b) const {
+    return {static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b > a ? b - a : 1)};
+  }
+  std::size_t lineEnd(std::size_t i) const {
+    while (i < t_.size() && t_[i] != '\n' && t_[i] != '\r') ++i;
+    return i;
+  }
+  std::size_t skipInline(std::size_t i) const {
+    while (i < t_.size() && (t_[i] == ' ' || t_[i] == '\t')) ++i;
+    return i;
+  }
+  std::string shown(std::size_t i) const {
+    if (i >= t_.size()) return "the end of the file";
+    if (t_[i] == '\n' || t_[i] == '\r') return "the end of the line";
+    return "'" + std::string(1, t_[i]) + "'";
+  }
+
+  /// One record from i; false (with an error, `stop` where it was found) when it is malformed.
+  bool parseRecord(std::size_t i, Record& r, std::size_t& stop) {
+    r.begin = static_cast<std::uint32_t>(i);
+    for (int f = 0; f < 3; ++f) {
+      i = skipInline(i);
+      if (i >= t_.size() || upper(t_[i]) != 'B') {
+        stop = i;
+        const bool digit = i < t_.size() && std::isdigit(static_cast<unsigned char>(t_[i]));
+        const char* names[] = {"x", "y", "J"};
+        if (digit)
+          diags_.error(Code::ThreeBSyntax, &src_, span(i, i + 1),
+                       std::string("a lost B: the ") + names[f] + " field starts with a number, not with B",
+                       "a 3B record is B x B y B J G Z; every field begins with B (an empty field is a bare B)");
+        else
+          diags_.error(Code::ThreeBSyntax, &src_, span(i, i + 1),
+                       "expected B (the " + std::string(names[f]) + " field of a 3B record), found " + shown(i),
+                       "a 3B record is B x B y B J G Z, for example B9900 B0 B9900 GX L3");
+        return false;
+      }
+      r.fieldAt[static_cast<std::size_t>(f)] = static_cast<std::uint32_t>(i);
+      i = skipInline(i + 1);
+      const std::size_t digits = i;
+      std::uint64_t value = 0;
+      while (i < t_.size() && std::isdigit(static_cast<unsigned char>(t_[i]))) {
+        if (i - digits >= 10) {
+          stop = i;
+          diags_.error(Code::NumberOutOfRange, &src_, span(digits, i + 1),
+                       "a 3B field longer than 10 digits (" + std::string(t_.substr(digits, 11)) + "…)",
+                       "3B fields are micrometres: 10 digits are already 10 km");
+          return false;
+        }
+        value = value * 10 + static_cast<std::uint64_t>(t_[i] - '0');
+        ++i;
+      }
+      if (i < t_.size() && (t_[i] == '-' || t_[i] == '+' || t_[i] == '.' || t_[i] == ',')) {
+        stop = i;
+        diags_.error(Code::ThreeBSyntax, &src_, span(i, i + 1),
+                     t_[i] == '-' || t_[i] == '+'
+                         ? std::string("a sign in a 3B field: x, y and J are unsigned; the sign lives in Z")
+                         : std::string("a decimal point in a 3B field: x, y and J are whole micrometres"),
+                     "write B9900, not B-9.9; L1-L4 and SR/NR1-4 carry the quadrant");
+        return false;
+      }
+      r.field[static_cast<std::size_t>(f)] = value;
+    }
+    i = skipInline(i);
+    if (i >= t_.size() || upper(t_[i]) != 'G') {
+      stop = i;
+      diags_.error(Code::ThreeBSyntax, &src_, span(i, i + 1),
+                   "expected the count direction GX or GY after the J field, found " + shown(i),
+                   "a 3B record is B x B y B J G Z");
+      return false;
+    }
+    const std::size_t g = i;
+    i = skipInline(i + 1);
+    if (i >= t_.size() || (upper(t_[i]) != 'X' && upper(t_[i]) != 'Y')) {
+      stop = i;
+      diags_.error(Code::ThreeBSyntax, &src_, span(g, i + 1), "unknown count direction: G must be followed by X or Y",
+                   "GX counts J along x, GY along y");
+      return false;
+    }
+    r.axis = upper(t_[i]) == 'X' ? Axis::X : Axis::Y;
+    r.axisAt = static_cast<std::uint32_t>(g);
+    i = skipInline(i + 1);
+    r.zAt = static_cast<std::uint32_t>(i);
+    const std::size_t z = i;
+    bool ok = false;
+    if (i < t_.size() && upper(t_[i]) == 'L') {
+      ++i;
+      ok = true;
+    } else if (i + 1 < t_.size() && (upper(t_[i]) == 'S' || upper(t_[i]) == 'N') && upper(t_[i + 1]) == 'R') {
+      r.arc = true;
+      r.ccw = upper(t_[i]) == 'N';
+      i += 2;
+      ok = true;
+    }
+    if (ok && i < t_.size() && t_[i] >= '1' && t_[i] <= '4') {
+      r.quadrant = t_[i] - '0';
+      ++i;
+    } else {
+      std::size_t e = z;
+      while (e < t_.size() && std::isalnum(static_cast<unsigned char>(t_[e])) && e - z < 4) ++e;
+      stop = z;
+      diags_.error(
+          Code::ThreeBSyntax, &src_, span(z, e),
+          "unknown Z '" + std::string(t_.substr(z, e - z)) + "': a 3B record ends with L1-L4, SR1-SR4 or NR1-NR4",
+          "L: a line, by its end's quadrant; SR: a clockwise arc, NR: counter-clockwise, by its start's quadrant");
+      return false;
+    }
+    if (i < t_.size() && std::isdigit(static_cast<unsigned char>(t_[i]))) {
+      stop = i;
+      diags_.error(Code::ThreeBSyntax, &src_, span(z, i + 1),
+                   "unknown Z '" + std::string(t_.substr(z, i + 1 - z)) + "': the quadrant is one digit, 1 to 4");
+      return false;
+    }
+    r.end = static_cast<std::uint32_t>(i);
+    stop = i;
+    return true;
+  }
+
+  Move moveFor(const Record& r, std::size_t index) const {
+    Move m;
+    m.span = SourceSpan{r.begin, r.end - r.begin};
+    m.block = static_cast<std::uint32_t>(index);
+    m.line = src_.locate(r.begin).line;
+    return m;
+  }
+
+  void apply(const Record& r, std::size_t index) {
+    constexpr double kMm = 1e-3;
+    const double x = static_cast<double>(r.field[0]), y = static_cast<double>(r.field[1]);
+    const double j = static_cast<double>(r.field[2]);
+    const Vec2 signs = three_b::quadrantSigns(r.quadrant);
+    Move m = moveFor(r, index);
+    const SourceSpan jSpan = span(r.fieldAt[2], r.axisAt);
+    if (!r.arc) {
+      Vec2 d;
+      if (j == 0) {
+        diags_.warning(Code::ZeroLengthMove, &src_, m.span, "a 3B line with J = 0 moves nothing");
+        return;
+      }
+      if (x == 0 && y == 0) {  // along an axis, given by L alone
+        static const Vec2 dirs[] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+        d = dirs[r.quadrant - 1] * j;
+        const Axis expected = (r.quadrant == 1 || r.quadrant == 3) ? Axis::X : Axis::Y;
+        if (r.axis != expected) {
+          diags_.error(Code::CountContradicts, &src_, span(r.axisAt, r.zAt),
+                       std::string("J counts along ") + (r.axis == Axis::X ? "x" : "y") +
+                           ", but a line with x = y = 0 and L" + std::to_string(r.quadrant) + " runs along " +
+                           (expected == Axis::X ? "x" : "y"),
+                       "L1 and L3 run along x (GX), L2 and L4 along y (GY)");
+          return;
+        }
+      } else {
+        const double along = r.axis == Axis::X ? x : y;
+        if (along == 0) {
+          diags_.error(Code::CountContradicts, &src_, span(r.axisAt, r.zAt),
+                       std::string("J counts along ") + (r.axis == Axis::X ? "x, but x is 0" : "y, but y is 0") +
+                           ": the line never moves that way, so J can never be reached",
+                       "count along the larger component (GX when x > y)");
+          return;
+        }
+        const double scale = j / along;  // x y give the direction; J the length along the count axis
+        d = Vec2(signs.x() * x * scale, signs.y() * y * scale);
+      }
+      m.kind = MoveKind::Line;
+      m.lower = geometry::Segment::line(position_, onGrid(position_ + d * kMm));
+    } else {
+      if (x == 0 && y == 0) {
+        diags_.error(Code::ZeroRadius, &src_, span(r.fieldAt[0], r.fieldAt[2]),
+                     "a 3B arc whose start is its centre (x = y = 0): the radius is 0");
+        return;
+      }
+      const Vec2 startRel(signs.x() * x, signs.y() * y);
+      const double radius = startRel.norm();
+      Vec2 endRel;
+      double sweep = 0.0;
+      if (j == 0) {
+        diags_.warning(Code::ZeroLengthMove, &src_, m.span, "a 3B arc with J = 0 moves nothing");
+        return;
+      }
+      if (!three_b::arcEnd(startRel, r.ccw, r.axis, j, 1.0, endRel, sweep)) {
+        diags_.error(Code::CountPastFullCircle, &src_, jSpan,
+                     "J = " + std::to_string(r.field[2]) + " µm runs past a full circle: a full turn of this arc (R " +
+                         formatFixed(radius * kMm, 3) + " mm) counts " + formatFixed(4 * radius, 0) + " µm",
+                     "J is the travel along the count axis over every quadrant the arc crosses, at most 4 R");
+        return;
+      }
+      const Vec2 centre = position_ - startRel * kMm;
+      const Vec2 end = onGrid(centre + endRel * kMm);
+      m.kind = MoveKind::Arc;
+      m.lower = geometry::Segment::arc(
+          position_, end, centre, r.ccw ? geometry::ArcDirection::CounterClockwise : geometry::ArcDirection::Clockwise);
+      m.centreForm = CentreForm::Reversed;  // x y are the start minus the centre
+      m.programmedCentreWords = startRel * kMm;
+      m.radiusError = 0.0;
+      // A count that ends where the other axis is the faster one puts the end imprecisely.
+      if (three_b::arcAxis(endRel.x(), endRel.y()) != r.axis &&
+          std::abs(std::abs(endRel.x()) - std::abs(endRel.y())) > 1.0)
+        diags_.note(Code::CountContradicts, &src_, span(r.axisAt, r.zAt),
+                    std::string("the arc ends nearer the ") + (r.axis == Axis::X ? "x" : "y") +
+                        " axis, where its count coordinate hardly changes: the end is less precise than with " +
+                        (r.axis == Axis::X ? "GY" : "GX"),
+                    "3B counts along the axis whose coordinate changes faster at the end (|xe| > |ye|: GY)");
+    }
+    position_ = m.lower.end;
+    path_.moves.push_back(std::move(m));
+  }
+
+  /// The machine moves in whole micrometres from where it started: every record ends on that grid.
+  Vec2 onGrid(const Vec2& p) const {
+    const Vec2 d = (p - path_.start) * 1000.0;
+    return path_.start + Vec2(std::round(d.x()), std::round(d.y())) / 1000.0;
+  }
+
+  const SourceFile& src_;
+  std::string_view t_;
+  Diagnostics& diags_;
+  Vec2 position_;
+  Toolpath path_;
+};
+
+}  // namespace
+
+Toolpath readThreeB(const SourceFile& source, const ThreeBOptions& options, Diagnostics& diags) {
+  return ThreeBReader(source, options, diags).run();
+}
+
+}  // namespace kerf::converter

@@ -23,3 +23,7 @@ code G60 = harmless: written at the start of every program and contour (a corner
 code G38 = harmless: written after G60 before the wire offset starts; meaning not modelled [assumed: no effect on the path]
 code G39 = harmless: written before G40 between contours (the post's compensation cycle); meaning not modelled [assumed: no effect on the path]
 code M28 = harmless: written after G60 at the start of a program; meaning not modelled [assumed: no effect on the path]
+# Writing for a Robofil (kerf convert --to iso --for robofil): micrometre integers, CRLF, as the
+# real programs above are written; arc centres absolute (arc_centre).
+write_unit = um
+line_end = crlf

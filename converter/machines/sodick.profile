@@ -26,3 +26,6 @@ code T84 = harmless: auxiliary function written before the cut; meaning not mode
 code T85 = harmless: auxiliary function written after the cut; meaning not modelled (flushing off) [unsure]
 code T94 = harmless: auxiliary function written before the cut; meaning not modelled [unsure]
 code M199 = program-end: ends the program in place of M02 in SodickDXFCoder output
+# Writing for a Sodick (kerf convert --to iso --for sodick): `;` ends each block (semicolon),
+# a taper program as `lower : upper` with TN/TP heights.
+write_taper = sodick-colon

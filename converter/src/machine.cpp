@@ -240,6 +240,18 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
         p.uvDialect = d;
       else
         badValue("xyuv-abs, xyuv-rel, xyuv-linuxcnc or auto");
+    } else if (key == "write_unit") {
+      either(p.writeMicrometres, "mm", "um");
+    } else if (key == "line_end") {
+      either(p.crlf, "lf", "crlf");
+    } else if (key == "write_taper") {
+      bool colon = false;
+      either(colon, "xyuv-abs", "sodick-colon");
+      p.writeTaper = colon ? Dialect::SodickColon : Dialect::XyuvAbs;
+    } else if (key == "polar_x") {
+      either(p.polarXRadius, "diameter", "radius");
+    } else if (key == "polar_c") {
+      either(p.polarCDiameter, "linear", "diameter");
     } else if (key == "semicolon") {
       either(p.semicolonEndsBlock, "comment", "end-of-block");
     } else if (key == "upper_axes") {
@@ -264,7 +276,8 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
     } else {
       fail(lead, eq - lead, "unknown key '" + key + "'",
            "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
-           "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, code <CODE>");
+           "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, write_unit, line_end, "
+           "write_taper, polar_x, polar_c, code <CODE>");
     }
   }
   if (!ok) return std::nullopt;

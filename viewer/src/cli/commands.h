@@ -39,6 +39,12 @@ struct ConvertArgs {
   std::optional<std::string> profile;
   std::optional<std::uint32_t> startBlock;
   bool force = false;
+  bool list = false;
+  std::optional<std::string> target;  ///< --for
+  std::optional<int> decimals;
+  bool compact = false;
+  std::string end = "dd";
+  std::string polarXOut = "diameter";
 };
 CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& args);
 int runConvert(const ConvertArgs& args);

@@ -4,6 +4,7 @@
 #include "file_io.h"
 #include "load.h"
 
+#include "kerf/converter/emit.h"
 #include "kerf/converter/points.h"
 #include "kerf/converter/report.h"
 
@@ -16,11 +17,12 @@ namespace kerf::cli {
 CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
   CLI::App* cmd = app.add_subcommand("convert", "write the program for another controller");
   addCommonOptions(*cmd, a.common, false);
-  cmd->add_option("--to", a.to, "output format")
-      ->required()
-      ->check(CLI::IsMember({"bp95d", "points4"}))
-      ->group("Output");
-  cmd->add_option("--plane", a.plane, "taper input to bp95d: lower, upper or z=HEIGHT")->group("Output");
+  cmd->get_option("file")->required(false);  // not with --list
+  std::vector<std::string> names;
+  for (const converter::Emitter& e : converter::emitters()) names.emplace_back(e.name);
+  cmd->add_flag("--list", a.list, "list the output formats and exit")->group("Output");
+  cmd->add_option("--to", a.to, "output format (--list shows them)")->check(CLI::IsMember(names))->group("Output");
+  cmd->add_option("--plane", a.plane, "taper input to a 2-axis format: lower, upper or z=HEIGHT")->group("Output");
   cmd->add_option("--uv", a.uv, "points4: U V as the upper point (absolute) or upper minus lower (relative)")
       ->check(CLI::IsMember({"absolute", "relative"}))
       ->group("Output");
@@ -29,15 +31,52 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
       ->check(CLI::Range(std::size_t{2}, std::size_t{100000000}))
       ->group("Output");
   cmd->add_option("--profile", a.profile, "point-file profile (docs/bp95d.md)")->group("Output");
-  cmd->add_option("--start-block", a.startBlock, "start the points at the cut move on this source line")
+  cmd->add_option("--start-block", a.startBlock, "start the output at the cut move on this source line")
+      ->group("Output");
+  cmd->add_option("--for", a.target,
+                  "iso: write for this machine's conventions (a built-in profile name or a profile file; default "
+                  "generic)")
+      ->group("Output");
+  cmd->add_option("--decimals", a.decimals, "iso, polar: digits after the decimal point (default 3)")
+      ->check(CLI::Range(0, 6))
+      ->group("Output");
+  cmd->add_flag("--compact", a.compact, "3b, 4b: records without spaces (B9900B0B9900GXL1)")->group("Output");
+  cmd->add_option("--end", a.end, "3b, 4b: the end record: dd (default), ff or none")
+      ->check(CLI::IsMember({"dd", "ff", "none"}))
+      ->group("Output");
+  cmd->add_option("--polar-x-out", a.polarXOut, "polar: X as a diameter (default) or a radius")
+      ->check(CLI::IsMember({"diameter", "radius"}))
       ->group("Output");
   cmd->add_flag("--force", a.force, "write the output even when the program has errors (exit 1 all the same)")
       ->group("Output");
   return cmd;
 }
 
+namespace {
+
+void printList() {
+  std::cout << "Output formats (kerf convert FILE --to NAME -o OUT):\n";
+  for (const converter::Emitter& e : converter::emitters())
+    std::cout << "  " << e.name << std::string(9 - std::min<std::size_t>(8, e.name.size()), ' ') << e.summary
+              << (e.planes == converter::PlaneNeed::One ? " [one plane: --plane for a taper program]"
+                                                        : " [both planes]")
+              << "\n";
+}
+
+}  // namespace
+
 int runConvert(const ConvertArgs& a) {
   using namespace converter;
+  if (a.list) {
+    printList();
+    return kExitOk;
+  }
+  if (a.common.input.files.empty() || a.to.empty()) {
+    reportError(a.common.input.files.empty() ? "convert needs a program (or --list)"
+                                             : "convert needs --to FORMAT (kerf convert --list shows them)");
+    return kExitUsage;
+  }
+  const Emitter& emitter = *findEmitter(a.to);
   std::optional<Loaded> in = load(a.common, a.common.input.files.front());
   if (!in) return kExitUsage;
   const Pipeline& p = in->pipeline;
@@ -49,7 +88,7 @@ int runConvert(const ConvertArgs& a) {
                 " (kerf check shows the same); --force writes the output anyway");
     return kExitErrors;
   }
-  PointProfile profile = bp95dProfile();
+  EmitRequest request;
   std::optional<SourceFile> profileSource;
   std::vector<std::string> inputs = in->inputs;
   if (a.profile) {
@@ -66,19 +105,48 @@ int runConvert(const ConvertArgs& a) {
       printDiagnostics(emitDiags, a.common);
       return kExitUsage;
     }
-    profile = *parsed;
+    request.profile = *parsed;
   }
-  PointRequest request;
+  std::optional<MachineProfile> targetFile;
+  std::optional<SourceFile> targetSource;
+  if (a.target) {
+    if (const MachineProfile* m = findBuiltinMachine(*a.target)) {
+      request.target = m;
+    } else {
+      std::string error;
+      std::optional<std::string> text = readTextFile(*a.target, 1 << 20, error);
+      if (!text) {
+        reportError("--for '" + *a.target +
+                    "' is neither a built-in machine (kerf machines lists them) nor a file: " + error);
+        return kExitUsage;
+      }
+      inputs.push_back(*a.target);
+      targetSource.emplace(*a.target, std::move(*text));
+      targetFile = parseMachineProfile(*targetSource, emitDiags);
+      if (!targetFile) {
+        printDiagnostics(emitDiags, a.common);
+        return kExitUsage;
+      }
+      request.target = &*targetFile;
+    }
+  }
   request.sampling = a.common.sampling.sampling();
   request.maxPoints = a.maxPoints;
   request.startLine = a.startBlock;
-  std::optional<PointOutput> out;
-  if (a.to == "points4") {
+  request.relativeUv = a.uv == "relative";
+  request.decimals = a.decimals;
+  request.compact = a.compact;
+  request.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
+  request.polarX = a.polarXOut == "radius" ? PolarX::Radius : PolarX::Diameter;
+  request.tolerance = a.common.sampling.tolerance.value_or(0.001);
+
+  const Toolpath* path = &p.toolpath;
+  std::optional<Toolpath> flat;
+  if (emitter.planes == PlaneNeed::Both) {
     if (a.plane) {
-      reportError("--plane chooses one plane for a 2-axis file; points4 writes both");
+      reportError("--plane chooses one plane for a 2-axis file; " + std::string(emitter.name) + " writes both");
       return kExitUsage;
     }
-    out = emitPoints4(p.toolpath, p.source.get(), profile, request, a.uv == "relative", emitDiags);
   } else {
     const std::optional<PlaneChoice> plane = parsePlane(a.plane.value_or("lower"));
     if (!plane) {
@@ -88,34 +156,30 @@ int runConvert(const ConvertArgs& a) {
     if (p.toolpath.isTaper() && !a.plane) {
       reportError(
           "this is a 4-axis taper program: choose the plane the 2-axis file follows with --plane "
-          "lower|upper|z=HEIGHT, or write both with --to points4");
+          "lower|upper|z=HEIGHT (one file per plane), or write both with --to points4 or --to iso");
       return kExitUsage;
     }
     const double tol = a.common.sampling.tolerance.value_or(0.001);
-    std::optional<Toolpath> flat = toolpathAtPlane(p.toolpath, *plane, tol, p.source.get(), emitDiags);
-    if (flat) out = emitPoints(*flat, p.source.get(), profile, request, emitDiags);
+    flat = toolpathAtPlane(p.toolpath, *plane, tol, p.source.get(), emitDiags);
+    path = flat ? &*flat : nullptr;
   }
+  std::optional<EmitOutput> out;
+  if (path) out = emitter.write(*path, p.source.get(), request, emitDiags);
   // The program's findings first (as kerf check gives them), then the emitter's.
   Diagnostics all(100000);
   for (const Diagnostic& d : p.diags.all()) all.report(d);
   for (const Diagnostic& d : emitDiags.all()) all.report(d);
   printDiagnostics(all, a.common);
   if (!out) return kExitErrors;
-  if (p.diags.hasErrors())  // --force; the point format has no comments to carry the warning
+  if (p.diags.hasErrors())  // --force; not every format has comments to carry the warning
     std::cerr << "kerf: warning: writing a program that has errors, as --force asks\n";
   std::string error;
   if (!writeOutput(a.output, inputs, out->text, error)) {
     reportError(error);
     return kExitUsage;
   }
-  const auto& s = out->sampling;
-  std::cerr << "kerf: wrote " << out->points << " points (" << profile.name << " profile) to "
-            << (a.output == "-" ? std::string("standard output") : a.output) << "; "
-            << (s.mode == geometry::SamplingMode::Step ? "step k = " : "tolerance ") << formatFixed(s.value, 6) << " mm"
-            << (out->fitted
-                    ? " chosen to fit " + std::to_string(a.maxPoints ? *a.maxPoints : *profile.maxPoints) + " points"
-                    : "")
-            << ", max deviation " << formatFixed(out->stats.maxDeviation, 6) << " mm\n";
+  std::cerr << "kerf: wrote " << out->what << " to " << (a.output == "-" ? std::string("standard output") : a.output)
+            << out->detail << "\n";
   return verdictExit(p);
 }
 

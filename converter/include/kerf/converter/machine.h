@@ -67,6 +67,13 @@ struct MachineProfile {
   double maxTaperDegrees = 30.0;         ///< the machine's largest wire slope
   std::optional<double> uvRange;         ///< largest |upper - lower| per axis, mm
   std::optional<double> thickness;       ///< default workpiece thickness, mm
+  // Writing for this machine (`kerf convert --to iso --for NAME`, docs/machines.md).
+  bool writeMicrometres = false;          ///< write_unit = um: integers in µm, no decimal point
+  bool crlf = false;                      ///< line_end = crlf
+  Dialect writeTaper = Dialect::XyuvAbs;  ///< write_taper: xyuv-abs (cnc3 two motions) or sodick-colon
+  // Polar coordinate interpolation (G12.1/G112, docs/polar.md).
+  bool polarXRadius = true;     ///< polar_x = radius | diameter: X inside G12.1
+  bool polarCDiameter = false;  ///< polar_c = linear | diameter: Star machines write C as a diameter
   std::vector<KnownCode> codes;
   std::string text;  ///< the profile as written (`kerf machines show`)
 

@@ -1,0 +1,163 @@
+// Normalised ISO (docs/formats.md, "Writing ISO"): absolute, one move per block, I J incremental,
+// in the conventions of the target machine's profile (units, arc centres, block and line ends,
+// the 4-axis dialect of a taper program).
+#include "kerf/converter/emit.h"
+
+#include <cmath>
+
+namespace kerf::converter {
+
+namespace {
+
+using geometry::Segment;
+using geometry::Vec2;
+
+class IsoWriter {
+ public:
+  IsoWriter(const MachineProfile& target, int decimals)
+      : m_(target), decimals_(target.writeMicrometres ? 0 : decimals), scale_(target.writeMicrometres ? 1000.0 : 1.0) {}
+
+  /// A coordinate rounded as it is written, in mm.
+  [[nodiscard]] double rounded(double v) const {
+    const double f = std::pow(10.0, decimals_) * scale_;
+    return std::nearbyint(v * f) / f;
+  }
+  [[nodiscard]] Vec2 rounded(const Vec2& p) const { return {rounded(p.x()), rounded(p.y())}; }
+  [[nodiscard]] std::string num(double v) const {
+    std::string s = formatFixed(v * scale_, decimals_);
+    // A whole number of mm keeps its point (X15.), as controls that read integers as µm need.
+    if (!m_.writeMicrometres && decimals_ == 0) s += '.';
+    return s;
+  }
+
+  void block(const std::string& words) {
+    text_ += words;
+    if (m_.semicolonEndsBlock) text_ += ';';
+    text_ += m_.crlf ? "\r\n" : "\n";
+  }
+  void comment(const std::string& c) { block("(" + c + ")"); }
+
+  /// The words of one side's motion: G X Y [I J] (names: X Y I J or U V I J).
+  std::string motion(const Segment& s, bool rapid, char a, char b, bool withG = true) const {
+    std::string w;
+    if (withG) w = rapid ? "G00 " : !s.isArc() ? "G01 " : s.sweep < 0 ? "G02 " : "G03 ";
+    const Vec2 end = rounded(s.end);
+    w += std::string(1, a) + num(end.x()) + " " + std::string(1, b) + num(end.y());
+    if (s.isArc()) {
+      const Vec2 start = rounded(s.start), centre = rounded(s.centre);
+      Vec2 ij = centre - start;  // incremental
+      if (m_.arcCentre == ArcCentreMode::Absolute) ij = centre;
+      if (m_.arcCentre == ArcCentreMode::Reversed) ij = start - centre;
+      w += " I" + num(ij.x()) + " J" + num(ij.y());
+    }
+    return w;
+  }
+
+  std::string text_;
+
+ private:
+  const MachineProfile& m_;
+  int decimals_;
+  double scale_;
+};
+
+const char* offsetCode(WireOffset o) {
+  switch (o) {
+    case WireOffset::Left: return "G41";
+    case WireOffset::Right: return "G42";
+    case WireOffset::Off: return "G40";
+  }
+  return "G40";
+}
+
+}  // namespace
+
+std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* source, const EmitRequest& request,
+                                   Diagnostics& diags) {
+  const MachineProfile& target = request.target ? *request.target : *findBuiltinMachine("generic");
+  if (toolpath.moves.empty()) {
+    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no move");
+    return std::nullopt;
+  }
+  IsoWriter w(target, request.decimals.value_or(3));
+  const bool taper = toolpath.isTaper();
+  const bool colon = taper && target.writeTaper == Dialect::SodickColon;
+  w.comment(std::string("written by Kerf for the ") + target.name + " machine from " +
+            (source ? source->name() : std::string("a program")) + ": absolute, " +
+            (target.writeMicrometres ? "micrometre integers" : "mm") + ", I J " +
+            (target.arcCentre == ArcCentreMode::Absolute   ? "absolute"
+             : target.arcCentre == ArcCentreMode::Reversed ? "start minus centre"
+                                                           : "incremental") +
+            (taper ? std::string(", upper contour as ") + dialectName(colon ? Dialect::SodickColon : Dialect::XyuvAbs)
+                   : std::string()));
+  if (taper) {
+    const PlaneHeights& h = toolpath.heights;
+    if (!h.known) {
+      diags.error(Code::HeightsMissing, source, SourceSpan::wholeFile(),
+                  "a taper program is written with its plane heights, and they are not known",
+                  "give --thickness H or --upper-z Z");
+      return std::nullopt;
+    }
+    if (colon) {  // Sodick: TN the lower plane, TP the program plane, taken as the upper plane
+      w.block("TN" + w.num(h.planes.lower / (target.writeMicrometres ? 1000.0 : 1.0) * 0 + h.planes.lower) + " TP" +
+              w.num(h.planes.upper));
+    } else {
+      if (h.planes.lower != 0.0)
+        diags.warning(Code::NotInOutputFormat, source, SourceSpan::wholeFile(),
+                      "M101 P gives only the thickness: the lower plane (z " + formatFixed(h.planes.lower, 3) +
+                          ") is written as z 0");
+      w.block("M101 P" + formatFixed(h.planes.height(), 3));
+    }
+  }
+  w.block(target.writeMicrometres ? "G90" : "G90 G21");
+  const Vec2 start = toolpath.moves.front().lower.start;
+  std::string g92 = "G92 X" + w.num(w.rounded(start.x())) + " Y" + w.num(w.rounded(start.y()));
+  if (taper && !colon) {
+    const Vec2 u = toolpath.upper.front().start;
+    g92 += " U" + w.num(w.rounded(u.x())) + " V" + w.num(w.rounded(u.y()));
+  }
+  w.block(g92);
+  if (colon) w.block("G141");
+  WireOffset offset = WireOffset::Off;
+  double feed = 0.0;
+  std::size_t written = 0;
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    const Move& m = toolpath.moves[i];
+    std::string words;
+    if (m.wireOffset != offset) {
+      words += std::string(offsetCode(m.wireOffset)) + " ";
+      offset = m.wireOffset;
+    }
+    const bool rapid = m.kind == MoveKind::Rapid;
+    words += w.motion(m.lower, rapid, 'X', 'Y');
+    if (taper) {
+      const Segment& u = toolpath.upper[i];
+      if (colon)
+        words += " : " + w.motion(u, rapid, 'X', 'Y');
+      else
+        words += " " + w.motion(u, rapid, 'U', 'V', !rapid);  // a rapid moves both sides alike
+    }
+    if (!rapid && m.feed > 0 && m.feed != feed) {
+      words += " F" + formatFixed(m.feed, 3);
+      feed = m.feed;
+    }
+    w.block(words);
+    ++written;
+  }
+  if (colon) w.block("G140");
+  if (offset != WireOffset::Off) w.block("G40");
+  w.block("M02");
+  if (offset != WireOffset::Off || std::any_of(toolpath.moves.begin(), toolpath.moves.end(),
+                                               [](const Move& m) { return m.wireOffset != WireOffset::Off; }))
+    diags.note(Code::NotInOutputFormat, source, SourceSpan::wholeFile(),
+               "G41/G42 are written as the source gives them, without D or H: the offset value stays the "
+               "machine's (Kerf does not apply the wire offset yet)");
+  EmitOutput out;
+  out.text = std::move(w.text_);
+  out.what = std::to_string(written) + " blocks of ISO for the " + target.name + " machine";
+  out.detail = target.writeMicrometres ? "; micrometre integers"
+                                       : "; " + std::to_string(request.decimals.value_or(3)) + " decimals";
+  return out;
+}
+
+}  // namespace kerf::converter

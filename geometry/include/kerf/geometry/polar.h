@@ -1,0 +1,45 @@
+// Polar coordinates of the face plane of a mill-turn lathe (seed 002, FORMATS §5, docs/polar.md):
+// the tool at radius r and table angle C (degrees) is the point r (cos C, sin C). C is unwrapped:
+// of the values congruent mod 360 the one nearest the previous C.
+#pragma once
+
+#include "kerf/geometry/segment.h"
+#include "kerf/geometry/vec.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace kerf::geometry {
+
+struct PolarPoint {
+  double radius = 0.0;  ///< mm
+  double c = 0.0;       ///< degrees, unwrapped
+};
+
+/// The angle (degrees) congruent with `degrees` mod 360 nearest `previous`.
+double unwrapDegrees(double degrees, double previous);
+
+/// The polar point of p, its C unwrapped against `previousC`.
+PolarPoint toPolar(const Vec2& p, double previousC);
+/// The face-plane point of a polar one.
+Vec2 fromPolar(const PolarPoint& q);
+
+/// The largest distance from the machine's path between two polar points (linear in r and C: a
+/// spiral in the face plane) to a segment, sampled at `samples` inner points.
+double spiralDeviation(const PolarPoint& a, const PolarPoint& b, const Segment& s, int samples = 16);
+
+struct PolarSubdivision {
+  std::vector<PolarPoint> points;  ///< after the segment's start: the end of each piece
+  double maxDeviation = 0.0;       ///< mm, of the spirals from the segment
+  bool throughCentre = false;      ///< the segment passes the centre, where C is undefined
+  bool overBudget = false;         ///< more pieces than the budget allowed
+};
+
+/// Points along s such that the machine's spiral between neighbours stays within `tolerance` of
+/// s. Pieces are bisected until they fit, so they are denser near the centre, where C turns
+/// fastest; no piece turns C by more than 45 degrees. `startC` is the C of s.start; at most
+/// `budget` points are made. A segment closer to the centre than `centreGap` is through it.
+PolarSubdivision subdivideForPolar(const Segment& s, double startC, double tolerance, std::size_t budget,
+                                   double centreGap = 1e-6);
+
+}  // namespace kerf::geometry

@@ -152,6 +152,9 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     out.machineDetected = true;
   }
   const MachineProfile& machine = out.machine;
+  const KnownCode* cCode = machine.find("C");
+  const bool cIsRotary = !cCode || cCode->effect != CodeEffect::Harmless;  // Sodick: C is a condition
+  const bool millTurn = isMillTurnProgram(out.program) || (cIsRotary && hasRotaryMoves(out.program));
 
   // 2. The conventions: the options, the profile, or the evidence.
   InterpreterOptions io;
@@ -178,8 +181,17 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   if (upper) io.dialect = Dialect::Plain;
 
   Diagnostics interpretDiags(100000);
-  Interpretation in = interpretProgram(out.program, io, interpretDiags);
-  if (!centreFixed) {
+  Interpretation in;
+  if (millTurn) {  // a mill-turn face program: its own reader (read.h, docs/polar.md)
+    MillTurnOptions mt;
+    mt.machine = machine.name;
+    mt.polarXDiameter = ro.polarXDiameter.value_or(!machine.polarXRadius);
+    mt.polarCDiameter = machine.polarCDiameter;
+    in.toolpath = readMillTurn(out.program, mt, interpretDiags);
+  } else {
+    in = interpretProgram(out.program, io, interpretDiags);
+  }
+  if (!centreFixed && !millTurn) {
     if (const std::optional<ArcCentreMode> better = betterCentre(in.arcs, io.arcCentre)) {
       io.arcCentre = *better;
       interpretDiags = Diagnostics(100000);

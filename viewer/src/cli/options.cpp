@@ -42,6 +42,10 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
       ->check(CLI::IsMember({"auto", "iso", "3b"}))
       ->group(reading);
   cmd.add_option("--start", o.reading.start, "where a 3B program starts, X,Y in mm (default 0,0)")->group(reading);
+  cmd.add_option("--polar-x", o.reading.polarX,
+                 "X inside G12.1/G112 polar interpolation: radius or diameter (default: the machine profile's)")
+      ->check(CLI::IsMember({"radius", "diameter"}))
+      ->group(reading);
   cmd.add_option("--integer-unit", o.reading.integerUnit, "unit of coordinates written without a decimal point")
       ->check(CLI::IsMember({"mm", "um"}))
       ->group(reading);
@@ -141,6 +145,7 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
     }
     r.start = geometry::Vec2(x, y);
   }
+  if (o.reading.polarX) r.polarXDiameter = *o.reading.polarX == "diameter";
   if (o.reading.integerUnit)
     r.integerUnit = *o.reading.integerUnit == "um" ? IntegerUnit::Micrometre : IntegerUnit::Millimetre;
   if (o.reading.arcCentre) r.arcCentre = parseArcCentre(*o.reading.arcCentre);

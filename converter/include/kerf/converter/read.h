@@ -9,6 +9,7 @@
 #pragma once
 
 #include "kerf/converter/diagnostics.h"
+#include "kerf/converter/program.h"
 #include "kerf/converter/source.h"
 #include "kerf/converter/toolpath.h"
 
@@ -41,5 +42,23 @@ struct ThreeBOptions {
 /// line, and `DD` or `FF` as the end. A malformed record is an error at its line and column and
 /// moves nothing; reading goes on at the next line. The result's blocks count the records.
 Toolpath readThreeB(const SourceFile& source, const ThreeBOptions& options, Diagnostics& diags);
+
+struct MillTurnOptions {
+  std::string machine = "fanuc";  ///< the profile's name, for the summary
+  bool polarXDiameter = false;    ///< X inside G12.1 is a diameter (--polar-x diameter)
+  bool polarCDiameter = false;    ///< C inside G12.1 is a diameter (Star machines)
+  double spiralNote = 0.001;      ///< mm: say how far X/C spirals leave their chords beyond this
+};
+
+/// The program uses polar coordinate interpolation (G12.1 or G112).
+bool isMillTurnProgram(const Program& program);
+/// Some block moves X and C together without Y: an explicit X/C face program (seed 002's O31).
+bool hasRotaryMoves(const Program& program);
+
+/// Reads a mill-turn face program (docs/polar.md) into the Cartesian face plane: X/C moves outside
+/// polar mode (X a diameter, C the table angle; a C step longer than the shortest way is an error,
+/// K0237), Cartesian X/C inside G12.1/G112 ... G13.1/G113. Z (depth), S, T, M words do not move
+/// the face point. Macro B statements are left to the parser's diagnostics.
+Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Diagnostics& diags);
 
 }  // namespace kerf::converter

@@ -1,0 +1,240 @@
+// Mill-turn face programs (docs/polar.md, seed 002, FORMATS §5): polar coordinate interpolation
+// (G12.1/G13.1 = G112/G113) and explicit X/C moves, read into the Cartesian face plane.
+//
+// The face plane is the table's frame at C = 0: the tool at radius r and table angle C is
+// r (cos C, sin C) [sourced: seed 002, O31's X64.404 C-115.769 is O30's X-28. Y-29.]. Outside polar
+// mode X is a diameter, Y a linear axis, C the table angle in degrees. Inside, the program is
+// Cartesian in a frame whose x axis passes through the tool when G12.1 is commanded (FORMATS §5:
+// C is 0 there): X is a radius or a diameter (--polar-x, the profile's polar_x), C the virtual
+// linear axis in mm (a diameter on Star machines: the profile's polar_c).
+#include "kerf/converter/read.h"
+
+#include "kerf/converter/points.h"
+#include "kerf/geometry/arc.h"
+#include "kerf/geometry/polar.h"
+
+#include <cmath>
+
+namespace kerf::converter {
+
+namespace {
+
+using geometry::Segment;
+using geometry::Vec2;
+constexpr double kDeg = 180.0 / geometry::kPi;
+
+Vec2 rotate(const Vec2& p, double degrees) {
+  const double a = degrees / kDeg, c = std::cos(a), s = std::sin(a);
+  return {c * p.x() - s * p.y(), s * p.x() + c * p.y()};
+}
+
+bool isG(const Word& w, int whole, int tenth = 0) {
+  return w.letter == 'G' && w.isNumber() && std::lround(w.value * 10) == whole * 10 + tenth;
+}
+
+}  // namespace
+
+bool isMillTurnProgram(const Program& program) {
+  for (const Word& w : program.words)
+    if (isG(w, 12, 1) || isG(w, 112)) return true;
+  return false;
+}
+
+bool hasRotaryMoves(const Program& program) {
+  for (const Block& b : program.blocks) {
+    bool x = false, c = false, y = false;
+    for (const Word& w : program.wordsOf(b)) {
+      x |= w.letter == 'X';
+      c |= w.letter == 'C';
+      y |= w.letter == 'Y';
+    }
+    if (x && c && !y) return true;
+  }
+  return false;
+}
+
+Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Diagnostics& diags) {
+  const SourceFile* src = program.source;
+  Toolpath path;
+  path.blocks = program.blocks.size();
+  path.reading.machine = options.machine;
+  bool polar = false;
+  bool incremental = false;
+  int motion = -1;  // 0 1 2 3
+  double feed = 0.0;
+  // Outside polar mode: the axes as the machine holds them.
+  double radius = 0.0, y = 0.0, c = 0.0;  // mm, mm, degrees
+  bool cKnown = false;
+  // Inside: the polar frame's turn and the tool in it.
+  double frame = 0.0;
+  Vec2 inPolar(0, 0);
+  Vec2 position(0, 0);
+  bool first = true;
+  double worstSpiral = 0.0;
+  std::uint32_t worstSpiralLine = 0;
+  const double polarXScale = options.polarXDiameter ? 0.5 : 1.0;
+  const double polarCScale = options.polarCDiameter ? 2.0 : 1.0;
+
+  for (std::size_t bi = 0; bi < program.blocks.size(); ++bi) {
+    const Block& b = program.blocks[bi];
+    if (b.hasError || b.kind != BlockKind::Words) continue;
+    const Word *X = nullptr, *Y = nullptr, *C = nullptr, *I = nullptr, *J = nullptr, *R = nullptr;
+    bool homing = false, polarOn = false, polarOff = false;
+    for (const Word& w : program.wordsOf(b)) {
+      if (!w.isNumber()) continue;
+      switch (w.letter) {
+        case 'G':
+          if (isG(w, 0) || isG(w, 1) || isG(w, 2) || isG(w, 3)) motion = static_cast<int>(std::lround(w.value));
+          if (isG(w, 12, 1) || isG(w, 112)) polarOn = true;
+          if (isG(w, 13, 1) || isG(w, 113)) polarOff = true;
+          if (isG(w, 90)) incremental = false;
+          if (isG(w, 91)) incremental = true;
+          if (isG(w, 28) || isG(w, 30) || isG(w, 53)) homing = true;
+          break;
+        case 'X': X = &w; break;
+        case 'Y': Y = &w; break;
+        case 'C': C = &w; break;
+        case 'I': I = &w; break;
+        case 'J': J = &w; break;
+        case 'R': R = &w; break;
+        case 'F': feed = w.value; break;
+        default: break;  // N T S M Z W ...: not the face plane
+      }
+    }
+    if (homing) {  // G28 C0.: the table at its reference; other axes to where the machine knows
+      if (C) {
+        c = 0.0;
+        cKnown = true;
+        position = rotate(Vec2(radius, y), c);
+      }
+      continue;
+    }
+    if (polarOn && !polar) {
+      polar = true;
+      frame = cKnown ? c : 0.0;
+      inPolar = rotate(position, -frame);
+      if (std::abs(std::remainder(frame, 360.0)) > 1e-9)
+        diags.note(Code::PolarAxisValue, src, b.span(),
+                   "polar interpolation starts with the table at C " + formatFixed(frame, 3) +
+                       ": its frame's x axis passes through the tool there, so the section is drawn turned by that "
+                       "angle",
+                   "FORMATS §5: C counts as 0 when G12.1 is commanded");
+    }
+    if (polarOff && polar) {
+      polar = false;
+      radius = position.norm();
+      if (radius > 0) c = geometry::unwrapDegrees(std::atan2(position.y(), position.x()) * kDeg, c);
+      y = 0.0;
+      cKnown = true;
+    }
+    if (!X && !Y && !C) continue;
+    if (motion < 0) {
+      diags.error(Code::NoMotionMode, src, b.span(), "a move with no motion mode (G00, G01, G02 or G03) in force");
+      continue;
+    }
+    Vec2 target;
+    double newC = c;
+    if (polar) {
+      Vec2 p = inPolar;
+      const double x = X ? X->value * polarXScale : 0.0, v = C ? C->value * polarCScale : 0.0;
+      if (incremental) {
+        p += Vec2(x, v);
+      } else {
+        if (X) p.x() = x;
+        if (C) p.y() = v;
+      }
+      if (Y)
+        diags.warning(Code::WordIgnored, src, Y->span(),
+                      "Y inside polar coordinate interpolation: the plane is X and C; Y is not read");
+      inPolar = p;
+      target = rotate(p, frame);
+    } else {
+      double r = radius, yy = y;
+      if (X) r = incremental ? radius + X->value / 2 : X->value / 2;
+      if (Y) yy = incremental ? y + Y->value : Y->value;
+      if (C) {
+        newC = incremental ? c + C->value : C->value;
+        // Cutting, the part turns under the tool: an error. A rapid only takes the long way round.
+        if (cKnown && std::abs(newC - c) > 180.0)
+          diags.report({motion == 0 ? Severity::Warning : Severity::Error, Code::RotaryJump, src, C->span(),
+                        "C" + formatFixed(C->value, 3) + " turns the table " + formatFixed(std::abs(newC - c), 3) +
+                            " degrees from C" + formatFixed(c, 3) + ", more than the shortest way (" +
+                            formatFixed(std::abs(std::remainder(newC - c, 360.0)), 3) +
+                            " degrees): the part turns under the tool",
+                        "write C continuous: the value congruent mod 360 nearest the previous C (seed 002: N850 "
+                        "X28.006 C-358.834 damaged the part)",
+                        std::nullopt, std::nullopt});
+        cKnown = true;
+      }
+      target = rotate(Vec2(r, yy), newC);
+      radius = r;
+      y = yy;
+    }
+    Move m;
+    m.block = static_cast<std::uint32_t>(bi);
+    m.line = b.line;
+    m.span = b.span();
+    m.feed = feed;
+    const bool rotary = !polar && C && std::abs(newC - c) > 1e-12;
+    if (motion == 2 || motion == 3) {
+      const auto dir = motion == 2 ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise;
+      if (rotary) {
+        diags.error(Code::WordNotInDialect, src, C->span(), "an arc that also turns the table (C) is not read");
+        c = newC;
+        position = target;
+        continue;
+      }
+      geometry::ArcBuild build;
+      if (R) {
+        build = geometry::arcFromRadius(position, target, R->value, dir);
+      } else if (I || J) {
+        const Vec2 ij(I ? I->value : 0.0, J ? J->value : 0.0);
+        build = geometry::arcFromCentre(position, target, position + rotate(ij, polar ? frame : 0.0), dir);
+      } else {
+        diags.error(Code::ArcWithoutCentre, src, b.span(), "an arc with neither R nor I J");
+        position = target;
+        continue;
+      }
+      if (build.status != geometry::ArcStatus::Ok) {
+        diags.error(Code::ArcEndOffCircle, src, b.span(), "this arc cannot be built from its words");
+        position = target;
+        continue;
+      }
+      m.kind = MoveKind::Arc;
+      m.lower = build.arc;
+      m.centreForm = R ? CentreForm::Radius : CentreForm::Incremental;
+      m.programmedRadius = R ? R->value : 0.0;
+    } else {
+      m.kind = motion == 0 ? MoveKind::Rapid : MoveKind::Line;
+      m.lower = Segment::line(position, target);
+      if (rotary && m.kind == MoveKind::Line && std::abs(y) < 1e-12) {
+        // The machine moves X and C together: a spiral, drawn as its chord.
+        const geometry::PolarPoint a{position.norm(), c}, e{target.norm(), newC};
+        const double dev = geometry::spiralDeviation(a, e, m.lower);
+        if (dev > worstSpiral) {
+          worstSpiral = dev;
+          worstSpiralLine = b.line;
+        }
+      }
+    }
+    c = newC;
+    if (first) {
+      path.start = position;
+      first = false;
+    }
+    position = target;
+    if ((m.lower.end - m.lower.start).norm() < 1e-12 && m.kind != MoveKind::Arc) continue;
+    path.moves.push_back(std::move(m));
+  }
+  if (polar)
+    diags.warning(Code::PolarNotSupported, src, SourceSpan::wholeFile(),
+                  "the program ends inside polar coordinate interpolation (no G13.1 or G113)");
+  if (worstSpiral > options.spiralNote)
+    diags.note(Code::PolarAxisValue, src, SourceSpan::wholeFile(),
+               "X/C moves are drawn as straight lines; the machine turns them into spirals that leave the line by up "
+               "to " +
+                   formatFixed(worstSpiral, 4) + " mm (line " + std::to_string(worstSpiralLine) + ")");
+  return path;
+}
+
+}  // namespace kerf::converter

@@ -63,6 +63,11 @@ std::optional<EmitOutput> writePolar(const Toolpath& toolpath, const SourceFile*
       return std::nullopt;
     }
     worst = std::max(worst, sub.maxDeviation);
+    if (sub.leadTurn) {  // at the centre: turn the table to the direction the move leaves in
+      text += (rapidMode ? "G01 " : "") + point(sub.lead) + "\n";
+      rapidMode = false;
+      ++points;
+    }
     for (std::size_t k = 0; k < sub.points.size(); ++k) {
       std::string line = rapidMode ? "G01 " : "";
       rapidMode = false;

@@ -35,9 +35,20 @@ double spiralDeviation(const PolarPoint& a, const PolarPoint& b, const Segment& 
 PolarSubdivision subdivideForPolar(const Segment& s, double startC, double tolerance, std::size_t budget,
                                    double centreGap) {
   PolarSubdivision out;
-  if (s.distanceTo(Vec2(0, 0)) < centreGap) {
+  const double tc = s.parameterOf(Vec2(0, 0));
+  const bool startsAtCentre = s.start.norm() < centreGap, endsAtCentre = s.end.norm() < centreGap;
+  if (s.pointAt(tc).norm() < centreGap && !(startsAtCentre && tc < 0.5) && !(endsAtCentre && tc >= 0.5)) {
     out.throughCentre = true;
     return out;
+  }
+  PolarPoint first = toPolar(s.start, startC);
+  if (startsAtCentre) {
+    const Vec2 d = s.tangentAt(0.0);
+    first = {0.0, unwrapDegrees(std::atan2(d.y(), d.x()) * kDeg, startC)};
+    if (std::abs(first.c - startC) > 1e-9) {
+      out.leadTurn = true;
+      out.lead = first;
+    }
   }
   // Depth-first bisection in t, left piece first, so the points come out in order.
   struct Piece {
@@ -46,7 +57,7 @@ PolarSubdivision subdivideForPolar(const Segment& s, double startC, double toler
     int depth;
   };
   std::vector<Piece> stack;
-  stack.push_back({0.0, 1.0, toPolar(s.start, startC), 0});
+  stack.push_back({0.0, 1.0, first, 0});
   while (!stack.empty()) {
     Piece p = stack.back();
     stack.pop_back();

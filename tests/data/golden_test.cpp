@@ -3,7 +3,8 @@
 //   expected.trace           `kerf check input.nc --trace`: the toolpath and every diagnostic;
 //   expected.bp95d           what `kerf convert input.nc --to bp95d -o -` writes (empty when it
 //                            writes nothing), and expected.bp95d.log its exit code and messages;
-//   expected.points4(.log)   the same for `--to points4`, for taper programs.
+//   expected.points4(.log)   the same for `--to points4`, for taper programs;
+//   expected.3b, .4b, .iso, .polar (and .log)  the same for those emitters (one plane: the lower).
 // Each runs the kerf program in the case's folder, so messages name input.nc. Byte compare; a
 // capped diff on failure; KERF_UPDATE_GOLDEN=1 rewrites the expectations instead of comparing.
 #include "data_test_support.h"
@@ -75,6 +76,15 @@ class GoldenTest : public testing::Test {
     const KerfRun bp95d = runKerf(dir_, bp95dArgs);
     compare("expected.bp95d", bp95d.out);
     compare("expected.bp95d.log", "exit " + std::to_string(bp95d.exit) + "\n" + bp95d.err);
+    // The other emitters: 3B, 4B and polar follow one plane (the lower of a taper program), ISO
+    // keeps both.
+    for (const char* to : {"3b", "4b", "iso", "polar"}) {
+      std::string args = std::string("convert input.nc --to ") + to + " -o -" + readArgs;
+      if (taper && std::string(to) != "iso") args += " --plane lower";
+      const KerfRun run = runKerf(dir_, args);
+      compare(std::string("expected.") + to, run.out);
+      compare(std::string("expected.") + to + ".log", "exit " + std::to_string(run.exit) + "\n" + run.err);
+    }
     if (taper) {
       std::string points4Args = "convert input.nc --to points4 -o -" + readArgs;
       if (const auto o = readOptions(dir_ / "options"); o.count("profile"))

@@ -29,6 +29,10 @@ Vec2 fromPolar(const PolarPoint& q);
 double spiralDeviation(const PolarPoint& a, const PolarPoint& b, const Segment& s, int samples = 16);
 
 struct PolarSubdivision {
+  /// A segment that starts at the centre leaves it at the angle of its tangent: the table turns
+  /// there first (X 0, C that angle), then X moves. Written before `points` when set.
+  bool leadTurn = false;
+  PolarPoint lead;
   std::vector<PolarPoint> points;  ///< after the segment's start: the end of each piece
   double maxDeviation = 0.0;       ///< mm, of the spirals from the segment
   bool throughCentre = false;      ///< the segment passes the centre, where C is undefined
@@ -38,7 +42,8 @@ struct PolarSubdivision {
 /// Points along s such that the machine's spiral between neighbours stays within `tolerance` of
 /// s. Pieces are bisected until they fit, so they are denser near the centre, where C turns
 /// fastest; no piece turns C by more than 45 degrees. `startC` is the C of s.start; at most
-/// `budget` points are made. A segment closer to the centre than `centreGap` is through it.
+/// `budget` points are made. A segment whose inside comes closer to the centre than `centreGap`
+/// passes through it (C undefined); one that starts or ends there does not.
 PolarSubdivision subdivideForPolar(const Segment& s, double startC, double tolerance, std::size_t budget,
                                    double centreGap = 1e-6);
 

@@ -1,0 +1,6 @@
+(written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
+G00 X60.000 C-180.000
+G01 X50.000 C-180.000
+X50.000 C-180.000
+X60.000 C-180.000
+M30

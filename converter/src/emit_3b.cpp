@@ -131,6 +131,9 @@ std::optional<Micro> arcRecordEnd(const Record& r, const Micro& from) {
   return Micro{from[0] + std::llround(d.x()), from[1] + std::llround(d.y())};
 }
 
+/// How far (µm, per axis) the writer looks for a centre from which the count ends on the grid.
+constexpr int kCentreSearch = 4;
+
 // ---- 3. 3B -----------------------------------------------------------------------------------------------
 
 struct Written {
@@ -175,8 +178,8 @@ Written records(const Toolpath& toolpath, const std::vector<std::size_t>& order,
     if (!end || *end != to) {
       double bestMismatch = 1e300;
       std::optional<Record> found;
-      for (int dx = -2; dx <= 2; ++dx)
-        for (int dy = -2; dy <= 2; ++dy) {
+      for (int dx = -kCentreSearch; dx <= kCentreSearch; ++dx)
+        for (int dy = -kCentreSearch; dy <= kCentreSearch; ++dy) {
           const Micro c{c0[0] + dx, c0[1] + dy};
           const Record r = arcRecord(at, to, c, ccw);
           const std::optional<Micro> e = arcRecordEnd(r, at);
@@ -191,13 +194,16 @@ Written records(const Toolpath& toolpath, const std::vector<std::size_t>& order,
       if (found) {
         best = *found;
         ++w.centresMoved;
+        end = to;
       } else if (end) {
         w.largestMiss = std::max(w.largestMiss, (vec(*end) - vec(to)).norm());
       }
     }
     w.records.push_back(best);
     w.moveOf.push_back(i);
-    at = to;
+    // The next record starts where the machine is: an arc that misses its grid point by a micrometre
+    // does not shift the rest of the program (every later end is a rounded absolute position).
+    at = end.value_or(to);
   }
   if (w.rapids > 0) {
     std::size_t first = 0;
@@ -210,11 +216,13 @@ Written records(const Toolpath& toolpath, const std::vector<std::size_t>& order,
   if (w.centresMoved > 0)
     diags.note(Code::OutputAdjusted, source, SourceSpan::wholeFile(),
                std::to_string(w.centresMoved) + (w.centresMoved == 1 ? " arc's centre was" : " arcs' centres were") +
-                   " moved by at most 2 µm so that the count ends on the rounded end point (docs/3b.md)");
+                   " moved by at most " + std::to_string(kCentreSearch) +
+                   " µm per axis so that the count ends on the rounded end point (docs/3b.md)");
   if (w.largestMiss > 0)
     diags.warning(Code::OutputAdjusted, source, SourceSpan::wholeFile(),
                   "an arc's count ends " + formatFixed(w.largestMiss, 1) +
-                      " µm from its rounded end point, and no centre within 2 µm fixes it");
+                      " µm from its rounded end point, and no centre within " + std::to_string(kCentreSearch) +
+                      " µm fixes it");
   return w;
 }
 

@@ -93,14 +93,11 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
   if (taper) {
     const PlaneHeights& h = toolpath.heights;
     if (!h.known) {
-      diags.error(Code::HeightsMissing, source, SourceSpan::wholeFile(),
-                  "a taper program is written with its plane heights, and they are not known",
-                  "give --thickness H or --upper-z Z");
-      return std::nullopt;
-    }
-    if (colon) {  // Sodick: TN the lower plane, TP the program plane, taken as the upper plane
-      w.block("TN" + w.num(h.planes.lower / (target.writeMicrometres ? 1000.0 : 1.0) * 0 + h.planes.lower) + " TP" +
-              w.num(h.planes.upper));
+      diags.warning(Code::HeightsMissing, source, SourceSpan::wholeFile(),
+                    "the plane heights are not known, so none are written: the output needs them as the input does",
+                    "give --thickness H or --upper-z Z");
+    } else if (colon) {  // Sodick: TN the lower plane, TP the program plane, taken as the upper plane
+      w.block("TN" + w.num(h.planes.lower) + " TP" + w.num(h.planes.upper));
     } else {
       if (h.planes.lower != 0.0)
         diags.warning(Code::NotInOutputFormat, source, SourceSpan::wholeFile(),

@@ -1,0 +1,165 @@
+// Round trips through the kerf program: every emitter whose format Kerf reads (iso, 3b) writes every
+// sample, every real program in ../shared/realworld and the 3B test vectors; reading the output
+// back gives the same path within the format's resolution (ISO: 3 decimals, 3B: 1 µm).
+//   reference: kerf check F --trace      output: kerf convert F --to E --force -o OUT
+//   back:      kerf check OUT --trace    compare every move's ends (and arc centres, upper sides)
+#include "data_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <regex>
+
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct KerfRun {
+  int exit = -1;
+  std::string out;
+};
+
+/// Runs kerf; `tag` names its stdout file (the cases run in parallel).
+KerfRun kerf(const std::string& args, const std::string& tag) {
+  const fs::path out = fs::path(KERF_ROUNDTRIP_WORK) / (tag + ".stdout");
+  fs::create_directories(out.parent_path());
+  const std::string command = "'" + std::string(KERF_PROGRAM) + "' " + args + " > '" + out.string() + "' 2>/dev/null";
+  const int status = std::system(command.c_str());
+  return KerfRun{WIFEXITED(status) ? WEXITSTATUS(status) : -1, kerf::test::readFile(out)};
+}
+
+double dist(double ax, double ay, double bx, double by) { return std::hypot(ax - bx, ay - by); }
+
+struct Seg {
+  std::string kind;  // line, rapid, arc
+  double sx = 0, sy = 0, ex = 0, ey = 0, cx = 0, cy = 0;
+  bool upper = false;
+};
+
+/// The moves of a trace (and their upper sides), in order.
+std::vector<Seg> movesOf(const std::string& trace) {
+  static const std::regex move(
+      R"(^(\d+ |  upper )(line|rapid|arc cw|arc ccw) (\S+) (\S+) -> (\S+) (\S+)(?: centre (\S+) (\S+))?.*$)");
+  std::vector<Seg> out;
+  for (const std::string& line : kerf::test::splitLines(trace)) {
+    std::smatch m;
+    if (!std::regex_match(line, m, move)) continue;
+    Seg s;
+    s.upper = m[1].str()[0] == ' ';
+    s.kind = m[2].str();
+    s.sx = std::stod(m[3]);
+    s.sy = std::stod(m[4]);
+    s.ex = std::stod(m[5]);
+    s.ey = std::stod(m[6]);
+    if (m[7].matched) {
+      s.cx = std::stod(m[7]);
+      s.cy = std::stod(m[8]);
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+struct Case {
+  fs::path file;
+  std::string to;
+};
+
+class RoundTrip : public testing::Test {
+ public:
+  explicit RoundTrip(Case c) : c_(std::move(c)) {}
+
+  void TestBody() override {
+    const std::string in = "'" + c_.file.string() + "'";
+    const std::string tag = c_.file.filename().string() + "." + c_.to;
+    const KerfRun ref = kerf("check --trace " + in, tag + ".ref");
+    ASSERT_LT(ref.exit, 2) << c_.file;
+    const bool taper = ref.out.find("\ndialect ") != std::string::npos;
+    std::vector<Seg> want = movesOf(ref.out);
+    const bool threeB = c_.to == "3b";
+    if (threeB) {  // one plane (the lower); a move that does not move it has no 3B record
+      want.erase(std::remove_if(want.begin(), want.end(),
+                                [](const Seg& s) {
+                                  return s.upper ||
+                                         (s.kind.rfind("arc", 0) != 0 && dist(s.sx, s.sy, s.ex, s.ey) < 5e-4);
+                                }),
+                 want.end());
+    }
+    const fs::path out = fs::path(KERF_ROUNDTRIP_WORK) / (c_.file.filename().string() + "." + c_.to);
+    fs::remove(out);
+    const KerfRun conv = kerf("convert " + in + " --force --to " + c_.to + " -o '" + out.string() + "'" +
+                                  (threeB && taper ? " --plane lower" : ""),
+                              tag + ".convert");
+    if (!fs::exists(out)) {  // nothing to write: the reference says why (no move at all)
+      EXPECT_TRUE(want.empty()) << c_.file << ": convert wrote nothing (exit " << conv.exit << ")";
+      return;
+    }
+    std::string backArgs = "check --trace '" + out.string() + "'";
+    if (threeB && !want.empty()) {
+      char start[96];
+      std::snprintf(start, sizeof start, " --start %.6f,%.6f", want.front().sx, want.front().sy);
+      backArgs += start;
+    }
+    const KerfRun back = kerf(backArgs, tag + ".back");
+    ASSERT_LT(back.exit, 2) << out;
+    std::vector<Seg> got = movesOf(back.out);
+    ASSERT_EQ(got.size(), want.size()) << c_.file << " -> " << out << "\n" << back.out.substr(0, 2000);
+    // ISO: 3 decimals (√2/2 · 0.001). 3B: the µm grid, and an arc whose source ends are off its
+    // circle by more than the grid ends where its count does (docs/3b.md): 2.5 µm, not cumulative.
+    const double tol = threeB ? 0.0025 : 0.0008;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      const Seg &w = want[i], &g = got[i];
+      SCOPED_TRACE(c_.file.string() + " move " + std::to_string(i));
+      const bool arc = w.kind.rfind("arc", 0) == 0;
+      if (threeB) {  // 3B has no rapid: a rapid comes back as a line
+        EXPECT_EQ(arc, g.kind.rfind("arc", 0) == 0);
+      } else {
+        EXPECT_EQ(w.kind, g.kind);
+      }
+      EXPECT_EQ(w.upper, g.upper);
+      const double d = std::max(dist(w.sx, w.sy, g.sx, g.sy), dist(w.ex, w.ey, g.ex, g.ey));
+      worst = std::max(worst, d);
+      EXPECT_LE(d, tol);
+      if (arc) {
+        EXPECT_LE(dist(w.cx, w.cy, g.cx, g.cy), threeB ? 0.0065 : 0.0012);
+      }
+    }
+    std::printf("round trip %s --to %s: %zu moves, largest end deviation %.6f mm\n", c_.file.filename().c_str(),
+                c_.to.c_str(), want.size(), worst);
+  }
+
+ private:
+  Case c_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  std::vector<fs::path> files;
+  for (const auto& f : kerf::test::sortedEntries(KERF_SAMPLES_DIR, false, ".nc")) files.push_back(f);
+  for (const char* sub : {"iso2d", "xyuv"}) {
+    std::vector<fs::path> real;
+    for (const auto& e : fs::directory_iterator(fs::path(KERF_REALWORLD_DIR) / sub))
+      if (e.is_regular_file()) real.push_back(e.path());
+    std::sort(real.begin(), real.end());
+    files.insert(files.end(), real.begin(), real.end());
+  }
+  for (const char* f : {"3b/set_a.3b", "3b/set_b.3b", "3b/set_a.iso"})
+    files.push_back(fs::path(KERF_REALWORLD_DIR) / ".." / "testdata" / f);
+  for (const fs::path& f : files)
+    for (const char* to : {"iso", "3b"}) {
+      std::string name = f.filename().string() + "_" + to;
+      for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      testing::RegisterTest("roundtrip", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                            [f, to]() -> testing::Test* {
+                              return new RoundTrip(Case{f, to});
+                            });
+    }
+  return RUN_ALL_TESTS();
+}

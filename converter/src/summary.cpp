@@ -64,8 +64,7 @@ TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) 
 
 }  // namespace
 
-Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling,
-                  const SurfaceMeasures* measures) {
+Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, const SurfaceMeasures* measures) {
   Summary s;
   s.format = toolpath.format;
   s.reading = toolpath.reading;

@@ -68,8 +68,8 @@ struct Pipeline {
   std::unique_ptr<SourceFile> source;
   std::unique_ptr<SourceFile> upperSource;    ///< two-file input
   std::unique_ptr<SourceFile> machineSource;  ///< --machine FILE
-  InputFormat format = InputFormat::Iso;  ///< the format the program was read as
-  Program program;                        ///< ISO only (empty for 3B)
+  InputFormat format = InputFormat::Iso;      ///< the format the program was read as
+  Program program;                            ///< ISO only (empty for 3B)
   Toolpath toolpath;
   MachineProfile machine;        ///< the profile in force
   bool machineDetected = false;  ///< chosen from the evidence, not given

@@ -42,13 +42,14 @@ bool isMillTurnProgram(const Program& program) {
 
 bool hasRotaryMoves(const Program& program) {
   for (const Block& b : program.blocks) {
-    bool x = false, c = false, y = false;
+    bool x = false, c = false, y = false, home = false;
     for (const Word& w : program.wordsOf(b)) {
       x |= w.letter == 'X';
       c |= w.letter == 'C';
       y |= w.letter == 'Y';
+      home |= isG(w, 28) || isG(w, 30);
     }
-    if (x && c && !y) return true;
+    if (c && ((x && !y) || home)) return true;  // X/C moves, or the table homed (G28 C0.)
   }
   return false;
 }

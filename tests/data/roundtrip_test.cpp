@@ -136,6 +136,29 @@ class RoundTrip : public testing::Test {
   Case c_;
 };
 
+// Seed 002 (Hadzhiyski et al., G-POST polar post): O30 mills a square on the face with a Y axis
+// (X a diameter); O31 is the same path as X/C points. Transcribed from the paper's listings (the
+// face moves N70-N100 of O30; O31's first points N70-N85 and its last, N1340).
+TEST(seed002, o30_written_as_polar_starts_as_o31_and_ends_a_turn_further) {
+  const fs::path in = fs::path(KERF_ROUNDTRIP_WORK) / "o30.nc";
+  fs::create_directories(in.parent_path());
+  kerf::test::writeFile(in,
+                        "(seed 002 O30, N70-N100)\nG28 C0.\nG0 X-28. Y-29.\nG1 Y14. F120.\nX28.\nY-14.\nX-58.\nM30\n");
+  const fs::path out = fs::path(KERF_ROUNDTRIP_WORK) / "o30.xc";
+  fs::remove(out);
+  // A milling path overruns its start (X-58.): for a wire that is a crossing, hence --force.
+  kerf("convert '" + in.string() + "' --machine fanuc --force --to polar --tolerance 0.005 -o '" + out.string() + "'",
+       "seed002");
+  const auto lines = kerf::test::splitLines(kerf::test::readFile(out));
+  ASSERT_GE(lines.size(), 5u);
+  EXPECT_EQ(lines[2], "G00 X64.404 C-115.769");           // O31 N70 (after the start at the centre)
+  EXPECT_EQ(lines[3], "G01 X63.198 C-116.299 F120.000");  // O31 N85
+  const std::string& last = lines[lines.size() - 2];      // before M30
+  EXPECT_EQ(last.substr(0, 8), "X64.404 ");               // O31 N1340: X64.404 C-154.231
+  const double c = std::stod(last.substr(last.find('C') + 1));
+  EXPECT_NEAR(c, -154.231 - 360.0, 1e-9) << "unwrapped: O31's C-154.231 one turn further";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

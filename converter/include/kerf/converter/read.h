@@ -52,7 +52,8 @@ struct MillTurnOptions {
 
 /// The program uses polar coordinate interpolation (G12.1 or G112).
 bool isMillTurnProgram(const Program& program);
-/// Some block moves X and C together without Y: an explicit X/C face program (seed 002's O31).
+/// Some block moves X and C together without Y (an explicit X/C face program, seed 002's O31), or
+/// homes the table (`G28 C0.`, seed 002's O30): a mill-turn lathe, where X is a diameter.
 bool hasRotaryMoves(const Program& program);
 
 /// Reads a mill-turn face program (docs/polar.md) into the Cartesian face plane: X/C moves outside

@@ -18,39 +18,22 @@ using three_b::Axis;
 
 // ---- 1. the order of the moves ---------------------------------------------------------------------
 
-/// The moves to write, in order: all of them; with a start line, the cut moves rotated to begin
-/// there (a closed path) or from there on (an open one), as the point emitters do.
+/// The moves to write, in order: all of them; with a start line, the cut moves from there
+/// (startCutPathAt, as the point emitters do).
 std::optional<std::vector<std::size_t>> moveOrder(const Toolpath& toolpath, const SourceFile* source,
                                                   std::optional<std::uint32_t> startLine, Diagnostics& diags) {
-  std::vector<std::size_t> order;
-  if (!startLine) {
-    for (std::size_t i = 0; i < toolpath.moves.size(); ++i) order.push_back(i);
-  } else {
-    for (std::size_t i = 0; i < toolpath.moves.size(); ++i)
-      if (toolpath.moves[i].isCut()) order.push_back(i);
-    std::size_t k = 0;
-    while (k < order.size() && toolpath.moves[order[k]].line != *startLine) ++k;
-    if (k == order.size()) {
-      diags.error(Code::StartBlockNotFound, source, SourceSpan::wholeFile(),
-                  "no cutting move comes from line " + std::to_string(*startLine));
-      return std::nullopt;
-    }
-    const bool closed =
-        (toolpath.moves[order.back()].lower.end - toolpath.moves[order.front()].lower.start).norm() <= 1e-6;
-    if (closed) {
-      std::rotate(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end());
-    } else if (k > 0) {
-      diags.warning(Code::StartBlockNotFound, source, toolpath.moves[order[k]].span,
-                    "the cut path is open: the " + std::to_string(k) + " cutting moves before this one are left out");
-      order.erase(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
-    }
-  }
-  bool anyCut = false;
-  for (std::size_t i : order) anyCut |= toolpath.moves[i].isCut();
-  if (!anyCut) {
+  if (std::none_of(toolpath.moves.begin(), toolpath.moves.end(), [](const Move& m) { return m.isCut(); })) {
     diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
     return std::nullopt;
   }
+  std::vector<std::size_t> order;
+  if (!startLine) {
+    for (std::size_t i = 0; i < toolpath.moves.size(); ++i) order.push_back(i);
+    return order;
+  }
+  CutPath path = cutPath(toolpath);
+  if (!startCutPathAt(toolpath, path, *startLine, source, diags)) return std::nullopt;
+  order = std::move(path.moveIndex);
   return order;
 }
 

@@ -3,6 +3,7 @@
 // the 4-axis dialect of a taper program).
 #include "kerf/converter/emit.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kerf::converter {
@@ -144,8 +145,8 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
   if (colon) w.block("G140");
   if (offset != WireOffset::Off) w.block("G40");
   w.block("M02");
-  if (offset != WireOffset::Off || std::any_of(toolpath.moves.begin(), toolpath.moves.end(),
-                                               [](const Move& m) { return m.wireOffset != WireOffset::Off; }))
+  if (std::any_of(toolpath.moves.begin(), toolpath.moves.end(),
+                  [](const Move& m) { return m.wireOffset != WireOffset::Off; }))
     diags.note(Code::NotInOutputFormat, source, SourceSpan::wholeFile(),
                "G41/G42 are written as the source gives them, without D or H: the offset value stays the "
                "machine's (Kerf does not apply the wire offset yet)");

@@ -193,6 +193,29 @@ std::string writeRows(const std::vector<Row>& rows, std::size_t columns, const P
 
 }  // namespace
 
+bool startCutPathAt(const Toolpath& toolpath, CutPath& path, std::uint32_t startLine, const SourceFile* source,
+                    Diagnostics& diags) {
+  std::size_t k = 0;
+  while (k < path.segments.size() && toolpath.moves[path.moveIndex[k]].line != startLine) ++k;
+  if (k == path.segments.size()) {
+    diags.error(Code::StartBlockNotFound, source, SourceSpan::wholeFile(),
+                "no cutting move comes from line " + std::to_string(startLine));
+    return false;
+  }
+  const auto at = static_cast<std::ptrdiff_t>(k);
+  const bool closed = (path.segments.back().end - path.segments.front().start).norm() <= 1e-6;
+  if (closed) {
+    std::rotate(path.segments.begin(), path.segments.begin() + at, path.segments.end());
+    std::rotate(path.moveIndex.begin(), path.moveIndex.begin() + at, path.moveIndex.end());
+  } else if (k > 0) {
+    diags.warning(Code::StartBlockNotFound, source, toolpath.moves[path.moveIndex[k]].span,
+                  "the cut path is open: the " + std::to_string(k) + " cutting moves before this one are left out");
+    path.segments.erase(path.segments.begin(), path.segments.begin() + at);
+    path.moveIndex.erase(path.moveIndex.begin(), path.moveIndex.begin() + at);
+  }
+  return true;
+}
+
 std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile* source, const PointProfile& profile,
                                       const PointRequest& request, Diagnostics& diags) {
   CutPath path = cutPath(toolpath);
@@ -200,28 +223,7 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
     diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
     return std::nullopt;
   }
-  // Start point: rotate a closed path so it begins at the chosen move; on an open path, the
-  // moves before it are left out.
-  if (request.startLine) {
-    std::size_t k = 0;
-    while (k < path.segments.size() && toolpath.moves[path.moveIndex[k]].line != *request.startLine) ++k;
-    if (k == path.segments.size()) {
-      diags.error(Code::StartBlockNotFound, source, SourceSpan::wholeFile(),
-                  "no cutting move comes from line " + std::to_string(*request.startLine));
-      return std::nullopt;
-    }
-    const bool closed = (path.segments.back().end - path.segments.front().start).norm() <= 1e-6;
-    if (closed) {
-      std::rotate(path.segments.begin(), path.segments.begin() + static_cast<std::ptrdiff_t>(k), path.segments.end());
-      std::rotate(path.moveIndex.begin(), path.moveIndex.begin() + static_cast<std::ptrdiff_t>(k),
-                  path.moveIndex.end());
-    } else if (k > 0) {
-      diags.warning(Code::StartBlockNotFound, source, toolpath.moves[path.moveIndex[k]].span,
-                    "the cut path is open: the " + std::to_string(k) + " cutting moves before this one are left out");
-      path.segments.erase(path.segments.begin(), path.segments.begin() + static_cast<std::ptrdiff_t>(k));
-      path.moveIndex.erase(path.moveIndex.begin(), path.moveIndex.begin() + static_cast<std::ptrdiff_t>(k));
-    }
-  }
+  if (request.startLine && !startCutPathAt(toolpath, path, *request.startLine, source, diags)) return std::nullopt;
 
   PointOutput out;
   out.sampling = request.sampling;

@@ -81,6 +81,9 @@ class GoldenTest : public testing::Test {
     for (const char* to : {"3b", "4b", "iso", "polar"}) {
       std::string args = std::string("convert input.nc --to ") + to + " -o -" + readArgs;
       if (taper && std::string(to) != "iso") args += " --plane lower";
+      const auto o = readOptions(dir_ / "options");
+      if (o.count("start-block") && (std::string(to) == "3b" || std::string(to) == "4b"))
+        args += " --start-block '" + o.at("start-block") + "'";
       const KerfRun run = runKerf(dir_, args);
       compare(std::string("expected.") + to, run.out);
       compare(std::string("expected.") + to + ".log", "exit " + std::to_string(run.exit) + "\n" + run.err);

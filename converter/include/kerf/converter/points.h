@@ -6,6 +6,7 @@
 #pragma once
 
 #include "kerf/converter/diagnostics.h"
+#include "kerf/converter/summary.h"
 #include "kerf/converter/toolpath.h"
 #include "kerf/geometry/tessellation.h"
 
@@ -56,6 +57,12 @@ struct PointOutput {
   bool fitted = false;          ///< the sampling was chosen to fit maxPoints
   geometry::PathSampleStats stats;
 };
+
+/// Starts a cut path at the cut move of `startLine`: a closed path is rotated to begin there; on an
+/// open one the moves before it are left out (warning K0803). False, with an error, when no cut
+/// move comes from that line. Every emitter's --start-block.
+bool startCutPathAt(const Toolpath& toolpath, CutPath& path, std::uint32_t startLine, const SourceFile* source,
+                    Diagnostics& diags);
 
 /// Builds the point file. Returns nothing (with an error in diags) when it cannot: no cut
 /// moves, a capacity no sampling can meet, an unknown start line.

@@ -197,7 +197,17 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
         continue;
       }
       if (build.status != geometry::ArcStatus::Ok) {
-        diags.error(Code::ArcEndOffCircle, src, b.span(), "this arc cannot be built from its words");
+        using geometry::ArcStatus;
+        const Code code = build.status == ArcStatus::ZeroRadius             ? Code::ZeroRadius
+                          : build.status == ArcStatus::RadiusTooSmall       ? Code::RadiusTooSmall
+                          : build.status == ArcStatus::FullCircleWithRadius ? Code::FullCircleWithRadius
+                                                                            : Code::ArcEndOffCircle;
+        const char* why = build.status == ArcStatus::ZeroRadius       ? "the arc's radius is 0"
+                          : build.status == ArcStatus::RadiusTooSmall ? "R is shorter than half the chord"
+                          : build.status == ArcStatus::FullCircleWithRadius
+                              ? "a full circle cannot be given by R (its centre is not determined): use I J"
+                              : "the end is not on the circle through the start about the centre I J gives";
+        diags.error(code, src, R ? R->span() : b.span(), std::string("this arc cannot be built: ") + why);
         position = target;
         continue;
       }

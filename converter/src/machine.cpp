@@ -252,6 +252,8 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       either(p.polarXRadius, "diameter", "radius");
     } else if (key == "polar_c") {
       either(p.polarCDiameter, "linear", "diameter");
+    } else if (key == "polar_frame") {
+      either(p.polarFrameTable, "tool", "table");
     } else if (key == "semicolon") {
       either(p.semicolonEndsBlock, "comment", "end-of-block");
     } else if (key == "upper_axes") {
@@ -277,7 +279,7 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       fail(lead, eq - lead, "unknown key '" + key + "'",
            "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
            "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, write_unit, line_end, "
-           "write_taper, polar_x, polar_c, code <CODE>");
+           "write_taper, polar_x, polar_c, polar_frame, code <CODE>");
     }
   }
   if (!ok) return std::nullopt;

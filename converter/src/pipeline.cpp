@@ -187,6 +187,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     mt.machine = machine.name;
     mt.polarXDiameter = ro.polarXDiameter.value_or(!machine.polarXRadius);
     mt.polarCDiameter = machine.polarCDiameter;
+    mt.polarFrameTable = ro.polarFrameTable.value_or(machine.polarFrameTable);
     in.toolpath = readMillTurn(out.program, mt, interpretDiags);
   } else {
     in = interpretProgram(out.program, io, interpretDiags);

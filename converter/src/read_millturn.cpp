@@ -65,6 +65,8 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
   double feed = 0.0;
   // Outside polar mode: the axes as the machine holds them.
   double radius = 0.0, y = 0.0, c = 0.0;  // mm, mm, degrees
+  double startRadius = 0.0;               // the move's start radius (a signed X / 2)
+  std::size_t spirals = 0;                // X/C moves' pieces
   bool cKnown = false;
   // Inside: the polar frame's turn and the tool in it.
   double frame = 0.0;
@@ -72,7 +74,6 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
   Vec2 position(0, 0);
   bool first = true;
   double worstSpiral = 0.0;
-  std::uint32_t worstSpiralLine = 0;
   const double polarXScale = options.polarXDiameter ? 0.5 : 1.0;
   const double polarCScale = options.polarCDiameter ? 2.0 : 1.0;
 
@@ -112,14 +113,23 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
     }
     if (polarOn && !polar) {
       polar = true;
-      frame = cKnown ? c : 0.0;
+      const double at = cKnown ? c : 0.0;
+      frame = options.polarFrameTable ? 0.0 : at;
       inPolar = rotate(position, -frame);
-      if (std::abs(std::remainder(frame, 360.0)) > 1e-9)
-        diags.note(Code::PolarAxisValue, src, b.span(),
-                   "polar interpolation starts with the table at C " + formatFixed(frame, 3) +
-                       ": its frame's x axis passes through the tool there, so the section is drawn turned by that "
-                       "angle",
-                   "FORMATS §5: C counts as 0 when G12.1 is commanded");
+      if (std::abs(std::remainder(at, 360.0)) > 1e-9) {
+        if (options.polarFrameTable)
+          diags.note(Code::PolarAxisValue, src, b.span(),
+                     "polar interpolation starts with the table at C " + formatFixed(at, 3) +
+                         ": read in the table's frame at C 0 (--polar-frame table), as seed 002's post means",
+                     "on a control that turns the frame with C (Fanuc 15i-MA), --polar-frame tool");
+        else
+          diags.note(Code::PolarAxisValue, src, b.span(),
+                     "polar interpolation starts with the table at C " + formatFixed(at, 3) +
+                         ": its frame's x axis passes through the tool there, so the section is drawn turned by "
+                         "that angle",
+                     "FORMATS §5 and the Fanuc 15i-MA manual: the tool's position at G12.1 is angle 0; for a post "
+                     "that means the table's frame at C 0 (seed 002's O66), --polar-frame table");
+      }
     }
     if (polarOff && polar) {
       polar = false;
@@ -168,6 +178,7 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
         cKnown = true;
       }
       target = rotate(Vec2(r, yy), newC);
+      startRadius = radius;
       radius = r;
       y = yy;
     }
@@ -219,12 +230,33 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
       m.kind = motion == 0 ? MoveKind::Rapid : MoveKind::Line;
       m.lower = Segment::line(position, target);
       if (rotary && m.kind == MoveKind::Line && std::abs(y) < 1e-12) {
-        // The machine moves X and C together: a spiral, drawn as its chord.
-        const geometry::PolarPoint a{position.norm(), c}, e{target.norm(), newC};
-        const double dev = geometry::spiralDeviation(a, e, m.lower);
-        if (dev > worstSpiral) {
-          worstSpiral = dev;
-          worstSpiralLine = b.line;
+        // The machine moves X and C together: a spiral in the face plane, drawn as arcs within
+        // options.spiralTolerance (geometry/polar.h).
+        const geometry::PolarPoint a{startRadius, c}, e{radius, newC};
+        geometry::SpiralPieces spiral = geometry::spiralAsArcs(a, e, options.spiralTolerance, options.spiralBudget);
+        if (spiral.overBudget) {
+          diags.error(Code::RotaryJump, src, C->span(),
+                      "this X/C move turns the table " + formatFixed(std::abs(newC - c), 3) +
+                          " degrees: drawing its spiral would take more than " + std::to_string(options.spiralBudget) +
+                          " pieces; drawn as its chord",
+                      "write C continuous: the value congruent mod 360 nearest the previous C");
+        } else if (!spiral.pieces.empty()) {
+          worstSpiral = std::max(worstSpiral, spiral.maxDeviation);
+          spiral.pieces.back().end = target;
+          if (first) {
+            path.start = position;
+            first = false;
+          }
+          for (const Segment& piece : spiral.pieces) {
+            Move part = m;
+            part.kind = piece.isArc() ? MoveKind::Arc : MoveKind::Line;
+            part.lower = piece;
+            path.moves.push_back(std::move(part));
+          }
+          spirals += spiral.pieces.size();
+          c = newC;
+          position = target;
+          continue;
         }
       }
     }
@@ -240,11 +272,11 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
   if (polar)
     diags.warning(Code::PolarNotSupported, src, SourceSpan::wholeFile(),
                   "the program ends inside polar coordinate interpolation (no G13.1 or G113)");
-  if (worstSpiral > options.spiralNote)
+  if (spirals > 0)
     diags.note(Code::PolarAxisValue, src, SourceSpan::wholeFile(),
-               "X/C moves are drawn as straight lines; the machine turns them into spirals that leave the line by up "
-               "to " +
-                   formatFixed(worstSpiral, 4) + " mm (line " + std::to_string(worstSpiralLine) + ")");
+               "X/C cutting moves are drawn as the machine moves them, spirals (X and C linear together), in " +
+                   std::to_string(spirals) + " pieces (arcs, or lines where straight) within " +
+                   formatFixed(worstSpiral, 6) + " mm");
   return path;
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <regex>
@@ -136,6 +137,103 @@ class RoundTrip : public testing::Test {
   Case c_;
 };
 
+/// Distance from p to a traced move (a line, or an arc from its start to its end about its centre).
+double distanceToMove(const Seg& m, double px, double py) {
+  const double ends = std::min(dist(px, py, m.sx, m.sy), dist(px, py, m.ex, m.ey));
+  if (m.kind.rfind("arc", 0) == 0) {
+    const double r = dist(m.sx, m.sy, m.cx, m.cy);
+    const double a0 = std::atan2(m.sy - m.cy, m.sx - m.cx), a1 = std::atan2(m.ey - m.cy, m.ex - m.cx);
+    const double a = std::atan2(py - m.cy, px - m.cx);
+    const double twoPi = 2 * std::acos(-1.0);
+    auto ccwFrom = [&](double from, double to) { return std::fmod(std::fmod(to - from, twoPi) + twoPi, twoPi); };
+    const bool ccw = m.kind == "arc ccw";
+    double sweep = ccw ? ccwFrom(a0, a1) : ccwFrom(a1, a0);
+    if (sweep < 1e-12) sweep = twoPi;  // a full circle
+    const bool inside = (ccw ? ccwFrom(a0, a) : ccwFrom(a, a0)) <= sweep;
+    return inside ? std::abs(dist(px, py, m.cx, m.cy) - r) : ends;
+  }
+  const double dx = m.ex - m.sx, dy = m.ey - m.sy, len2 = dx * dx + dy * dy;
+  if (len2 < 1e-24) return ends;
+  const double t = std::clamp(((px - m.sx) * dx + (py - m.sy) * dy) / len2, 0.0, 1.0);
+  return dist(px, py, m.sx + t * dx, m.sy + t * dy);
+}
+
+double distanceToPath(const std::vector<Seg>& path, double px, double py) {
+  double best = 1e300;
+  for (const Seg& m : path) best = std::min(best, distanceToMove(m, px, py));
+  return best;
+}
+
+/// A point in the middle of a traced move.
+std::pair<double, double> middleOf(const Seg& m) {
+  if (m.kind.rfind("arc", 0) != 0) return {0.5 * (m.sx + m.ex), 0.5 * (m.sy + m.ey)};
+  const double r = dist(m.sx, m.sy, m.cx, m.cy);
+  const double a0 = std::atan2(m.sy - m.cy, m.sx - m.cx), a1 = std::atan2(m.ey - m.cy, m.ex - m.cx);
+  const double twoPi = 2 * std::acos(-1.0);
+  double sweep = std::fmod(std::fmod(a1 - a0, twoPi) + twoPi, twoPi);  // counter-clockwise
+  if (sweep < 1e-12) sweep = twoPi;
+  if (m.kind == "arc cw") sweep -= twoPi;
+  const double a = a0 + 0.5 * sweep;
+  return {m.cx + r * std::cos(a), m.cy + r * std::sin(a)};
+}
+
+// The polar X/C round trip: write --to polar (X a diameter, C in degrees, 4 decimals, the spiral
+// between points within 0.001 mm of the element), read the X/C program back (its cutting moves
+// drawn as the machine's spirals, geometry/polar.h) and compare as point sets: every end and
+// middle of a move read back lies on the source's path, and every end and middle of a source
+// cutting move lies on the path read back, within the tolerance plus the rounding of X and C at
+// the part's largest radius.
+class PolarRoundTrip : public testing::Test {
+ public:
+  explicit PolarRoundTrip(fs::path file) : file_(std::move(file)) {}
+
+  void TestBody() override {
+    const std::string in = "'" + file_.string() + "'";
+    const std::string tag = file_.filename().string() + ".polar";
+    const KerfRun ref = kerf("check --trace " + in, tag + ".ref");
+    ASSERT_LT(ref.exit, 2) << file_;
+    std::vector<Seg> want;
+    for (const Seg& s : movesOf(ref.out))
+      if (!s.upper) want.push_back(s);
+    const fs::path out = fs::path(KERF_ROUNDTRIP_WORK) / tag;
+    fs::remove(out);
+    const KerfRun conv = kerf(
+        "convert " + in + " --force --to polar --plane lower --decimals 4 -o '" + out.string() + "'", tag + ".convert");
+    if (!fs::exists(out)) {  // refused: a move through the centre (K0805) or no move
+      EXPECT_GE(conv.exit, 1) << file_;
+      return;
+    }
+    const KerfRun back = kerf("check --trace '" + out.string() + "'", tag + ".back");
+    ASSERT_LT(back.exit, 2) << out;
+    const std::vector<Seg> got = movesOf(back.out);
+    ASSERT_FALSE(got.empty()) << out;
+    double reach = 0.0;
+    for (const Seg& s : want) reach = std::max({reach, std::hypot(s.sx, s.sy), std::hypot(s.ex, s.ey)});
+    const double tol = 0.001 + 0.00005 + reach * 0.00005 * std::acos(-1.0) / 180.0 + 1e-6;
+    std::vector<Seg> wantCuts, gotCuts;
+    for (const Seg& s : want)
+      if (s.kind != "rapid") wantCuts.push_back(s);
+    for (const Seg& s : got)
+      if (s.kind != "rapid") gotCuts.push_back(s);
+    double worstBack = 0.0, worstSource = 0.0;
+    for (const Seg& g : gotCuts)
+      for (const auto& [x, y] : {std::pair{g.sx, g.sy}, std::pair{g.ex, g.ey}, middleOf(g)})
+        worstBack = std::max(worstBack, distanceToPath(want, x, y));
+    for (const Seg& w : wantCuts)
+      for (const auto& [x, y] : {std::pair{w.sx, w.sy}, std::pair{w.ex, w.ey}, middleOf(w)})
+        worstSource = std::max(worstSource, distanceToPath(gotCuts, x, y));
+    EXPECT_LE(worstBack, tol) << file_ << ": read back, off the source's path";
+    EXPECT_LE(worstSource, tol) << file_ << ": the source's path, missed by what was read back";
+    std::printf(
+        "round trip %s --to polar: %zu cutting moves, %zu read back; largest distance %.6f mm (back to "
+        "source) and %.6f mm (source to back), allowed %.6f\n",
+        file_.filename().c_str(), wantCuts.size(), gotCuts.size(), worstBack, worstSource, tol);
+  }
+
+ private:
+  fs::path file_;
+};
+
 // Seed 002 (Hadzhiyski et al., G-POST polar post): O30 mills a square on the face with a Y axis
 // (X a diameter); O31 is the same path as X/C points. Transcribed from the paper's listings (the
 // face moves N70-N100 of O30; O31's first points N70-N85 and its last, N1340).
@@ -159,6 +257,50 @@ TEST(seed002, o30_written_as_polar_starts_as_o31_and_ends_a_turn_further) {
   EXPECT_NEAR(c, -154.231 - 360.0, 1e-9) << "unwrapped: O31's C-154.231 one turn further";
 }
 
+// Seed 002's O66 is the same square in G12.1 mode (X a radius, C the virtual axis in mm), after
+// `X240. C270.` turns the table (transcribed: N35-N115). Its post means the table's frame at C 0
+// (--polar-frame table): the cut is O30's square exactly. Read as the Fanuc 15i-MA manual says
+// (the default, tool), the frame turns with C270: the same square turned by 270 degrees.
+TEST(seed002, o66_in_the_table_frame_is_o30s_square_and_the_tool_frame_turns_it) {
+  const fs::path dir = fs::path(KERF_ROUNDTRIP_WORK);
+  fs::create_directories(dir);
+  const fs::path o30 = dir / "o30_square.nc", o66 = dir / "o66.nc";
+  kerf::test::writeFile(o30,
+                        "(seed 002 O30, N35-N100)\nG28 C0.\nG0 Z200.\nX-28. Y-29.\nZ5.\nZ-2.5\nG1 Y14. "
+                        "F120.\nX28.\nY-14.\nX-58.\nM30\n");
+  kerf::test::writeFile(o66,
+                        "(seed 002 O66, N35-N115)\nN35 G28 C0.\nN60 G0 Z200.\nN65 X240. C270.\nN70 "
+                        "G12.1\nN75 X-14. C-29.\nN80 Z5.\nN85 Z-2.5\nN90 G1 C14. F120.\nN95 X14.\nN100 "
+                        "C-14.\nN105 X-29.\nN110 G13.1\nN115 X64.404 Z5.\nM30\n");
+  auto cuts = [](const std::string& trace) {
+    std::vector<Seg> out;
+    for (const Seg& s : movesOf(trace))
+      if (s.kind == "line" && dist(s.sx, s.sy, s.ex, s.ey) > 0.01) out.push_back(s);  // not N115's 0.5 um
+    return out;
+  };
+  const KerfRun ref = kerf("check --machine fanuc --trace '" + o30.string() + "'", "o30_square");
+  const KerfRun table = kerf("check --machine fanuc --polar-frame table --trace '" + o66.string() + "'", "o66_t");
+  const KerfRun tool = kerf("check --machine fanuc --trace '" + o66.string() + "'", "o66_f");
+  const std::vector<Seg> want = cuts(ref.out), got = cuts(table.out), turned = cuts(tool.out);
+  ASSERT_EQ(want.size(), 4u) << ref.out;
+  EXPECT_DOUBLE_EQ(want[0].sx, -14.0);  // O30's X is a diameter
+  EXPECT_DOUBLE_EQ(want[0].sy, -29.0);
+  ASSERT_EQ(got.size(), want.size()) << table.out;
+  ASSERT_EQ(turned.size(), want.size()) << tool.out;
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    SCOPED_TRACE("cut " + std::to_string(i));
+    EXPECT_LE(dist(want[i].sx, want[i].sy, got[i].sx, got[i].sy), 1e-9);
+    EXPECT_LE(dist(want[i].ex, want[i].ey, got[i].ex, got[i].ey), 1e-9);
+    // Turned by 270 degrees: (x, y) -> (y, -x).
+    EXPECT_LE(dist(want[i].sy, -want[i].sx, turned[i].sx, turned[i].sy), 1e-9);
+    EXPECT_LE(dist(want[i].ey, -want[i].ex, turned[i].ex, turned[i].ey), 1e-9);
+  }
+  EXPECT_NE(table.out.find("K0238 polar interpolation starts with the table at C 270.000: read in the table's"),
+            std::string::npos);
+  EXPECT_NE(tool.out.find("K0238 polar interpolation starts with the table at C 270.000: its frame's x axis"),
+            std::string::npos);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -175,6 +317,13 @@ int main(int argc, char** argv) {
   }
   for (const char* f : {"3b/set_a.3b", "3b/set_b.3b", "3b/set_a.iso"})
     if (const fs::path p = fs::path(KERF_REALWORLD_DIR) / ".." / "testdata" / f; fs::exists(p)) files.push_back(p);
+  for (const fs::path& f : files) {
+    std::string name = f.filename().string() + "_polar";
+    for (char& ch : name)
+      if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+    testing::RegisterTest("roundtrip", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                          [f]() -> testing::Test* { return new PolarRoundTrip(f); });
+  }
   for (const fs::path& f : files)
     for (const char* to : {"iso", "3b"}) {
       std::string name = f.filename().string() + "_" + to;

@@ -46,6 +46,11 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
                  "X inside G12.1/G112 polar interpolation: radius or diameter (default: the machine profile's)")
       ->check(CLI::IsMember({"radius", "diameter"}))
       ->group(reading);
+  cmd.add_option("--polar-frame", o.reading.polarFrame,
+                 "the G12.1/G112 frame: tool (turned by the table's C at G12.1, as Fanuc says) or table (the "
+                 "table at C 0, as seed 002's post means); default: the machine profile's")
+      ->check(CLI::IsMember({"tool", "table"}))
+      ->group(reading);
   cmd.add_option("--integer-unit", o.reading.integerUnit, "unit of coordinates written without a decimal point")
       ->check(CLI::IsMember({"mm", "um"}))
       ->group(reading);
@@ -146,6 +151,7 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
     r.start = geometry::Vec2(x, y);
   }
   if (o.reading.polarX) r.polarXDiameter = *o.reading.polarX == "diameter";
+  if (o.reading.polarFrame) r.polarFrameTable = *o.reading.polarFrame == "table";
   if (o.reading.integerUnit)
     r.integerUnit = *o.reading.integerUnit == "um" ? IntegerUnit::Micrometre : IntegerUnit::Millimetre;
   if (o.reading.arcCentre) r.arcCentre = parseArcCentre(*o.reading.arcCentre);

@@ -27,6 +27,7 @@ struct ReadingOptions {
   std::string format = "auto";             ///< auto | iso | 3b
   std::optional<std::string> start;        ///< X,Y (3B)
   std::optional<std::string> polarX;       ///< diameter | radius (inside G12.1)
+  std::optional<std::string> polarFrame;   ///< tool | table (the G12.1 frame)
   std::optional<std::string> integerUnit;  ///< mm | um
   std::optional<std::string> arcCentre;    ///< incremental | reversed | absolute
   std::optional<double> offset;            ///< --offset, mm

@@ -74,6 +74,9 @@ struct MachineProfile {
   // Polar coordinate interpolation (G12.1/G112, docs/polar.md).
   bool polarXRadius = true;     ///< polar_x = radius | diameter: X inside G12.1
   bool polarCDiameter = false;  ///< polar_c = linear | diameter: Star machines write C as a diameter
+  /// polar_frame = tool | table: the frame of G12.1 turns with the table's C when G12.1 is commanded
+  /// (Fanuc 15i-MA: the tool's position is angle 0), or is the table's frame at C 0 (seed 002's post).
+  bool polarFrameTable = false;
   std::vector<KnownCode> codes;
   std::string text;  ///< the profile as written (`kerf machines show`)
 

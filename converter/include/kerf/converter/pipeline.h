@@ -39,6 +39,7 @@ struct ReadOptions {
   std::optional<InputFormat> format;      ///< --format: nothing detects it from the content (read.h)
   std::optional<geometry::Vec2> start;    ///< --start X,Y: where a 3B program starts, mm
   std::optional<bool> polarXDiameter;     ///< --polar-x: X inside G12.1 (nothing: the profile's)
+  std::optional<bool> polarFrameTable;    ///< --polar-frame: the G12.1 frame (nothing: the profile's)
   std::optional<std::string> machine;     ///< --machine NAME: a built-in profile
   std::optional<SourceText> machineFile;  ///< --machine FILE: a profile's text
   std::optional<IntegerUnit> integerUnit;

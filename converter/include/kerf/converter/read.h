@@ -44,10 +44,12 @@ struct ThreeBOptions {
 Toolpath readThreeB(const SourceFile& source, const ThreeBOptions& options, Diagnostics& diags);
 
 struct MillTurnOptions {
-  std::string machine = "fanuc";  ///< the profile's name, for the summary
-  bool polarXDiameter = false;    ///< X inside G12.1 is a diameter (--polar-x diameter)
-  bool polarCDiameter = false;    ///< C inside G12.1 is a diameter (Star machines)
-  double spiralNote = 0.001;      ///< mm: say how far X/C spirals leave their chords beyond this
+  std::string machine = "fanuc";      ///< the profile's name, for the summary
+  bool polarXDiameter = false;        ///< X inside G12.1 is a diameter (--polar-x diameter)
+  bool polarCDiameter = false;        ///< C inside G12.1 is a diameter (Star machines)
+  bool polarFrameTable = false;       ///< the G12.1 frame is the table's at C 0, not turned with C (--polar-frame)
+  double spiralTolerance = 1e-4;      ///< mm: X/C cutting moves drawn as arcs this close to the machine's spiral
+  std::size_t spiralBudget = 100000;  ///< pieces per X/C move at most (a C far off is refused, not expanded)
 };
 
 /// The program uses polar coordinate interpolation (G12.1 or G112).

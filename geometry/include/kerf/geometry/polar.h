@@ -41,10 +41,25 @@ struct PolarSubdivision {
 
 /// Points along s such that the machine's spiral between neighbours stays within `tolerance` of
 /// s. Pieces are bisected until they fit, so they are denser near the centre, where C turns
-/// fastest; no piece turns C by more than 45 degrees. `startC` is the C of s.start; at most
-/// `budget` points are made. A segment whose inside comes closer to the centre than `centreGap`
-/// passes through it (C undefined); one that starts or ends there does not.
+/// fastest; no piece turns C by more than 45 degrees or sweeps more than 90 degrees of an arc. `startC` is the C of
+/// s.start; at most `budget` points are made. A segment whose inside comes closer to the centre than `centreGap` passes
+/// through it (C undefined); one that starts or ends there does not.
 PolarSubdivision subdivideForPolar(const Segment& s, double startC, double tolerance, std::size_t budget,
                                    double centreGap = 1e-6);
+
+struct SpiralPieces {
+  std::vector<Segment> pieces;  ///< lines and arcs, in order, from the first point to the last
+  double maxDeviation = 0.0;    ///< mm, of the spiral from the pieces (sampled)
+  bool overBudget = false;      ///< the spiral turns so far that it needs more than the budget
+};
+
+/// The machine's path between two polar points as the mill-turn reader draws it: X and C move
+/// linearly together, a spiral r(u) = ra + u (rb - ra), C(u) = ca + u (cb - ca) in the face plane.
+/// Each piece is the arc through the spiral's points at its start, middle and end (a line where
+/// they are collinear), bisected until the spiral stays within `tolerance` of it (sampled at 9
+/// inner points); no piece turns C more than 45 degrees. Constant r gives arcs about the centre,
+/// exactly. At least ceil(|cb - ca| / 45) pieces are needed: over `budget` it says so before
+/// making any.
+SpiralPieces spiralAsArcs(const PolarPoint& a, const PolarPoint& b, double tolerance, std::size_t budget);
 
 }  // namespace kerf::geometry

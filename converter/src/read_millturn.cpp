@@ -13,6 +13,7 @@
 #include "kerf/geometry/arc.h"
 #include "kerf/geometry/polar.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kerf::converter {
@@ -30,6 +31,41 @@ Vec2 rotate(const Vec2& p, double degrees) {
 
 bool isG(const Word& w, int whole, int tenth = 0) {
   return w.letter == 'G' && w.isNumber() && std::lround(w.value * 10) == whole * 10 + tenth;
+}
+
+/// A code as written: G12.1, M30, T707.
+std::string codeText(const Word& w) {
+  const long tenths = std::lround(w.value * 10);
+  return std::string(1, w.letter) + std::to_string(tenths / 10) +
+         (tenths % 10 != 0 ? "." + std::to_string(std::labs(tenths % 10)) : "");
+}
+
+bool knownG(const Word& w) {
+  for (const auto& [whole, tenth] : {std::pair{0, 0},
+                                     {1, 0},
+                                     {2, 0},
+                                     {3, 0},
+                                     {12, 1},
+                                     {13, 1},
+                                     {112, 0},
+                                     {113, 0},
+                                     {90, 0},
+                                     {91, 0},
+                                     {28, 0},
+                                     {30, 0},
+                                     {53, 0}})
+    if (isG(w, whole, tenth)) return true;
+  return false;
+}
+
+/// G codes that do not move the face point: planes, units (mm assumed), work offsets, feed and
+/// spindle modes, cancels.
+bool harmlessG(const Word& w) {
+  for (const auto& [whole, tenth] :
+       {std::pair{17, 0}, {18, 0}, {19, 0}, {21, 0}, {40, 0}, {54, 0}, {55, 0}, {56, 0}, {57, 0}, {58, 0},
+        {59, 0},          {80, 0}, {94, 0}, {95, 0}, {96, 0}, {97, 0}, {98, 0}, {99, 0}, {4, 0},  {9, 0}})
+    if (isG(w, whole, tenth)) return true;
+  return false;
 }
 
 }  // namespace
@@ -77,7 +113,16 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
   const double polarXScale = options.polarXDiameter ? 0.5 : 1.0;
   const double polarCScale = options.polarCDiameter ? 2.0 : 1.0;
 
-  for (std::size_t bi = 0; bi < program.blocks.size(); ++bi) {
+  // T, S and M words do not move the face point: said once per code, with the first line.
+  std::vector<std::string> unreadSeen;
+  auto unread = [&](const Word& w, const char* what) {
+    const std::string code = codeText(w);
+    if (std::find(unreadSeen.begin(), unreadSeen.end(), code) != unreadSeen.end()) return;
+    unreadSeen.push_back(code);
+    diags.note(Code::MachineCode, src, w.span(), code + ": " + what);
+  };
+  bool ends = false;
+  for (std::size_t bi = 0; bi < program.blocks.size() && !ends; ++bi) {  // M02/M30/M99 end it
     const Block& b = program.blocks[bi];
     if (b.hasError || b.kind != BlockKind::Words) continue;
     const Word *X = nullptr, *Y = nullptr, *C = nullptr, *I = nullptr, *J = nullptr, *R = nullptr;
@@ -100,7 +145,26 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
         case 'J': J = &w; break;
         case 'R': R = &w; break;
         case 'F': feed = w.value; break;
-        default: break;  // N T S M Z W ...: not the face plane
+        case 'M':
+          if (w.value == 2 || w.value == 30 || w.value == 99)
+            ends = true;
+          else
+            unread(w, "a machine function (spindle, coolant, C-axis mode): no motion of the face point");
+          break;
+        case 'T': unread(w, "tool selection"); break;
+        case 'S': unread(w, "spindle speed"); break;
+        default: break;  // N Z W ...: not the face plane
+      }
+      if (w.letter == 'G' && !knownG(w)) {
+        if (isG(w, 41) || isG(w, 42))
+          diags.warning(Code::CodeNotModelled, src, w.span(),
+                        "cutter compensation in a mill-turn program is not applied: the path drawn is the "
+                        "programmed one, not the tool centre's",
+                        "the tool's offset is known only at the machine");
+        else if (!harmlessG(w))
+          diags.warning(Code::CodeNotModelled, src, w.span(),
+                        codeText(w) + " is not read in a mill-turn face program: the path may differ",
+                        "Kerf reads G0-G3, G12.1/G13.1 (G112/G113), G90/G91 and G28/G30 here (docs/polar.md)");
       }
     }
     if (homing) {  // G28 C0.: the table at its reference; other axes to where the machine knows
@@ -269,6 +333,9 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
     if ((m.lower.end - m.lower.start).norm() < 1e-12 && m.kind != MoveKind::Arc) continue;
     path.moves.push_back(std::move(m));
   }
+  path.endedProperly = ends;
+  if (!ends && !diags.hasErrors() && !path.moves.empty())
+    diags.warning(Code::MissingProgramEnd, src, program.blocks.back().span(), "program ends without M02 or M30");
   if (polar)
     diags.warning(Code::PolarNotSupported, src, SourceSpan::wholeFile(),
                   "the program ends inside polar coordinate interpolation (no G13.1 or G113)");

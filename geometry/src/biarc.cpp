@@ -1,0 +1,201 @@
+#include "kerf/geometry/biarc.h"
+
+#include <unsupported/Eigen/Splines>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kerf::geometry {
+
+namespace {
+
+Vec2 leftNormal(const Vec2& t) { return {-t.y(), t.x()}; }
+
+/// The arc that leaves p along the unit tangent u and ends at q (a line where q lies on the
+/// tangent, or the circle would be immense).
+Segment tangentArc(const Vec2& p, const Vec2& u, const Vec2& q) {
+  const Vec2 w = q - p;
+  const Vec2 n = leftNormal(u);
+  const double k = w.dot(n), ww = w.squaredNorm();
+  if (std::abs(k) <= 1e-12 * std::max(1.0, ww)) return Segment::line(p, q);
+  const double r = ww / (2 * k);  // signed: > 0, the centre on the left (counter-clockwise)
+  if (std::abs(r) > 1e7) return Segment::line(p, q);
+  return Segment::arc(p, q, p + r * n, r > 0 ? ArcDirection::CounterClockwise : ArcDirection::Clockwise);
+}
+
+Vec2 unit(const Vec2& v) {
+  const double n = v.norm();
+  return n > 0 ? Vec2(v / n) : Vec2(0, 0);
+}
+
+class Fitter {
+ public:
+  Fitter(const ParametricCurve& c, const BiarcOptions& o) : c_(c), o_(o) {}
+
+  Vec2 tangent(double t) const {
+    Vec2 d = c_.derivative ? c_.derivative(t) : Vec2(0, 0);
+    if (!c_.derivative || d.norm() < 1e-14) {
+      const double h = 1e-6 * std::max(1e-12, c_.t1 - c_.t0);
+      const double a = std::max(c_.t0, t - h), b = std::min(c_.t1, t + h);
+      d = c_.point(b) - c_.point(a);
+    }
+    return unit(d);
+  }
+
+  /// The biarc of [a, b] and its largest sampled distance from the curve (infinite: none).
+  double span(double a, double b, std::vector<Segment>& out) const {
+    out = biarc(c_.point(a), tangent(a), c_.point(b), tangent(b));
+    if (out.empty()) return INFINITY;
+    double worst = 0.0;
+    for (int k = 1; k <= o_.samples; ++k) {
+      const Vec2 p = c_.point(a + (b - a) * k / (o_.samples + 1));
+      double best = INFINITY;
+      for (const Segment& s : out) best = std::min(best, s.distanceTo(p));
+      worst = std::max(worst, best);
+      if (!(worst <= 1e300)) return INFINITY;
+    }
+    return worst;
+  }
+
+  /// The greedy walk with target error e: the nodes, or empty when over budget.
+  std::vector<double> walk(double e, bool& ok) const {
+    std::vector<double> nodes{c_.t0};
+    std::vector<Segment> scratch;
+    ok = true;
+    double t = c_.t0;
+    while (t < c_.t1) {
+      if (nodes.size() > o_.maxSpans) return {};
+      if (span(t, c_.t1, scratch) <= e) {
+        nodes.push_back(c_.t1);
+        break;
+      }
+      double lo = t, hi = c_.t1;  // span(t, lo) fits (or lo = t), span(t, hi) does not
+      for (int i = 0; i < 60 && hi - lo > o_.minSpan; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if (span(t, mid, scratch) <= e)
+          lo = mid;
+        else
+          hi = mid;
+      }
+      if (lo - t <= o_.minSpan) {  // nothing fits: a corner or a cusp; step over it
+        ok = false;
+        lo = std::min(c_.t1, hi);
+      }
+      nodes.push_back(lo);
+      t = lo;
+    }
+    return nodes;
+  }
+
+ private:
+  const ParametricCurve& c_;
+  const BiarcOptions& o_;
+};
+
+}  // namespace
+
+std::vector<Segment> biarc(const Vec2& p0, const Vec2& u0, const Vec2& p1, const Vec2& u1) {
+  const Vec2 v = p1 - p0;
+  const double vv = v.squaredNorm();
+  if (vv < 1e-24) return {};
+  const double c = u0.dot(u1);
+  const double vt = v.dot(u0 + u1);
+  double d;
+  const double denom = 2 * (1 - c);
+  if (denom < 1e-12) {  // parallel tangents, the same way
+    const double vu = v.dot(u1);
+    if (vu <= 0) return {};
+    d = vv / (4 * vu);
+  } else {
+    d = (-vt + std::sqrt(vt * vt + denom * vv)) / denom;
+  }
+  if (!(d > 0) || !std::isfinite(d)) return {};
+  const Vec2 a = p0 + d * u0, b = p1 - d * u1;
+  const Vec2 joint = 0.5 * (a + b);
+  const Vec2 uj = unit(b - a);
+  if (uj.norm() == 0) {  // the control points coincide: a single arc through the joint
+    return {tangentArc(p0, u0, p1)};
+  }
+  std::vector<Segment> out;
+  const Segment first = tangentArc(p0, u0, joint), second = tangentArc(joint, uj, p1);
+  if ((joint - p0).norm() > 1e-12) out.push_back(first);
+  if ((p1 - joint).norm() > 1e-12) out.push_back(second);
+  return out;
+}
+
+BiarcFit fitBiarcs(const ParametricCurve& curve, const BiarcOptions& options) {
+  BiarcFit fit;
+  if (!(curve.t1 > curve.t0)) {
+    fit.ok = false;
+    return fit;
+  }
+  const Fitter f(curve, options);
+  bool ok = true;
+  std::vector<double> nodes = f.walk(options.tolerance, ok);
+  if (nodes.empty()) {
+    fit.overBudget = true;
+    fit.ok = false;
+    return fit;
+  }
+  if (options.equalise && ok && nodes.size() > 2) {
+    // The smallest target that still needs as many spans: the last span takes its share.
+    const std::size_t n = nodes.size();
+    double lo = 0.0, hi = options.tolerance;
+    for (int i = 0; i < 24; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      bool midOk = true;
+      const std::vector<double> trial = f.walk(mid, midOk);
+      if (midOk && !trial.empty() && trial.size() == n) {
+        hi = mid;
+        nodes = trial;
+      } else {
+        lo = mid;
+      }
+    }
+  }
+  fit.ok = ok;
+  std::vector<Segment> pieces;
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+    BiarcSpan s;
+    s.t0 = nodes[i];
+    s.t1 = nodes[i + 1];
+    s.error = f.span(s.t0, s.t1, pieces);
+    if (!std::isfinite(s.error)) {  // a corner stepped over: join with a line
+      pieces = {Segment::line(curve.point(s.t0), curve.point(s.t1))};
+      s.error = 0.0;
+      for (int k = 1; k <= options.samples; ++k)
+        s.error =
+            std::max(s.error, pieces[0].distanceTo(curve.point(s.t0 + (s.t1 - s.t0) * k / (options.samples + 1))));
+    }
+    s.first = fit.segments.size();
+    s.count = pieces.size();
+    fit.segments.insert(fit.segments.end(), pieces.begin(), pieces.end());
+    fit.maxError = std::max(fit.maxError, s.error);
+    fit.spans.push_back(s);
+  }
+  return fit;
+}
+
+BiarcFit fitPointList(const std::vector<Vec2>& points, const BiarcOptions& options) {
+  std::vector<Vec2> pts;
+  for (const Vec2& p : points)
+    if (pts.empty() || (p - pts.back()).norm() > 1e-12) pts.push_back(p);
+  if (pts.size() < 2) {
+    BiarcFit none;
+    none.ok = false;
+    return none;
+  }
+  using Spline = Eigen::Spline<double, 2>;
+  Eigen::Matrix<double, 2, Eigen::Dynamic> m(2, static_cast<Eigen::Index>(pts.size()));
+  for (std::size_t i = 0; i < pts.size(); ++i) m.col(static_cast<Eigen::Index>(i)) = pts[i];
+  const Eigen::Index degree = std::min<Eigen::Index>(3, static_cast<Eigen::Index>(pts.size()) - 1);
+  const Spline spline = Eigen::SplineFitting<Spline>::Interpolate(m, degree);
+  ParametricCurve curve;
+  curve.point = [spline](double u) -> Vec2 { return spline(std::clamp(u, 0.0, 1.0)); };
+  curve.derivative = [spline](double u) -> Vec2 { return spline.derivatives(std::clamp(u, 0.0, 1.0), 1).col(1); };
+  curve.t0 = 0.0;
+  curve.t1 = 1.0;
+  return fitBiarcs(curve, options);
+}
+
+}  // namespace kerf::geometry

@@ -2,6 +2,7 @@
 #include "kerf/converter/pipeline.h"
 
 #include "kerf/converter/analysis.h"
+#include "kerf/converter/points.h"
 
 #include <cstdio>
 
@@ -73,6 +74,68 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
 
 /// 3B: no machine conventions to choose; the reader gives the Toolpath, an upper file of its own
 /// (3B or ISO) pairs with it.
+/// A drawing: read, chained into contours, and walked as a toolpath (a rapid to each contour's
+/// start, then its elements) so that summary, explain, pictures and export show it. The wire-path
+/// checks are not run: a drawing is not a program (kerf cam makes one from it).
+void readDxfPipeline(Pipeline& out, const PipelineOptions& options) {
+  const ReadOptions& ro = options.read;
+  DxfOptions o;
+  if (ro.dxfUnit) o.unitToMm = *ro.dxfUnit;
+  o.curveTolerance = ro.curveTolerance;
+  o.maxElements = ro.maxMoves;
+  DrawingResult result;
+  result.drawing = readDxf(*out.source, o, out.diags);
+  std::vector<geometry::Segment> segments;
+  segments.reserve(result.drawing.elements.size());
+  for (const DrawingElement& e : result.drawing.elements) segments.push_back(e.segment);
+  geometry::ChainOptions co;
+  co.tolerance = ro.chainTolerance;
+  result.contours = geometry::chainSegments(segments, co);
+  Toolpath& path = out.toolpath;
+  path.format = InputFormat::Dxf;
+  path.reading.machine = out.machine.name;
+  path.blocks = result.drawing.elements.size();
+  geometry::Vec2 at(0, 0);
+  for (const geometry::Chain& c : result.contours) {
+    const DrawingElement& first = result.drawing.elements[c.elements.front()];
+    if (path.moves.empty()) {
+      path.start = c.path.front().start;
+      at = path.start;
+    }
+    if ((c.path.front().start - at).norm() > 1e-12) {
+      Move rapid;
+      rapid.kind = MoveKind::Rapid;
+      rapid.lower = geometry::Segment::line(at, c.path.front().start);
+      rapid.line = first.where;
+      rapid.span = first.span;
+      path.moves.push_back(rapid);
+    }
+    for (std::size_t k = 0; k < c.elements.size(); ++k) {
+      const DrawingElement& e = result.drawing.elements[c.elements[k]];
+      Move m;
+      m.kind = c.path[k].isArc() ? MoveKind::Arc : MoveKind::Line;
+      m.lower = c.path[k];
+      m.line = e.where;
+      m.span = e.span;
+      path.moves.push_back(m);
+    }
+    at = c.path.back().end;
+    if (!c.closed) {
+      const DrawingElement& last = result.drawing.elements[c.elements.back()];
+      const geometry::Vec2 a = c.path.front().start, b = c.path.back().end;
+      out.diags.warning(Code::ContourOpen, out.source.get(), last.span.length ? last.span : SourceSpan::wholeFile(),
+                        "a chain of " + std::to_string(c.elements.size()) + " element" +
+                            (c.elements.size() == 1 ? "" : "s") + " does not close: its ends (" +
+                            formatFixed(a.x(), 3) + ", " + formatFixed(a.y(), 3) + ") and (" + formatFixed(b.x(), 3) +
+                            ", " + formatFixed(b.y(), 3) + ") are " + formatFixed(c.gap, 4) + " mm apart",
+                        "ends closer than --chain-tolerance (" + formatFixed(ro.chainTolerance, 4) +
+                            " mm) are joined; a contour to cut must close");
+    }
+  }
+  path.endedProperly = true;
+  out.drawing = std::move(result);
+}
+
 void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::optional<SourceText> upper) {
   ThreeBOptions tb;
   if (options.read.start) tb.start = *options.read.start;
@@ -138,6 +201,11 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   }
   out.read = true;
   out.format = ro.format ? *ro.format : detectFormat(out.source->text()).format;
+  if (out.format == InputFormat::Dxf) {
+    if (!given) out.machine = *findBuiltinMachine("generic");
+    readDxfPipeline(out, options);
+    return out;
+  }
   if (out.format == InputFormat::ThreeB) {
     if (!given) out.machine = *findBuiltinMachine("generic");
     readThreeBPipeline(out, options, std::move(upper));

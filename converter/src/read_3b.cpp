@@ -3,6 +3,8 @@
 // The 3B rules are FORMATS §4, written out with a worked example in docs/3b.md.
 #include "kerf/converter/read.h"
 
+#include "kerf/converter/dxf.h"
+
 #include "kerf/converter/points.h"
 #include "three_b.h"
 
@@ -144,13 +146,16 @@ bool arcEnd(const Vec2& startRel, bool ccw, Axis axis, double count, double slac
 
 // ---- 2. format detection -------------------------------------------------------------------------
 
-const char* inputFormatName(InputFormat f) { return f == InputFormat::ThreeB ? "3b" : "iso"; }
+const char* inputFormatName(InputFormat f) {
+  return f == InputFormat::ThreeB ? "3b" : f == InputFormat::Dxf ? "dxf" : "iso";
+}
 
 std::optional<InputFormat> parseInputFormat(std::string_view name) {
   std::string n;
   for (char c : name) n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (n == "iso") return InputFormat::Iso;
   if (n == "3b") return InputFormat::ThreeB;
+  if (n == "dxf") return InputFormat::Dxf;
   return std::nullopt;
 }
 
@@ -177,6 +182,11 @@ std::size_t skipBlank(std::string_view t, std::size_t i) {
 
 FormatDetection detectFormat(std::string_view text) {
   FormatDetection d;
+  if (looksLikeDxf(text)) {
+    d.format = InputFormat::Dxf;
+    d.why = "it starts as a DXF file does";
+    return d;
+  }
   const std::size_t i = skipBlank(text, 0);
   if (i >= text.size() || upper(text[i]) != 'B') return d;
   // A B field: B, blanks, digits or the next B.

@@ -3,6 +3,7 @@
 
 #include "kerf/converter/machine.h"
 #include "kerf/converter/points.h"
+#include "kerf/converter/read.h"
 #include "kerf/geometry/arc.h"
 
 #include <nlohmann/json.hpp>
@@ -145,7 +146,8 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
   return out;
 }
 
-std::string checkReportJson(const std::string& file, const Summary& s, const Diagnostics& diags) {
+std::string checkReportJson(const std::string& file, const Summary& s, const Diagnostics& diags,
+                            const DrawingResult* drawing) {
   json j;
   j["file"] = file;
   j["verdict"] = diags.hasErrors() ? "errors" : "ok";
@@ -172,7 +174,33 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
   }
   j["diagnostics"] = std::move(list);
   json sum;
-  sum["format"] = s.format == InputFormat::ThreeB ? "3b" : "iso";
+  sum["format"] = inputFormatName(s.format);
+  if (drawing) {
+    const Drawing& d = drawing->drawing;
+    json dj;
+    dj["version"] = d.version;
+    dj["binary"] = d.binary;
+    dj["ins_units"] = d.insUnits;
+    dj["unit_to_mm"] = d.unitToMm;
+    dj["entities"] = d.entities;
+    dj["skipped"] = d.skipped;
+    dj["elements"] = d.elements.size();
+    json contours = json::array();
+    for (const geometry::Chain& c : drawing->contours) {
+      json cj;
+      cj["elements"] = c.elements.size();
+      cj["closed"] = c.closed;
+      cj["gap"] = c.gap;
+      double length = 0.0;
+      for (const geometry::Segment& seg : c.path) length += seg.length();
+      cj["length"] = length;
+      cj["area"] = c.closed ? std::abs(geometry::signedArea(c.path)) : 0.0;
+      cj["start"] = json::array({c.path.front().start.x(), c.path.front().start.y()});
+      contours.push_back(std::move(cj));
+    }
+    dj["contours"] = std::move(contours);
+    j["drawing"] = std::move(dj);
+  }
   sum["machine"] = s.reading.machine;
   sum["integer_unit"] = integerUnitName(s.reading.integerUnit);
   sum["arc_centre"] = arcCentreName(s.reading.arcCentre);

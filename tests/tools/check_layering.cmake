@@ -9,7 +9,7 @@ file(GLOB_RECURSE converter_files "${SOURCE}/converter/*.h" "${SOURCE}/converter
 foreach(f IN LISTS geometry_files)
   file(STRINGS "${f}" includes REGEX "^#include")
   foreach(inc IN LISTS includes)
-    if(NOT inc MATCHES "^#include (\"kerf/geometry/|\"[a-z_]+\\.h\"|<Eigen/|<[a-z_]+>)")
+    if(NOT inc MATCHES "^#include (\"kerf/geometry/|\"[a-z_]+\\.h\"|<Eigen/|<unsupported/Eigen/|<[a-z_]+>)")
       string(APPEND problems "${f}: geometry may include only Eigen and itself: ${inc}\n")
     endif()
   endforeach()

@@ -36,6 +36,11 @@ enum class Code : std::uint16_t {
   DecimalComma = 112,
   MacroStatement = 113,
   ThreeBSyntax = 120,
+  DxfSyntax = 121,
+  DxfEntity = 122,
+  DxfSkipped = 123,
+  DxfUnits = 124,
+  ContourOpen = 125,
   // Words and modal state
   UnknownGCode = 201,
   UnknownMCode = 202,

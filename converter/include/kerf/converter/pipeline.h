@@ -13,6 +13,7 @@
 
 #include "kerf/converter/checks.h"
 #include "kerf/converter/diagnostics.h"
+#include "kerf/converter/dxf.h"
 #include "kerf/converter/interpreter.h"
 #include "kerf/converter/machine.h"
 #include "kerf/converter/program.h"
@@ -20,6 +21,7 @@
 #include "kerf/converter/source.h"
 #include "kerf/converter/summary.h"
 #include "kerf/converter/toolpath.h"
+#include "kerf/geometry/chain.h"
 
 #include <memory>
 #include <optional>
@@ -48,7 +50,10 @@ struct ReadOptions {
   std::optional<double> lowerZ, upperZ, thickness, programZ;  ///< mm
   std::optional<double> wireOffset;                           ///< --offset, mm
   std::optional<bool> upperAxesUZ;                            ///< --upper-axes uz
-  std::size_t maxExecutedBlocks = 20'000'000;                 ///< the interpreter's limits (InterpreterOptions)
+  std::optional<double> dxfUnit;               ///< --dxf-units: mm per drawing unit; 0 follows $INSUNITS (dxf.h)
+  double chainTolerance = 0.001;               ///< --chain-tolerance: drawing ends this close are joined, mm
+  double curveTolerance = 0.001;               ///< drawing curves (SPLINE, ELLIPSE) as biarcs within this, mm
+  std::size_t maxExecutedBlocks = 20'000'000;  ///< the interpreter's limits (InterpreterOptions)
   std::size_t maxMoves = 10'000'000;
 };
 
@@ -71,6 +76,7 @@ struct Pipeline {
   std::unique_ptr<SourceFile> machineSource;  ///< --machine FILE
   InputFormat format = InputFormat::Iso;      ///< the format the program was read as
   Program program;                            ///< ISO only (empty for 3B)
+  std::optional<DrawingResult> drawing;       ///< DXF only: the toolpath then walks its contours
   Toolpath toolpath;
   MachineProfile machine;        ///< the profile in force
   bool machineDetected = false;  ///< chosen from the evidence, not given

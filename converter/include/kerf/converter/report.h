@@ -2,6 +2,7 @@
 #pragma once
 
 #include "kerf/converter/diagnostics.h"
+#include "kerf/converter/dxf.h"
 #include "kerf/converter/summary.h"
 #include "kerf/converter/toolpath.h"
 
@@ -16,7 +17,8 @@ std::string formatDiagnosticsText(const Diagnostics& diags);
 std::string formatSummaryText(const std::string& file, const Summary& summary, const Diagnostics& diags);
 
 /// `kerf check --json`: {"file", "verdict", "diagnostics": [...], "summary": {...}}.
-std::string checkReportJson(const std::string& file, const Summary& summary, const Diagnostics& diags);
+std::string checkReportJson(const std::string& file, const Summary& summary, const Diagnostics& diags,
+                            const DrawingResult* drawing = nullptr);
 
 /// A stable, fixed-decimal trace of the Toolpath and the diagnostics (golden files).
 std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags);

@@ -15,6 +15,7 @@ namespace kerf::converter {
 enum class InputFormat : std::uint8_t {
   Iso,     ///< ISO 6983 G-code, in any machine's dialect
   ThreeB,  ///< Chinese fast-wire 3B code: `B x B y B J G Z`
+  Dxf,     ///< a DXF drawing (dxf.h): its contours, not a wire path
 };
 
 enum class MoveKind : std::uint8_t { Rapid, Line, Arc };

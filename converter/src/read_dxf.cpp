@@ -331,11 +331,12 @@ class DrawingReader {
       ++i;
     }
     if (!sawEof) {
-      const std::uint32_t where = tags.empty() ? 0 : tags.back().where;
+      const Tag* last = tags.empty() ? nullptr : &tags.back();
+      const std::uint32_t where = !last ? 0 : binary_ ? last->where : src_.locate(last->offset).line;
       tr.error(where, -1, binary_,
-               "the file ends without `0 EOF` (the last section read ends at " +
-                   std::string(binary_ ? "byte " : "line ") + std::to_string(where) +
-                   "): it is truncated, and what follows is missing");
+               "the file ends at " + std::string(binary_ ? "byte " : "line ") + std::to_string(where) +
+                   " without `0 EOF`: it is truncated, and what follows is missing",
+               last ? SourceSpan{last->offset, last->length} : SourceSpan{});
     }
     units();
     for (const Entity& e : model) {

@@ -1,7 +1,14 @@
 # Runs `kerf check FILE` and requires exit code 1 and the diagnostic written on FILE's first
-# line (after "; ") in its standard error, prefixed with the file name.
+# line (after "; "; a DXF file: its second line, in a 999 comment) in its standard error, prefixed with the file name.
 #   cmake -DKERF=... -DFILE=... -DWORKDIR=... -P expect_diagnostic.cmake
+# A DXF file states it in a `999` comment instead: its second line.
 file(READ "${FILE}" head LIMIT 1000)
+if(FILE MATCHES "\\.dxf$")
+  string(FIND "${head}" "\n" eol)
+  math(EXPR from "${eol} + 1")
+  string(SUBSTRING "${head}" ${from} -1 head)
+  string(PREPEND head "; ")
+endif()
 string(FIND "${head}" "\n" eol)
 math(EXPR len "${eol} - 2")
 string(SUBSTRING "${head}" 2 ${len} expected)  # after "; "

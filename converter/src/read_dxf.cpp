@@ -450,15 +450,22 @@ class DrawingReader {
     if (o_.unitToMm > 0) {
       scale_ = o_.unitToMm;
       if (fileScale && std::abs(*fileScale - scale_) > 1e-12)
-        diags_.note(
-            Code::DxfUnits, &src_, SourceSpan::wholeFile(),
-            "the drawing's $INSUNITS says " + said + "; read in mm (× " + formatFixed(scale_, 4) + ") all the same",
-            "$INSUNITS is the unit for inserting the drawing as a block, and real files get it wrong; "
-            "--dxf-units file scales by it");
+        diags_.note(Code::DxfUnits, &src_, SourceSpan::wholeFile(),
+                    "the drawing's $INSUNITS says " + said + "; read with 1 unit = " + formatFixed(scale_, 6) +
+                        " mm, as --dxf-units says",
+                    "--dxf-units file scales by it");
     } else {
-      scale_ = fileScale.value_or(1.0);
-      diags_.note(Code::DxfUnits, &src_, SourceSpan::wholeFile(),
-                  "the drawing's $INSUNITS says " + said + ": read with 1 unit = " + formatFixed(scale_, 6) + " mm");
+      scale_ = drawing_.insUnits == 0 ? 1.0 : fileScale.value_or(1.0);
+      if (drawing_.insUnits == 0)
+        diags_.note(Code::DxfUnits, &src_, SourceSpan::wholeFile(), "the drawing gives no unit ($INSUNITS): read in mm",
+                    "--dxf-units in if it is drawn in inches");
+      else if (!fileScale)
+        diags_.note(Code::DxfUnits, &src_, SourceSpan::wholeFile(),
+                    "the drawing's $INSUNITS (" + said + ") is not a unit Kerf knows: read in mm", "--dxf-units mm|in");
+      else if (std::abs(scale_ - 1.0) > 1e-12)
+        diags_.note(Code::DxfUnits, &src_, SourceSpan::wholeFile(),
+                    "the drawing's $INSUNITS says " + said + ": read with 1 unit = " + formatFixed(scale_, 6) + " mm",
+                    "--dxf-units mm if it is drawn in mm all the same");
     }
     drawing_.unitToMm = scale_;
   }

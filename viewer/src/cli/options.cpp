@@ -39,12 +39,21 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
   // Reading: what the words mean.
   const std::string reading = "Reading (default: the machine profile's, else the program's evidence)";
   cmd.add_option("--format", o.reading.format, "input format; auto: detected from the content (docs/formats.md)")
-      ->check(CLI::IsMember({"auto", "iso", "3b"}))
+      ->check(CLI::IsMember({"auto", "iso", "3b", "dxf"}))
       ->group(reading);
   cmd.add_option("--start", o.reading.start, "where a 3B program starts, X,Y in mm (default 0,0)")->group(reading);
   cmd.add_option("--polar-x", o.reading.polarX,
                  "X inside G12.1/G112 polar interpolation: radius or diameter (default: the machine profile's)")
       ->check(CLI::IsMember({"radius", "diameter"}))
+      ->group(reading);
+  cmd.add_option("--dxf-units", o.reading.dxfUnits,
+                 "a DXF drawing's unit: mm (the default, whatever $INSUNITS says), in, or file (as its $INSUNITS "
+                 "says; docs/dxf.md)")
+      ->check(CLI::IsMember({"mm", "in", "file"}))
+      ->group(reading);
+  cmd.add_option("--chain-tolerance", o.reading.chainTolerance,
+                 "a DXF drawing's element ends this close (mm) are one point of a contour (default 0.001)")
+      ->check(CLI::Range(1e-9, 10.0))
       ->group(reading);
   cmd.add_option("--polar-frame", o.reading.polarFrame,
                  "the G12.1/G112 frame: tool (turned by the table's C at G12.1, as Fanuc says) or table (the "
@@ -152,6 +161,8 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
   }
   if (o.reading.polarX) r.polarXDiameter = *o.reading.polarX == "diameter";
   if (o.reading.polarFrame) r.polarFrameTable = *o.reading.polarFrame == "table";
+  if (o.reading.dxfUnits) r.dxfUnit = *o.reading.dxfUnits == "mm" ? 1.0 : *o.reading.dxfUnits == "in" ? 25.4 : 0.0;
+  if (o.reading.chainTolerance) r.chainTolerance = *o.reading.chainTolerance;
   if (o.reading.integerUnit)
     r.integerUnit = *o.reading.integerUnit == "um" ? IntegerUnit::Micrometre : IntegerUnit::Millimetre;
   if (o.reading.arcCentre) r.arcCentre = parseArcCentre(*o.reading.arcCentre);

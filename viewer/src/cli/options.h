@@ -28,6 +28,8 @@ struct ReadingOptions {
   std::optional<std::string> start;        ///< X,Y (3B)
   std::optional<std::string> polarX;       ///< diameter | radius (inside G12.1)
   std::optional<std::string> polarFrame;   ///< tool | table (the G12.1 frame)
+  std::optional<std::string> dxfUnits;     ///< mm | in | file (DXF drawings)
+  std::optional<double> chainTolerance;    ///< mm (DXF drawings)
   std::optional<std::string> integerUnit;  ///< mm | um
   std::optional<std::string> arcCentre;    ///< incremental | reversed | absolute
   std::optional<double> offset;            ///< --offset, mm

@@ -33,11 +33,11 @@ bool looksLikeDxf(std::string_view text);
 
 struct DxfOptions {
   double curveTolerance = 0.001;  ///< mm: SPLINE, ELLIPSE and non-uniformly scaled arcs as biarcs
-  /// mm per drawing unit; 0: as the file's $INSUNITS says (--dxf-units file). [Decision: 1, mm,
-  /// whatever $INSUNITS says: it is AutoCAD's unit for inserting the drawing as a block, and real
-  /// files get it wrong — cnc3's Herz-16.45x13.5 says metres ($INSUNITS 6) for a 16.45 x 13.5 mm
-  /// heart. Kerf notes the $INSUNITS it did not follow (K0124).]
-  double unitToMm = 1.0;
+  /// mm per drawing unit; 0: as the file's $INSUNITS says (the default). A file with no $INSUNITS,
+  /// or 0 (unitless), is read in mm [assumption: every unitless drawing in ../shared/realworld/dxf
+  /// is drawn in mm — the R12 heart `cnc3-Herz-16.45x13.5` is 16.45 x 13.5 units; `--dxf-units
+  /// mm|in` overrides].
+  double unitToMm = 0.0;
   std::size_t maxElements = 5'000'000;  ///< refuse past this many lines and arcs (nested INSERT arrays)
   int maxInsertDepth = 16;
 };

@@ -11,10 +11,12 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace kerf::converter {
@@ -149,6 +151,15 @@ class TagReader {
       return false;
     };
     auto u8 = [&](std::size_t at) { return static_cast<std::uint8_t>(t[at]); };
+    // A little-endian integer of T's width (this machine's order) into tag.number.
+    auto integer = [&](auto zero, Tag& tag, std::uint32_t at) {
+      decltype(zero) v;
+      if (!need(sizeof v, at, tag.code)) return false;
+      std::memcpy(&v, t.data() + pos, sizeof v);
+      tag.number = static_cast<double>(v);
+      pos += sizeof v;
+      return true;
+    };
     while (pos < t.size()) {
       const auto at = static_cast<std::uint32_t>(pos);
       int code;
@@ -191,30 +202,15 @@ class TagReader {
           }
           break;
         }
-        case ValueType::Int16: {
-          if (!need(2, at, code)) return false;
-          std::int16_t v;
-          std::memcpy(&v, t.data() + pos, 2);
-          tag.number = v;
-          pos += 2;
+        case ValueType::Int16:
+          if (!integer(std::int16_t{}, tag, at)) return false;
           break;
-        }
-        case ValueType::Int32: {
-          if (!need(4, at, code)) return false;
-          std::int32_t v;
-          std::memcpy(&v, t.data() + pos, 4);
-          tag.number = v;
-          pos += 4;
+        case ValueType::Int32:
+          if (!integer(std::int32_t{}, tag, at)) return false;
           break;
-        }
-        case ValueType::Int64: {
-          if (!need(8, at, code)) return false;
-          std::int64_t v;
-          std::memcpy(&v, t.data() + pos, 8);
-          tag.number = static_cast<double>(v);
-          pos += 8;
+        case ValueType::Int64:
+          if (!integer(std::int64_t{}, tag, at)) return false;
           break;
-        }
         case ValueType::Bool:
           if (!need(1, at, code)) return false;
           tag.number = u8(pos++);
@@ -470,10 +466,10 @@ class DrawingReader {
     drawing_.unitToMm = scale_;
   }
 
+  /// A warning at the entity (binary: its byte offset in the message, there being no line).
   void warn(const Entity& e, const std::string& what) {
-    const std::string at = binary_ ? "at byte " : "at line ";
     diags_.warning(Code::DxfEntity, &src_, binary_ ? SourceSpan::wholeFile() : e.span,
-                   std::string(e.type) + (binary_ ? " " + at + std::to_string(e.where) : "") + ": " + what);
+                   std::string(e.type) + (binary_ ? " at byte " + std::to_string(e.where) : "") + ": " + what);
   }
 
   bool room() {
@@ -697,24 +693,35 @@ class DrawingReader {
       warn(e, "its knots span nothing");
       return;
     }
-    // de Boor on the homogeneous points.
-    auto eval = [knots, weights, control, p, n, a, s = scale_](double u) -> Vec2 {
-      std::size_t k = p;
-      while (k + 1 < n && knots[k + 1] <= u) ++k;
-      std::vector<Eigen::Vector3d> d(p + 1);
-      for (std::size_t j = 0; j <= p; ++j) {
-        const std::size_t i = k - p + j;
-        d[j] = Eigen::Vector3d(control[i].x() * weights[i], control[i].y() * weights[i], weights[i]);
-      }
-      for (std::size_t r = 1; r <= p; ++r)
-        for (std::size_t j = p; j >= r; --j) {
-          const std::size_t i = k - p + j;
-          const double den = knots[i + p + 1 - r] - knots[i];
-          const double alpha = den > 0 ? (u - knots[i]) / den : 0.0;
+    // de Boor on the homogeneous points, shared by the pieces; no allocation per evaluation (the
+    // biarc fitter evaluates thousands of times).
+    struct Nurbs {
+      std::vector<double> knots;
+      std::vector<Eigen::Vector3d> homogeneous;
+      std::size_t p;
+    };
+    auto curveData = std::make_shared<Nurbs>();
+    curveData->knots = knots;
+    curveData->p = p;
+    for (std::size_t i = 0; i < n; ++i)
+      curveData->homogeneous.emplace_back(control[i].x() * weights[i], control[i].y() * weights[i], weights[i]);
+    auto eval = [curveData, a, s = scale_](double u) -> Vec2 {
+      const Nurbs& c = *curveData;
+      const std::size_t deg = c.p, count = c.homogeneous.size();
+      // The knot span: the last k in [deg, count) with knots[k] <= u.
+      const auto it = std::upper_bound(c.knots.begin() + static_cast<std::ptrdiff_t>(deg),
+                                       c.knots.begin() + static_cast<std::ptrdiff_t>(count), u);
+      const std::size_t k = std::max<std::size_t>(deg, static_cast<std::size_t>(it - c.knots.begin()) - 1);
+      std::array<Eigen::Vector3d, 12> d;  // degree <= 11
+      for (std::size_t j = 0; j <= deg; ++j) d[j] = c.homogeneous[k - deg + j];
+      for (std::size_t r = 1; r <= deg; ++r)
+        for (std::size_t j = deg; j >= r; --j) {
+          const std::size_t i = k - deg + j;
+          const double den = c.knots[i + deg + 1 - r] - c.knots[i];
+          const double alpha = den > 0 ? (u - c.knots[i]) / den : 0.0;
           d[j] = (1 - alpha) * d[j - 1] + alpha * d[j];
         }
-      const Vec2 q(d[p].x() / d[p].z(), d[p].y() / d[p].z());
-      return a(q) * s;
+      return a(Vec2(d[deg].x() / d[deg].z(), d[deg].y() / d[deg].z())) * s;
     };
     // Split at knots of full multiplicity inside the domain: the curve may turn a corner there.
     std::vector<double> breaks{lo};

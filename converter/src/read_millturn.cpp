@@ -53,7 +53,8 @@ bool knownG(const Word& w) {
                                      {91, 0},
                                      {28, 0},
                                      {30, 0},
-                                     {53, 0}})
+                                     {53, 0},
+                                     {4, 0}})
     if (isG(w, whole, tenth)) return true;
   return false;
 }
@@ -61,9 +62,25 @@ bool knownG(const Word& w) {
 /// G codes that do not move the face point: planes, units (mm assumed), work offsets, feed and
 /// spindle modes, cancels.
 bool harmlessG(const Word& w) {
-  for (const auto& [whole, tenth] :
-       {std::pair{17, 0}, {18, 0}, {19, 0}, {21, 0}, {40, 0}, {54, 0}, {55, 0}, {56, 0}, {57, 0}, {58, 0},
-        {59, 0},          {80, 0}, {94, 0}, {95, 0}, {96, 0}, {97, 0}, {98, 0}, {99, 0}, {4, 0},  {9, 0}})
+  for (const auto& [whole, tenth] : {std::pair{17, 0},
+                                     {18, 0},
+                                     {19, 0},
+                                     {21, 0},
+                                     {40, 0},
+                                     {54, 0},
+                                     {55, 0},
+                                     {56, 0},
+                                     {57, 0},
+                                     {58, 0},
+                                     {59, 0},
+                                     {80, 0},
+                                     {94, 0},
+                                     {95, 0},
+                                     {96, 0},
+                                     {97, 0},
+                                     {98, 0},
+                                     {99, 0},
+                                     {9, 0}})
     if (isG(w, whole, tenth)) return true;
   return false;
 }
@@ -126,7 +143,7 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
     const Block& b = program.blocks[bi];
     if (b.hasError || b.kind != BlockKind::Words) continue;
     const Word *X = nullptr, *Y = nullptr, *C = nullptr, *I = nullptr, *J = nullptr, *R = nullptr;
-    bool homing = false, polarOn = false, polarOff = false;
+    bool homing = false, polarOn = false, polarOff = false, dwell = false;
     for (const Word& w : program.wordsOf(b)) {
       if (!w.isNumber()) continue;
       switch (w.letter) {
@@ -137,6 +154,7 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
           if (isG(w, 90)) incremental = false;
           if (isG(w, 91)) incremental = true;
           if (isG(w, 28) || isG(w, 30) || isG(w, 53)) homing = true;
+          if (isG(w, 4)) dwell = true;
           break;
         case 'X': X = &w; break;
         case 'Y': Y = &w; break;
@@ -167,7 +185,8 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
                         "Kerf reads G0-G3, G12.1/G13.1 (G112/G113), G90/G91 and G28/G30 here (docs/polar.md)");
       }
     }
-    if (homing) {  // G28 C0.: the table at its reference; other axes to where the machine knows
+    if (dwell) continue;  // G4 X2.: X (or P, U) is the dwell time, not a position
+    if (homing) {         // G28 C0.: the table at its reference; other axes to where the machine knows
       if (C) {
         c = 0.0;
         cKnown = true;
@@ -342,8 +361,8 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
   if (spirals > 0)
     diags.note(Code::PolarAxisValue, src, SourceSpan::wholeFile(),
                "X/C cutting moves are drawn as the machine moves them, spirals (X and C linear together), in " +
-                   std::to_string(spirals) + " pieces (arcs, or lines where straight) within " +
-                   formatFixed(worstSpiral, 6) + " mm");
+                   std::to_string(spirals) + (spirals == 1 ? " piece" : " pieces") +
+                   " (arcs, or lines where straight) within " + formatFixed(worstSpiral, 6) + " mm");
   return path;
 }
 

@@ -301,6 +301,19 @@ TEST(seed002, o66_in_the_table_frame_is_o30s_square_and_the_tool_frame_turns_it)
             std::string::npos);
 }
 
+// A dwell on a lathe gives its time as X (`G4 X2.`): no move (the mill-turn reader).
+TEST(seed002, a_dwell_on_a_lathe_moves_nothing) {
+  const fs::path in = fs::path(KERF_ROUNDTRIP_WORK) / "dwell.nc";
+  fs::create_directories(in.parent_path());
+  kerf::test::writeFile(in, "G28 C0.\nG0 X40. C0.\nG1 X20. F100\nG4 X2.\nG1 X20. C30.\nM30\n");
+  const KerfRun r = kerf("check --trace '" + in.string() + "'", "dwell");
+  const std::vector<Seg> moves = movesOf(r.out);
+  ASSERT_EQ(moves.size(), 3u) << r.out;
+  EXPECT_EQ(moves[2].kind, "arc ccw");  // X stays 20 (radius 10): the table turns 30 degrees
+  EXPECT_NEAR(dist(moves[2].sx, moves[2].sy, 10.0, 0.0), 0.0, 1e-6);  // the trace has 6 decimals
+  EXPECT_NEAR(dist(moves[2].ex, moves[2].ey, 10 * std::cos(std::acos(-1.0) / 6), 5.0), 0.0, 1e-6);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

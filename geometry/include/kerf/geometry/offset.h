@@ -1,4 +1,5 @@
-// Exact offset of a chain of lines and arcs (taper contours now, the wire offset G41/G42 later).
+// Exact offsets of chains of lines and arcs, with named corner joins: sharp for taper contours
+// (offsetChain), arcs for the wire offset with interference removed (wireOffset).
 //
 // Each element is moved sideways by its own signed distance (> 0: to the left of the direction of
 // travel): a line stays a line, an arc stays concentric with its radius grown or shrunk. Where two
@@ -54,5 +55,61 @@ struct OffsetChainResult {
 /// the input.
 OffsetChainResult offsetChain(std::span<const Segment> chain, std::span<const double> distances,
                               const OffsetChainOptions& options = {});
+
+// ---- The wire offset (G41/G42, kerf cam; seed 003, CAWEP §3) ----------------------------------
+//
+// The path of the wire's centre at distance |d| from a contour (d > 0: left of travel):
+//   1. every element is offset exactly (an arc whose radius the offset would make negative turns
+//      into the reversed arc about the same centre, as the exact offset curve does);
+//   2. at every corner the offsets are joined by an arc of radius |d| about the corner: at a convex
+//      corner (seen from the wire) that arc is the wire rolling round it (clockwise for a left
+//      offset, counter-clockwise for a right one); at a concave corner the offsets are trimmed at
+//      their intersection, or, where they do not meet, joined by the short reversed arc that the
+//      next step removes;
+//   3. interference: the raw path is split at every point where it meets itself (all pairs of
+//      pieces, not only neighbours: a box tree finds the candidates) and a piece is kept only if
+//      its middle is at least |d| from the whole contour. The kept pieces are linked into loops.
+// Elements whose offset vanishes completely (a slot narrower than the wire, an inside fillet
+// smaller than it) are reported as lost runs, with how much material the wire leaves there.
+
+/// One element of the wire path.
+struct WirePiece {
+  Segment segment;
+  std::size_t element = 0;  ///< the contour element it offsets (a corner arc: the element before it)
+  bool corner = false;      ///< a transition arc about a convex corner
+};
+
+/// Consecutive contour elements the wire path cannot follow at all.
+struct LostRun {
+  std::size_t first = 0;      ///< first element of the run
+  std::size_t count = 0;      ///< elements in the run (wrapping past the end of a closed contour)
+  Vec2 where = Vec2::Zero();  ///< a point of the contour in the run (the one the wire is farthest from)
+  double uncut = 0.0;         ///< mm: how far that point is from what the wire cuts (distance - |d|)
+  bool fillet = false;        ///< a single concave arc smaller than the offset: an inside corner radius
+};
+
+struct WireOffsetOptions {
+  bool closed = true;                 ///< the contour is a loop
+  double tolerance = 1e-6;            ///< mm: ends closer than this meet; distances within it count as equal
+  std::size_t maxPieces = 4'000'000;  ///< raw pieces plus split points; above it the offset is refused
+};
+
+struct WireOffsetResult {
+  /// Closed contour: the loops of the wire path (usually one; a contour pinched narrower than the
+  /// wire splits into several, a part smaller than the wire into none). Open contour: the paths,
+  /// in order along it (usually one).
+  std::vector<std::vector<WirePiece>> paths;
+  std::vector<LostRun> lost;
+  std::size_t rawPieces = 0;    ///< offsets and joins before interference removal
+  std::size_t splitPoints = 0;  ///< where the raw path met itself
+  bool refused = false;         ///< maxPieces exceeded: nothing was computed
+};
+
+/// The wire-centre path at distance |d| from contour (d > 0: left of travel). The contour must be
+/// connected (each element starting where the previous ends).
+WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const WireOffsetOptions& options = {});
+
+/// The part of s between parameters t0 < t1 (proportional to length, as Segment::pointAt).
+Segment subSegment(const Segment& s, double t0, double t1);
 
 }  // namespace kerf::geometry

@@ -1,0 +1,332 @@
+// The wire offset: exact element offsets, arc joins at convex corners, interference removed over
+// the whole path (offset.h; docs/geometry.md, "The wire offset").
+#include "kerf/geometry/intersection.h"
+#include "kerf/geometry/offset.h"
+
+#include "angles.h"
+#include "box_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <unordered_map>
+
+namespace kerf::geometry {
+namespace {
+
+Vec2 leftOf(const Vec2& v) { return {-v.y(), v.x()}; }
+
+double wrapSigned(double a) {
+  while (a > kPi) a -= kTwoPi;
+  while (a <= -kPi) a += kTwoPi;
+  return a;
+}
+
+/// The exact offset curve of s at d (left positive). An arc the offset turns inside out becomes
+/// the arc on the far side of its centre; one that shrinks to its centre becomes that point.
+Segment exactOffset(const Segment& s, double d, double tol) {
+  if (!s.isArc()) {
+    const Vec2 dir = s.end - s.start;
+    const Vec2 shift = leftOf(dir / dir.norm()) * d;
+    return Segment::line(s.start + shift, s.end + shift);
+  }
+  const double r = s.sweep >= 0 ? s.radius - d : s.radius + d;
+  if (std::abs(r) <= tol) return Segment::line(s.centre, s.centre);
+  Segment o = s;
+  o.radius = std::abs(r);
+  if (r < 0) o.startAngle = s.startAngle + kPi;
+  o.start = o.centre + o.radius * direction(o.startAngle);
+  o.end = o.centre + o.radius * direction(o.startAngle + o.sweep);
+  return o;
+}
+
+/// An arc of the circle about c from p to q, turning by sweep.
+Segment joinArc(const Vec2& c, const Vec2& p, const Vec2& q, double sweep) {
+  Segment a;
+  a.kind = SegmentKind::Arc;
+  a.centre = c;
+  a.radius = (p - c).norm();
+  a.startAngle = angleOf(p - c);
+  a.sweep = sweep;
+  a.start = p;
+  a.end = q;
+  return a;
+}
+
+struct Raw {
+  Segment seg;
+  std::size_t element = 0;
+  bool corner = false;
+};
+
+struct Sub {
+  Segment seg;
+  std::size_t raw = 0;
+  double t0 = 0, t1 = 1;
+};
+
+}  // namespace
+
+Segment subSegment(const Segment& s, double t0, double t1) {
+  if (!s.isArc()) return Segment::line(t0 <= 0 ? s.start : s.pointAt(t0), t1 >= 1 ? s.end : s.pointAt(t1));
+  Segment a = s;
+  a.startAngle = s.startAngle + s.sweep * t0;
+  a.sweep = s.sweep * (t1 - t0);
+  a.start = t0 <= 0 ? s.start : s.centre + s.radius * direction(a.startAngle);
+  a.end = t1 >= 1 ? s.end : s.centre + s.radius * direction(a.startAngle + a.sweep);
+  return a;
+}
+
+WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const WireOffsetOptions& options) {
+  WireOffsetResult result;
+  const double tol = options.tolerance;
+  const double dist = std::abs(d);
+  // Elements with a length: a zero-length move has no direction to offset from.
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < contour.size(); ++i)
+    if (contour[i].length() > tol) kept.push_back(i);
+  if (kept.empty() || dist <= tol) {
+    if (!kept.empty()) {  // no offset: the contour itself
+      std::vector<WirePiece> path;
+      for (std::size_t i : kept) path.push_back({contour[i], i, false});
+      result.paths.push_back(std::move(path));
+    }
+    return result;
+  }
+  if (kept.size() * 3 > options.maxPieces) {
+    result.refused = true;
+    return result;
+  }
+  const std::size_t n = kept.size();
+
+  // 1 and 2: offsets and joins.
+  std::vector<Segment> off(n);
+  for (std::size_t k = 0; k < n; ++k) off[k] = exactOffset(contour[kept[k]], d, tol);
+  std::vector<Raw> raw;
+  raw.reserve(3 * n);
+  std::vector<std::optional<Segment>> joins(n);  // joins[k]: between k and k + 1
+  const std::size_t joints = options.closed ? n : n - 1;
+  for (std::size_t k = 0; k < joints; ++k) {
+    const std::size_t next = (k + 1) % n;
+    Segment& a = off[k];
+    Segment& b = off[next];
+    const Vec2 p = a.end, q = b.start;
+    if ((p - q).norm() <= tol) {
+      b.start = p;  // exactly shared, for the linking below
+      if (b.isArc()) b.startAngle = angleOf(p - b.centre);
+      continue;
+    }
+    const Vec2 v = contour[kept[k]].end;
+    double sweep = wrapSigned(angleOf(q - v) - angleOf(p - v));
+    const double convexSign = d > 0 ? -1.0 : 1.0;  // a left offset rolls clockwise round a corner
+    if (std::abs(std::abs(sweep) - kPi) < 1e-9) sweep = convexSign * kPi;  // a reversal: the round cap
+    if (sweep * convexSign > 0) {
+      joins[k] = joinArc(v, p, q, sweep);
+      continue;
+    }
+    // Concave: trim both at their intersection nearest the corner, when they meet.
+    const SegmentIntersection x = intersect(a, b, tol);
+    std::optional<Vec2> best;
+    for (int c = 0; c < x.count; ++c)
+      if (!best || (x.points[c] - v).norm() < (*best - v).norm()) best = x.points[c];
+    if (best && a.length() > tol && b.length() > tol) {
+      const double ta = a.parameterOf(*best), tb = b.parameterOf(*best);
+      if (ta > 0.0 && tb < 1.0) {
+        a = subSegment(a, 0.0, ta);
+        b = subSegment(b, tb, 1.0);
+        a.end = *best;
+        b.start = *best;
+        continue;
+      }
+    }
+    joins[k] = joinArc(v, p, q, sweep);  // the short reversed arc: removed as interference below
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    if (off[k].length() > tol * 0.01) raw.push_back({off[k], kept[k], false});
+    if (joins[k]) raw.push_back({*joins[k], kept[k], true});
+  }
+  result.rawPieces = raw.size();
+
+  // 3: split where the raw path meets itself.
+  std::vector<Box> boxes(raw.size());
+  for (std::size_t i = 0; i < raw.size(); ++i) boxes[i] = raw[i].seg.bounds();
+  const detail::BoxTree pieces(boxes);
+  std::vector<std::vector<std::pair<double, Vec2>>> cuts(raw.size());
+  const std::size_t m = raw.size();
+  std::size_t splitCount = 0;
+  for (std::size_t i = 0; i < m && !result.refused; ++i) {
+    pieces.visitOverlapping(boxes[i], tol, [&](std::size_t j) {
+      if (j <= i || result.refused) return;
+      const SegmentIntersection x = intersect(raw[i].seg, raw[j].seg, tol);
+      const bool neighbours = j == i + 1 || (options.closed && i == 0 && j == m - 1);
+      for (int c = 0; c < x.count; ++c) {
+        const Vec2 pt = x.points[c];
+        if (neighbours) {
+          const Vec2 shared = j == i + 1 ? raw[i].seg.end : raw[i].seg.start;
+          if ((pt - shared).norm() <= 10 * tol) continue;
+        }
+        cuts[i].push_back({raw[i].seg.parameterOf(pt), pt});
+        cuts[j].push_back({raw[j].seg.parameterOf(pt), pt});
+        if (++splitCount > options.maxPieces) result.refused = true;
+      }
+    });
+  }
+  if (result.refused) return result;
+  result.splitPoints = splitCount;
+
+  // Keep the pieces whose middle is at least |d| from the contour.
+  std::vector<Box> elementBoxes(contour.size());
+  for (std::size_t i = 0; i < contour.size(); ++i) elementBoxes[i] = contour[i].bounds();
+  const detail::BoxTree elements(elementBoxes);
+  auto valid = [&](const Vec2& p) {
+    bool ok = true;
+    Box b;
+    b.add(p);
+    elements.visitOverlapping(b, dist, [&](std::size_t e) {
+      if (ok && contour[e].length() > tol && contour[e].distanceTo(p) < dist - tol) ok = false;
+    });
+    return ok;
+  };
+  std::vector<Sub> subs;
+  std::vector<bool> alive(contour.size(), false);
+  for (std::size_t i = 0; i < m; ++i) {
+    auto& c = cuts[i];
+    std::sort(c.begin(), c.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    const double len = raw[i].seg.length();
+    std::vector<std::pair<double, Vec2>> at{{0.0, raw[i].seg.start}};
+    for (const auto& [t, pt] : c) {
+      if (t * len <= tol || (1.0 - t) * len <= tol) continue;
+      if ((pt - at.back().second).norm() <= tol) continue;
+      at.push_back({t, pt});
+    }
+    at.push_back({1.0, raw[i].seg.end});
+    for (std::size_t s = 0; s + 1 < at.size(); ++s) {
+      Segment piece = subSegment(raw[i].seg, at[s].first, at[s + 1].first);
+      piece.start = at[s].second;
+      piece.end = at[s + 1].second;
+      if (piece.isArc()) piece.startAngle = angleOf(piece.start - piece.centre);
+      if (piece.length() <= tol * 0.01) continue;
+      if (!valid(piece.pointAt(0.5))) continue;
+      subs.push_back({piece, i, at[s].first, at[s + 1].first});
+      if (!raw[i].corner) alive[raw[i].element] = true;
+    }
+  }
+
+  // Link the kept pieces head to tail (they run in the raw path's order except across a split).
+  const double link = 10 * tol;
+  auto key = [&](const Vec2& p) {
+    const auto gx = static_cast<std::int64_t>(std::floor(p.x() / (4 * link)));
+    const auto gy = static_cast<std::int64_t>(std::floor(p.y() / (4 * link)));
+    return std::pair{gx, gy};
+  };
+  struct PairHash {
+    std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& k) const {
+      return std::hash<std::int64_t>()(k.first * 73856093 ^ k.second * 19349663);
+    }
+  };
+  std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>, PairHash> starts;
+  for (std::size_t s = 0; s < subs.size(); ++s) starts[key(subs[s].seg.start)].push_back(s);
+  std::vector<bool> used(subs.size(), false);
+  auto following = [&](std::size_t s) -> std::optional<std::size_t> {
+    const Vec2 e = subs[s].seg.end;
+    if (s + 1 < subs.size() && !used[s + 1] && (subs[s + 1].seg.start - e).norm() <= link) return s + 1;
+    const auto [gx, gy] = key(e);
+    std::optional<std::size_t> best;
+    std::size_t bestAhead = 0;
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = starts.find({gx + dx, gy + dy});
+        if (it == starts.end()) continue;
+        for (std::size_t c : it->second) {
+          if (used[c] || (subs[c].seg.start - e).norm() > link) continue;
+          const std::size_t ahead = (c + subs.size() - s) % subs.size();  // nearest along the raw path
+          if (!best || ahead < bestAhead) best = c, bestAhead = ahead;
+        }
+      }
+    return best;
+  };
+  // The same raw piece continuing across a split point that removed nothing becomes one element.
+  auto append = [&](std::vector<WirePiece>& path, const Sub& sub, std::size_t& lastRaw, double& lastT0,
+                    double& lastT1) {
+    if (!path.empty() && lastRaw == sub.raw && lastT1 == sub.t0) {
+      Segment merged = subSegment(raw[sub.raw].seg, lastT0, sub.t1);
+      merged.start = path.back().segment.start;
+      merged.end = sub.seg.end;
+      if (merged.isArc()) merged.startAngle = angleOf(merged.start - merged.centre);
+      path.back().segment = merged;
+    } else {
+      path.push_back({sub.seg, raw[sub.raw].element, raw[sub.raw].corner});
+      lastT0 = sub.t0;
+    }
+    lastRaw = sub.raw;
+    lastT1 = sub.t1;
+  };
+  for (std::size_t first = 0; first < subs.size(); ++first) {
+    if (used[first]) continue;
+    std::vector<WirePiece> path;
+    std::size_t lastRaw = std::numeric_limits<std::size_t>::max();
+    double lastT0 = 0, lastT1 = -1;
+    std::size_t cur = first;
+    used[cur] = true;
+    append(path, subs[cur], lastRaw, lastT0, lastT1);
+    for (;;) {
+      if (options.closed && path.size() > 1 && (subs[cur].seg.end - subs[first].seg.start).norm() <= link) break;
+      const std::optional<std::size_t> next = following(cur);
+      if (!next) break;
+      cur = *next;
+      used[cur] = true;
+      append(path, subs[cur], lastRaw, lastT0, lastT1);
+    }
+    result.paths.push_back(std::move(path));
+  }
+
+  // What the wire cannot reach: runs of elements none of whose offset survived.
+  std::vector<std::size_t> dead;
+  for (std::size_t k = 0; k < n; ++k)
+    if (!alive[kept[k]]) dead.push_back(k);
+  if (dead.empty()) return result;
+  std::vector<Segment> cut;
+  for (const auto& path : result.paths)
+    for (const WirePiece& p : path) cut.push_back(p.segment);
+  auto farthest = [&](std::size_t element, Vec2& where) {
+    double worst = -1;
+    for (int s = 0; s <= 8; ++s) {
+      const Vec2 p = contour[element].pointAt(s / 8.0);
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Segment& c : cut) nearest = std::min(nearest, c.distanceTo(p));
+      if (nearest > worst) worst = nearest, where = p;
+    }
+    return worst;
+  };
+  std::size_t r = 0;
+  // On a closed contour a run may wrap from the last element to the first: start after a live one.
+  std::size_t begin = 0;
+  if (options.closed && dead.size() < n) {
+    while (begin < dead.size() && dead[begin] == begin) ++begin;
+    if (begin == dead.size()) begin = 0;
+  }
+  std::vector<std::size_t> order(dead.begin() + static_cast<std::ptrdiff_t>(begin), dead.end());
+  order.insert(order.end(), dead.begin(), dead.begin() + static_cast<std::ptrdiff_t>(begin));
+  while (r < order.size()) {
+    std::size_t e = r + 1;
+    while (e < order.size() && order[e] == (order[e - 1] + 1) % n) ++e;
+    LostRun run;
+    run.first = kept[order[r]];
+    run.count = e - r;
+    run.uncut = -1;
+    for (std::size_t q = r; q < e; ++q) {
+      Vec2 where = Vec2::Zero();
+      const double far = farthest(kept[order[q]], where);
+      if (far - dist > run.uncut) run.uncut = far - dist, run.where = where;
+    }
+    if (!std::isfinite(run.uncut)) run.uncut = 0;
+    const Segment& s0 = contour[run.first];
+    run.fillet = run.count == 1 && s0.isArc() && s0.radius < dist && (d > 0) == (s0.sweep > 0);
+    result.lost.push_back(run);
+    r = e;
+  }
+  return result;
+}
+
+}  // namespace kerf::geometry

@@ -23,7 +23,18 @@ code G60 = harmless: written at the start of every program and contour (a corner
 code G38 = harmless: written after G60 before the wire offset starts; meaning not modelled [assumed: no effect on the path]
 code G39 = harmless: written before G40 between contours (the post's compensation cycle); meaning not modelled [assumed: no effect on the path]
 code M28 = harmless: written after G60 at the start of a program; meaning not modelled [assumed: no effect on the path]
-# Writing for a Robofil (kerf convert --to iso --for robofil): micrometre integers, CRLF, as the
-# real programs above are written; arc centres absolute (arc_centre).
-write_unit = um
+# Writing for a Robofil (kerf convert --to iso --for robofil, kerf cam --machine robofil): the
+# layout of the post whose output cut a real part on a Robofil 100 (wireedm-gcode-parser's
+# z39RobofilPost acceptance test): mm with 3 decimals, G1/G2/G3, no comment, G92 G60 G38 then the
+# offset as G41/G42 D0 (the machine's table) then G90; G39 G40 to cancel between contours; M02
+# last, with no G40; CRLF. Older real programs write micrometre integers (write_unit = um reads
+# and writes those too); both are read.
+write_unit = mm
+write_decimals = 3
+write_comment = no
+write_g = G1
+write_start = G92 X{x} Y{y} | G60 | G38 | {offset} | G90
+write_offset = {g} D0
+write_cancel = G39 | G40
+write_end = M02
 line_end = crlf

@@ -41,7 +41,10 @@ class IsoWriter {
   /// The words of one side's motion: G X Y [I J] (names: X Y I J or U V I J).
   std::string motion(const Segment& s, bool rapid, char a, char b, bool withG = true) const {
     std::string w;
-    if (withG) w = rapid ? "G00 " : !s.isArc() ? "G01 " : s.sweep < 0 ? "G02 " : "G03 ";
+    if (withG) {
+      const char* g = rapid ? "G00 " : !s.isArc() ? "G01 " : s.sweep < 0 ? "G02 " : "G03 ";
+      w = m_.writeShortG ? std::string("G") + g[2] + " " : std::string(g);
+    }
     const Vec2 end = rounded(s.end);
     w += std::string(1, a) + num(end.x()) + " " + std::string(1, b) + num(end.y());
     if (s.isArc()) {
@@ -80,17 +83,49 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
     diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no move");
     return std::nullopt;
   }
-  IsoWriter w(target, request.decimals.value_or(3));
+  const int decimals = request.decimals.value_or(target.writeDecimals);
+  IsoWriter w(target, decimals);
   const bool taper = toolpath.isTaper();
   const bool colon = taper && target.writeTaper == Dialect::SodickColon;
-  w.comment(std::string("written by Kerf for the ") + target.name + " machine from " +
-            (source ? source->name() : std::string("a program")) + ": absolute, " +
-            (target.writeMicrometres ? "micrometre integers" : "mm") + ", I J " +
-            (target.arcCentre == ArcCentreMode::Absolute   ? "absolute"
-             : target.arcCentre == ArcCentreMode::Reversed ? "start minus centre"
-                                                           : "incremental") +
-            (taper ? std::string(", upper contour as ") + dialectName(colon ? Dialect::SodickColon : Dialect::XyuvAbs)
-                   : std::string()));
+  // The profile's blocks: {x} {y} the start, {g} the offset code; {offset} and {cancel} expand to
+  // the offset-on and cancel blocks.
+  auto expand = [&](const std::string& tpl, const std::string& g, const Vec2& p) {
+    std::string out;
+    for (std::size_t i = 0; i < tpl.size(); ++i) {
+      if (tpl.compare(i, 3, "{x}") == 0) {
+        out += w.num(w.rounded(p.x()));
+        i += 2;
+      } else if (tpl.compare(i, 3, "{y}") == 0) {
+        out += w.num(w.rounded(p.y()));
+        i += 2;
+      } else if (tpl.compare(i, 3, "{g}") == 0) {
+        out += g;
+        i += 2;
+      } else {
+        out += tpl[i];
+      }
+    }
+    return out;
+  };
+  const Vec2 start = toolpath.moves.front().lower.start;
+  auto offsetOn = [&](WireOffset o) {
+    for (const std::string& b : target.writeOffset) w.block(expand(b, offsetCode(o), start));
+  };
+  auto cancel = [&]() {
+    if (target.writeCancel.empty())
+      w.block("G40");
+    else
+      for (const std::string& b : target.writeCancel) w.block(expand(b, "G40", start));
+  };
+  if (target.writeComment)
+    w.comment(std::string("written by Kerf for the ") + target.name + " machine from " +
+              (source ? source->name() : std::string("a program")) + ": absolute, " +
+              (target.writeMicrometres ? "micrometre integers" : "mm") + ", I J " +
+              (target.arcCentre == ArcCentreMode::Absolute   ? "absolute"
+               : target.arcCentre == ArcCentreMode::Reversed ? "start minus centre"
+                                                             : "incremental") +
+              (taper ? std::string(", upper contour as ") + dialectName(colon ? Dialect::SodickColon : Dialect::XyuvAbs)
+                     : std::string()));
   if (taper) {
     const PlaneHeights& h = toolpath.heights;
     if (!h.known) {
@@ -107,23 +142,43 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
       w.block("M101 P" + formatFixed(h.planes.height(), 3));
     }
   }
-  w.block(target.writeMicrometres ? "G90" : "G90 G21");
-  const Vec2 start = toolpath.moves.front().lower.start;
-  std::string g92 = "G92 X" + w.num(w.rounded(start.x())) + " Y" + w.num(w.rounded(start.y()));
-  if (taper && !colon) {
-    const Vec2 u = toolpath.upper.front().start;
-    g92 += " U" + w.num(w.rounded(u.x())) + " V" + w.num(w.rounded(u.y()));
-  }
-  w.block(g92);
-  if (colon) w.block("G141");
   WireOffset offset = WireOffset::Off;
+  const bool blockOffsets = !target.writeOffset.empty();  // offset on in blocks of its own
+  if (target.writeStart.empty()) {
+    w.block(target.writeMicrometres ? "G90" : "G90 G21");
+    std::string g92 = "G92 X" + w.num(w.rounded(start.x())) + " Y" + w.num(w.rounded(start.y()));
+    if (taper && !colon) {
+      const Vec2 u = toolpath.upper.front().start;
+      g92 += " U" + w.num(w.rounded(u.x())) + " V" + w.num(w.rounded(u.y()));
+    }
+    w.block(g92);
+  } else {
+    for (const std::string& b : target.writeStart) {
+      if (b == "{offset}") {
+        if (blockOffsets && toolpath.moves.front().wireOffset != WireOffset::Off) {
+          offset = toolpath.moves.front().wireOffset;
+          offsetOn(offset);
+        }
+        continue;
+      }
+      w.block(expand(b, "", start));
+    }
+  }
+  if (colon) w.block("G141");
   double feed = 0.0;
   std::size_t written = 0;
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     const Move& m = toolpath.moves[i];
     std::string words;
     if (m.wireOffset != offset) {
-      words += std::string(offsetCode(m.wireOffset)) + " ";
+      if (m.wireOffset == WireOffset::Off && !target.writeCancel.empty()) {
+        cancel();
+      } else if (m.wireOffset != WireOffset::Off && blockOffsets) {
+        if (offset != WireOffset::Off) cancel();
+        offsetOn(m.wireOffset);
+      } else {
+        words += std::string(offsetCode(m.wireOffset)) + " ";
+      }
       offset = m.wireOffset;
     }
     const bool rapid = m.kind == MoveKind::Rapid;
@@ -143,18 +198,28 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
     ++written;
   }
   if (colon) w.block("G140");
-  if (offset != WireOffset::Off) w.block("G40");
-  w.block("M02");
-  if (std::any_of(toolpath.moves.begin(), toolpath.moves.end(),
-                  [](const Move& m) { return m.wireOffset != WireOffset::Off; }))
+  if (target.writeEnd.empty()) {
+    if (offset != WireOffset::Off) cancel();
+    w.block("M02");
+  } else {
+    for (const std::string& b : target.writeEnd) {
+      if (b == "{cancel}") {
+        if (offset != WireOffset::Off) cancel();
+        continue;
+      }
+      w.block(expand(b, "", start));
+    }
+  }
+  if (!request.offsetsApplied && std::any_of(toolpath.moves.begin(), toolpath.moves.end(),
+                                             [](const Move& m) { return m.wireOffset != WireOffset::Off; }))
     diags.note(Code::NotInOutputFormat, source, SourceSpan::wholeFile(),
-               "G41/G42 are written as the source gives them, without D or H: the offset value stays the "
-               "machine's (Kerf does not apply the wire offset yet)");
+               std::string("G41/G42 are written ") +
+                   (blockOffsets ? "as the machine profile writes them" : "without D or H") +
+                   ": the offset value is the machine's");
   EmitOutput out;
   out.text = std::move(w.text_);
   out.what = std::to_string(written) + " blocks of ISO for the " + target.name + " machine";
-  out.detail = target.writeMicrometres ? "; micrometre integers"
-                                       : "; " + std::to_string(request.decimals.value_or(3)) + " decimals";
+  out.detail = target.writeMicrometres ? "; micrometre integers" : "; " + std::to_string(decimals) + " decimals";
   return out;
 }
 

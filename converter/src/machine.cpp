@@ -244,6 +244,29 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       either(p.writeMicrometres, "mm", "um");
     } else if (key == "line_end") {
       either(p.crlf, "lf", "crlf");
+    } else if (key == "write_decimals") {
+      if (auto v = number(value); v && *v >= 0 && *v <= 6 && *v == std::floor(*v))
+        p.writeDecimals = static_cast<int>(*v);
+      else
+        badValue("a whole number from 0 to 6");
+    } else if (key == "write_comment") {
+      either(p.writeComment, "no", "yes");
+    } else if (key == "write_g") {
+      either(p.writeShortG, "G01", "G1");
+    } else if (key == "write_start" || key == "write_offset" || key == "write_cancel" || key == "write_end") {
+      std::vector<std::string>& blocks = key == "write_start"    ? p.writeStart
+                                         : key == "write_offset" ? p.writeOffset
+                                         : key == "write_cancel" ? p.writeCancel
+                                                                 : p.writeEnd;
+      blocks.clear();
+      std::size_t from = 0;
+      while (from <= value.size()) {
+        const std::size_t bar = value.find('|', from);
+        const std::string b = trim(value.substr(from, bar == std::string::npos ? std::string::npos : bar - from));
+        if (!b.empty()) blocks.push_back(b);
+        if (bar == std::string::npos) break;
+        from = bar + 1;
+      }
     } else if (key == "write_taper") {
       bool colon = false;
       either(colon, "xyuv-abs", "sodick-colon");
@@ -279,7 +302,8 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       fail(lead, eq - lead, "unknown key '" + key + "'",
            "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
            "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, write_unit, line_end, "
-           "write_taper, polar_x, polar_c, polar_frame, code <CODE>");
+           "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "
+           "write_end, polar_x, polar_c, polar_frame, code <CODE>");
     }
   }
   if (!ok) return std::nullopt;

@@ -91,13 +91,56 @@ void readDxfPipeline(Pipeline& out, const PipelineOptions& options) {
   geometry::ChainOptions co;
   co.tolerance = ro.chainTolerance;
   result.contours = geometry::chainSegments(segments, co);
+  // With --offset and --side: the wire path of every closed contour (holes inside others on the
+  // other side, as kerf cam cuts them).
+  const bool wired = ro.wireOffset && ro.side && *ro.wireOffset > 0;
+  if (wired) {
+    out.wires.resize(result.contours.size());
+    const std::vector<int> depth = nestingDepths(result.contours);
+    for (std::size_t c = 0; c < result.contours.size(); ++c) {
+      const geometry::Chain& chain = result.contours[c];
+      if (!chain.closed) continue;
+      const WireSide side = sideAtDepth(*ro.side, depth[c]);
+      out.wires[c] = offsetContour(chain.path, *ro.wireOffset, side);
+      reportContourWire(out.wires[c], c + 1, result, chain, *ro.wireOffset, out.source.get(), out.diags);
+    }
+  }
   Toolpath& path = out.toolpath;
   path.format = InputFormat::Dxf;
   path.reading.machine = out.machine.name;
   path.blocks = result.drawing.elements.size();
   geometry::Vec2 at(0, 0);
-  for (const geometry::Chain& c : result.contours) {
+  for (std::size_t ci = 0; ci < result.contours.size(); ++ci) {
+    const geometry::Chain& c = result.contours[ci];
     const DrawingElement& first = result.drawing.elements[c.elements.front()];
+    if (wired && c.closed) {  // the wire path instead of the contour
+      for (const auto& loop : out.wires[ci].loops) {
+        if (loop.empty()) continue;
+        if (path.moves.empty()) {
+          path.start = loop.front().segment.start;
+          at = path.start;
+        }
+        if ((loop.front().segment.start - at).norm() > 1e-12) {
+          Move rapid;
+          rapid.kind = MoveKind::Rapid;
+          rapid.lower = geometry::Segment::line(at, loop.front().segment.start);
+          rapid.line = first.where;
+          rapid.span = first.span;
+          path.moves.push_back(rapid);
+        }
+        for (const geometry::WirePiece& piece : loop) {
+          const DrawingElement& e = result.drawing.elements[c.elements[piece.element]];
+          Move m;
+          m.kind = piece.segment.isArc() ? MoveKind::Arc : MoveKind::Line;
+          m.lower = piece.segment;
+          m.line = e.where;
+          m.span = e.span;
+          path.moves.push_back(m);
+        }
+        at = loop.back().segment.end;
+      }
+      continue;
+    }
     if (path.moves.empty()) {
       path.start = c.path.front().start;
       at = path.start;

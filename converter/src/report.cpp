@@ -146,8 +146,25 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
   return out;
 }
 
+namespace {
+
+json segmentJson(const geometry::Segment& s) {
+  json e;
+  e["kind"] = s.isArc() ? "arc" : "line";
+  e["start"] = json::array({s.start.x(), s.start.y()});
+  e["end"] = json::array({s.end.x(), s.end.y()});
+  if (s.isArc()) {
+    e["centre"] = json::array({s.centre.x(), s.centre.y()});
+    e["radius"] = s.radius;
+    e["sweep"] = s.sweep;
+  }
+  return e;
+}
+
+}  // namespace
+
 std::string checkReportJson(const std::string& file, const Summary& s, const Diagnostics& diags,
-                            const DrawingResult* drawing) {
+                            const DrawingResult* drawing, const std::vector<ContourWire>* wires) {
   json j;
   j["file"] = file;
   j["verdict"] = diags.hasErrors() ? "errors" : "ok";
@@ -196,6 +213,45 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
       cj["length"] = length;
       cj["area"] = c.closed ? std::abs(geometry::signedArea(c.path)) : 0.0;
       cj["start"] = json::array({c.path.front().start.x(), c.path.front().start.y()});
+      const std::size_t index = contours.size();
+      if (wires && index < wires->size() && c.closed) {
+        json path = json::array();
+        for (const geometry::Segment& seg : c.path) path.push_back(segmentJson(seg));
+        cj["path"] = std::move(path);
+        const ContourWire& w = (*wires)[index];
+        json wj;
+        wj["offset"] = w.distance;
+        wj["refused"] = w.refused;
+        wj["degenerate"] = w.degenerate;
+        json loops = json::array();
+        double wireLength = 0.0, wireArea = 0.0;
+        for (const auto& loop : w.loops) {
+          json lj = json::array();
+          std::vector<geometry::Segment> segs;
+          for (const geometry::WirePiece& p : loop) {
+            json pj = segmentJson(p.segment);
+            pj["element"] = p.element;
+            pj["corner"] = p.corner;
+            lj.push_back(std::move(pj));
+            segs.push_back(p.segment);
+            wireLength += p.segment.length();
+          }
+          wireArea += geometry::signedArea(segs);
+          loops.push_back(std::move(lj));
+        }
+        wj["loops"] = std::move(loops);
+        wj["length"] = wireLength;
+        wj["signed_area"] = wireArea;
+        json lost = json::array();
+        for (const geometry::LostRun& r : w.lost)
+          lost.push_back({{"first", r.first},
+                          {"count", r.count},
+                          {"uncut", r.uncut},
+                          {"where", json::array({r.where.x(), r.where.y()})},
+                          {"fillet", r.fillet}});
+        wj["lost"] = std::move(lost);
+        cj["wire"] = std::move(wj);
+      }
       contours.push_back(std::move(cj));
     }
     dj["contours"] = std::move(contours);

@@ -1,5 +1,6 @@
 // The wire offset: exact element offsets, arc joins at convex corners, interference removed over
 // the whole path (offset.h; docs/geometry.md, "The wire offset").
+#include "kerf/geometry/chain.h"
 #include "kerf/geometry/intersection.h"
 #include "kerf/geometry/offset.h"
 
@@ -31,13 +32,20 @@ Segment exactOffset(const Segment& s, double d, double tol) {
     const Vec2 shift = leftOf(dir / dir.norm()) * d;
     return Segment::line(s.start + shift, s.end + shift);
   }
-  const double r = s.sweep >= 0 ? s.radius - d : s.radius + d;
+  // Left of a counter-clockwise arc is towards the centre. Each end moves along its own radius, so
+  // an arc whose end sits off its circle (within the tolerance it was accepted with) keeps meeting
+  // its neighbour's offset where the contour meets it.
+  const double toward = s.sweep >= 0 ? -d : d;
+  const double r = s.radius + toward;
   if (std::abs(r) <= tol) return Segment::line(s.centre, s.centre);
   Segment o = s;
   o.radius = std::abs(r);
   if (r < 0) o.startAngle = s.startAngle + kPi;
   o.start = o.centre + o.radius * direction(o.startAngle);
+  const Vec2 ue = s.end - s.centre;
+  const double re = ue.norm();
   o.end = o.centre + o.radius * direction(o.startAngle + o.sweep);
+  if (re > 0) o.end = s.centre + ue * ((re + toward) / re);
   return o;
 }
 
@@ -76,6 +84,42 @@ Segment subSegment(const Segment& s, double t0, double t1) {
   a.start = t0 <= 0 ? s.start : s.centre + s.radius * direction(a.startAngle);
   a.end = t1 >= 1 ? s.end : s.centre + s.radius * direction(a.startAngle + a.sweep);
   return a;
+}
+
+int windingNumber(std::span<const Segment> path, const Vec2& p) {
+  int w = 0;
+  for (const Segment& s : path) {
+    if (!s.isArc()) {
+      // Half-open in y so that a vertex on the ray counts once.
+      const Vec2& a = s.start;
+      const Vec2& b = s.end;
+      if (a.y() <= p.y() && b.y() > p.y()) {
+        if (cross(b - a, p - a) > 0) ++w;
+      } else if (a.y() > p.y() && b.y() <= p.y()) {
+        if (cross(b - a, p - a) < 0) --w;
+      }
+      continue;
+    }
+    const double dy = p.y() - s.centre.y();
+    if (std::abs(dy) >= s.radius) continue;
+    const double h = std::sqrt(s.radius * s.radius - dy * dy);
+    for (const double x : {s.centre.x() - h, s.centre.x() + h}) {
+      if (x <= p.x()) continue;
+      const Vec2 q(x, p.y());
+      const double phi = angleOf(q - s.centre);
+      const double along = detail::angleAlong(s, phi);
+      if (along > std::abs(s.sweep)) continue;
+      // Going up or down there: the tangent's y is cos(phi) for a counter-clockwise arc.
+      const double up = std::cos(phi) * (s.sweep > 0 ? 1.0 : -1.0);
+      // Half-open like the lines: an arc end exactly on the ray counts where the arc leaves upward.
+      if (along == 0.0 || along == std::abs(s.sweep)) {
+        const bool atStart = along == 0.0;
+        if ((up > 0) != atStart) continue;
+      }
+      w += up > 0 ? 1 : up < 0 ? -1 : 0;
+    }
+  }
+  return w;
 }
 
 WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const WireOffsetOptions& options) {
@@ -179,7 +223,12 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
   std::vector<Box> elementBoxes(contour.size());
   for (std::size_t i = 0; i < contour.size(); ++i) elementBoxes[i] = contour[i].bounds();
   const detail::BoxTree elements(elementBoxes);
+  // A closed contour: the side of the offset is also a winding number (a piece of an offset that
+  // has passed through a thin part of the contour to its far side is |d| away, but on the wrong side).
+  const double area = options.closed ? signedArea(contour) : 0.0;
+  const int sideWinding = d > 0 ? (area > 0 ? 1 : 0) : (area > 0 ? 0 : -1);
   auto valid = [&](const Vec2& p) {
+    if (options.closed && windingNumber(contour, p) != sideWinding) return false;
     bool ok = true;
     Box b;
     b.add(p);
@@ -214,7 +263,7 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
   }
 
   // Link the kept pieces head to tail (they run in the raw path's order except across a split).
-  const double link = 10 * tol;
+  const double link = 100 * tol;  // ends this close are one point (offset ends of arcs off their circle)
   auto key = [&](const Vec2& p) {
     const auto gx = static_cast<std::int64_t>(std::floor(p.x() / (4 * link)));
     const auto gy = static_cast<std::int64_t>(std::floor(p.y() / (4 * link)));

@@ -47,8 +47,8 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
       ->check(CLI::IsMember({"radius", "diameter"}))
       ->group(reading);
   cmd.add_option("--dxf-units", o.reading.dxfUnits,
-                 "a DXF drawing's unit: mm (the default, whatever $INSUNITS says), in, or file (as its $INSUNITS "
-                 "says; docs/dxf.md)")
+                 "a DXF drawing's unit: file (the default: as its $INSUNITS says, unitless read as mm), or mm or in "
+                 "whatever it says (docs/dxf.md)")
       ->check(CLI::IsMember({"mm", "in", "file"}))
       ->group(reading);
   cmd.add_option("--chain-tolerance", o.reading.chainTolerance,
@@ -67,7 +67,14 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
       ->check(CLI::IsMember({"incremental", "reversed", "absolute"}))
       ->group(reading);
   cmd.add_option("--offset", o.reading.offset,
-                 "wire offset in mm for G41/G42 without D or H (recorded, not applied yet)")
+                 "wire offset in mm (wire radius plus spark gap): for G41/G42 without D or H; for a drawing "
+                 "with --side, its wire path")
+      ->check(CLI::Range(0.0, 100.0))
+      ->group(reading);
+  cmd.add_option("--side", o.reading.side,
+                 "a drawing's wire side with --offset: outside (a punch) or inside (a die) of the outermost "
+                 "contours; holes in them get the other side")
+      ->check(CLI::IsMember({"outside", "inside"}))
       ->group(reading);
   cmd.add_option("--dialect", o.reading.dialect, "4-axis dialect (docs/taper.md); auto: detected from the words")
       ->check(CLI::IsMember({"auto", "plain", "xyuv-abs", "xyuv-rel", "xyuv-linuxcnc", "sodick-colon", "taper-angle"}))
@@ -172,6 +179,7 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
   r.thickness = o.reading.thickness;
   r.programZ = o.reading.programZ;
   r.wireOffset = o.reading.offset;
+  if (o.reading.side) r.side = *o.reading.side == "inside" ? WireSide::Inside : WireSide::Outside;
   if (o.reading.upperAxes) r.upperAxesUZ = *o.reading.upperAxes == "uz";
   out.check.maxTaperDegrees = o.checks.maxTaper;
   out.check.uvRange = o.checks.uvRange;

@@ -41,6 +41,10 @@ enum class Code : std::uint16_t {
   DxfSkipped = 123,
   DxfUnits = 124,
   ContourOpen = 125,
+  WireCannotReach = 126,
+  InsideCornerRadius = 127,
+  WirePathSplits = 128,
+  WireOffsetRefused = 129,
   // Words and modal state
   UnknownGCode = 201,
   UnknownMCode = 202,

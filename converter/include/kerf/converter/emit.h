@@ -37,7 +37,8 @@ struct EmitRequest {
   bool relativeUv = false;                 ///< points4: U V as upper minus lower
   // ISO: the target controller's conventions (null: generic).
   const MachineProfile* target = nullptr;
-  std::optional<int> decimals;  ///< iso, polar: digits after the point (default 3)
+  std::optional<int> decimals;  ///< iso, polar: digits after the point (default: the target's, 3)
+  bool offsetsApplied = false;  ///< iso: G41/G42 marks are the controller's job (kerf cam), not a loss
   // 3B.
   bool compact = false;    ///< `B9900B0B9900GXL1` instead of `B9900 B0 B9900 GX L1`
   std::string end = "DD";  ///< the last line ("" for none)

@@ -71,6 +71,13 @@ struct MachineProfile {
   bool writeMicrometres = false;          ///< write_unit = um: integers in µm, no decimal point
   bool crlf = false;                      ///< line_end = crlf
   Dialect writeTaper = Dialect::XyuvAbs;  ///< write_taper: xyuv-abs (cnc3 two motions) or sodick-colon
+  int writeDecimals = 3;                  ///< write_decimals: digits after the point in mm output
+  bool writeComment = true;               ///< write_comment: a first comment line saying what wrote it
+  bool writeShortG = false;               ///< write_g = G1: `G1` rather than `G01`
+  // Blocks around the motion (write_start, write_offset, write_cancel, write_end: blocks separated
+  // by `|`; {x} {y} the start point, {g} G41 or G42, {offset} the first offset-on blocks, {cancel}
+  // the cancel blocks when an offset is on). Empty: the built-in layout (docs/machines.md).
+  std::vector<std::string> writeStart, writeOffset, writeCancel, writeEnd;
   // Polar coordinate interpolation (G12.1/G112, docs/polar.md).
   bool polarXRadius = true;     ///< polar_x = radius | diameter: X inside G12.1
   bool polarCDiameter = false;  ///< polar_c = linear | diameter: Star machines write C as a diameter

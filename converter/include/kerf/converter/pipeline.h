@@ -11,6 +11,7 @@
 //        ──interpret──▶ Toolpath ──[two files: pair]──▶ checks ──▶ Findings
 #pragma once
 
+#include "kerf/converter/cam.h"
 #include "kerf/converter/checks.h"
 #include "kerf/converter/diagnostics.h"
 #include "kerf/converter/dxf.h"
@@ -49,6 +50,8 @@ struct ReadOptions {
   std::optional<Dialect> dialect;
   std::optional<double> lowerZ, upperZ, thickness, programZ;  ///< mm
   std::optional<double> wireOffset;                           ///< --offset, mm
+  /// --side: a drawing's closed contours get the wire path at --offset on this side (cam.h).
+  std::optional<WireSide> side;
   std::optional<bool> upperAxesUZ;                            ///< --upper-axes uz
   std::optional<double> dxfUnit;               ///< --dxf-units: mm per drawing unit; 0 follows $INSUNITS (dxf.h)
   double chainTolerance = 0.001;               ///< --chain-tolerance: drawing ends this close are joined, mm
@@ -77,6 +80,9 @@ struct Pipeline {
   InputFormat format = InputFormat::Iso;      ///< the format the program was read as
   Program program;                            ///< ISO only (empty for 3B)
   std::optional<DrawingResult> drawing;       ///< DXF only: the toolpath then walks its contours
+  /// DXF with --offset and --side: per contour (same index), the wire path (empty for open ones);
+  /// the toolpath then walks the wire paths.
+  std::vector<ContourWire> wires;
   Toolpath toolpath;
   MachineProfile machine;        ///< the profile in force
   bool machineDetected = false;  ///< chosen from the evidence, not given

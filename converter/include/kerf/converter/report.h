@@ -1,6 +1,7 @@
 // Reports: `kerf check` and `kerf explain` as text and as JSON. Strings out, nothing printed.
 #pragma once
 
+#include "kerf/converter/cam.h"
 #include "kerf/converter/diagnostics.h"
 #include "kerf/converter/dxf.h"
 #include "kerf/converter/summary.h"
@@ -16,9 +17,11 @@ std::string formatDiagnosticsText(const Diagnostics& diags);
 /// The summary block of `kerf check`.
 std::string formatSummaryText(const std::string& file, const Summary& summary, const Diagnostics& diags);
 
-/// `kerf check --json`: {"file", "verdict", "diagnostics": [...], "summary": {...}}.
+/// `kerf check --json`: {"file", "verdict", "diagnostics": [...], "summary": {...}}; a drawing adds
+/// "drawing", and with its wire paths (`wires`, per contour) each closed contour's exact elements
+/// and its "wire" (docs/cam.md).
 std::string checkReportJson(const std::string& file, const Summary& summary, const Diagnostics& diags,
-                            const DrawingResult* drawing = nullptr);
+                            const DrawingResult* drawing = nullptr, const std::vector<ContourWire>* wires = nullptr);
 
 /// A stable, fixed-decimal trace of the Toolpath and the diagnostics (golden files).
 std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags);

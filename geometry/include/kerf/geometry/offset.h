@@ -109,6 +109,10 @@ struct WireOffsetResult {
 /// connected (each element starting where the previous ends).
 WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const WireOffsetOptions& options = {});
 
+/// The winding number of a closed path about p (> 0: counter-clockwise round it), on the exact
+/// lines and arcs: signed crossings of the ray from p towards +x.
+int windingNumber(std::span<const Segment> path, const Vec2& p);
+
 /// The part of s between parameters t0 < t1 (proportional to length, as Segment::pointAt).
 Segment subSegment(const Segment& s, double t0, double t1);
 

@@ -346,6 +346,28 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
     const Move& m = toolpath.moves[i];
     const geometry::Segment& s = m.lower;
     out += "\nline " + std::to_string(m.line) + ": " + blockText(source, m) + "\n";
+    if (i < toolpath.offsetRole.size()) {
+      const geometry::Segment& p = toolpath.programmed[i];
+      switch (toolpath.offsetRole[i]) {
+        case OffsetRole::None: break;
+        case OffsetRole::Element:
+          out += "  wire offset: the wire-centre path below is this block's programmed " + segmentText(p, 3) +
+                 " moved sideways by the offset (an arc keeps its centre, its radius grows or shrinks)\n";
+          break;
+        case OffsetRole::Corner:
+          out += "  wire offset: no block of its own: the wire rolls round the convex corner at " + pt(p.start) +
+                 " on an arc of the offset radius about it\n";
+          break;
+        case OffsetRole::StartUp:
+          out += "  wire offset starts: programmed " + segmentText(p, 3) +
+                 "; the wire goes from the programmed start to the offset path\n";
+          break;
+        case OffsetRole::Cancel:
+          out += "  wire offset cancelled: programmed " + segmentText(p, 3) +
+                 "; the wire leaves the offset path for the programmed end\n";
+          break;
+      }
+    }
     if (toolpath.isTaper()) {
       const geometry::Segment& u = toolpath.upper[i];
       out += "  upper: " + segmentText(u, 3) + ", length " + mm(u.length()) + " mm\n";

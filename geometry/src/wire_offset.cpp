@@ -112,7 +112,8 @@ int windingNumber(std::span<const Segment> path, const Vec2& p) {
       // Going up or down there: the tangent's y is cos(phi) for a counter-clockwise arc.
       const double up = std::cos(phi) * (s.sweep > 0 ? 1.0 : -1.0);
       // Half-open like the lines: an arc end exactly on the ray counts where the arc leaves upward.
-      if (along == 0.0 || along == std::abs(s.sweep)) {
+      const bool full = std::abs(s.sweep) >= kTwoPi - 1e-12;  // its start is its end: counted once
+      if (!full && (along == 0.0 || along == std::abs(s.sweep))) {
         const bool atStart = along == 0.0;
         if ((up > 0) != atStart) continue;
       }

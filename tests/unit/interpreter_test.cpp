@@ -115,13 +115,33 @@ TEST(interpreter, sodick_style_n_label_after_m02) {
   auto r = run("H001 = +000000.1300;\nG90 G01 X0 Y0;\nM98 P0001;\nM02;\nN0001 G41 H001 G01 X1.;\nM99;\n");
   ASSERT_FALSE(r->diags.hasErrors());
   ASSERT_EQ(r->path().moves.size(), 2u);
-  EXPECT_TRUE(r->hasCode(Code::WireOffsetNotApplied));
   EXPECT_EQ(r->path().moves[1].wireOffset, WireOffset::Left);
-  bool mentions = false;
-  for (const auto& d : r->diags.all())
-    if (d.code == Code::WireOffsetNotApplied && d.message.find("H001 = +000000.1300") != std::string::npos)
-      mentions = true;
-  EXPECT_TRUE(mentions);
+  EXPECT_TRUE(r->path().offsetRole.empty()) << "a start-up move alone compensates nothing";
+}
+
+TEST(interpreter, g41_with_an_h_register_is_applied_with_arcs_at_convex_corners) {
+  // A 10 x 10 square cut clockwise from a lead-in, the wire 0.13 to the left (outside).
+  auto r =
+      run("H001 = +000000.1300;\nG90 G92 X-5 Y0;\nG41 H001 G01 X0 Y0;\nG01 X0 Y10;\nG01 X10 Y10;\nG01 X10 Y0;\n"
+          "G01 X0 Y0;\nG40 G01 X-5 Y0;\nM02;\n");
+  ASSERT_FALSE(r->diags.hasErrors());
+  const auto& t = r->path();
+  ASSERT_EQ(t.offsetRole.size(), t.moves.size());
+  // start-up, 4 sides with 3 corner arcs between them, cancel
+  ASSERT_EQ(t.moves.size(), 9u);
+  EXPECT_EQ(t.offsetRole.front(), kerf::converter::OffsetRole::StartUp);
+  EXPECT_EQ(t.offsetRole.back(), kerf::converter::OffsetRole::Cancel);
+  int corners = 0;
+  for (std::size_t i = 0; i < t.moves.size(); ++i) {
+    if (t.offsetRole[i] != kerf::converter::OffsetRole::Corner) continue;
+    ++corners;
+    EXPECT_NEAR(t.moves[i].lower.radius, 0.13, 1e-12);
+    EXPECT_LT(t.moves[i].lower.sweep, 0) << "a left offset rolls clockwise round a convex corner";
+  }
+  EXPECT_EQ(corners, 3);
+  EXPECT_NEAR(t.moves[1].lower.start.x(), -0.13, 1e-12);   // the first side, moved left of travel
+  EXPECT_NEAR(t.moves.back().lower.end.x(), -5.0, 1e-12);  // the cancel returns to the programmed point
+  EXPECT_TRUE(r->hasCode(Code::WireOffsetNotApplied));     // the note that it was applied
 }
 
 TEST(interpreter, recursion_is_stopped) {

@@ -189,7 +189,8 @@ TEST(machine_test, sodick_header_reads_without_a_cascade) {
   const auto unknown = std::count_if(p.diags.all().begin(), p.diags.all().end(),
                                      [](const Diagnostic& d) { return d.code == Code::PositionUnknown; });
   EXPECT_EQ(unknown, 1);
-  EXPECT_EQ(p.toolpath.moves.size(), 6u);
+  // 6 programmed moves and, with H000 = 0.01 applied, one arc round the convex corner at (22, 5).
+  EXPECT_EQ(p.toolpath.moves.size(), 7u);
   EXPECT_TRUE(p.toolpath.endedProperly);  // M199
 }
 

@@ -101,6 +101,11 @@ TEST(WireOffset, ACircleGrowsAndShrinksAndVanishesWhenSmallerThanTheWire) {
   auto in = wireOffset(c, 0.5);
   ASSERT_EQ(in.paths.size(), 1u);
   EXPECT_NEAR(signedArea(segments(in.paths[0])), std::numbers::pi * 4.5 * 4.5, 1e-9);
+  // Clockwise, with the offset's middle on the horizontal through the circle's start point.
+  const std::vector<Segment> cw{circle.reversed()};
+  auto inCw = wireOffset(cw, -0.5);
+  ASSERT_EQ(inCw.paths.size(), 1u);
+  EXPECT_NEAR(signedArea(segments(inCw.paths[0])), -std::numbers::pi * 4.5 * 4.5, 1e-9);
   auto gone = wireOffset(c, 6.0);
   EXPECT_TRUE(gone.paths.empty());
   ASSERT_EQ(gone.lost.size(), 1u);

@@ -177,6 +177,8 @@ class Interpreter {
   // taper_offsets.cpp
   void resolveRel();
   void resolveTaperAngle();
+  // wire_offset.cpp
+  void resolveWireOffsets();
   void reportOffsetIssues(const geometry::OffsetChainResult& r, const std::vector<std::size_t>& moveOf,
                           const std::vector<double>& distance, const char* plane);
 
@@ -205,6 +207,14 @@ class Interpreter {
   std::unordered_map<long, std::size_t> oLabels_, nLabels_;
   UnknownPosition unknown_;
   const Word* pendingOffset_ = nullptr;  // G40/G41/G42 not yet carried out by a move
+  std::optional<double> offsetValue_;    // the wire offset in force (D/H register or --offset), mm
+  struct OffsetRun {
+    std::size_t first = 0, end = 0;  // moves [first, end) carry the offset; first starts it up
+    WireOffset side = WireOffset::Off;
+    std::optional<double> value;
+    const Word* word = nullptr;
+  };
+  std::vector<OffsetRun> offsetRuns_;
   bool programHasV_ = false;             // some word is V (for the U Z diagnostic)
 
   // 4-axis state.

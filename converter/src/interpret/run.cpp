@@ -83,6 +83,7 @@ Interpretation Interpreter::run() {
   resolveHeights();
   if (dialect_ == Dialect::XyuvRel) resolveRel();
   if (dialect_ == Dialect::TaperAngle) resolveTaperAngle();
+  resolveWireOffsets();
   return {std::move(toolpath_), tally_};
 }
 

@@ -1,6 +1,10 @@
-// G40/G41/G42 with a D or H register: recorded per move (the geometry stays the programmed
-// contour until the wire offset is applied; docs/interpreter.md).
+// G40/G41/G42 with a D or H register (Sodick's H000 = tables, --offset for a bare code or a
+// register the file does not fill): recorded per move while reading, then applied at the end
+// through geometry::wireOffset (arc corners, interference removed), so that checks, pictures and
+// emitters see the wire-centre path (docs/interpreter.md, "Wire offset").
 #include "interpreter_impl.h"
+
+#include "kerf/geometry/offset.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,31 +21,136 @@ void Interpreter::executeWireOffset(const BlockWords& bw, const Word& o) {
   if (wireOffset_ != before) pendingOffset_ = &o;  // carried out by the next move
   if (code == GCode::OffsetCancel) return;
   const Word* reg = bw.has('D') ? bw['D'] : bw['H'];
-  std::string what;
+  offsetValue_.reset();
   if (reg && reg->isNumber()) {
     char name[16];
     std::snprintf(name, sizeof name, "%c%03ld", reg->letter, std::lround(reg->value));
-    what = std::string(name);
     const auto it = std::find_if(toolpath_.settings.begin(), toolpath_.settings.end(),
                                  [&](const Setting& s) { return s.name == name; });
-    if (it != toolpath_.settings.end()) what += " = " + it->value;
-  } else if (options_.wireOffset) {
-    what = "--offset " + fmt3(*options_.wireOffset) + " mm";
-  } else {
-    if (!warnedOffsetUnknown_) {
-      warnedOffsetUnknown_ = true;
-      diags_.warning(Code::WireOffsetUnknown, src_, o.span(),
-                     gName(code) + " without D or H: the offset is set at the machine",
-                     "give it with --offset MM to record it");
+    if (it != toolpath_.settings.end()) {
+      char* endp = nullptr;
+      const double v = std::strtod(it->value.c_str(), &endp);
+      if (endp != it->value.c_str() && std::isfinite(v)) offsetValue_ = std::abs(v);
     }
+    if (!offsetValue_ && options_.wireOffset) offsetValue_ = *options_.wireOffset;
+    if (!offsetValue_ && !warnedOffsetUnknown_) {
+      warnedOffsetUnknown_ = true;
+      diags_.note(Code::WireOffsetNotApplied, src_, o.span(),
+                  gName(code) + " " + std::string(name) +
+                      ": the offset is in the machine's table, so Kerf shows the programmed contour",
+                  "give the value with --offset MM to see and check the wire-centre path");
+    }
+  } else if (options_.wireOffset) {
+    offsetValue_ = *options_.wireOffset;
+  } else if (!warnedOffsetUnknown_) {
+    warnedOffsetUnknown_ = true;
+    diags_.warning(Code::WireOffsetUnknown, src_, o.span(),
+                   gName(code) + " without D or H: the offset is set at the machine",
+                   "give it with --offset MM to see and check the wire-centre path");
+  }
+}
+
+void Interpreter::resolveWireOffsets() {
+  std::vector<OffsetRun> runs;
+  for (const OffsetRun& r : offsetRuns_)
+    if (r.value && *r.value > 0) runs.push_back(r);
+  if (runs.empty()) return;
+  std::vector<Move>& moves = toolpath_.moves;
+  if (toolpath_.isTaper()) {
+    diags_.warning(Code::WireOffsetNotApplied, src_, moves[runs.front().first].span,
+                   "the wire offset is read but not applied to a 4-axis program: geometry and pictures show the "
+                   "programmed contours");
     return;
   }
-  if (!warnedOffset_) {
-    warnedOffset_ = true;
-    diags_.warning(Code::WireOffsetNotApplied, src_, o.span(),
-                   "wire offset " + gName(code) + " (" + what +
-                       ") is read but not applied yet: geometry and pictures show the programmed contour");
+  std::vector<Move> out;
+  std::vector<OffsetRole> role;
+  std::vector<Segment> programmed;
+  out.reserve(moves.size() + moves.size() / 2);
+  std::size_t next = 0;  // first move not yet copied
+  bool applied = false;
+  auto copyUpTo = [&](std::size_t end) {
+    for (; next < end; ++next) {
+      out.push_back(moves[next]);
+      role.push_back(OffsetRole::None);
+      programmed.push_back(moves[next].lower);
+    }
+  };
+  for (const OffsetRun& run : runs) {
+    // The start-up move and the moves it compensates; a rapid or an arc start-up is reported elsewhere.
+    if (run.end - run.first < 2 || moves[run.first].kind != MoveKind::Line) continue;
+    std::vector<Segment> chain;
+    for (std::size_t i = run.first + 1; i < run.end; ++i) chain.push_back(moves[i].lower);
+    const double d = run.side == WireOffset::Left ? *run.value : -*run.value;
+    geometry::WireOffsetOptions wo;
+    wo.closed = false;
+    const geometry::WireOffsetResult r = geometry::wireOffset(chain, d, wo);
+    if (r.refused || r.paths.size() != 1) {
+      diags_.error(Code::WirePathSplits, src_, moves[run.first].span,
+                   r.refused ? std::string("the wire offset of this run of moves needs more pieces than the budget")
+                             : "at an offset of " + fmt3(*run.value) + " mm the wire path of these " +
+                                   std::to_string(chain.size()) + " moves breaks into " +
+                                   std::to_string(r.paths.size()) + " pieces: the wire cannot follow them",
+                   "the moves keep their programmed geometry");
+      continue;
+    }
+    copyUpTo(run.first);
+    const std::vector<geometry::WirePiece>& path = r.paths.front();
+    Move startUp = moves[run.first];
+    startUp.lower = Segment::line(startUp.lower.start, path.front().segment.start);
+    out.push_back(startUp);
+    role.push_back(OffsetRole::StartUp);
+    programmed.push_back(moves[run.first].lower);
+    for (const geometry::WirePiece& piece : path) {
+      const std::size_t source = run.first + 1 + piece.element;
+      Move m = moves[piece.corner && source + 1 < run.end ? source + 1 : source];
+      m.lower = piece.segment;
+      m.kind = piece.segment.isArc() ? MoveKind::Arc : MoveKind::Line;
+      out.push_back(m);
+      role.push_back(piece.corner ? OffsetRole::Corner : OffsetRole::Element);
+      programmed.push_back(piece.corner ? Segment::line(chain[piece.element].end, chain[piece.element].end)
+                                        : chain[piece.element]);
+    }
+    next = run.end;
+    // The cancel move (G40 on a line) leaves the offset path for its programmed end.
+    if (run.end < moves.size() && moves[run.end].kind == MoveKind::Line) {
+      Move cancel = moves[run.end];
+      cancel.lower = Segment::line(path.back().segment.end, cancel.lower.end);
+      out.push_back(cancel);
+      role.push_back(OffsetRole::Cancel);
+      programmed.push_back(moves[run.end].lower);
+      next = run.end + 1;
+    }
+    for (const geometry::LostRun& lost : r.lost) {
+      const Move& m = moves[run.first + 1 + lost.first];
+      if (lost.fillet)
+        diags_.note(Code::InsideCornerRadius, src_, m.span,
+                    "this arc's radius " + fmt3(m.lower.radius) + " mm is smaller than the wire offset " +
+                        fmt3(*run.value) + " mm: the wire cuts the corner with radius " + fmt3(*run.value) + " mm");
+      else
+        diags_.warning(Code::WireCannotReach, src_, m.span,
+                       "the wire (offset " + fmt3(*run.value) + " mm) cannot reach " + std::to_string(lost.count) +
+                           (lost.count == 1 ? " move" : " moves") +
+                           " from here: a slot or recess narrower than the "
+                           "wire; up to " +
+                           fmt3(lost.uncut) + " mm of material stays",
+                       "the wire path leaves it out");
+    }
+    applied = true;
   }
+  if (!applied) return;
+  copyUpTo(moves.size());
+  // The moves are the wire-centre path now: an output written from them must not offset again.
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (role[i] != OffsetRole::None) out[i].wireOffset = WireOffset::Off;
+  moves = std::move(out);
+  toolpath_.offsetRole = std::move(role);
+  toolpath_.programmed = std::move(programmed);
+  const OffsetRun& first = runs.front();
+  diags_.note(Code::WireOffsetNotApplied, src_, toolpath_.moves.empty() ? SourceSpan::wholeFile() : moves[0].span,
+              std::string("wire offset applied (") + (first.side == WireOffset::Left ? "G41" : "G42") + ", " +
+                  fmt3(*first.value) + " mm" + (runs.size() > 1 ? " first" : "") +
+                  "): checks, pictures and outputs use the wire-centre path",
+              "kerf explain shows each move's programmed geometry beside it");
 }
 
 }  // namespace kerf::converter::interp

@@ -88,6 +88,24 @@ struct ViewArgs {
 CLI::App* addViewCommand(CLI::App& app, ViewArgs& args);
 int runView(const ViewArgs& args);
 
+struct CamArgs {
+  CommonOptions common;  ///< the drawing, --machine, --offset, --side, --start (the start vertex)
+  std::string to = "iso";
+  std::string output = "-";
+  std::optional<std::size_t> contour;
+  std::optional<std::string> entry;  ///< X,Y
+  double leadIn = 2.0;
+  std::string offsetBy = "kerf";         ///< kerf | controller
+  std::optional<std::string> direction;  ///< cw | ccw: overrides the wire on the right
+  std::optional<std::string> shift;      ///< DX,DY
+  std::optional<int> decimals;
+  bool compact = false;
+  std::string end = "dd";
+  std::optional<std::size_t> maxPoints;
+};
+CLI::App* addCamCommand(CLI::App& app, CamArgs& args);
+int runCam(const CamArgs& args);
+
 struct MachinesArgs {
   std::optional<std::string> show;
 };

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   ExportArgs exportArgs;
   ViewArgs view;
   MachinesArgs machines;
+  CamArgs cam;
   CLI::App* checkCmd = addCheckCommand(app, check);
   CLI::App* explainCmd = addExplainCommand(app, explain);
   CLI::App* convertCmd = addConvertCommand(app, convert);
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   CLI::App* exportCmd = addExportCommand(app, exportArgs);
   CLI::App* viewCmd = addViewCommand(app, view);
   CLI::App* machinesCmd = addMachinesCommand(app, machines);
+  CLI::App* camCmd = addCamCommand(app, cam);
 
   try {
     app.parse(argc, argv);
@@ -50,6 +52,7 @@ int main(int argc, char** argv) {
   if (*exportCmd) code = runExport(exportArgs);
   if (*viewCmd) code = runView(view);
   if (*machinesCmd) code = runMachines(machines);
+  if (*camCmd) code = runCam(cam);
   // Output lost on the way (a full disk, a closed pipe) is a failure, whatever the verdict.
   if (std::string error; !finishStandardOutput(error)) {
     reportError(error);

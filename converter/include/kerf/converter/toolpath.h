@@ -25,6 +25,15 @@ enum class CentreForm : std::uint8_t { None, Radius, Incremental, Reversed, Abso
 
 enum class WireOffset : std::uint8_t { Off, Left, Right };
 
+/// What a move is for the wire offset (Toolpath::offsetRole).
+enum class OffsetRole : std::uint8_t {
+  None,     ///< not offset: the programmed move
+  Element,  ///< the offset of a programmed move (or the part of it the wire reaches)
+  Corner,   ///< an arc the wire rolls round a convex corner (no block of its own)
+  StartUp,  ///< the move that starts the offset: from the programmed point to the offset path
+  Cancel,   ///< the move that cancels it: from the offset path back to the programmed point
+};
+
 struct Move {
   MoveKind kind = MoveKind::Line;
   // The contour on the lower plane. The upper contour of a 4-axis program (Move {lower, upper |
@@ -103,6 +112,12 @@ struct Toolpath {
   /// The upper contour, one segment per move (same index), or empty for a plain program.
   std::vector<geometry::Segment> upper;
   PlaneHeights heights;
+
+  /// Where G41/G42 were applied (a plain program whose offset value is known): per move, what the
+  /// move is for the offset and the programmed segment it came from (the wire-centre path is in
+  /// moves). Empty when no offset was applied.
+  std::vector<OffsetRole> offsetRole;
+  std::vector<geometry::Segment> programmed;
 
   [[nodiscard]] bool isTaper() const { return !upper.empty(); }
   /// The upper segment of move i: the lower one where the wire is vertical.

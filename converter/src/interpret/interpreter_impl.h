@@ -215,7 +215,7 @@ class Interpreter {
     const Word* word = nullptr;
   };
   std::vector<OffsetRun> offsetRuns_;
-  bool programHasV_ = false;             // some word is V (for the U Z diagnostic)
+  bool programHasV_ = false;  // some word is V (for the U Z diagnostic)
 
   // 4-axis state.
   Vec2 upperPosition_{0, 0};  // xyuv-abs, xyuv-linuxcnc, sodick-colon: where the upper contour is

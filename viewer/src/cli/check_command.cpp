@@ -49,9 +49,8 @@ int runCheck(const CheckArgs& a) {
     if (a.trace) {
       std::cout << converter::formatTrace(p.toolpath, p.diags);
     } else if (a.json) {
-      std::string one =
-          converter::checkReportJson(displayName(file), summary, shown, p.drawing ? &*p.drawing : nullptr,
-                                    p.wires.empty() ? nullptr : &p.wires);
+      std::string one = converter::checkReportJson(displayName(file), summary, shown, p.drawing ? &*p.drawing : nullptr,
+                                                   p.wires.empty() ? nullptr : &p.wires);
       while (!one.empty() && one.back() == '\n') one.pop_back();
       if (many)
         jsonArray += (jsonArray.empty() ? "[\n" : ",\n") + one;

@@ -52,7 +52,7 @@ struct ReadOptions {
   std::optional<double> wireOffset;                           ///< --offset, mm
   /// --side: a drawing's closed contours get the wire path at --offset on this side (cam.h).
   std::optional<WireSide> side;
-  std::optional<bool> upperAxesUZ;                            ///< --upper-axes uz
+  std::optional<bool> upperAxesUZ;             ///< --upper-axes uz
   std::optional<double> dxfUnit;               ///< --dxf-units: mm per drawing unit; 0 follows $INSUNITS (dxf.h)
   double chainTolerance = 0.001;               ///< --chain-tolerance: drawing ends this close are joined, mm
   double curveTolerance = 0.001;               ///< drawing curves (SPLINE, ELLIPSE) as biarcs within this, mm

@@ -18,30 +18,6 @@ namespace {
 
 std::string pt(const Vec2& p) { return "(" + formatFixed(p.x(), 3) + ", " + formatFixed(p.y(), 3) + ")"; }
 
-/// The contour as a polygon for inside tests: arcs flattened to within tol.
-std::vector<Vec2> flatten(std::span<const Segment> path, double tol) {
-  std::vector<Vec2> out;
-  for (const Segment& s : path) {
-    out.push_back(s.start);
-    if (!s.isArc()) continue;
-    const double step = 2 * std::acos(std::max(-1.0, 1 - tol / std::max(s.radius, tol)));
-    const auto n = static_cast<int>(std::min(4096.0, std::ceil(std::abs(s.sweep) / std::max(step, 1e-6))));
-    for (int k = 1; k < n; ++k) out.push_back(s.pointAt(static_cast<double>(k) / n));
-  }
-  return out;
-}
-
-bool inside(const std::vector<Vec2>& poly, const Vec2& p) {
-  bool in = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Vec2& a = poly[i];
-    const Vec2& b = poly[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-      in = !in;
-  }
-  return in;
-}
-
 std::vector<Segment> reversedPath(std::span<const Segment> path) {
   std::vector<Segment> r;
   r.reserve(path.size());
@@ -85,15 +61,12 @@ Vec2 rightNormal(const Vec2& t) { return {t.y(), -t.x()}; }
 }  // namespace
 
 std::vector<int> nestingDepths(std::span<const geometry::Chain> contours) {
-  std::vector<std::vector<Vec2>> polys(contours.size());
-  for (std::size_t c = 0; c < contours.size(); ++c)
-    if (contours[c].closed) polys[c] = flatten(contours[c].path, 1e-4);
   std::vector<int> depth(contours.size(), 0);
   for (std::size_t c = 0; c < contours.size(); ++c) {
     if (!contours[c].closed) continue;
     const Vec2 probe = contours[c].path.front().pointAt(0.5);
     for (std::size_t o = 0; o < contours.size(); ++o)
-      if (o != c && !polys[o].empty() && inside(polys[o], probe)) ++depth[c];
+      if (o != c && contours[o].closed && geometry::windingNumber(contours[o].path, probe) != 0) ++depth[c];
   }
   return depth;
 }

@@ -110,59 +110,44 @@ void readDxfPipeline(Pipeline& out, const PipelineOptions& options) {
   path.reading.machine = out.machine.name;
   path.blocks = result.drawing.elements.size();
   geometry::Vec2 at(0, 0);
+  // A rapid to where the next path starts (the first path starts there), then its cuts, each with
+  // the drawing entity it comes from.
+  auto travelTo = [&](const geometry::Vec2& p, const DrawingElement& from) {
+    if (path.moves.empty()) {
+      path.start = p;
+      at = p;
+    }
+    if ((p - at).norm() <= 1e-12) return;
+    Move rapid;
+    rapid.kind = MoveKind::Rapid;
+    rapid.lower = geometry::Segment::line(at, p);
+    rapid.line = from.where;
+    rapid.span = from.span;
+    path.moves.push_back(rapid);
+  };
+  auto cut = [&](const geometry::Segment& s, const DrawingElement& from) {
+    Move m;
+    m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
+    m.lower = s;
+    m.line = from.where;
+    m.span = from.span;
+    path.moves.push_back(m);
+    at = s.end;
+  };
   for (std::size_t ci = 0; ci < result.contours.size(); ++ci) {
     const geometry::Chain& c = result.contours[ci];
     const DrawingElement& first = result.drawing.elements[c.elements.front()];
     if (wired && c.closed) {  // the wire path instead of the contour
       for (const auto& loop : out.wires[ci].loops) {
         if (loop.empty()) continue;
-        if (path.moves.empty()) {
-          path.start = loop.front().segment.start;
-          at = path.start;
-        }
-        if ((loop.front().segment.start - at).norm() > 1e-12) {
-          Move rapid;
-          rapid.kind = MoveKind::Rapid;
-          rapid.lower = geometry::Segment::line(at, loop.front().segment.start);
-          rapid.line = first.where;
-          rapid.span = first.span;
-          path.moves.push_back(rapid);
-        }
-        for (const geometry::WirePiece& piece : loop) {
-          const DrawingElement& e = result.drawing.elements[c.elements[piece.element]];
-          Move m;
-          m.kind = piece.segment.isArc() ? MoveKind::Arc : MoveKind::Line;
-          m.lower = piece.segment;
-          m.line = e.where;
-          m.span = e.span;
-          path.moves.push_back(m);
-        }
-        at = loop.back().segment.end;
+        travelTo(loop.front().segment.start, first);
+        for (const geometry::WirePiece& piece : loop)
+          cut(piece.segment, result.drawing.elements[c.elements[piece.element]]);
       }
       continue;
     }
-    if (path.moves.empty()) {
-      path.start = c.path.front().start;
-      at = path.start;
-    }
-    if ((c.path.front().start - at).norm() > 1e-12) {
-      Move rapid;
-      rapid.kind = MoveKind::Rapid;
-      rapid.lower = geometry::Segment::line(at, c.path.front().start);
-      rapid.line = first.where;
-      rapid.span = first.span;
-      path.moves.push_back(rapid);
-    }
-    for (std::size_t k = 0; k < c.elements.size(); ++k) {
-      const DrawingElement& e = result.drawing.elements[c.elements[k]];
-      Move m;
-      m.kind = c.path[k].isArc() ? MoveKind::Arc : MoveKind::Line;
-      m.lower = c.path[k];
-      m.line = e.where;
-      m.span = e.span;
-      path.moves.push_back(m);
-    }
-    at = c.path.back().end;
+    travelTo(c.path.front().start, first);
+    for (std::size_t k = 0; k < c.elements.size(); ++k) cut(c.path[k], result.drawing.elements[c.elements[k]]);
     if (!c.closed) {
       const DrawingElement& last = result.drawing.elements[c.elements.back()];
       const geometry::Vec2 a = c.path.front().start, b = c.path.back().end;

@@ -151,10 +151,10 @@ namespace {
 json segmentJson(const geometry::Segment& s) {
   json e;
   e["kind"] = s.isArc() ? "arc" : "line";
-  e["start"] = json::array({s.start.x(), s.start.y()});
-  e["end"] = json::array({s.end.x(), s.end.y()});
+  e["start"] = vec(s.start);
+  e["end"] = vec(s.end);
   if (s.isArc()) {
-    e["centre"] = json::array({s.centre.x(), s.centre.y()});
+    e["centre"] = vec(s.centre);
     e["radius"] = s.radius;
     e["sweep"] = s.sweep;
   }
@@ -247,7 +247,7 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
           lost.push_back({{"first", r.first},
                           {"count", r.count},
                           {"uncut", r.uncut},
-                          {"where", json::array({r.where.x(), r.where.y()})},
+                          {"where", vec(r.where)},
                           {"fillet", r.fillet}});
         wj["lost"] = std::move(lost);
         cj["wire"] = std::move(wj);

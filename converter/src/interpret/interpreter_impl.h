@@ -236,7 +236,7 @@ class Interpreter {
   std::unordered_set<char> warnedLetters_;
   std::unordered_set<long> warnedM_;
   std::unordered_set<std::string> notedCodes_;
-  bool warnedOffset_ = false, warnedOffsetUnknown_ = false, warnedWorkOffset_ = false, warnedUz_ = false;
+  bool warnedOffsetUnknown_ = false, warnedWorkOffset_ = false, warnedUz_ = false;
 };
 
 }  // namespace kerf::converter::interp

@@ -69,6 +69,8 @@ struct ExportArgs {
   std::string output;
   MeshOptions mesh;
   bool caps = false;
+  std::string dxfVersion = "r2000";  ///< -o .dxf: r12 or r2000
+  bool rapids = false;               ///< -o .dxf: the rapids too, on layer RAPID
 };
 CLI::App* addExportCommand(CLI::App& app, ExportArgs& args);
 int runExport(const ExportArgs& args);

@@ -1,0 +1,43 @@
+// A toolpath as a DXF drawing (docs/dxf.md, "Writing"): `kerf export part.nc -o part.dxf`, so a
+// verified program goes back to CAD.
+//
+// Layers: LOWER (the wire path on the lower plane: every cut move), UPPER (a taper program's upper
+// contour, at the upper plane's height when the heights are known), PROGRAMMED (where G41/G42 was
+// applied: the contour as programmed, beside the wire-centre path) and, on request, RAPID. Lines are
+// LINE, arcs ARC (DXF arcs run counter-clockwise, so a clockwise move is written from its end
+// angle to its start angle), full circles CIRCLE. Units: millimetres ($INSUNITS 4 in R2000).
+//
+// R12 (AC1009): HEADER, TABLES (LTYPE, LAYER), ENTITIES; no handles. R2000 (AC1015): the full
+// structure a strict reader wants — handles and owners, the nine symbol tables, the model and
+// paper space block records with their BLOCKS, subclass markers, and the OBJECTS section's root
+// dictionary. Both are ASCII with CRLF line ends, as AutoCAD writes them.
+#pragma once
+
+#include "kerf/converter/toolpath.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace kerf::converter {
+
+enum class DxfVersion { R12, R2000 };
+
+/// "r12" / "R12" / "ac1009", "r2000" / "ac1015"; nothing for another name.
+std::optional<DxfVersion> dxfVersionNamed(std::string_view name);
+
+struct DxfWriteOptions {
+  DxfVersion version = DxfVersion::R2000;
+  bool rapids = false;     ///< also the rapids, on layer RAPID
+  bool programmed = true;  ///< where an offset was applied, the programmed contour on PROGRAMMED
+};
+
+struct DxfWriteCounts {
+  std::size_t lines = 0, arcs = 0, circles = 0;
+};
+
+/// The drawing as DXF text. counts (when given) receives what was written.
+std::string writeDxf(const Toolpath& toolpath, const DxfWriteOptions& options, DxfWriteCounts* counts = nullptr);
+
+}  // namespace kerf::converter

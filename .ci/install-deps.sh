@@ -6,7 +6,7 @@
 #                                for the window tests)
 # Skips apt entirely when everything is already installed.
 set -euo pipefail
-packages=(g++ cmake make pkg-config libeigen3-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
+packages=(g++ cmake make pkg-config libeigen3-dev libcli11-dev libmuparser-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libvtk9-dev libglfw3-dev libimgui-dev libstb-dev libgl-dev libosmesa6-dev libegl-dev libegl-mesa0)
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(linuxcnc-uspace python3 python3-ezdxf python3-shapely xvfb xauth)

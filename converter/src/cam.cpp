@@ -145,7 +145,7 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
   std::vector<std::size_t> chosen;
   for (std::size_t c = 0; c < chains.size(); ++c) {
     if (o.contour && *o.contour != c + 1) continue;
-    if (!chains[c].closed) {
+    if (!chains[c].closed && !o.openPaths) {
       if (o.contour)
         diags.error(Code::ContourOpen, source, SourceSpan::wholeFile(),
                     "contour " + std::to_string(c + 1) + " does not close: a wire cannot cut it as a part");
@@ -161,7 +161,8 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
   }
   if (chosen.empty()) {
     if (!o.contour)
-      diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "the drawing has no closed contour to cut");
+      diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "the drawing has no closed contour to cut",
+                  chains.empty() ? std::string() : "--open-paths cuts open contours along the drawing");
     return std::nullopt;
   }
   if (o.entry && chosen.size() > 1) {
@@ -196,6 +197,38 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
     info.side = sideAtDepth(o.side, depth[c]);
     std::vector<Segment> contour = paths[c];
     info.elements = contour.size();
+    if (!chains[c].closed) {  // --open-paths: as drawn, from its first end
+      info.open = true;
+      for (const Segment& s : contour) info.contourLength += s.length();
+      if (o.offset > 0 && !o.controllerOffset) {
+        const DrawingElement& e = drawing.drawing.elements[chains[c].elements.front()];
+        diags.warning(Code::ContourOpen, source, e.span.length ? e.span : SourceSpan::wholeFile(),
+                      "contour " + std::to_string(c + 1) +
+                          " is open: cut along it as drawn, the wire centre on the line, without the offset",
+                      "an open contour has no inside or outside; close it to cut a part");
+      }
+      const Vec2 begin = contour.front().start;
+      if (first) {
+        tp.start = begin;
+        first = false;
+      } else if ((begin - at).norm() > 1e-12) {
+        Move rapid;
+        rapid.kind = MoveKind::Rapid;
+        rapid.lower = Segment::line(at, begin);
+        tp.moves.push_back(rapid);
+      }
+      for (const Segment& s : contour) {
+        Move m;
+        m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
+        m.lower = s;
+        tp.moves.push_back(m);
+        info.wireLength += s.length();
+        result.cutLength += s.length();
+      }
+      at = contour.back().end;
+      result.contours.push_back(info);
+      continue;
+    }
     // Orientation: the wire right of travel unless asked for the left; outside that is counter-clockwise.
     const bool left = o.wireOnLeft.value_or(false);
     const bool wantCcw = (info.side == WireSide::Outside) != left;

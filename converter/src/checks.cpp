@@ -139,6 +139,24 @@ void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const
       seamNote(toolpath, src, mi, mj, p, c.upperPlane ? " on the upper plane" : " on the lower plane", diags);
       continue;
     }
+    // Where the loop comes back to its start smoothly (a T onto the lead-in's end), an arc whose
+    // programmed end lies off its circle (its radius mismatch) or whose end was rounded to the
+    // program's resolution (1 um: 3B's unit, ISO's third decimal) passes the closing point by that
+    // much: a crossing that close to the end of the last move is the loop closing, rounded.
+    constexpr double kResolution = 0.001;  // mm
+    const double slack =
+        std::max({std::abs(moves[mi].radiusError), std::abs(later.radiusError), kResolution}) + options.tolerance;
+    const bool closingCrossing = x.kind == geometry::ContactKind::Crossing && !x.adjacent &&
+                                 (c.segments[x.second].end - x.point).norm() <= slack &&
+                                 closesTheContour(c.segments, x, slack);
+    if (closingCrossing) {
+      diags.report(finding(Severity::Note, Code::LoopClosesInsideMove, src, later, mj, p,
+                           name + " closes its loop at " + at(x.point) + ", where this move meets the move on " +
+                               other + ": it passes the closing point by " +
+                               formatFixed((c.segments[x.second].end - x.point).norm() * 1000, 2) +
+                               " um, within the program's rounding"));
+      continue;
+    }
     switch (x.kind) {
       case geometry::ContactKind::Crossing:
         diags.report(finding(Severity::Error, Code::PathCrossesItself, src, later, mj, p,

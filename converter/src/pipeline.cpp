@@ -2,6 +2,7 @@
 #include "kerf/converter/pipeline.h"
 
 #include "kerf/converter/analysis.h"
+#include "kerf/converter/curve.h"
 #include "kerf/converter/points.h"
 
 #include <cstdio>
@@ -77,14 +78,21 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
 /// A drawing: read, chained into contours, and walked as a toolpath (a rapid to each contour's
 /// start, then its elements) so that summary, explain, pictures and export show it. The wire-path
 /// checks are not run: a drawing is not a program (kerf cam makes one from it).
-void readDxfPipeline(Pipeline& out, const PipelineOptions& options) {
+void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
   const ReadOptions& ro = options.read;
-  DxfOptions o;
-  if (ro.dxfUnit) o.unitToMm = *ro.dxfUnit;
-  o.curveTolerance = ro.curveTolerance;
-  o.maxElements = ro.maxMoves;
   DrawingResult result;
-  result.drawing = readDxf(*out.source, o, out.diags);
+  if (out.format == InputFormat::Curve) {
+    CurveOptions o;
+    o.tolerance = ro.curveTolerance;
+    o.maxSpans = ro.maxMoves;
+    result.drawing = readCurve(*out.source, o, out.diags);
+  } else {
+    DxfOptions o;
+    if (ro.dxfUnit) o.unitToMm = *ro.dxfUnit;
+    o.curveTolerance = ro.curveTolerance;
+    o.maxElements = ro.maxMoves;
+    result.drawing = readDxf(*out.source, o, out.diags);
+  }
   std::vector<geometry::Segment> segments;
   segments.reserve(result.drawing.elements.size());
   for (const DrawingElement& e : result.drawing.elements) segments.push_back(e.segment);
@@ -106,7 +114,7 @@ void readDxfPipeline(Pipeline& out, const PipelineOptions& options) {
     }
   }
   Toolpath& path = out.toolpath;
-  path.format = InputFormat::Dxf;
+  path.format = out.format;
   path.reading.machine = out.machine.name;
   path.blocks = result.drawing.elements.size();
   geometry::Vec2 at(0, 0);
@@ -229,9 +237,9 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   }
   out.read = true;
   out.format = ro.format ? *ro.format : detectFormat(out.source->text()).format;
-  if (out.format == InputFormat::Dxf) {
+  if (out.format == InputFormat::Dxf || out.format == InputFormat::Curve) {
     if (!given) out.machine = *findBuiltinMachine("generic");
-    readDxfPipeline(out, options);
+    readDrawingPipeline(out, options);
     return out;
   }
   if (out.format == InputFormat::ThreeB) {

@@ -3,6 +3,7 @@
 // The 3B rules are FORMATS §4, written out with a worked example in docs/3b.md.
 #include "kerf/converter/read.h"
 
+#include "kerf/converter/curve.h"
 #include "kerf/converter/dxf.h"
 
 #include "kerf/converter/points.h"
@@ -147,7 +148,7 @@ bool arcEnd(const Vec2& startRel, bool ccw, Axis axis, double count, double slac
 // ---- 2. format detection -------------------------------------------------------------------------
 
 const char* inputFormatName(InputFormat f) {
-  return f == InputFormat::ThreeB ? "3b" : f == InputFormat::Dxf ? "dxf" : "iso";
+  return f == InputFormat::ThreeB ? "3b" : f == InputFormat::Dxf ? "dxf" : f == InputFormat::Curve ? "curve" : "iso";
 }
 
 std::optional<InputFormat> parseInputFormat(std::string_view name) {
@@ -156,6 +157,7 @@ std::optional<InputFormat> parseInputFormat(std::string_view name) {
   if (n == "iso") return InputFormat::Iso;
   if (n == "3b") return InputFormat::ThreeB;
   if (n == "dxf") return InputFormat::Dxf;
+  if (n == "curve") return InputFormat::Curve;
   return std::nullopt;
 }
 
@@ -185,6 +187,11 @@ FormatDetection detectFormat(std::string_view text) {
   if (looksLikeDxf(text)) {
     d.format = InputFormat::Dxf;
     d.why = "it starts as a DXF file does";
+    return d;
+  }
+  if (looksLikeCurve(text)) {
+    d.format = InputFormat::Curve;
+    d.why = "it starts with a curve's 'x =', 'y =', 't =' or 'points'";
     return d;
   }
   const std::size_t i = skipBlank(text, 0);

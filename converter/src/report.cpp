@@ -200,6 +200,18 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
     dj["ins_units"] = d.insUnits;
     dj["unit_to_mm"] = d.unitToMm;
     dj["entities"] = d.entities;
+    if (d.curve) {
+      json cj;
+      cj["source"] = d.curve->points ? "points" : "expression";
+      cj["tolerance_mm"] = d.curve->tolerance;
+      cj["t"] = {d.curve->t0, d.curve->t1};
+      cj["max_error_mm"] = d.curve->maxError;
+      json spans = json::array();
+      for (const geometry::BiarcSpan& sp : d.curve->spans)
+        spans.push_back({{"t0", sp.t0}, {"t1", sp.t1}, {"error_mm", sp.error}, {"arcs", sp.count}});
+      cj["spans"] = std::move(spans);
+      dj["curve"] = std::move(cj);
+    }
     dj["skipped"] = d.skipped;
     dj["elements"] = d.elements.size();
     json contours = json::array();

@@ -35,9 +35,20 @@ class Fitter {
   Vec2 tangent(double t) const {
     Vec2 d = c_.derivative ? c_.derivative(t) : Vec2(0, 0);
     if (!c_.derivative || d.norm() < 1e-14) {
-      const double h = 1e-6 * std::max(1e-12, c_.t1 - c_.t0);
-      const double a = std::max(c_.t0, t - h), b = std::min(c_.t1, t + h);
-      d = c_.point(b) - c_.point(a);
+      // Central differences inside; at the ends of the range (the curve may not exist beyond
+      // them) the one-sided second-order formula, so that the end tangents are as exact as the
+      // inner ones and a closed curve's seam has no corner.
+      const double range = std::max(1e-12, c_.t1 - c_.t0);
+      const double h = 1e-6 * range;
+      if (t - h < c_.t0) {
+        const double k = 1e-5 * range;
+        d = 4.0 * c_.point(t + k) - 3.0 * c_.point(t) - c_.point(t + 2 * k);
+      } else if (t + h > c_.t1) {
+        const double k = 1e-5 * range;
+        d = 3.0 * c_.point(t) - 4.0 * c_.point(t - k) + c_.point(t - 2 * k);
+      } else {
+        d = c_.point(t + h) - c_.point(t - h);
+      }
     }
     return unit(d);
   }

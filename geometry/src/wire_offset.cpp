@@ -321,8 +321,14 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
     used[cur] = true;
     append(path, subs[cur], lastRaw, lastT0, lastT1);
     for (;;) {
-      if (options.closed && path.size() > 1 && (subs[cur].seg.end - subs[first].seg.start).norm() <= link) break;
       const std::optional<std::size_t> next = following(cur);
+      // Close the loop where it came round, unless a piece starts nearer the end than the loop's
+      // own start does (a corner arc shorter than the link tolerance would otherwise be left
+      // over as a loop of its own).
+      if (options.closed && path.size() > 1) {
+        const double home = (subs[cur].seg.end - subs[first].seg.start).norm();
+        if (home <= link && (!next || home <= (subs[*next].seg.start - subs[cur].seg.end).norm())) break;
+      }
       if (!next) break;
       cur = *next;
       used[cur] = true;

@@ -1,7 +1,7 @@
 # Runs `kerf check FILE` and requires exit code 1 and the diagnostic written on FILE's first
 # line (after "; "; a DXF file: its second line, in a 999 comment) in its standard error, prefixed with the file name.
 #   cmake -DKERF=... -DFILE=... -DWORKDIR=... -P expect_diagnostic.cmake
-# A DXF file states it in a `999` comment instead: its second line.
+# A DXF file states it in a `999` comment instead: its second line. A curve file, after "# ".
 file(READ "${FILE}" head LIMIT 1000)
 if(FILE MATCHES "\\.dxf$")
   string(FIND "${head}" "\n" eol)

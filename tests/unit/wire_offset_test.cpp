@@ -111,6 +111,18 @@ TEST(WireOffset, ACircleGrowsAndShrinksAndVanishesWhenSmallerThanTheWire) {
   ASSERT_EQ(gone.lost.size(), 1u);
 }
 
+TEST(WireOffset, ACornerArcShorterThanTheLinkToleranceAtTheSeamStaysInTheLoop) {
+  // A square whose first side leaves the start point 1e-5 rad off the last side's direction (a
+  // closed curve fitted with biarcs has such a seam): the corner arc there is 5e-6 mm long, well
+  // inside the linking tolerance, and must not be left over as a loop of its own.
+  const std::vector<Vec2> v{{5, 0}, {10, 5e-5}, {10, 10}, {0, 10}, {0, 0}};
+  std::vector<Segment> sq;
+  for (std::size_t k = 0; k < v.size(); ++k) sq.push_back(Segment::line(v[k], v[(k + 1) % v.size()]));
+  const auto out = wireOffset(sq, -0.5);
+  ASSERT_EQ(out.paths.size(), 1u);
+  EXPECT_NEAR(signedArea(segments(out.paths[0])), 100 + 4 * 10 * 0.5 + std::numbers::pi * 0.25, 1e-3);
+}
+
 TEST(WireOffset, ASlotNarrowerThanTheWireDisappearsAndIsNamed) {
   // A die 20 x 10 with a slot 0.2 wide and 4 long out of its top edge; wire offset 0.15 inside.
   const auto die = polygon({{0, 0}, {20, 0}, {20, 10}, {10.1, 10}, {10.1, 14}, {9.9, 14}, {9.9, 10}, {0, 10}});

@@ -45,6 +45,10 @@ CLI::App* addCamCommand(CLI::App& app, CamArgs& a) {
                   "travel round an outside contour: ccw (default: the wire on the right, G42) or cw")
       ->check(CLI::IsMember({"cw", "ccw"}))
       ->group(group);
+  cmd->add_flag("--open-paths", a.openPaths,
+                "also cut open contours (a --curve, a profile from the stock's edge) along the drawing, from their "
+                "first end, without the offset")
+      ->group(group);
   cmd->add_option("--shift", a.shift, "move the drawing by DX,DY mm first")->group(group);
   cmd->add_option("--decimals", a.decimals, "iso, polar: digits after the point (default: the machine's)")
       ->check(CLI::Range(0, 6))
@@ -87,7 +91,7 @@ int runCam(const CamArgs& a) {
   const std::optional<geometry::Vec2> shift = point(a.shift, "--shift", ok);
   if (!ok) return kExitUsage;
   const bool controller = a.offsetBy == "controller";
-  if (!controller && !c.reading.offset) {
+  if (!controller && !c.reading.offset && !a.openPaths) {
     reportError("cam needs --offset R (the wire radius plus the spark gap, mm), or --offset-by controller");
     return kExitUsage;
   }
@@ -99,9 +103,9 @@ int runCam(const CamArgs& a) {
   std::optional<Loaded> in = load(readOptions, c.input.files.front());
   if (!in) return kExitUsage;
   const Pipeline& p = in->pipeline;
-  if (p.format != InputFormat::Dxf || !p.drawing) {
+  if (!p.drawing) {
     printDiagnostics(p.diags, c);
-    reportError("cam makes a program from a drawing (DXF); this file reads as " +
+    reportError("cam makes a program from a drawing (DXF) or a curve; this file reads as " +
                 std::string(inputFormatName(p.format)) + " (kerf convert writes a program for another machine)");
     return kExitUsage;
   }
@@ -120,6 +124,7 @@ int runCam(const CamArgs& a) {
   o.start = start;
   o.entry = entry;
   o.leadIn = a.leadIn;
+  o.openPaths = a.openPaths;
   if (a.direction) o.wireOnLeft = *a.direction == "cw";
   if (shift) o.shift = *shift;
   Diagnostics camDiags(100000);
@@ -194,9 +199,15 @@ int runCam(const CamArgs& a) {
     return kExitUsage;
   }
   for (const CamContour& k : made->contours)
-    std::cerr << "kerf: contour " << k.number << ": " << (k.side == WireSide::Outside ? "outside" : "inside") << ", "
-              << k.elements << " elements, " << mm(k.contourLength) << " mm, area " << mm(k.area) << " mm²"
-              << (controller ? ", offset by the controller" : ", wire path " + mm(k.wireLength) + " mm") << "\n";
+    std::cerr << "kerf: contour " << k.number << ": "
+              << (k.open                        ? "open, as drawn"
+                  : k.side == WireSide::Outside ? "outside"
+                                                : "inside")
+              << ", " << k.elements << " elements, " << mm(k.contourLength) << " mm, area " << mm(k.area) << " mm²"
+              << (k.open       ? std::string()
+                  : controller ? ", offset by the controller"
+                               : ", wire path " + mm(k.wireLength) + " mm")
+              << "\n";
   std::cerr << "kerf: wrote " << out->what << " to " << (a.output == "-" ? std::string("standard output") : a.output)
             << out->detail << readBack << (readable ? "" : "; this format is not read back") << "\n";
   return kExitOk;

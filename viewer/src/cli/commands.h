@@ -104,6 +104,7 @@ struct CamArgs {
   bool compact = false;
   std::string end = "dd";
   std::optional<std::size_t> maxPoints;
+  bool openPaths = false;
 };
 CLI::App* addCamCommand(CLI::App& app, CamArgs& args);
 int runCam(const CamArgs& args);

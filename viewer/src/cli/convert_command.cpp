@@ -17,7 +17,7 @@ namespace kerf::cli {
 CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
   CLI::App* cmd = app.add_subcommand("convert", "write the program for another controller");
   addCommonOptions(*cmd, a.common, false);
-  cmd->get_option("file")->required(false);  // not with --list
+  a.common.input.fileRequired = false;  // not with --list
   std::vector<std::string> names;
   for (const converter::Emitter& e : converter::emitters()) names.emplace_back(e.name);
   cmd->add_flag("--list", a.list, "list the output formats and exit")->group("Output");

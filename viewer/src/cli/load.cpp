@@ -28,7 +28,9 @@ std::optional<Loaded> load(const CommonOptions& options, const std::string& file
     reportError(error);
     return std::nullopt;
   }
-  std::optional<std::string> text = readTextFile(file, converter::SourceFile::kMaxSize, error);
+  const bool curve = options.input.curve && file == kCurveInput;
+  std::optional<std::string> text = curve ? std::optional<std::string>(curveText(options.input))
+                                          : readTextFile(file, converter::SourceFile::kMaxSize, error);
   if (!text) {
     reportError(error);
     return std::nullopt;
@@ -42,12 +44,12 @@ std::optional<Loaded> load(const CommonOptions& options, const std::string& file
     }
     upper = converter::SourceText{*options.input.upper, std::move(*upperText)};
   }
-  Loaded out{converter::runPipeline({displayName(file), std::move(*text)}, po, std::move(upper)), {}};
+  Loaded out{converter::runPipeline({curve ? file : displayName(file), std::move(*text)}, po, std::move(upper)), {}};
   if (!out.pipeline.read) {
     printDiagnostics(out.pipeline.diags, options);
     return std::nullopt;
   }
-  out.inputs.push_back(file);
+  if (!curve) out.inputs.push_back(file);
   if (options.input.upper) out.inputs.push_back(*options.input.upper);
   if (po.read.machineFile) out.inputs.push_back(po.read.machineFile->name);
   return out;

@@ -25,10 +25,26 @@ std::vector<std::string> builtinMachineNames() {
 
 void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
   // Input.
+  // The file is required unless --curve stands in for it (checked once everything is parsed).
   if (manyFiles)
-    cmd.add_option("files", o.input.files, "NC programs ('-' reads standard input)")->required();
+    cmd.add_option("files", o.input.files, "NC programs ('-' reads standard input)");
   else
-    cmd.add_option("file", o.input.files, "NC program ('-' reads standard input)")->required()->expected(1);
+    cmd.add_option("file", o.input.files, "NC program ('-' reads standard input)")->expected(0, 1);
+  cmd.add_option("--curve", o.input.curve,
+                 "a curve instead of a file: \"x = EXPR; y = EXPR\" of the parameter t (muparser), fitted with "
+                 "biarcs (docs/cam.md)")
+      ->group("Input");
+  cmd.add_option("--t", o.input.range, "the curve's range FROM:TO (expressions, e.g. 0:2*pi)")->group("Input");
+  cmd.final_callback([&o, manyFiles] {
+    if (o.input.curve) {
+      if (!o.input.files.empty()) throw CLI::ValidationError("--curve", "give a file or --curve, not both");
+      o.input.files = {kCurveInput};
+    } else if (o.input.range) {
+      throw CLI::ValidationError("--t", "--t is the range of a --curve");
+    } else if (o.input.files.empty() && o.input.fileRequired) {
+      throw CLI::RequiredError(manyFiles ? "files" : "file");
+    }
+  });
   cmd.add_option("--upper", o.input.upper, "two-file input: the upper contour's program, paired move by move")
       ->group("Input");
   cmd.add_option("--machine", o.input.machine,
@@ -39,7 +55,7 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
   // Reading: what the words mean.
   const std::string reading = "Reading (default: the machine profile's, else the program's evidence)";
   cmd.add_option("--format", o.reading.format, "input format; auto: detected from the content (docs/formats.md)")
-      ->check(CLI::IsMember({"auto", "iso", "3b", "dxf"}))
+      ->check(CLI::IsMember({"auto", "iso", "3b", "dxf", "curve"}))
       ->group(reading);
   cmd.add_option("--start", o.reading.start, "where a 3B program starts, X,Y in mm (default 0,0)")->group(reading);
   cmd.add_option("--polar-x", o.reading.polarX,
@@ -50,6 +66,10 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
                  "a DXF drawing's unit: file (the default: as its $INSUNITS says, unitless read as mm), or mm or in "
                  "whatever it says (docs/dxf.md)")
       ->check(CLI::IsMember({"mm", "in", "file"}))
+      ->group(reading);
+  cmd.add_option("--curve-tolerance", o.reading.curveTolerance,
+                 "curves (--curve, a .curve file, DXF SPLINE and ELLIPSE) as biarcs within this, mm (default 0.001)")
+      ->check(CLI::Range(1e-6, 10.0))
       ->group(reading);
   cmd.add_option("--chain-tolerance", o.reading.chainTolerance,
                  "a DXF drawing's element ends this close (mm) are one point of a contour (default 0.001)")
@@ -135,6 +155,12 @@ bool sizeOption(const std::string& text, int& w, int& h) {
   return false;
 }
 
+std::string curveText(const InputOptions& input) {
+  std::string text = input.curve.value_or("");
+  if (input.range) text += "; t = " + *input.range;
+  return text;
+}
+
 bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, std::string& error) {
   using namespace converter;
   ReadOptions& r = out.read;
@@ -170,6 +196,8 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
   if (o.reading.polarFrame) r.polarFrameTable = *o.reading.polarFrame == "table";
   if (o.reading.dxfUnits) r.dxfUnit = *o.reading.dxfUnits == "mm" ? 1.0 : *o.reading.dxfUnits == "in" ? 25.4 : 0.0;
   if (o.reading.chainTolerance) r.chainTolerance = *o.reading.chainTolerance;
+  if (o.reading.curveTolerance) r.curveTolerance = *o.reading.curveTolerance;
+  if (o.input.curve && o.reading.format == "auto") r.format = InputFormat::Curve;
   if (o.reading.integerUnit)
     r.integerUnit = *o.reading.integerUnit == "um" ? IntegerUnit::Micrometre : IntegerUnit::Millimetre;
   if (o.reading.arcCentre) r.arcCentre = parseArcCentre(*o.reading.arcCentre);

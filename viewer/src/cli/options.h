@@ -20,7 +20,17 @@ struct InputOptions {
   std::vector<std::string> files;      ///< "-" is standard input
   std::optional<std::string> upper;    ///< --upper: two-file input
   std::optional<std::string> machine;  ///< --machine NAME or FILE
+  /// --curve "x=…; y=…" and --t A:B: a curve (converter/curve.h) instead of a file; files then
+  /// holds kCurveInput.
+  std::optional<std::string> curve, range;
+  bool fileRequired = true;  ///< false: the command runs without one (kerf convert --list)
 };
+
+/// The name a --curve input goes by (in files and in diagnostics).
+inline constexpr const char* kCurveInput = "--curve";
+
+/// The text a --curve input reads as: the statements of --curve, then "; t = " --t.
+std::string curveText(const InputOptions& input);
 
 /// What the program means (docs/machines.md: options first, then the profile, then the evidence).
 struct ReadingOptions {
@@ -30,6 +40,7 @@ struct ReadingOptions {
   std::optional<std::string> polarFrame;   ///< tool | table (the G12.1 frame)
   std::optional<std::string> dxfUnits;     ///< mm | in | file (DXF drawings)
   std::optional<double> chainTolerance;    ///< mm (DXF drawings)
+  std::optional<double> curveTolerance;    ///< mm (curves, SPLINE, ELLIPSE as biarcs)
   std::optional<std::string> integerUnit;  ///< mm | um
   std::optional<std::string> arcCentre;    ///< incremental | reversed | absolute
   std::optional<double> offset;            ///< --offset, mm

@@ -63,12 +63,16 @@ struct CamOptions {
   std::optional<bool> wireOnLeft;                 ///< nothing: the wire right of travel (G42)
   geometry::Vec2 shift = geometry::Vec2::Zero();  ///< added to every point of the drawing
   double tolerance = 1e-6;                        ///< mm
+  /// Open contours too (a curve, a profile cut from the stock's edge): cut along them as drawn,
+  /// from their first end, the wire centre on the line (an open contour has no inside or outside).
+  bool openPaths = false;
 };
 
 struct CamContour {
   std::size_t number = 0;  ///< 1-based contour number in the drawing
   int depth = 0;           ///< how many other contours enclose it
   WireSide side = WireSide::Outside;
+  bool open = false;         ///< cut along as drawn (CamOptions::openPaths)
   std::size_t elements = 0;  ///< contour elements cut
   double contourLength = 0.0, area = 0.0;
   double wireLength = 0.0;  ///< length of the wire path (the contour itself with controllerOffset)

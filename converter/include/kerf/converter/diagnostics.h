@@ -45,6 +45,8 @@ enum class Code : std::uint16_t {
   InsideCornerRadius = 127,
   WirePathSplits = 128,
   WireOffsetRefused = 129,
+  CurveSyntax = 130,
+  CurveFit = 131,
   // Words and modal state
   UnknownGCode = 201,
   UnknownMCode = 202,

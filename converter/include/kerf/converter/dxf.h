@@ -14,11 +14,13 @@
 
 #include "kerf/converter/diagnostics.h"
 #include "kerf/converter/source.h"
+#include "kerf/geometry/biarc.h"
 #include "kerf/geometry/chain.h"
 #include "kerf/geometry/segment.h"
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,8 +52,18 @@ struct DrawingElement {
   SourceSpan span;          ///< ASCII: the entity's type name; binary: empty
 };
 
+/// A curve read by readCurve (curve.h): how its biarcs came out.
+struct FittedCurve {
+  bool points = false;                     ///< a point list (else a parametric curve)
+  double tolerance = 0.0;                  ///< mm, asked for
+  double t0 = 0.0, t1 = 0.0;               ///< the parameter range (a point list: 0 to 1)
+  std::vector<geometry::BiarcSpan> spans;  ///< nodes t0 < t1 and each span's sampled error
+  double maxError = 0.0;                   ///< mm
+};
+
 struct Drawing {
-  std::string version;  ///< $ACADVER: AC1009 (R12) ... AC1032
+  std::optional<FittedCurve> curve;  ///< set for a curve (curve.h), not for a DXF file
+  std::string version;               ///< $ACADVER: AC1009 (R12) ... AC1032
   bool binary = false;
   int insUnits = 0;       ///< $INSUNITS as written (0: unitless or absent)
   double unitToMm = 1.0;  ///< the scale applied

@@ -16,6 +16,7 @@ enum class InputFormat : std::uint8_t {
   Iso,     ///< ISO 6983 G-code, in any machine's dialect
   ThreeB,  ///< Chinese fast-wire 3B code: `B x B y B J G Z`
   Dxf,     ///< a DXF drawing (dxf.h): its contours, not a wire path
+  Curve,   ///< a curve (curve.h): an expression or a point list, fitted with biarcs; a drawing too
 };
 
 enum class MoveKind : std::uint8_t { Rapid, Line, Arc };

@@ -347,4 +347,23 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   return out;
 }
 
+std::vector<geometry::Segment> referenceGeometry(const Pipeline& p) {
+  std::vector<geometry::Segment> out;
+  if (p.drawing && !p.wires.empty()) {
+    for (std::size_t c = 0; c < p.drawing->contours.size() && c < p.wires.size(); ++c)
+      if (p.drawing->contours[c].closed)
+        out.insert(out.end(), p.drawing->contours[c].path.begin(), p.drawing->contours[c].path.end());
+    return out;
+  }
+  const Toolpath& tp = p.toolpath;
+  for (std::size_t i = 0; i < tp.programmed.size() && i < tp.offsetRole.size(); ++i) {
+    if (tp.offsetRole[i] == OffsetRole::Corner || !tp.moves[i].isCut()) continue;
+    const geometry::Segment& s = tp.programmed[i];
+    // One programmed move split over several applied pieces is drawn once.
+    if (!out.empty() && out.back().start == s.start && out.back().end == s.end) continue;
+    out.push_back(s);
+  }
+  return out;
+}
+
 }  // namespace kerf::converter

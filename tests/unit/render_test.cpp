@@ -166,6 +166,31 @@ TEST_F(Headless, top_view_puts_the_contour_where_the_camera_says) {
   }
 }
 
+TEST_F(Headless, the_reference_geometry_is_drawn_dashed_beside_the_path_and_can_be_hidden) {
+  const Part p = analyse(kRectangle);
+  // The rectangle 2 mm inside the path, as the drawing a wire path was made from.
+  const std::vector<geometry::Segment> ref{
+      geometry::Segment::line({2, 2}, {18, 2}), geometry::Segment::line({18, 2}, {18, 8}),
+      geometry::Segment::line({18, 8}, {2, 8}), geometry::Segment::line({2, 8}, {2, 2})};
+  const render::Scene s = render::buildScene(p.toolpath, p.diags->all(), {}, ref);
+  ASSERT_EQ(s.reference.moveFirst.size(), 2u);
+  EXPECT_EQ(s.reference.vertices.size(), 8u);  // four lines, two vertices each
+  constexpr int w = 200, h = 120;
+  render::RenderOptions o;
+  o.triad = false;
+  o.markers = false;
+  auto magenta = [](const std::vector<std::uint8_t>& px) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i + 3 < px.size(); i += 4) n += px[i] > 150 && px[i + 1] < 120 && px[i + 2] > 100;
+    return n;
+  };
+  const std::size_t shown = magenta(drawTop(s, w, h, o));
+  o.reference = false;
+  const std::size_t hidden = magenta(drawTop(s, w, h, o));
+  EXPECT_GT(shown, 100u);  // dashes along 44 mm of lines
+  EXPECT_EQ(hidden, 0u);
+}
+
 /// Pixels that are not the background (250, 250, 250).
 std::size_t drawnPixels(const std::vector<std::uint8_t>& px) {
   std::size_t n = 0;

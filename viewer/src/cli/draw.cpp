@@ -17,6 +17,11 @@ ui::Annotation annotationOf(const std::string& input, const converter::Pipeline&
       std::to_string(tp.moves.size()) + " moves | " +
       (errors ? std::to_string(errors) + (errors == 1 ? " error" : " errors") : std::string("no errors")) +
       (warnings ? ", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") : std::string());
+  // The wire path drawn beside what it was made from (converter::referenceGeometry).
+  if (p.drawing && !p.wires.empty())
+    a.subtitle += " | wire path; dashed: the drawing";
+  else if (!tp.programmed.empty())
+    a.subtitle += " | wire centre; dashed: as programmed";
   return a;
 }
 

@@ -53,7 +53,8 @@ int runRender(const RenderArgs& a) {
   std::optional<Loaded> in = loadOne(a.common);
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh));
+  const std::vector<geometry::Segment> reference = converter::referenceGeometry(p);
+  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), reference);
   request.annotation = annotationOf(file, p);
   request.annotation.legend = request.options.colourBySlope;
   request.annotation.labels = a.highlight;

@@ -39,7 +39,8 @@ int runView(const ViewArgs& a) {
   std::optional<Loaded> in = loadOne(a.common);
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh));
+  request.reference = converter::referenceGeometry(p);
+  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), request.reference);
   request.source = p.source.get();
   request.toolpath = &p.toolpath;
   request.findings = p.diags.all();

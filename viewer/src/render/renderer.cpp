@@ -208,7 +208,7 @@ bool Renderer::init(std::string& error) {
 
 void Renderer::releaseBuffers() {
   const GlApi& g = gl();
-  for (Buffer* b : {&surface_, &lower_, &upper_, &generators_, &rapids_, &markers_}) {
+  for (Buffer* b : {&surface_, &lower_, &upper_, &generators_, &rapids_, &reference_, &markers_}) {
     if (b->vbo) g.DeleteBuffers(1, &b->vbo);
     if (b->vao) g.DeleteVertexArrays(1, &b->vao);
     *b = Buffer{};
@@ -253,8 +253,11 @@ void Renderer::setScene(const Scene& scene) {
                         reinterpret_cast<void*>(offsetof(SurfaceVertex, slopeDegrees)));
   g.EnableVertexAttribArray(3);
   g.VertexAttribIPointer(3, 1, GL_UNSIGNED_INT, stride, reinterpret_cast<void*>(offsetof(SurfaceVertex, flags)));
-  const std::pair<Buffer*, const LineSet*> sets[] = {
-      {&lower_, &scene.lower}, {&upper_, &scene.upper}, {&generators_, &scene.generators}, {&rapids_, &scene.rapids}};
+  const std::pair<Buffer*, const LineSet*> sets[] = {{&lower_, &scene.lower},
+                                                     {&upper_, &scene.upper},
+                                                     {&generators_, &scene.generators},
+                                                     {&rapids_, &scene.rapids},
+                                                     {&reference_, &scene.reference}};
   for (const auto& [buffer, set] : sets) {
     upload(buffer->vao, buffer->vbo, set->vertices);
     buffer->count = set->vertices.size();
@@ -362,6 +365,9 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
   const float w = options.lineWidth;
   if (options.generators) drawLines(generators_, 0, generators_.count, viewProj, 1.0f, 0.0f, width, height, nullptr);
   if (options.rapids) drawLines(rapids_, 0, rapids_.count, viewProj, 1.2f, 5.0f, width, height, nullptr);
+  if (options.reference && reference_.count)
+    drawLines(reference_, 0, reference_.count, viewProj, std::max(1.0f, 0.75f * options.lineWidth), 4.0f, width, height,
+              nullptr);
   if (options.contours) {
     drawLines(lower_, 0, lower_.count, viewProj, w, 0.0f, width, height, nullptr);
     drawLines(upper_, 0, upper_.count, viewProj, w, 0.0f, width, height, nullptr);

@@ -20,6 +20,7 @@ constexpr std::uint32_t kLowerColour = rgba(20, 70, 160);
 constexpr std::uint32_t kUpperColour = rgba(200, 90, 20);
 constexpr std::uint32_t kGeneratorColour = rgba(70, 75, 90, 70);
 constexpr std::uint32_t kRapidColour = rgba(110, 110, 110, 200);
+constexpr std::uint32_t kReferenceColour = rgba(200, 60, 150, 230);  // the drawing: magenta, dashed
 
 std::array<float, 3> toFloat(const Vec3& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
@@ -86,7 +87,7 @@ CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOption
 }
 
 Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter::Diagnostic> findings,
-                 const SceneOptions& options) {
+                 const SceneOptions& options, std::span<const geometry::Segment> reference) {
   Scene scene;
   scene.taper = toolpath.isTaper();
   scene.moves = toolpath.moves.size();
@@ -199,6 +200,9 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
   }
   for (LineSet* set : {&scene.lower, &scene.upper, &scene.generators, &scene.rapids})
     set->moveFirst.push_back(static_cast<std::uint32_t>(set->vertices.size()));
+  scene.reference.moveFirst.push_back(0);
+  for (const Segment& s : reference) addSegment(scene.reference, s, planes.lower, sampling, kReferenceColour, scratch);
+  scene.reference.moveFirst.push_back(static_cast<std::uint32_t>(scene.reference.vertices.size()));
 
   scene.start = {toolpath.start.x(), toolpath.start.y(), planes.lower};
   // Bounds of everything drawn.
@@ -209,7 +213,7 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     hi = hi.cwiseMax(v);
   };
   for (const auto& v : scene.surface) grow(v.position);
-  for (const LineSet* set : {&scene.lower, &scene.upper, &scene.rapids})
+  for (const LineSet* set : {&scene.lower, &scene.upper, &scene.rapids, &scene.reference})
     for (const auto& v : set->vertices) grow(v.position);
   lo.z() = std::min(lo.z(), planes.lower);
   hi.z() = std::max(hi.z(), planes.upper);

@@ -157,6 +157,11 @@ void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
   ImGui::Checkbox("generators", &s.options.generators);
   ImGui::SameLine();
   ImGui::Checkbox("rapids", &s.options.rapids);
+  if (!s.request->reference.empty()) {
+    ImGui::SameLine();
+    ImGui::Checkbox("drawing", &s.options.reference);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("what the wire path was made from (dashed)");
+  }
   ImGui::Checkbox("colour by slope", &s.options.colourBySlope);
   ImGui::Checkbox("highlight findings", &s.options.highlightFindings);
   if (ImGui::Button("fit")) s.camera = s.fitted;
@@ -299,7 +304,7 @@ bool runWindow(const WindowRequest& request, std::string& error) {
           render::SceneOptions so = request.sceneOptions;
           so.tolerance = std::max(so.tolerance, 0.5 * s.fitted.mmPerPixel(viewH));
           so.minTaperPieces = 1;
-          coarse = render::buildScene(*request.toolpath, request.findings, so);
+          coarse = render::buildScene(*request.toolpath, request.findings, so, request.reference);
           if (!coarseRenderer.init(error)) {
             ok = false;
             break;

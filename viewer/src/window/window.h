@@ -19,6 +19,7 @@ struct WindowRequest {
   const converter::SourceFile* source = nullptr;
   const converter::Toolpath* toolpath = nullptr;
   std::vector<converter::Diagnostic> findings;
+  std::vector<geometry::Segment> reference;  ///< converter::referenceGeometry: drawn beside the path
   const render::Scene* scene = nullptr;
   render::SceneOptions sceneOptions;  ///< what `scene` was built with (the coarse level starts from it)
   bool coarseFrames = false;          ///< draw every frame at the coarse level (benchmarks what orbiting costs)

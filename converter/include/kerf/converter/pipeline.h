@@ -93,6 +93,11 @@ struct Pipeline {
   bool read = false;
 };
 
+/// The geometry the wire path was made from, where the two differ: a drawing's closed contours
+/// under --offset (the toolpath is their wire path), a program's contour as written where G41/G42
+/// was applied (each programmed move once). Empty otherwise. Pictures draw it beside the path.
+std::vector<geometry::Segment> referenceGeometry(const Pipeline& pipeline);
+
 /// Reads, interprets and checks `input` (with `upper` as the upper contour's program: two-file
 /// input). Never throws on bad input: problems are diagnostics.
 Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::optional<SourceText> upper = {});

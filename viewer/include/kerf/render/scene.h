@@ -66,6 +66,9 @@ struct Scene {
   std::vector<SurfaceVertex> surface;  ///< triangles, three vertices each (flat per patch, unshared)
   std::vector<std::uint32_t> triangleMove;
   LineSet lower, upper, generators, rapids;
+  /// What the wire path was made from (converter::referenceGeometry): a drawing's contours, a
+  /// program's contour under G41/G42, on the lower plane. One "move" (moveFirst {0, size}).
+  LineSet reference;
   std::vector<Marker> findings;
   geometry::Vec3 start{0, 0, 0};
   geometry::Vec3 boundsMin{0, 0, 0}, boundsMax{0, 0, 0};
@@ -88,8 +91,9 @@ CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOption
 
 /// Builds the scene. findings are the check's diagnostics; those with a point become markers
 /// (errors red, warnings amber, notes blue if noteMarkers) and those with a move flag that move's surface.
+/// reference (may be empty) is drawn beside the path: the geometry it was made from.
 Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter::Diagnostic> findings,
-                 const SceneOptions& options = {});
+                 const SceneOptions& options = {}, std::span<const geometry::Segment> reference = {});
 
 /// The planes a toolpath is drawn between (taper: its own; 2-axis: lower .. lower + display height).
 geometry::Planes displayPlanes(const converter::Toolpath& toolpath, double displayHeight);

@@ -337,9 +337,24 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   const bool taper = toolpath.isTaper();
   const double zLower = taper ? toolpath.heights.planes.lower : 0.0;
 
-  // Rapids between the first and the last cut.
+  // Rapids between the first and the last cut: a warning, unless the wire may be cut and threaded
+  // again between the cuts on either side (M00, M01 or the profile's rethread codes).
+  std::size_t previousCut = path.moveIndex.front();
   for (std::size_t i = path.moveIndex.front(); i < path.moveIndex.back(); ++i) {
-    if (moves[i].isCut()) continue;
+    if (moves[i].isCut()) {
+      previousCut = i;
+      continue;
+    }
+    std::size_t nextCut = i + 1;
+    while (nextCut < moves.size() && !moves[nextCut].isCut()) ++nextCut;
+    const auto stop = std::upper_bound(toolpath.stops.begin(), toolpath.stops.end(), previousCut);
+    if (stop != toolpath.stops.end() && *stop <= nextCut) {
+      if (i == previousCut + 1)
+        diags.report(finding(Severity::Note, Code::RapidInsideCut, src, moves[i], i, at3(moves[i].lower.end, zLower),
+                             "the wire goes to a new start hole: a stop (M00, M01 or the machine's rethread code) "
+                             "lies between the cuts, where the wire is cut and threaded again"));
+      continue;
+    }
     diags.report(finding(Severity::Warning, Code::RapidInsideCut, src, moves[i], i, at3(moves[i].lower.end, zLower),
                          "rapid move between cuts: a point-driven controller would cut along it",
                          "wire programs usually thread the wire again (M-code) at a new start hole"));

@@ -167,9 +167,20 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
   if (colon) w.block("G141");
   double feed = 0.0;
   std::size_t written = 0;
+  // Between contours (a rapid after a cut, with cuts to come) the wire is cut before the rapid and
+  // threaded again after it, as the profile writes it (write_wire_cut, write_wire_thread).
+  std::size_t lastCut = 0;
+  bool anyCut = false;
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i)
+    if (toolpath.moves[i].isCut()) lastCut = i, anyCut = true;
+  bool rethread = false;  // the wire was cut: thread it before the next cut
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     const Move& m = toolpath.moves[i];
     std::string words;
+    if (rethread && m.isCut()) {
+      for (const std::string& b : target.writeWireThread) w.block(expand(b, "", start));
+      rethread = false;
+    }
     if (m.wireOffset != offset) {
       if (m.wireOffset == WireOffset::Off && !target.writeCancel.empty()) {
         cancel();
@@ -182,6 +193,10 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
       offset = m.wireOffset;
     }
     const bool rapid = m.kind == MoveKind::Rapid;
+    if (rapid && anyCut && i > 0 && toolpath.moves[i - 1].isCut() && i < lastCut) {
+      for (const std::string& b : target.writeWireCut) w.block(expand(b, "", start));
+      rethread = true;
+    }
     words += w.motion(m.lower, rapid, 'X', 'Y');
     if (taper) {
       const Segment& u = toolpath.upper[i];

@@ -51,6 +51,7 @@ const char* codeEffectName(CodeEffect e) {
     case CodeEffect::Thickness: return "thickness";
     case CodeEffect::Guides: return "guides";
     case CodeEffect::ProgramEnd: return "program-end";
+    case CodeEffect::Rethread: return "rethread";
   }
   return "harmless";
 }
@@ -181,13 +182,14 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       c.note = colon == std::string::npos ? std::string{} : trim(value.substr(colon + 1));
       bool known = false;
       for (CodeEffect e : {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
-                           CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd})
+                           CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread})
         if (effect == codeEffectName(e)) {
           c.effect = e;
           known = true;
         }
       if (!known) {
-        badValue("harmless, not-modelled, position, no-motion, thickness, guides or program-end, then ': note'");
+        badValue(
+            "harmless, not-modelled, position, no-motion, thickness, guides, program-end or rethread, then ': note'");
         continue;
       }
       if (c.note.empty()) {
@@ -253,11 +255,14 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       either(p.writeComment, "no", "yes");
     } else if (key == "write_g") {
       either(p.writeShortG, "G01", "G1");
-    } else if (key == "write_start" || key == "write_offset" || key == "write_cancel" || key == "write_end") {
-      std::vector<std::string>& blocks = key == "write_start"    ? p.writeStart
-                                         : key == "write_offset" ? p.writeOffset
-                                         : key == "write_cancel" ? p.writeCancel
-                                                                 : p.writeEnd;
+    } else if (key == "write_start" || key == "write_offset" || key == "write_cancel" || key == "write_end" ||
+               key == "write_wire_cut" || key == "write_wire_thread") {
+      std::vector<std::string>& blocks = key == "write_start"      ? p.writeStart
+                                         : key == "write_offset"   ? p.writeOffset
+                                         : key == "write_cancel"   ? p.writeCancel
+                                         : key == "write_wire_cut" ? p.writeWireCut
+                                         : key == "write_end"      ? p.writeEnd
+                                                                   : p.writeWireThread;
       blocks.clear();
       std::size_t from = 0;
       while (from <= value.size()) {

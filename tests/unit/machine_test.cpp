@@ -1,6 +1,7 @@
 // Machine profiles: the built-ins, the text format, detection from a program's evidence, and what
 // a profile changes in the reading (through the pipeline every command takes).
 #include "kerf/converter/machine.h"
+#include "kerf/converter/emit.h"
 #include "kerf/converter/pipeline.h"
 #include "kerf/converter/report.h"
 
@@ -222,3 +223,66 @@ TEST(machine_test, a_cut_from_a_register_value_is_an_error_once) {
 }
 
 }  // namespace
+
+TEST(machine_test, a_rapid_between_cuts_is_a_new_start_hole_where_the_wire_may_be_rethreaded) {
+  PipelineOptions generic;
+  generic.read.machine = "generic";
+  const std::string cuts = "G92 X0 Y0\nG01 X10. Y0\nX10. Y10.\nX0 Y0\n";
+  const std::string next = "G00 X20. Y0\n";
+  const std::string more = "G01 X30. Y0\nX30. Y10.\nX20. Y0\nM02\n";
+  auto severityOfRapid = [&](const std::string& text, PipelineOptions o) {
+    const Pipeline p = read(text, o);
+    return has(p, Code::RapidInsideCut) ? first(p, Code::RapidInsideCut).severity : Severity::Error;
+  };
+  // Bare: a point-driven machine would cut along it.
+  EXPECT_EQ(severityOfRapid(cuts + next + more, generic), Severity::Warning);
+  // An M00 or M01 on either side of the rapid: the operator cuts and threads the wire there.
+  EXPECT_EQ(severityOfRapid(cuts + "M00\n" + next + more, generic), Severity::Note);
+  EXPECT_EQ(severityOfRapid(cuts + next + "M01\n" + more, generic), Severity::Note);
+  // A stop before an earlier cut does not count.
+  EXPECT_EQ(severityOfRapid("G92 X0 Y0\nM00\nG01 X10. Y0\nX10. Y10.\nX0 Y0\n" + next + more, generic),
+            Severity::Warning);
+  // A profile's own rethread code counts as the stop does.
+  PipelineOptions own;
+  own.read.machineFile = SourceText{
+      "awt.profile", "name = awt\nsummary = automatic threading\ncode M60 = rethread: cut and thread the wire\n"};
+  EXPECT_EQ(severityOfRapid(cuts + "M60\n" + next + more, own), Severity::Note);
+  // With G41 applied (moves inserted), the stop keeps its place between the contours.
+  PipelineOptions offset = generic;
+  offset.read.wireOffset = 0.1;
+  EXPECT_EQ(severityOfRapid("G92 X-2 Y0\nG41 G01 X0 Y0\nX10. Y0\nX10. Y10.\nX0 Y0\nG40 G01 X-2 Y0\nM00\n" + next +
+                                "M00\nG01 X30. Y0\nX30. Y10.\nX20. Y0\nM02\n",
+                            offset),
+            Severity::Note);
+}
+
+TEST(machine_test, between_contours_the_iso_writer_cuts_and_threads_the_wire_as_the_profile_says) {
+  PipelineOptions generic;
+  generic.read.machine = "generic";
+  const Pipeline two =
+      read("G92 X0 Y0\nG01 X10. Y0\nX10. Y10.\nX0 Y0\nG00 X20. Y0\nG01 X30. Y0\nX30. Y10.\nX20. Y0\nM02\n", generic);
+  auto written = [&](const MachineProfile& target) {
+    EmitRequest request;
+    request.target = &target;
+    Diagnostics d(100);
+    const std::optional<EmitOutput> out = findEmitter("iso")->write(two.toolpath, two.source.get(), request, d);
+    return out ? out->text : std::string();
+  };
+  // The generic profile: M00 before the rapid and after it (the operator's stop).
+  const std::string g = written(*findBuiltinMachine("generic"));
+  EXPECT_NE(g.find("X0.000 Y0.000\nM00\nG00 X20.000 Y0.000\nM00\nG01 X30.000"), std::string::npos) << g;
+  // A machine's own codes, and none at all.
+  const SourceFile file(
+      "awt.profile",
+      "name = awt\nsummary = automatic threading\nwrite_wire_cut = M50\nwrite_wire_thread = M60 | G04 "
+      "P1\n");
+  Diagnostics d(10);
+  const std::optional<MachineProfile> awt = parseMachineProfile(file, d);
+  ASSERT_TRUE(awt) << kerf::test::dump(d);
+  const std::string a = written(*awt);
+  EXPECT_NE(a.find("\nM50\nG00 X20.000 Y0.000\nM60\nG04 P1\nG01 X30.000"), std::string::npos) << a;
+  const SourceFile none("none.profile", "name = none\nsummary = x\nwrite_wire_cut =\nwrite_wire_thread =\n");
+  const std::optional<MachineProfile> bare = parseMachineProfile(none, d);
+  ASSERT_TRUE(bare) << kerf::test::dump(d);
+  EXPECT_EQ(written(*bare).find("M00"), std::string::npos);
+}

@@ -36,6 +36,11 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
                                 "as 'Apply') [" +
                                 machine_.name + " profile]");
         break;
+      case CodeEffect::Rethread:
+        toolpath_.stops.push_back(static_cast<std::uint32_t>(toolpath_.moves.size()));
+        if (notedCodes_.insert(key).second)
+          diags_.note(Code::MachineCode, src_, w.span(), as + ": " + code.note + " [" + machine_.name + " profile]");
+        break;
       case CodeEffect::Harmless:
       case CodeEffect::NoMotion:
         if (notedCodes_.insert(key).second)

@@ -37,7 +37,11 @@ Flow Interpreter::executeM(const Word& m, const BlockWords& bw, std::size_t pc, 
         stack_.pop_back();
       }
       return Flow::Continue;
-    default: return Flow::Continue;  // stops, spindle (hot wire), flushing: the wire path goes on
+    case MCode::ProgramStop:
+    case MCode::OptionalStop:  // the operator may cut and thread the wire here
+      toolpath_.stops.push_back(static_cast<std::uint32_t>(toolpath_.moves.size()));
+      return Flow::Continue;
+    default: return Flow::Continue;  // spindle (hot wire), flushing: the wire path goes on
   }
 }
 

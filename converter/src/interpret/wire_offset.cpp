@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 namespace kerf::converter::interp {
@@ -68,8 +69,11 @@ void Interpreter::resolveWireOffsets() {
   out.reserve(moves.size() + moves.size() / 2);
   std::size_t next = 0;  // first move not yet copied
   bool applied = false;
+  // Per programmed move, the first applied move made from it (for Toolpath::stops).
+  std::vector<std::size_t> firstOut(moves.size() + 1, SIZE_MAX);
   auto copyUpTo = [&](std::size_t end) {
     for (; next < end; ++next) {
+      firstOut[next] = out.size();
       out.push_back(moves[next]);
       role.push_back(OffsetRole::None);
       programmed.push_back(moves[next].lower);
@@ -97,6 +101,7 @@ void Interpreter::resolveWireOffsets() {
     const std::vector<geometry::WirePiece>& path = r.paths.front();
     Move startUp = moves[run.first];
     startUp.lower = Segment::line(startUp.lower.start, path.front().segment.start);
+    firstOut[run.first] = out.size();
     out.push_back(startUp);
     role.push_back(OffsetRole::StartUp);
     programmed.push_back(moves[run.first].lower);
@@ -105,6 +110,7 @@ void Interpreter::resolveWireOffsets() {
       Move m = moves[piece.corner && source + 1 < run.end ? source + 1 : source];
       m.lower = piece.segment;
       m.kind = piece.segment.isArc() ? MoveKind::Arc : MoveKind::Line;
+      if (!piece.corner && firstOut[source] == SIZE_MAX) firstOut[source] = out.size();
       out.push_back(m);
       role.push_back(piece.corner ? OffsetRole::Corner : OffsetRole::Element);
       programmed.push_back(piece.corner ? Segment::line(chain[piece.element].end, chain[piece.element].end)
@@ -115,6 +121,7 @@ void Interpreter::resolveWireOffsets() {
     if (run.end < moves.size() && moves[run.end].kind == MoveKind::Line) {
       Move cancel = moves[run.end];
       cancel.lower = Segment::line(path.back().segment.end, cancel.lower.end);
+      firstOut[run.end] = out.size();
       out.push_back(cancel);
       role.push_back(OffsetRole::Cancel);
       programmed.push_back(moves[run.end].lower);
@@ -142,6 +149,13 @@ void Interpreter::resolveWireOffsets() {
   // The moves are the wire-centre path now: an output written from them must not offset again.
   for (std::size_t i = 0; i < out.size(); ++i)
     if (role[i] != OffsetRole::None) out[i].wireOffset = WireOffset::Off;
+  // Stops keep their place: before the first applied move of the programmed move they preceded
+  // (a move the wire cannot reach takes the place of the next one that is cut).
+  firstOut[moves.size()] = out.size();
+  for (std::size_t k = moves.size(); k-- > 0;)
+    if (firstOut[k] == SIZE_MAX) firstOut[k] = firstOut[k + 1];
+  for (std::uint32_t& s : toolpath_.stops)
+    s = static_cast<std::uint32_t>(firstOut[std::min<std::size_t>(s, moves.size())]);
   moves = std::move(out);
   toolpath_.offsetRole = std::move(role);
   toolpath_.programmed = std::move(programmed);

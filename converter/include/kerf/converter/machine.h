@@ -33,6 +33,7 @@ enum class CodeEffect : std::uint8_t {
   Thickness,    ///< P is the workpiece thickness: the upper plane is that far above the lower
   Guides,       ///< P Q give the wire guides' geometry: accepted, not needed for the part
   ProgramEnd,   ///< ends the program, as M02 does
+  Rethread,     ///< cuts or threads the wire: a rapid next to it goes to a new start hole (as after M00)
 };
 const char* codeEffectName(CodeEffect e);
 
@@ -78,6 +79,10 @@ struct MachineProfile {
   // by `|`; {x} {y} the start point, {g} G41 or G42, {offset} the first offset-on blocks, {cancel}
   // the cancel blocks when an offset is on). Empty: the built-in layout (docs/machines.md).
   std::vector<std::string> writeStart, writeOffset, writeCancel, writeEnd;
+  // Between contours (write_wire_cut before the rapid to the next start hole, write_wire_thread
+  // after it): the wire is cut and threaded again. [assumption: M00, the program stop of ISO 6983,
+  // for the operator to do it; a machine with automatic threading names its own codes]
+  std::vector<std::string> writeWireCut{"M00"}, writeWireThread{"M00"};
   // Polar coordinate interpolation (G12.1/G112, docs/polar.md).
   bool polarXRadius = true;     ///< polar_x = radius | diameter: X inside G12.1
   bool polarCDiameter = false;  ///< polar_c = linear | diameter: Star machines write C as a diameter

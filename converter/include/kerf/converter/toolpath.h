@@ -108,6 +108,10 @@ struct Toolpath {
   LengthUnit programUnit = LengthUnit::Millimetre;  ///< the last G20/G21 in force
   bool endedProperly = false;                       ///< an M02 or M30 was reached
   std::vector<Setting> settings;
+  /// Where the wire may be cut and threaded again: the index of the move that follows each M00,
+  /// M01 or profile `rethread` code, in order (a rapid between cuts with one beside it goes to a
+  /// new start hole).
+  std::vector<std::uint32_t> stops;
 
   Dialect dialect = Dialect::Plain;
   /// The upper contour, one segment per move (same index), or empty for a plain program.

@@ -1,6 +1,8 @@
 // kerf cam: a drawing's contours into a toolpath (cam.h; docs/cam.md).
 #include "kerf/converter/cam.h"
 
+#include "kerf/geometry/intersection.h"
+
 #include "kerf/converter/points.h"
 
 #include "kerf/geometry/chain.h"
@@ -263,7 +265,19 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
     for (std::size_t l = 0; l < loops.size(); ++l) {
       const std::vector<Segment>& loop = loops[l];
       const Vec2 begin = loop.front().start;
-      const Vec2 entry = o.entry && l == 0 ? *o.entry : begin + o.leadIn * n;
+      // The lead-in stays inside what it starts from: where the scrap is narrower than the lead-in
+      // (a small hole), the start hole goes halfway to the wire path's other side.
+      double leadLength = o.leadIn;
+      if (!(o.entry && l == 0) && leadLength > 0) {
+        const Segment ray = Segment::line(begin + 1e-6 * n, begin + (2 * leadLength + 1e-6) * n);
+        double nearest = 2 * leadLength;
+        for (const Segment& s : loop) {
+          const geometry::SegmentIntersection x = geometry::intersect(ray, s, 1e-9);
+          for (int k = 0; k < x.count; ++k) nearest = std::min(nearest, (x.points[k] - begin).norm());
+        }
+        leadLength = std::min(leadLength, 0.5 * nearest);
+      }
+      const Vec2 entry = o.entry && l == 0 ? *o.entry : begin + leadLength * n;
       if (first) {
         tp.start = entry;
         at = entry;

@@ -149,6 +149,18 @@ void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const
     const bool closingCrossing = x.kind == geometry::ContactKind::Crossing && !x.adjacent &&
                                  (c.segments[x.second].end - x.point).norm() <= slack &&
                                  closesTheContour(c.segments, x, slack);
+    // Neighbours that meet within that rounding of their shared vertex meet at the joint (an arc
+    // of a huge radius written to the micrometre, at a sharp tip): not a crossing. A sideways
+    // error of `slack` moves the meeting point along a wedge of opening angle a by slack / sin(a).
+    if (x.adjacent && x.kind != geometry::ContactKind::Overlap) {
+      const bool inOrder = x.second == x.first + 1;
+      const geometry::Segment& in = c.segments[inOrder ? x.first : x.second];
+      const geometry::Segment& out = c.segments[inOrder ? x.second : x.first];
+      const geometry::Vec2 joint = in.end;
+      const double opening = std::acos(std::clamp(-in.tangentAt(1.0).dot(out.tangentAt(0.0)), -1.0, 1.0));
+      const double along = slack / std::max(std::sin(std::min(opening, geometry::kPi / 2)), 0.05);
+      if ((x.point - joint).norm() <= along) continue;
+    }
     if (closingCrossing) {
       diags.report(finding(Severity::Note, Code::LoopClosesInsideMove, src, later, mj, p,
                            name + " closes its loop at " + at(x.point) + ", where this move meets the move on " +

@@ -122,7 +122,7 @@ constexpr int kCentreSearch = 4;
 struct Written {
   std::vector<Record> records;
   std::vector<std::size_t> moveOf;  ///< the move of each record
-  std::size_t rapids = 0, skipped = 0, centresMoved = 0;
+  std::size_t rapids = 0, skipped = 0, centresMoved = 0, flattened = 0;
   double largestMiss = 0.0;  ///< µm: an arc end the machine cannot reach on the grid
 };
 
@@ -152,6 +152,7 @@ Written records(const Toolpath& toolpath, const std::vector<std::size_t>& order,
       ++w.skipped;
       continue;
     }
+    const bool sliver = std::abs(s.sweep) < kPi && s.radius * (1 - std::cos(std::abs(s.sweep) / 2)) < 0.0005;
     // The rounded centre, or the nearest µm centre from which the machine's count ends on the
     // rounded end point (a real post must not leave the wire off the grid point the next record
     // starts from).
@@ -178,6 +179,15 @@ Written records(const Toolpath& toolpath, const std::vector<std::size_t>& order,
         best = *found;
         ++w.centresMoved;
         end = to;
+      } else if (sliver) {
+        // An arc that bulges from its chord by less than half a micrometre is, in whole
+        // micrometres, the line of its chord; where no count lands on its end (a micro arc's count
+        // runs on round the circle), it is written as that line.
+        w.records.push_back(lineRecord(Micro{to[0] - at[0], to[1] - at[1]}));
+        w.moveOf.push_back(i);
+        ++w.flattened;
+        at = to;
+        continue;
       } else if (end) {
         w.largestMiss = std::max(w.largestMiss, (vec(*end) - vec(to)).norm());
       }
@@ -201,6 +211,11 @@ Written records(const Toolpath& toolpath, const std::vector<std::size_t>& order,
                std::to_string(w.centresMoved) + (w.centresMoved == 1 ? " arc's centre was" : " arcs' centres were") +
                    " moved by at most " + std::to_string(kCentreSearch) +
                    " µm per axis so that the count ends on the rounded end point (docs/3b.md)");
+  if (w.flattened > 0)
+    diags.note(Code::OutputAdjusted, source, SourceSpan::wholeFile(),
+               std::to_string(w.flattened) + (w.flattened == 1 ? " arc" : " arcs") +
+                   " bulging less than half a micrometre from the chord, whose count could not end on the end point, "
+                   "written as the line of the chord (docs/3b.md)");
   if (w.largestMiss > 0)
     diags.warning(Code::OutputAdjusted, source, SourceSpan::wholeFile(),
                   "an arc's count ends " + formatFixed(w.largestMiss, 1) +

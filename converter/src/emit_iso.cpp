@@ -38,8 +38,19 @@ class IsoWriter {
   }
   void comment(const std::string& c) { block("(" + c + ")"); }
 
+  /// mm: the smallest step the output writes.
+  [[nodiscard]] double resolution() const { return 1.0 / (std::pow(10.0, decimals_) * scale_); }
+  /// 2-axis output: an arc that bulges from its chord by less than half the resolution is written
+  /// as the line it is at that resolution (a micro arc's rounded I J would give its ends radii that
+  /// differ by more than the arc is long, which controllers refuse).
+  bool flattenSlivers = true;
+
   /// The words of one side's motion: G X Y [I J] (names: X Y I J or U V I J).
-  std::string motion(const Segment& s, bool rapid, char a, char b, bool withG = true) const {
+  std::string motion(const Segment& arcOrLine, bool rapid, char a, char b, bool withG = true) const {
+    const double sweep = std::abs(arcOrLine.sweep);
+    const bool sliver = flattenSlivers && arcOrLine.isArc() && sweep < 2 * geometry::kPi - 1e-9 &&
+                        arcOrLine.radius * (1 - std::cos(sweep / 2)) < 0.5 * resolution();
+    const Segment s = sliver ? Segment::line(arcOrLine.start, arcOrLine.end) : arcOrLine;
     std::string w;
     if (withG) {
       const char* g = rapid ? "G00 " : !s.isArc() ? "G01 " : s.sweep < 0 ? "G02 " : "G03 ";
@@ -86,6 +97,9 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
   const int decimals = request.decimals.value_or(target.writeDecimals);
   IsoWriter w(target, decimals);
   const bool taper = toolpath.isTaper();
+  // kerf cam's own output only: a conversion keeps the program's arcs as written; the two sides of
+  // a taper program must agree on G02/G03.
+  w.flattenSlivers = request.flattenSlivers && !taper;
   const bool colon = taper && target.writeTaper == Dialect::SodickColon;
   // The profile's blocks: {x} {y} the start, {g} the offset code; {offset} and {cancel} expand to
   // the offset-on and cancel blocks.
@@ -176,6 +190,15 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
   bool rethread = false;  // the wire was cut: thread it before the next cut
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     const Move& m = toolpath.moves[i];
+    // An arc shorter than the output's resolution (a corner arc of a few nanometres on a densely
+    // drawn contour) would be written with its end on its start: a full circle. It is left out;
+    // the next move starts where it ended, to the resolution. (A line of no length is written: it
+    // is harmless, and a program may have one, as a Z move.)
+    auto vanishes = [&](const Segment& s) {
+      return !s.isArc() || (w.rounded(s.start) == w.rounded(s.end) && std::abs(s.sweep) < 2 * geometry::kPi - 1e-9);
+    };
+    if (m.wireOffset == offset && m.lower.isArc() && vanishes(m.lower) && (!taper || vanishes(toolpath.upper[i])))
+      continue;
     std::string words;
     if (rethread && m.isCut()) {
       for (const std::string& b : target.writeWireThread) w.block(expand(b, "", start));

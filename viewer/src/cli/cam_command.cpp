@@ -146,6 +146,7 @@ int runCam(const CamArgs& a) {
   request.maxPoints = a.maxPoints;
   request.sampling = c.sampling.sampling();
   request.offsetsApplied = true;
+  request.flattenSlivers = true;
   Diagnostics emitDiags(100000);
   std::optional<EmitOutput> out = emitter.write(made->toolpath, p.source.get(), request, emitDiags);
   for (const Diagnostic& d : emitDiags.all()) all.report(d);

@@ -39,6 +39,7 @@ struct EmitRequest {
   const MachineProfile* target = nullptr;
   std::optional<int> decimals;  ///< iso, polar: digits after the point (default: the target's, 3)
   bool offsetsApplied = false;  ///< iso: G41/G42 marks are the controller's job (kerf cam), not a loss
+  bool flattenSlivers = false;  ///< iso: arcs bulging less than half the resolution as lines (kerf cam)
   // 3B.
   bool compact = false;    ///< `B9900B0B9900GXL1` instead of `B9900 B0 B9900 GX L1`
   std::string end = "DD";  ///< the last line ("" for none)

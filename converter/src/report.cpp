@@ -408,12 +408,20 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
     const bool cw = s.sweep < 0;
     out += std::string("  arc ") + (cw ? "clockwise (G02)" : "counter-clockwise (G03)") + " from " + pt(s.start) +
            " (the end of the previous move) to " + pt(s.end) + "\n";
-    if (m.centreForm == CentreForm::Radius) {
+    // Where G41/G42 was applied, the centre follows from the words on the programmed arc (a corner
+    // arc has no words: its centre is the programmed corner).
+    const OffsetRole role = i < toolpath.offsetRole.size() ? toolpath.offsetRole[i] : OffsetRole::None;
+    const geometry::Segment& d = role == OffsetRole::Element ? toolpath.programmed[i] : s;
+    if (role == OffsetRole::Corner) {
+      out += "  centre " + pt(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius) +
+             " mm\n";
+    } else if (m.centreForm == CentreForm::Radius) {
       const double r = m.programmedRadius;
       const int zn = geometry::seedSignFactor(
           cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
-      out += "  centre " + pt(s.centre) + " from R " + mm(r) + ": half the chord is " +
-             mm((s.end - s.start).norm() / 2) + " mm; " +
+      out += "  centre " + pt(d.centre) + " from R " + mm(r) + ": half the chord" +
+             (role == OffsetRole::Element ? " of the programmed arc" : "") + " is " +
+             mm((d.end - d.start).norm() / 2) + " mm; " +
              (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
              " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
     } else if (threeB) {
@@ -428,12 +436,16 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
       std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"
                          : m.centreForm == CentreForm::Reversed  ? "centre = start - (I, J)"
                                                                  : "centre = (I, J)";
-      out += "  centre " + pt(s.centre) + " from I " + mm(ij.x()) + " J " + mm(ij.y()) + ": " + rule +
-             "; radius by formula (3) = |start - centre| = " + mm(s.radius) + " mm\n";
+      out += "  centre " + pt(d.centre) + " from I " + mm(ij.x()) + " J " + mm(ij.y()) + ": " + rule +
+             (role == OffsetRole::Element ? " (the programmed start " + pt(d.start) + ")" : std::string()) +
+             "; radius by formula (3) = |start - centre| = " + mm(d.radius) + " mm\n";
       if (std::abs(m.radiusError) > 0.0005)
         out += "  the end point is " + mm(std::abs(m.radiusError)) +
                " mm off that circle (within the accepted tolerance)\n";
     }
+    if (role == OffsetRole::Element)
+      out += "  the wire path keeps that centre, " + std::string(s.radius > d.radius ? "outside" : "inside") +
+             " the programmed arc by the offset\n";
     out += "  radius " + mm(s.radius) + " mm, sweep " + deg(std::abs(s.sweep)) + " degrees, length " + mm(s.length()) +
            " mm\n";
     const geometry::ArcSampleStats st = geometry::sample(s, sampling, nullptr);  // counts only

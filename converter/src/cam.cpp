@@ -192,6 +192,34 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
   tp.format = InputFormat::Iso;
   bool first = true;
   Vec2 at = Vec2::Zero();
+  // A rapid from where the wire is to p (the first path starts there).
+  auto travelTo = [&](const Vec2& p) {
+    if (first) {
+      tp.start = p;
+      first = false;
+    } else if ((p - at).norm() > 1e-12) {
+      Move rapid;
+      rapid.kind = MoveKind::Rapid;
+      rapid.lower = Segment::line(at, p);
+      tp.moves.push_back(rapid);
+    }
+    at = p;
+  };
+  // Cuts along the segments; returns their length.
+  auto cut = [&](std::span<const Segment> path, WireOffset code) {
+    double length = 0.0;
+    for (const Segment& s : path) {
+      Move m;
+      m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
+      m.lower = s;
+      m.wireOffset = code;
+      tp.moves.push_back(m);
+      length += s.length();
+    }
+    if (!path.empty()) at = path.back().end;
+    result.cutLength += length;
+    return length;
+  };
   for (std::size_t c : chosen) {
     CamContour info;
     info.number = c + 1;
@@ -209,25 +237,8 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
                           " is open: cut along it as drawn, the wire centre on the line, without the offset",
                       "an open contour has no inside or outside; close it to cut a part");
       }
-      const Vec2 begin = contour.front().start;
-      if (first) {
-        tp.start = begin;
-        first = false;
-      } else if ((begin - at).norm() > 1e-12) {
-        Move rapid;
-        rapid.kind = MoveKind::Rapid;
-        rapid.lower = Segment::line(at, begin);
-        tp.moves.push_back(rapid);
-      }
-      for (const Segment& s : contour) {
-        Move m;
-        m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
-        m.lower = s;
-        tp.moves.push_back(m);
-        info.wireLength += s.length();
-        result.cutLength += s.length();
-      }
-      at = contour.back().end;
+      travelTo(contour.front().start);
+      info.wireLength += cut(contour, WireOffset::Off);
       result.contours.push_back(info);
       continue;
     }
@@ -278,34 +289,12 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
         leadLength = std::min(leadLength, 0.5 * nearest);
       }
       const Vec2 entry = o.entry && l == 0 ? *o.entry : begin + leadLength * n;
-      if (first) {
-        tp.start = entry;
-        at = entry;
-        first = false;
-      } else if ((entry - at).norm() > 1e-12) {
-        Move rapid;
-        rapid.kind = MoveKind::Rapid;
-        rapid.lower = Segment::line(at, entry);
-        tp.moves.push_back(rapid);
-      }
+      travelTo(entry);
       if ((begin - entry).norm() > 1e-12) {
-        Move lead;
-        lead.kind = MoveKind::Line;
-        lead.lower = Segment::line(entry, begin);
-        lead.wireOffset = offsetCode;
-        tp.moves.push_back(lead);
-        result.cutLength += lead.lower.length();
+        const Segment lead = Segment::line(entry, begin);
+        cut(std::span<const Segment>(&lead, 1), offsetCode);
       }
-      for (const Segment& s : loop) {
-        Move m;
-        m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
-        m.lower = s;
-        m.wireOffset = offsetCode;
-        tp.moves.push_back(m);
-        info.wireLength += s.length();
-        result.cutLength += s.length();
-      }
-      at = loop.back().end;
+      info.wireLength += cut(loop, offsetCode);
     }
     result.contours.push_back(info);
   }

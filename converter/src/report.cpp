@@ -413,15 +413,14 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
     const OffsetRole role = i < toolpath.offsetRole.size() ? toolpath.offsetRole[i] : OffsetRole::None;
     const geometry::Segment& d = role == OffsetRole::Element ? toolpath.programmed[i] : s;
     if (role == OffsetRole::Corner) {
-      out += "  centre " + pt(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius) +
-             " mm\n";
+      out += "  centre " + pt(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius) + " mm\n";
     } else if (m.centreForm == CentreForm::Radius) {
       const double r = m.programmedRadius;
       const int zn = geometry::seedSignFactor(
           cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
       out += "  centre " + pt(d.centre) + " from R " + mm(r) + ": half the chord" +
-             (role == OffsetRole::Element ? " of the programmed arc" : "") + " is " +
-             mm((d.end - d.start).norm() / 2) + " mm; " +
+             (role == OffsetRole::Element ? " of the programmed arc" : "") + " is " + mm((d.end - d.start).norm() / 2) +
+             " mm; " +
              (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
              " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
     } else if (threeB) {

@@ -148,8 +148,9 @@ TEST(interpreter, g41_with_an_h_register_is_applied_with_arcs_at_convex_corners)
 TEST(interpreter, explain_derives_an_offset_arc_from_its_programmed_words) {
   // G41 left of a line, then an R arc: the corner arc has no words (its centre is the corner), the
   // offset arc's centre follows from R on the programmed chord (10 mm), not the offset one.
-  auto r = run("H001 = +000000.2000;\nG90 G92 X-5 Y0;\nG41 H001 G01 X0 Y0;\nG01 X10 Y0;\nG03 X20 Y0 R5;\n"
-               "G01 X20 Y-10;\nG01 X0 Y-10;\nG01 X0 Y0;\nG40 G01 X-5 Y0;\nM02;\n");
+  auto r =
+      run("H001 = +000000.2000;\nG90 G92 X-5 Y0;\nG41 H001 G01 X0 Y0;\nG01 X10 Y0;\nG03 X20 Y0 R5;\n"
+          "G01 X20 Y-10;\nG01 X0 Y-10;\nG01 X0 Y0;\nG40 G01 X-5 Y0;\nM02;\n");
   ASSERT_FALSE(r->diags.hasErrors());
   const std::string text = kerf::converter::explainText(*r->source, r->path(), kerf::geometry::Sampling::step(0.1));
   EXPECT_NE(text.find("centre (10.000, 0.000): the programmed corner; radius = the wire offset 0.200 mm"),

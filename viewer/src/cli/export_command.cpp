@@ -72,6 +72,10 @@ int runDxfExport(const ExportArgs& a) {
 
 int runExport(const ExportArgs& a) {
   if (endsWithDxf(a.output)) return runDxfExport(a);
+  if (a.rapids || a.dxfVersion != "r2000") {
+    reportError("--dxf and --rapids are for a drawing: -o must end in .dxf");
+    return kExitUsage;
+  }
   const auto format = exporter::formatOfPath(a.output);
   if (!format) {
     reportError("-o must end in .vtp, .stl, .ply or .dxf, not '" + a.output + "'");

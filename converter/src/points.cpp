@@ -332,24 +332,54 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
                 "points4 writes both planes, and this program has no upper contour", "use --to bp95d");
     return std::nullopt;
   }
-  std::vector<Row> rows;
   constexpr double kJoin = 1e-9;
+  // Counted in closed form before anything is sampled: a budget is refused before it is spent.
+  auto samplesOf = [&](std::size_t i) {
+    return std::max(geometry::sampleCount(toolpath.moves[i].lower, request.sampling),
+                    geometry::sampleCount(toolpath.upper[i], request.sampling));
+  };
+  std::size_t planned = 0;
+  {
+    geometry::Vec2 lastLower(0, 0), lastUpper(0, 0);
+    bool first = true;
+    for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+      if (!toolpath.moves[i].isCut()) continue;
+      const geometry::Segment& lo = toolpath.moves[i].lower;
+      const geometry::Segment& up = toolpath.upper[i];
+      const bool joins = !first && (lo.start - lastLower).norm() <= kJoin && (up.start - lastUpper).norm() <= kJoin;
+      planned += samplesOf(i) + (joins ? 0 : 1);
+      if (planned > kMaxPointsWritten) {
+        diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
+                    "the step gives more points than Kerf writes (" + std::to_string(kMaxPointsWritten) + ")",
+                    "use a coarser --step or --tolerance");
+        return std::nullopt;
+      }
+      lastLower = lo.end;
+      lastUpper = up.end;
+      first = false;
+    }
+  }
+  if (planned == 0) {
+    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
+    return std::nullopt;
+  }
+  const std::optional<std::size_t> capacity = request.maxPoints ? request.maxPoints : profile.maxPoints;
+  if (capacity && planned > *capacity) {
+    diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
+                std::to_string(planned) + " point pairs at this step, more than the " + std::to_string(*capacity) +
+                    " the controller holds",
+                "use a coarser --step or --tolerance (points4 does not fit the step by itself)");
+    return std::nullopt;
+  }
+  std::vector<Row> rows;
+  rows.reserve(planned);
   geometry::Vec2 lastLower(0, 0), lastUpper(0, 0);
   bool any = false;
-  std::size_t planned = 0;
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     if (!toolpath.moves[i].isCut()) continue;
     const geometry::Segment& lo = toolpath.moves[i].lower;
     const geometry::Segment& up = toolpath.upper[i];
-    const std::size_t n =
-        std::max(geometry::sampleCount(lo, request.sampling), geometry::sampleCount(up, request.sampling));
-    planned += n + 1;
-    if (planned > kMaxPointsWritten) {
-      diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
-                  "the step gives more points than Kerf writes (" + std::to_string(kMaxPointsWritten) + ")",
-                  "use a coarser --step or --tolerance");
-      return std::nullopt;
-    }
+    const std::size_t n = samplesOf(i);
     auto push = [&](const geometry::Vec2& l, const geometry::Vec2& u) {
       const geometry::Vec2 uv = relativeUv ? geometry::Vec2(u - l) : u;
       rows.push_back({l.x(), l.y(), uv.x(), uv.y()});
@@ -364,18 +394,6 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
     lastLower = lo.end;
     lastUpper = up.end;
     any = true;
-  }
-  if (!any) {
-    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
-    return std::nullopt;
-  }
-  const std::optional<std::size_t> capacity = request.maxPoints ? request.maxPoints : profile.maxPoints;
-  if (capacity && rows.size() > *capacity) {
-    diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
-                std::to_string(rows.size()) + " point pairs at this step, more than the " + std::to_string(*capacity) +
-                    " the controller holds",
-                "use a coarser --step or --tolerance (points4 does not fit the step by itself)");
-    return std::nullopt;
   }
   PointOutput out;
   out.sampling = request.sampling;

@@ -286,6 +286,26 @@ TEST(TaperOutputs, Points4KeepsBothPlanesInStep) {
   EXPECT_GT(n, 30u);
 }
 
+TEST(TaperOutputs, Points4CountsAgainstTheCapacityBeforeItSamples) {
+  // A half circle of radius 7 m at step 0.1 mm is ceil(pi 7000 / 0.1) = 219,912 steps and the start:
+  // 219,913 point pairs, refused for a controller of
+  // 500 with the count computed in closed form (it used to sample all of them first).
+  auto r = run("M101 P30\nG92 X0 Y0 U0 V0\nG2 X14000 Y0 I7000 J0 G2 U14000 V0 I7000 J0\nM2\n");
+  PointRequest req;
+  req.sampling = kerf::geometry::Sampling::step(0.1);
+  req.maxPoints = 500;
+  Diagnostics d;
+  EXPECT_FALSE(emitPoints4(r->path(), r->source.get(), bp95dProfile(), req, false, d).has_value());
+  ASSERT_FALSE(d.all().empty());
+  EXPECT_EQ(d.all().back().message, "219913 point pairs at this step, more than the 500 the controller holds");
+  // Within the capacity, the rows written are exactly the rows counted.
+  req.maxPoints = 300000;
+  Diagnostics ok;
+  const auto out = emitPoints4(r->path(), r->source.get(), bp95dProfile(), req, false, ok);
+  ASSERT_TRUE(out.has_value());
+  EXPECT_EQ(out->points, 219913u);
+}
+
 TEST(TaperOutputs, APlaneBetweenTheContoursIsTheirSection) {
   auto r = run("M101 P20\nG92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U10 V4\nM2\n");
   Diagnostics d;

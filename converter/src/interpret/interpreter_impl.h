@@ -19,7 +19,9 @@
 #include "kerf/geometry/arc.h"
 #include "kerf/geometry/offset.h"
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -163,6 +165,11 @@ class Interpreter {
   // program_flow.cpp
   Flow executeM(const Word& m, const BlockWords& bw, std::size_t pc, std::size_t& next);
   Flow call(const Word& m, const BlockWords& bw, std::size_t pc, std::size_t& next);
+  /// The block a subprogram number jumps to (O label, or an N label other than the calling block).
+  std::optional<std::size_t> findSubprogram(long label, std::size_t callingBlock) const;
+  /// Blocks one run of the subprogram starting at `target` executes, its own calls expanded
+  /// (M98 P L inside it, at their L), counted from the text without running it: at most `cap`.
+  std::uint64_t blocksOfCall(std::size_t target, std::uint64_t cap, std::size_t depth);
   // machine_codes.cpp
   Flow executeMachineCodes(const BlockWords& bw, const Block& block);
   Flow executeMacroCall(const Block& block);
@@ -183,6 +190,9 @@ class Interpreter {
                           const std::vector<double>& distance, const char* plane);
 
   SourceSpan spanOf(const Word* w, const Block& b) const { return w ? w->span() : b.span(); }
+
+  std::size_t executed_ = 0;                                     // blocks run so far
+  std::unordered_map<std::size_t, std::uint64_t> blocksOfCall_;  // per subprogram start (memo)
 
   const Program& program_;
   const SourceFile* src_;

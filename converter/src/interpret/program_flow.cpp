@@ -61,10 +61,8 @@ Flow Interpreter::call(const Word& m, const BlockWords& bw, std::size_t pc, std:
     }
   }
   std::size_t target = 0;
-  if (auto it = oLabels_.find(label); it != oLabels_.end()) {
-    target = it->second;
-  } else if (auto jt = nLabels_.find(label); jt != nLabels_.end() && jt->second != pc) {
-    target = jt->second;
+  if (const std::optional<std::size_t> found = findSubprogram(label, pc)) {
+    target = *found;
   } else {
     std::string help;
     long best = -1;
@@ -80,9 +78,65 @@ Flow Interpreter::call(const Word& m, const BlockWords& bw, std::size_t pc, std:
                  "subprogram calls nest deeper than " + std::to_string(options_.maxCallDepth) + " levels (recursion?)");
     return Flow::Stop;
   }
+  // A repeat bomb (M98 P1 L9999 calling M98 P2 L9999 ...) is refused before it expands: the blocks
+  // the call would run, counted from the text, must fit the budget that is left.
+  const std::uint64_t budget = options_.maxExecutedBlocks;
+  const std::uint64_t once = blocksOfCall(target, budget + 1, 1);
+  const std::uint64_t total = once > (budget + 1) / static_cast<std::uint64_t>(repeats)
+                                  ? budget + 1
+                                  : once * static_cast<std::uint64_t>(repeats);
+  if (executed_ + total > budget) {
+    diags_.error(Code::ExecutionLimit, src_, m.span(),
+                 "this call would run " +
+                     (total > budget ? "more than " + std::to_string(budget) : std::to_string(total)) + " blocks (" +
+                     std::to_string(repeats) + " times a subprogram of " +
+                     (once > budget ? "more than " + std::to_string(budget) : std::to_string(once)) +
+                     " blocks with its own calls), beyond the limit of " + std::to_string(budget) +
+                     " executed blocks: refused before it runs",
+                 "a repeat count L multiplies every call inside the subprogram");
+    return Flow::Stop;
+  }
   stack_.push_back({pc + 1, target, repeats, pc});
   next = target;
   return Flow::Continue;
+}
+
+std::optional<std::size_t> Interpreter::findSubprogram(long label, std::size_t callingBlock) const {
+  if (auto it = oLabels_.find(label); it != oLabels_.end()) return it->second;
+  if (auto jt = nLabels_.find(label); jt != nLabels_.end() && jt->second != callingBlock) return jt->second;
+  return std::nullopt;
+}
+
+std::uint64_t Interpreter::blocksOfCall(std::size_t target, std::uint64_t cap, std::size_t depth) {
+  if (auto it = blocksOfCall_.find(target); it != blocksOfCall_.end()) return std::min(it->second, cap);
+  // Deeper than calls may nest: the run stops there anyway (K0504), so count nothing more.
+  if (depth > options_.maxCallDepth) return 0;
+  std::uint64_t count = 0;
+  for (std::size_t pc = target; pc < program_.blocks.size() && count < cap; ++pc) {
+    ++count;
+    const std::span<const Word> words = program_.wordsOf(program_.blocks[pc]);
+    bool returns = false;
+    for (const Word& w : words) {
+      if (w.letter != 'M' || !w.isNumber()) continue;
+      const long code = std::lround(w.value);
+      if (code == 99 || code == 2 || code == 30) returns = true;
+      if (code != 98) continue;
+      long label = -1, repeats = 1;
+      for (const Word& a : words) {
+        if (a.letter == 'P' && a.isNumber()) label = std::lround(a.value);
+        if (a.letter == 'L' && a.isNumber()) repeats = std::clamp(std::lround(a.value), 1L, 9999L);
+      }
+      const std::optional<std::size_t> callee = findSubprogram(label, pc);
+      if (!callee || *callee == target) continue;  // not found, or recursion: reported when it runs
+      const std::uint64_t inner = blocksOfCall(*callee, cap, depth + 1);
+      const auto r = static_cast<std::uint64_t>(repeats);
+      count = inner > (cap - count) / r ? cap : count + inner * r;
+    }
+    if (returns) break;
+  }
+  count = std::min(count, cap);
+  if (count < cap) blocksOfCall_[target] = count;  // a capped count depends on the cap
+  return count;
 }
 
 }  // namespace kerf::converter::interp

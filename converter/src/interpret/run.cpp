@@ -49,10 +49,9 @@ Interpretation Interpreter::run() {
   toolpath_.blocks = program_.blocks.size();
   warnIntegerUnit();
   std::size_t pc = 0;
-  std::size_t executed = 0;
   const std::size_t n = program_.blocks.size();
   while (pc < n) {
-    if (++executed > options_.maxExecutedBlocks) {
+    if (++executed_ > options_.maxExecutedBlocks) {
       diags_.error(Code::ExecutionLimit, src_, program_.blocks[pc].span(),
                    "stopped after " + std::to_string(options_.maxExecutedBlocks) +
                        " executed blocks: the subprogram calls repeat without end or far too often");

@@ -1,13 +1,18 @@
 // Sections: 1. primitive intersections (line-line, line-arc, arc-arc)
 //           2. classification of a pair within a path
-//           3. the sweep over boxes
+//           3. the decision sweep (Shamos-Hoey over x-monotone pieces)
+//           4. the report sweep over boxes
 #include "kerf/geometry/intersection.h"
 
 #include "angles.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <numeric>
+#include <optional>
+#include <set>
 
 namespace kerf::geometry {
 namespace {
@@ -192,7 +197,173 @@ void classifyPair(std::span<const Segment> path, std::size_t i, std::size_t j, b
 
 }  // namespace
 
-// ---- 3. sweep ---------------------------------------------------------------------------------
+// ---- 3. decision sweep ------------------------------------------------------------------------
+//
+// Shamos and Hoey's sweep (1976): a vertical line swept left to right over x-monotone pieces (a
+// line, or an arc split where its x turns), the pieces it crosses kept ordered by y; a piece is
+// tested only against the pieces next to it when it enters, and the two that become neighbours
+// when one leaves. If no tested pair touches, no pair does: the leftmost contact would have made
+// its two pieces neighbours before the sweep reached it. O(n log n) whatever the shape — a star of
+// long spikes, whose boxes all overlap, included. A vertical line crosses the sweep at one x: it
+// is tested against the pieces in its y range there, and against the points that arrive at that
+// x inside it.
+
+namespace {
+
+struct Piece {
+  std::uint32_t seg = 0;
+  Vec2 left, right;  // by (x, y)
+  bool arc = false;
+  bool upper = false;  // arc: the half above the centre
+  [[nodiscard]] bool vertical() const { return !arc && left.x() == right.x(); }
+};
+
+double yAt(const Piece& p, const Segment& s, double x) {
+  if (x <= p.left.x()) return p.left.y();
+  if (x >= p.right.x()) return p.right.y();
+  if (!p.arc) return p.left.y() + (x - p.left.x()) * (p.right.y() - p.left.y()) / (p.right.x() - p.left.x());
+  const double dx = x - s.centre.x();
+  const double h = std::sqrt(std::max(0.0, s.radius * s.radius - dx * dx));
+  return s.centre.y() + (p.upper ? h : -h);
+}
+
+/// dy/dx just right of x (the order of pieces that leave one point).
+double slopeAt(const Piece& p, const Segment& s, double x) {
+  if (!p.arc) return (p.right.y() - p.left.y()) / (p.right.x() - p.left.x());
+  const double dx = x - s.centre.x();
+  const double h = std::sqrt(std::max(0.0, s.radius * s.radius - dx * dx));
+  // Where x turns, the slope is infinite: upwards from the circle's left point on the upper half,
+  // downwards on the lower; the other way round at its right point.
+  if (h <= 1e-300) return (p.upper == (dx < 0)) ? 1e300 : -1e300;
+  return p.upper ? -dx / h : dx / h;
+}
+
+void addPieces(const Segment& s, std::uint32_t index, std::vector<Piece>& out) {
+  auto lexLess = [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
+  auto add = [&](const Vec2& a, const Vec2& b, bool arc, bool upper) {
+    Piece p;
+    p.seg = index;
+    p.left = lexLess(b, a) ? b : a;
+    p.right = lexLess(b, a) ? a : b;
+    p.arc = arc;
+    p.upper = upper;
+    out.push_back(p);
+  };
+  if (!s.isArc()) {
+    add(s.start, s.end, false, false);
+    return;
+  }
+  // Split where x turns: at the angles 0 and pi (mod 2 pi) inside the sweep.
+  const double a0 = s.startAngle, a1 = s.startAngle + s.sweep;
+  const double lo = std::min(a0, a1), hi = std::max(a0, a1);
+  std::vector<double> cuts{lo};
+  for (double k = std::ceil(lo / kPi); k * kPi < hi; k += 1.0)
+    if (k * kPi > lo) cuts.push_back(k * kPi);
+  cuts.push_back(hi);
+  auto at = [&](double ang) {
+    if (ang == a0) return s.start;
+    return Vec2(s.centre + s.radius * Vec2(std::cos(ang), std::sin(ang)));
+  };
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double mid = (cuts[k] + cuts[k + 1]) / 2;
+    add(at(cuts[k]), at(cuts[k + 1]), true, std::sin(mid) > 0);
+  }
+}
+
+/// True when no pair of the live segments touches (`touches` decides a pair exactly); tested counts
+/// the pairs it asked about.
+bool sweepFindsNoContact(std::span<const Segment> path, const std::vector<std::size_t>& live,
+                         const std::function<bool(std::size_t, std::size_t)>& touches, std::size_t& tested) {
+  std::vector<Piece> pieces;
+  pieces.reserve(live.size() + live.size() / 2);
+  for (std::size_t i : live) addPieces(path[i], static_cast<std::uint32_t>(i), pieces);
+  struct Event {
+    Vec2 at;
+    std::uint32_t piece;
+    bool enters;
+  };
+  std::vector<Event> events;
+  events.reserve(2 * pieces.size());
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    events.push_back({pieces[k].left, static_cast<std::uint32_t>(k), true});
+    events.push_back({pieces[k].right, static_cast<std::uint32_t>(k), false});
+  }
+  // By x, then y; at one point the pieces enter before others leave, so that everything meeting
+  // there is in the order at once.
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+    if (a.at.x() != b.at.x()) return a.at.x() < b.at.x();
+    if (a.at.y() != b.at.y()) return a.at.y() < b.at.y();
+    return a.enters > b.enters;
+  });
+  const auto probeIndex = static_cast<std::uint32_t>(pieces.size());
+  pieces.emplace_back();
+  pieces.back().seg = std::numeric_limits<std::uint32_t>::max();
+  double sweepX = 0.0;
+  auto less = [&](std::uint32_t a, std::uint32_t b) {
+    if (a == b) return false;
+    const Piece &pa = pieces[a], &pb = pieces[b];
+    const Segment& sa = a == probeIndex ? path[0] : path[pa.seg];  // the probe is a line: its segment unused
+    const Segment& sb = b == probeIndex ? path[0] : path[pb.seg];
+    const double ya = pa.vertical() ? pa.left.y() : yAt(pa, sa, sweepX);
+    const double yb = pb.vertical() ? pb.left.y() : yAt(pb, sb, sweepX);
+    if (ya != yb) return ya < yb;
+    const double ma = pa.vertical() ? 1e300 : slopeAt(pa, sa, sweepX);
+    const double mb = pb.vertical() ? 1e300 : slopeAt(pb, sb, sweepX);
+    if (ma != mb) return ma < mb;
+    return a < b;
+  };
+  std::set<std::uint32_t, decltype(less)> order(less);
+  std::vector<std::set<std::uint32_t, decltype(less)>::iterator> where(pieces.size(), order.end());
+  std::vector<std::uint32_t> verticals;  // the vertical pieces at sweepX
+  double verticalsX = -INFINITY;
+  auto test = [&](std::uint32_t a, std::uint32_t b) {
+    if (pieces[a].seg == pieces[b].seg) return false;  // two pieces of one arc meet where it turns
+    ++tested;
+    return touches(pieces[a].seg, pieces[b].seg);
+  };
+  for (const Event& e : events) {
+    sweepX = e.at.x();
+    if (sweepX != verticalsX) {
+      verticals.clear();
+      verticalsX = sweepX;
+    }
+    const Piece& p = pieces[e.piece];
+    if (!e.enters) {
+      if (p.vertical()) continue;  // never in the order
+      const auto it = where[e.piece];
+      if (it != order.begin() && std::next(it) != order.end() && test(*std::prev(it), *std::next(it))) return false;
+      order.erase(it);
+      continue;
+    }
+    // A point arriving at this x inside a vertical line there.
+    for (std::uint32_t v : verticals)
+      if (e.at.y() >= pieces[v].left.y() - 1e-9 && e.at.y() <= pieces[v].right.y() + 1e-9 && test(v, e.piece))
+        return false;
+    if (p.vertical()) {
+      // Everything the sweep holds within the line's y range at this x.
+      for (std::uint32_t v : verticals)
+        if (test(v, e.piece)) return false;
+      Piece& probe = pieces[probeIndex];  // a flat piece at the range's foot, to find where it starts
+      probe.left = Vec2(sweepX, p.left.y() - 1e-9);
+      probe.right = Vec2(sweepX + 1.0, p.left.y() - 1e-9);
+      for (auto q = order.lower_bound(probeIndex); q != order.end(); ++q) {
+        if (yAt(pieces[*q], path[pieces[*q].seg], sweepX) > p.right.y() + 1e-9) break;
+        if (test(*q, e.piece)) return false;
+      }
+      verticals.push_back(e.piece);
+      continue;
+    }
+    const auto [it, inserted] = order.insert(e.piece);
+    where[e.piece] = it;
+    if (it != order.begin() && test(*std::prev(it), e.piece)) return false;
+    if (std::next(it) != order.end() && test(e.piece, *std::next(it))) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+// ---- 4. report sweep --------------------------------------------------------------------------
 
 SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, const SelfIntersectionOptions& options) {
   SelfIntersectionResult result;
@@ -217,38 +388,73 @@ SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, cons
       if (path[i].length() > tol) rank[i] = k++;
   }
   const std::size_t live = byMinX.size();
+  auto isForward = [&](std::size_t i, std::size_t j) {
+    return rank[j] == rank[i] + 1 && near(path[i].end, path[j].start, tol);
+  };
+  auto isWrap = [&](std::size_t i, std::size_t j) {
+    return options.closed && live > 2 && rank[i] == 0 && rank[j] == live - 1 && near(path[j].end, path[i].start, tol);
+  };
 
-  std::vector<std::size_t> active;
-  for (const auto& [minX, idx] : byMinX) {
-    const Box& box = boxes[idx];
-    std::size_t w = 0;
-    for (std::size_t r = 0; r < active.size(); ++r) {
-      const std::size_t other = active[r];
-      if (boxes[other].max.x() < box.min.x() - tol) continue;  // leaves the sweep
-      active[w++] = other;
-      if (!boxes[other].overlaps(box, tol)) continue;
-      ++result.candidatePairs;
-      const std::size_t i = std::min(idx, other), j = std::max(idx, other);
-      const bool forward = rank[j] == rank[i] + 1 && near(path[i].end, path[j].start, tol);
-      const bool wrap =
-          options.closed && live > 2 && rank[i] == 0 && rank[j] == live - 1 && near(path[j].end, path[i].start, tol);
-      classifyPair(path, i, j, forward, wrap, tol, result.contacts);
-      if (result.contacts.size() >= options.maxContacts) {
-        result.truncated = true;
-        result.contacts.resize(options.maxContacts);
-        std::sort(result.contacts.begin(), result.contacts.end(), [](const Contact& l, const Contact& r2) {
-          return l.first != r2.first ? l.first < r2.first : l.second < r2.second;
-        });
-        return result;
-      }
-    }
-    active.resize(w);
-    active.push_back(idx);
-  }
-  std::sort(result.contacts.begin(), result.contacts.end(), [](const Contact& l, const Contact& r) {
+  auto byPair = [](const Contact& l, const Contact& r) {
     return l.first != r.first ? l.first < r.first : l.second < r.second;
-  });
-  return result;
+  };
+  // The box sweep: every pair whose boxes overlap, tested exactly. With a budget of work (entries
+  // of the active list visited), it gives up past it and says so (nothing: not finished).
+  auto boxSweep = [&](std::size_t budget) -> std::optional<SelfIntersectionResult> {
+    SelfIntersectionResult r;
+    std::size_t work = 0;
+    std::vector<std::size_t> active;
+    for (const auto& [minX, idx] : byMinX) {
+      const Box& box = boxes[idx];
+      work += active.size();
+      if (budget && work > budget) return std::nullopt;
+      std::size_t w = 0;
+      for (std::size_t a = 0; a < active.size(); ++a) {
+        const std::size_t other = active[a];
+        if (boxes[other].max.x() < box.min.x() - tol) continue;  // leaves the sweep
+        active[w++] = other;
+        if (!boxes[other].overlaps(box, tol)) continue;
+        ++r.candidatePairs;
+        const std::size_t i = std::min(idx, other), j = std::max(idx, other);
+        classifyPair(path, i, j, isForward(i, j), isWrap(i, j), tol, r.contacts);
+        if (r.contacts.size() >= options.maxContacts) {
+          r.truncated = true;
+          r.contacts.resize(options.maxContacts);
+          std::sort(r.contacts.begin(), r.contacts.end(), byPair);
+          return r;
+        }
+      }
+      active.resize(w);
+      active.push_back(idx);
+    }
+    std::sort(r.contacts.begin(), r.contacts.end(), byPair);
+    return r;
+  };
+  if (options.method == SweepMethod::Boxes) return *boxSweep(0);
+
+  // On the shapes wire programs have, few boxes overlap and the box sweep is the fastest answer:
+  // tried first with work linear in the path. Where boxes pile up (long spikes of a star), the
+  // decision sweep shows in O(n log n) that the path does not meet itself — what a program that can
+  // be cut needs; only a path that does meet itself is then swept by boxes in full to list where.
+  if (options.method == SweepMethod::Auto)
+    if (std::optional<SelfIntersectionResult> quick = boxSweep(16 * live + 100000)) return *quick;
+  std::vector<std::size_t> liveIndex;
+  liveIndex.reserve(live);
+  for (std::size_t i = 0; i < n; ++i)
+    if (rank[i] < n) liveIndex.push_back(i);
+  std::vector<Contact> scratch;
+  auto touches = [&](std::size_t a, std::size_t b) {
+    const std::size_t i = std::min(a, b), j = std::max(a, b);
+    scratch.clear();
+    classifyPair(path, i, j, isForward(i, j), isWrap(i, j), tol, scratch);
+    return !scratch.empty();
+  };
+  std::size_t tested = 0;
+  if (sweepFindsNoContact(path, liveIndex, touches, tested)) {
+    result.candidatePairs = tested;
+    return result;
+  }
+  return *boxSweep(0);
 }
 
 }  // namespace kerf::geometry

@@ -107,20 +107,28 @@ int main(int argc, char** argv) {
   std::printf("tessellation k=0.01: %7.3f s  %10zu points  %10.0f points/s\n", bestSample, points,
               static_cast<double>(points) / bestSample);
 
-  double bestSelf = 1e30;
-  std::size_t contacts = 0, candidates = 0;
+  // What kerf check runs (auto), the box sweep alone and the decision sweep alone, interleaved.
+  using kerf::geometry::SweepMethod;
+  const SweepMethod methods[] = {SweepMethod::Auto, SweepMethod::Boxes, SweepMethod::Decision};
+  double best[3] = {1e30, 1e30, 1e30};
+  std::size_t pairs[3] = {0, 0, 0}, contacts = 0;
   for (int r = 0; r < repeat; ++r) {
-    kerf::geometry::SelfIntersectionOptions o;
-    o.closed = true;
-    const auto t0 = Clock::now();
-    const auto result = kerf::geometry::findSelfIntersections(path.segments, o);
-    const auto t1 = Clock::now();
-    bestSelf = std::min(bestSelf, seconds(t0, t1));
-    contacts = result.contacts.size();
-    candidates = result.candidatePairs;
+    for (int m = 0; m < 3; ++m) {
+      kerf::geometry::SelfIntersectionOptions o;
+      o.closed = true;
+      o.method = methods[m];
+      const auto t0 = Clock::now();
+      const auto result = kerf::geometry::findSelfIntersections(path.segments, o);
+      const auto t1 = Clock::now();
+      best[m] = std::min(best[m], seconds(t0, t1));
+      pairs[m] = result.candidatePairs;
+      if (m == 0) contacts = result.contacts.size();
+    }
   }
-  std::printf("self-intersection:  %8.3f s  %zu segments, %zu box pairs tested, %zu contacts\n", bestSelf,
-              path.segments.size(), candidates, contacts);
+  std::printf("self-intersection:  %8.3f s  %zu segments, %zu pairs tested, %zu contacts (auto)\n", best[0],
+              path.segments.size(), pairs[0], contacts);
+  std::printf("  boxes alone:      %8.3f s  %zu pairs;  decision sweep alone: %.3f s  %zu pairs\n", best[1], pairs[1],
+              best[2], pairs[2]);
 
   Diagnostics checkDiags(20);
   const auto c0 = Clock::now();

@@ -36,10 +36,18 @@ struct Contact {
   Vec2 point = Vec2::Zero();
 };
 
+/// How findSelfIntersections looks for contacts (see there).
+enum class SweepMethod : std::uint8_t {
+  Auto,      ///< the box sweep within a linear budget of work, then the decision sweep
+  Boxes,     ///< the box sweep alone, however long it takes
+  Decision,  ///< the decision sweep first (the tests compare it with Boxes)
+};
+
 struct SelfIntersectionOptions {
   double tolerance = 1e-6;        ///< mm
   bool closed = false;            ///< the last segment is a neighbour of the first
   std::size_t maxContacts = 256;  ///< stop collecting after this many
+  SweepMethod method = SweepMethod::Auto;
 };
 
 struct SelfIntersectionResult {
@@ -52,8 +60,12 @@ struct SelfIntersectionResult {
 /// only end point to end point (a vertex visited twice, as lead-in and lead-out do, or two arcs
 /// that close a circle) are not contacts. Zero-length segments are skipped.
 ///
-/// Method: boxes sorted by x and swept, with exact tests for the pairs whose boxes overlap;
-/// O(n log n + c) for c overlapping pairs (docs/geometry.md).
+/// Method: boxes sorted by x and swept, with exact tests for the pairs whose boxes overlap —
+/// O(n log n + c) for c overlapping pairs, the fastest on the shapes wire programs have — within a
+/// budget of work linear in n. Past it (long spikes, whose boxes all overlap), Shamos and Hoey's
+/// sweep over x-monotone pieces decides whether any pair meets, testing only neighbours along the
+/// sweep line: O(n log n) on any shape. Only a path that meets itself is then swept by boxes in
+/// full to list its contacts (docs/geometry.md).
 SelfIntersectionResult findSelfIntersections(std::span<const Segment> path,
                                              const SelfIntersectionOptions& options = {});
 

@@ -335,7 +335,9 @@ bool sweepFindsNoContact(std::span<const Segment> path, const std::vector<std::s
       order.erase(it);
       continue;
     }
-    // A point arriving at this x inside a vertical line there.
+    // A point arriving at this x inside a vertical line there. Points arrive by y, so a line that
+    // ends below this one is done with (a long vertical drawn in many pieces stays a short list).
+    std::erase_if(verticals, [&](std::uint32_t v) { return pieces[v].right.y() < e.at.y() - 1e-9; });
     for (std::uint32_t v : verticals)
       if (e.at.y() >= pieces[v].left.y() - 1e-9 && e.at.y() <= pieces[v].right.y() + 1e-9 && test(v, e.piece))
         return false;

@@ -299,6 +299,22 @@ TEST(self_intersection, the_decision_sweep_agrees_with_the_box_sweep_on_random_s
   EXPECT_GT(touched, 80);
 }
 
+TEST(self_intersection, a_long_vertical_in_many_pieces_is_decided_with_few_tests) {
+  // 100,000 collinear vertical pieces (all boxes at one x: the box sweep's budget runs out), closed
+  // by two lines and an arc.
+  std::vector<Segment> path;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i) path.push_back(Segment::line({0, i * 0.01}, {0, (i + 1) * 0.01}));
+  path.push_back(Segment::line({0, n * 0.01}, {5, n * 0.01}));
+  path.push_back(Segment::arc({5, n * 0.01}, {5, 0}, {5, n * 0.005}, ArcDirection::Clockwise));
+  path.push_back(Segment::line({5, 0}, {0, 0}));
+  SelfIntersectionOptions o;
+  o.closed = true;
+  const auto r = findSelfIntersections(path, o);
+  EXPECT_TRUE(r.contacts.empty());
+  EXPECT_LT(r.candidatePairs, 4 * path.size());
+}
+
 TEST(self_intersection, a_star_of_long_spikes_is_decided_with_few_tests) {
   // 20,000 spikes: every box overlaps most others (the box sweep tests millions of pairs), while
   // the decision sweep tests each piece against its neighbours only.

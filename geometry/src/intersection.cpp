@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory_resource>
 #include <numeric>
 #include <optional>
 #include <set>
@@ -212,7 +213,8 @@ namespace {
 
 struct Piece {
   std::uint32_t seg = 0;
-  Vec2 left, right;  // by (x, y)
+  Vec2 left, right;    // by (x, y)
+  double slope = 0.0;  // a line's dy/dx (not vertical)
   bool arc = false;
   bool upper = false;  // arc: the half above the centre
   [[nodiscard]] bool vertical() const { return !arc && left.x() == right.x(); }
@@ -221,7 +223,7 @@ struct Piece {
 double yAt(const Piece& p, const Segment& s, double x) {
   if (x <= p.left.x()) return p.left.y();
   if (x >= p.right.x()) return p.right.y();
-  if (!p.arc) return p.left.y() + (x - p.left.x()) * (p.right.y() - p.left.y()) / (p.right.x() - p.left.x());
+  if (!p.arc) return p.left.y() + (x - p.left.x()) * p.slope;
   const double dx = x - s.centre.x();
   const double h = std::sqrt(std::max(0.0, s.radius * s.radius - dx * dx));
   return s.centre.y() + (p.upper ? h : -h);
@@ -229,7 +231,7 @@ double yAt(const Piece& p, const Segment& s, double x) {
 
 /// dy/dx just right of x (the order of pieces that leave one point).
 double slopeAt(const Piece& p, const Segment& s, double x) {
-  if (!p.arc) return (p.right.y() - p.left.y()) / (p.right.x() - p.left.x());
+  if (!p.arc) return p.slope;
   const double dx = x - s.centre.x();
   const double h = std::sqrt(std::max(0.0, s.radius * s.radius - dx * dx));
   // Where x turns, the slope is infinite: upwards from the circle's left point on the upper half,
@@ -247,6 +249,7 @@ void addPieces(const Segment& s, std::uint32_t index, std::vector<Piece>& out) {
     p.right = lexLess(b, a) ? a : b;
     p.arc = arc;
     p.upper = upper;
+    if (!arc && p.right.x() != p.left.x()) p.slope = (p.right.y() - p.left.y()) / (p.right.x() - p.left.x());
     out.push_back(p);
   };
   if (!s.isArc()) {
@@ -312,8 +315,10 @@ bool sweepFindsNoContact(std::span<const Segment> path, const std::vector<std::s
     if (ma != mb) return ma < mb;
     return a < b;
   };
-  std::set<std::uint32_t, decltype(less)> order(less);
-  std::vector<std::set<std::uint32_t, decltype(less)>::iterator> where(pieces.size(), order.end());
+  // The nodes come from one arena: a million inserts and erases without a million allocations.
+  std::pmr::unsynchronized_pool_resource arena;
+  std::pmr::set<std::uint32_t, decltype(less)> order(less, &arena);
+  std::vector<decltype(order)::iterator> where(pieces.size(), order.end());
   std::vector<std::uint32_t> verticals;  // the vertical pieces at sweepX
   double verticalsX = -INFINITY;
   auto test = [&](std::uint32_t a, std::uint32_t b) {

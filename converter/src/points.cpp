@@ -338,15 +338,19 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
     return std::max(geometry::sampleCount(toolpath.moves[i].lower, request.sampling),
                     geometry::sampleCount(toolpath.upper[i], request.sampling));
   };
+  // The cut moves, each with whether it starts where the previous one ended (no start point of
+  // its own), decided once for the count and the rows alike.
+  std::vector<std::pair<std::size_t, bool>> cuts;
   std::size_t planned = 0;
   {
     geometry::Vec2 lastLower(0, 0), lastUpper(0, 0);
-    bool first = true;
     for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
       if (!toolpath.moves[i].isCut()) continue;
       const geometry::Segment& lo = toolpath.moves[i].lower;
       const geometry::Segment& up = toolpath.upper[i];
-      const bool joins = !first && (lo.start - lastLower).norm() <= kJoin && (up.start - lastUpper).norm() <= kJoin;
+      const bool joins =
+          !cuts.empty() && (lo.start - lastLower).norm() <= kJoin && (up.start - lastUpper).norm() <= kJoin;
+      cuts.emplace_back(i, joins);
       planned += samplesOf(i) + (joins ? 0 : 1);
       if (planned > kMaxPointsWritten) {
         diags.error(Code::CapacityTooSmall, source, SourceSpan::wholeFile(),
@@ -356,7 +360,6 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
       }
       lastLower = lo.end;
       lastUpper = up.end;
-      first = false;
     }
   }
   if (planned == 0) {
@@ -373,10 +376,7 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
   }
   std::vector<Row> rows;
   rows.reserve(planned);
-  geometry::Vec2 lastLower(0, 0), lastUpper(0, 0);
-  bool any = false;
-  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
-    if (!toolpath.moves[i].isCut()) continue;
+  for (const auto& [i, joins] : cuts) {
     const geometry::Segment& lo = toolpath.moves[i].lower;
     const geometry::Segment& up = toolpath.upper[i];
     const std::size_t n = samplesOf(i);
@@ -384,16 +384,12 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
       const geometry::Vec2 uv = relativeUv ? geometry::Vec2(u - l) : u;
       rows.push_back({l.x(), l.y(), uv.x(), uv.y()});
     };
-    if (!any || (lo.start - lastLower).norm() > kJoin || (up.start - lastUpper).norm() > kJoin)
-      push(lo.start, up.start);
+    if (!joins) push(lo.start, up.start);
     // Both planes at the same t, so each pair is one position of the wire.
     for (std::size_t k = 1; k <= n; ++k) {
       const double t = static_cast<double>(k) / static_cast<double>(n);
       push(k == n ? lo.end : lo.pointAt(t), k == n ? up.end : up.pointAt(t));
     }
-    lastLower = lo.end;
-    lastUpper = up.end;
-    any = true;
   }
   PointOutput out;
   out.sampling = request.sampling;

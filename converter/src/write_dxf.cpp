@@ -298,23 +298,22 @@ std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWrit
   section(body, "BLOCKS");
   if (r2000) {
     for (const auto& [name, owner] : {std::pair{"*Model_Space", modelRecord}, std::pair{"*Paper_Space", paperRecord}}) {
-      body.g(0, "BLOCK");
-      body.owned(owner);
-      body.g(100, "AcDbEntity");
-      if (std::string_view(name) == "*Paper_Space") body.gi(67, 1);
-      body.g(8, "0");
-      body.g(100, "AcDbBlockBegin");
+      // BLOCK and ENDBLK share their head: handle, owner, entity, paper space flag, layer 0.
+      auto head = [&, name = name, owner = owner](const char* type, const char* subclass) {
+        body.g(0, type);
+        body.owned(owner);
+        body.g(100, "AcDbEntity");
+        if (std::string_view(name) == "*Paper_Space") body.gi(67, 1);
+        body.g(8, "0");
+        body.g(100, subclass);
+      };
+      head("BLOCK", "AcDbBlockBegin");
       body.g(2, name);
       body.gi(70, 0);
       body.point(10, {0, 0}, 0);
       body.g(3, name);
       body.g(1, "");
-      body.g(0, "ENDBLK");
-      body.owned(owner);
-      body.g(100, "AcDbEntity");
-      if (std::string_view(name) == "*Paper_Space") body.gi(67, 1);
-      body.g(8, "0");
-      body.g(100, "AcDbBlockEnd");
+      head("ENDBLK", "AcDbBlockEnd");
     }
   }
   endsec(body);

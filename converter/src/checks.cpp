@@ -279,14 +279,39 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
   }
   // Horizontal sections between the planes, each tested exactly.
   const int levels = std::max(2, options.surfaceLevels);
+  bool coarsened = false;
   for (int level = 1; level < levels; ++level) {
     const double s = static_cast<double>(level) / levels;
     Contour section;
     section.z = planes.lower + s * planes.height();
+    // Count before making: huge twisted arcs ask for thousands of pieces a patch. Past the budget,
+    // each polyline patch gets its share of it (at least 2 pieces), and a note says so once.
+    std::size_t wanted = 0, polylines = 0, exact = 0;  // pieces; patches made as polylines; single segments
+    for (const std::size_t i : path.moveIndex) {
+      const std::size_t n = geometry::sectionPieces(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance);
+      wanted += n;
+      (n == 1 ? exact : polylines) += 1;
+    }
+    std::size_t share = geometry::kMaxSectionPieces;
+    if (wanted > options.sectionBudget && polylines > 0) {
+      const std::size_t room = options.sectionBudget > exact ? options.sectionBudget - exact : 0;
+      share = std::max<std::size_t>(2, room / polylines);
+      if (!coarsened) {
+        coarsened = true;
+        const std::size_t head = path.moveIndex.front();
+        diags.report(finding(Severity::Note, Code::SectionsCoarsened, src, moves[head], head,
+                             at3(moves[head].lower.start, planes.lower),
+                             "the sections of the surface would need " + std::to_string(wanted) +
+                                 " pieces, more than the budget of " + std::to_string(options.sectionBudget) +
+                                 ": the twisted patches are tested as polylines of at most " + std::to_string(share) +
+                                 " pieces, coarser than the section tolerance, so a wire crossing closer than their "
+                                 "chord error may be missed"));
+      }
+    }
     for (std::size_t k = 0; k < path.moveIndex.size(); ++k) {
       const std::size_t i = path.moveIndex[k];
       const std::size_t before = section.segments.size();
-      geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, section.segments);
+      geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, section.segments, share);
       section.moveIndex.insert(section.moveIndex.end(), section.segments.size() - before, k);
     }
     geometry::SelfIntersectionOptions so;

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <memory_resource>
 #include <numeric>
@@ -213,8 +212,9 @@ namespace {
 
 struct Piece {
   std::uint32_t seg = 0;
-  Vec2 left, right;    // by (x, y)
-  double slope = 0.0;  // a line's dy/dx (not vertical)
+  std::uint32_t index = 0;  // its place in the sweep's list of pieces
+  Vec2 left, right;         // by (x, y)
+  double slope = 0.0;       // a line's dy/dx (not vertical)
   bool arc = false;
   bool upper = false;  // arc: the half above the centre
   [[nodiscard]] bool vertical() const { return !arc && left.x() == right.x(); }
@@ -265,6 +265,7 @@ void addPieces(const Segment& s, std::uint32_t index, std::vector<Piece>& out) {
   cuts.push_back(hi);
   auto at = [&](double ang) {
     if (ang == a0) return s.start;
+    if (ang == a1) return s.end;  // the ends exactly: the neighbours share them, bit for bit
     return Vec2(s.centre + s.radius * Vec2(std::cos(ang), std::sin(ang)));
   };
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
@@ -273,52 +274,107 @@ void addPieces(const Segment& s, std::uint32_t index, std::vector<Piece>& out) {
   }
 }
 
+/// A piece where the sweep stands: its y there and, to break a tie, its slope just right of it,
+/// with its index for the last tie.
+struct Place {
+  double y, slope;
+  std::uint32_t piece;
+};
+
+/// The order of the pieces along the sweep line (y there, then slope just right of it, then
+/// index), which also places a Place among them. The tree keeps copies of the pieces, so a
+/// comparison reads the node it is at and nothing else (a line's y needs only its own numbers; an
+/// arc's also its segment); the slopes are worked out only on a tie.
+template <typename Y, typename Slope>
+struct OrderAtSweep {
+  Y& y;
+  Slope& slope;
+  using is_transparent = void;
+  bool operator()(const Piece& a, const Piece& b) const {
+    if (a.index == b.index) return false;
+    const double ya = y(a), yb = y(b);
+    if (ya != yb) return ya < yb;
+    const double ma = slope(a), mb = slope(b);
+    return ma != mb ? ma < mb : a.index < b.index;
+  }
+  bool operator()(const Place& a, const Piece& b) const {
+    if (a.piece == b.index) return false;
+    const double yb = y(b);
+    if (a.y != yb) return a.y < yb;
+    const double mb = slope(b);
+    return a.slope != mb ? a.slope < mb : a.piece < b.index;
+  }
+  bool operator()(const Piece& a, const Place& b) const {
+    if (a.index == b.piece) return false;
+    const double ya = y(a);
+    if (ya != b.y) return ya < b.y;
+    const double ma = slope(a);
+    return ma != b.slope ? ma < b.slope : a.index < b.piece;
+  }
+};
+
 /// True when no pair of the live segments touches (`touches` decides a pair exactly); tested counts
 /// the pairs it asked about.
-bool sweepFindsNoContact(std::span<const Segment> path, const std::vector<std::size_t>& live,
-                         const std::function<bool(std::size_t, std::size_t)>& touches, std::size_t& tested) {
+template <typename Touches>
+bool sweepFindsNoContact(std::span<const Segment> path, const std::vector<std::size_t>& live, Touches&& touches,
+                         double near, std::size_t& tested) {
   std::vector<Piece> pieces;
   pieces.reserve(live.size() + live.size() / 2);
   for (std::size_t i : live) addPieces(path[i], static_cast<std::uint32_t>(i), pieces);
+  // An event: a point where one or two pieces enter or leave the sweep. Neighbouring pieces of a
+  // path share their joint, so one event serves both and a closed path of n pieces sorts about n
+  // events, not 2n. An entry is piece << 1 | enters.
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   struct Event {
     Vec2 at;
-    std::uint32_t piece;
-    bool enters;
+    std::uint32_t entry[2];
   };
   std::vector<Event> events;
-  events.reserve(2 * pieces.size());
+  events.reserve(pieces.size() + pieces.size() / 8 + 16);
+  std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
   for (std::size_t k = 0; k < pieces.size(); ++k) {
-    events.push_back({pieces[k].left, static_cast<std::uint32_t>(k), true});
-    events.push_back({pieces[k].right, static_cast<std::uint32_t>(k), false});
+    std::size_t mine[2];
+    for (int end = 0; end < 2; ++end) {
+      const Vec2& at = end == 0 ? pieces[k].left : pieces[k].right;
+      const std::uint32_t entry = static_cast<std::uint32_t>(k) << 1 | (end == 0 ? 1u : 0u);
+      mine[end] = SIZE_MAX;
+      for (const std::size_t e : previous)
+        if (e != SIZE_MAX && events[e].entry[1] == kNone && events[e].at.x() == at.x() && events[e].at.y() == at.y()) {
+          events[e].entry[1] = entry;
+          mine[end] = e;
+          break;
+        }
+      if (mine[end] == SIZE_MAX) {
+        events.push_back({at, {entry, kNone}});
+        mine[end] = events.size() - 1;
+      }
+    }
+    previous[0] = mine[0];
+    previous[1] = mine[1];
   }
-  // By x, then y; at one point the pieces enter before others leave, so that everything meeting
-  // there is in the order at once.
+  // By x, then y. At one point the pieces enter before any leaves (below), so that everything
+  // meeting there is in the order at once.
   std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-    if (a.at.x() != b.at.x()) return a.at.x() < b.at.x();
-    if (a.at.y() != b.at.y()) return a.at.y() < b.at.y();
-    return a.enters > b.enters;
+    return a.at.x() != b.at.x() ? a.at.x() < b.at.x() : a.at.y() < b.at.y();
   });
   const auto probeIndex = static_cast<std::uint32_t>(pieces.size());
   pieces.emplace_back();
   pieces.back().seg = std::numeric_limits<std::uint32_t>::max();
+  for (std::size_t k = 0; k < pieces.size(); ++k) pieces[k].index = static_cast<std::uint32_t>(k);
   double sweepX = 0.0;
-  auto less = [&](std::uint32_t a, std::uint32_t b) {
-    if (a == b) return false;
-    const Piece &pa = pieces[a], &pb = pieces[b];
-    const Segment& sa = a == probeIndex ? path[0] : path[pa.seg];  // the probe is a line: its segment unused
-    const Segment& sb = b == probeIndex ? path[0] : path[pb.seg];
-    const double ya = pa.vertical() ? pa.left.y() : yAt(pa, sa, sweepX);
-    const double yb = pb.vertical() ? pb.left.y() : yAt(pb, sb, sweepX);
-    if (ya != yb) return ya < yb;
-    const double ma = pa.vertical() ? 1e300 : slopeAt(pa, sa, sweepX);
-    const double mb = pb.vertical() ? 1e300 : slopeAt(pb, sb, sweepX);
-    if (ma != mb) return ma < mb;
-    return a < b;
+  // A piece entering is found with its own place computed once (heterogeneous lookup), not again
+  // at every node it passes.
+  auto yNow = [&](const Piece& p) {  // the probe is a line: its segment unused
+    return p.vertical() ? p.left.y() : yAt(p, p.arc ? path[p.seg] : path[0], sweepX);
+  };
+  auto slopeNow = [&](const Piece& p) {
+    return p.vertical() ? 1e300 : slopeAt(p, p.arc ? path[p.seg] : path[0], sweepX);
   };
   // The nodes come from one arena: a million inserts and erases without a million allocations.
   std::pmr::unsynchronized_pool_resource arena;
-  std::pmr::set<std::uint32_t, decltype(less)> order(less, &arena);
-  std::vector<decltype(order)::iterator> where(pieces.size(), order.end());
+  using Less = OrderAtSweep<decltype(yNow), decltype(slopeNow)>;
+  std::pmr::set<Piece, Less> order(Less{yNow, slopeNow}, &arena);
+  std::vector<typename decltype(order)::iterator> where(pieces.size(), order.end());
   std::vector<std::uint32_t> verticals;  // the vertical pieces at sweepX
   double verticalsX = -INFINITY;
   auto test = [&](std::uint32_t a, std::uint32_t b) {
@@ -326,44 +382,82 @@ bool sweepFindsNoContact(std::span<const Segment> path, const std::vector<std::s
     ++tested;
     return touches(pieces[a].seg, pieces[b].seg);
   };
-  for (const Event& e : events) {
-    sweepX = e.at.x();
+  // A piece leaves at `at`: its neighbours become neighbours. False when they touch. A neighbour
+  // within `near` of the point (another piece through it) may have hidden a piece beyond it that
+  // touches this one there: those are tested too, up to the first piece farther away.
+  auto leave = [&](std::uint32_t piece, const Vec2& at) {
+    if (pieces[piece].vertical()) return true;  // never in the order
+    const auto it = where[piece];
+    if (it != order.begin()) {
+      auto q = std::prev(it);
+      while (q != order.begin() && yNow(*q) >= at.y() - near) {
+        --q;
+        if (test(q->index, piece)) return false;
+      }
+    }
+    for (auto q = std::next(it); q != order.end() && yNow(*q) <= at.y() + near;) {
+      if (++q == order.end()) break;
+      if (test(piece, q->index)) return false;
+    }
+    if (it != order.begin() && std::next(it) != order.end() && test(std::prev(it)->index, std::next(it)->index))
+      return false;
+    order.erase(it);
+    return true;
+  };
+  // A piece enters at `at`: tested against its new neighbours. False when one touches it.
+  auto enter = [&](std::uint32_t piece, const Vec2& at) {
+    const Piece& p = pieces[piece];
+    // A point arriving at this x inside a vertical line there. Points arrive by y, so a line that
+    // ends below this one is done with (a long vertical drawn in many pieces stays a short list).
+    std::erase_if(verticals, [&](std::uint32_t v) { return pieces[v].right.y() < at.y() - 1e-9; });
+    for (std::uint32_t v : verticals)
+      if (at.y() >= pieces[v].left.y() - 1e-9 && at.y() <= pieces[v].right.y() + 1e-9 && test(v, piece)) return false;
+    if (p.vertical()) {
+      // Everything the sweep holds within the line's y range at this x.
+      for (std::uint32_t v : verticals)
+        if (test(v, piece)) return false;
+      Piece& probe = pieces[probeIndex];  // a flat piece at the range's foot, to find where it starts
+      probe.left = Vec2(sweepX, p.left.y() - 1e-9);
+      probe.right = Vec2(sweepX + 1.0, p.left.y() - 1e-9);
+      for (auto q = order.lower_bound(probe); q != order.end(); ++q) {
+        if (yNow(*q) > p.right.y() + 1e-9) break;
+        if (test(q->index, piece)) return false;
+      }
+      verticals.push_back(piece);
+      return true;
+    }
+    const auto it = order.emplace_hint(order.lower_bound(Place{yNow(p), slopeNow(p), p.index}), p);
+    where[piece] = it;
+    // Its neighbours, and past them every piece still within `near` of the point: pieces that
+    // pass through one point (a shared vertex) must not hide from it a piece that touches it
+    // within the tolerance (their own contact with that piece may be excused: a joint).
+    for (auto q = it; q != order.begin();) {
+      --q;
+      if (test(q->index, piece)) return false;
+      if (yNow(*q) < at.y() - near) break;
+    }
+    for (auto q = std::next(it); q != order.end(); ++q) {
+      if (test(piece, q->index)) return false;
+      if (yNow(*q) > at.y() + near) break;
+    }
+    return true;
+  };
+  for (std::size_t g = 0; g < events.size();) {
+    const Vec2 at = events[g].at;
+    std::size_t h = g + 1;
+    while (h < events.size() && events[h].at.x() == at.x() && events[h].at.y() == at.y()) ++h;
+    sweepX = at.x();
     if (sweepX != verticalsX) {
       verticals.clear();
       verticalsX = sweepX;
     }
-    const Piece& p = pieces[e.piece];
-    if (!e.enters) {
-      if (p.vertical()) continue;  // never in the order
-      const auto it = where[e.piece];
-      if (it != order.begin() && std::next(it) != order.end() && test(*std::prev(it), *std::next(it))) return false;
-      order.erase(it);
-      continue;
-    }
-    // A point arriving at this x inside a vertical line there. Points arrive by y, so a line that
-    // ends below this one is done with (a long vertical drawn in many pieces stays a short list).
-    std::erase_if(verticals, [&](std::uint32_t v) { return pieces[v].right.y() < e.at.y() - 1e-9; });
-    for (std::uint32_t v : verticals)
-      if (e.at.y() >= pieces[v].left.y() - 1e-9 && e.at.y() <= pieces[v].right.y() + 1e-9 && test(v, e.piece))
-        return false;
-    if (p.vertical()) {
-      // Everything the sweep holds within the line's y range at this x.
-      for (std::uint32_t v : verticals)
-        if (test(v, e.piece)) return false;
-      Piece& probe = pieces[probeIndex];  // a flat piece at the range's foot, to find where it starts
-      probe.left = Vec2(sweepX, p.left.y() - 1e-9);
-      probe.right = Vec2(sweepX + 1.0, p.left.y() - 1e-9);
-      for (auto q = order.lower_bound(probeIndex); q != order.end(); ++q) {
-        if (yAt(pieces[*q], path[pieces[*q].seg], sweepX) > p.right.y() + 1e-9) break;
-        if (test(*q, e.piece)) return false;
-      }
-      verticals.push_back(e.piece);
-      continue;
-    }
-    const auto [it, inserted] = order.insert(e.piece);
-    where[e.piece] = it;
-    if (it != order.begin() && test(*std::prev(it), e.piece)) return false;
-    if (std::next(it) != order.end() && test(e.piece, *std::next(it))) return false;
+    for (std::size_t e = g; e < h; ++e)
+      for (const std::uint32_t entry : events[e].entry)
+        if (entry != kNone && (entry & 1u) && !enter(entry >> 1, at)) return false;
+    for (std::size_t e = g; e < h; ++e)
+      for (const std::uint32_t entry : events[e].entry)
+        if (entry != kNone && !(entry & 1u) && !leave(entry >> 1, at)) return false;
+    g = h;
   }
   return true;
 }
@@ -377,24 +471,29 @@ SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, cons
   const double tol = options.tolerance;
   const std::size_t n = path.size();
   std::vector<Box> boxes(n);
-  // Sorting (min x, index) pairs directly is much faster than sorting indices through boxes.
-  std::vector<std::pair<double, std::size_t>> byMinX;
-  byMinX.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (path[i].length() <= tol) continue;  // zero-length moves are reported elsewhere
-    boxes[i] = path[i].bounds();
-    byMinX.emplace_back(boxes[i].min.x(), i);
-  }
-  std::sort(byMinX.begin(), byMinX.end());
-
-  // Neighbours skip over zero-length segments: they share a vertex just the same.
+  // Neighbours skip over zero-length segments (reported elsewhere): they share a vertex just the
+  // same. rank: the place among the live segments, n for the others.
   std::vector<std::size_t> rank(n, n);
-  {
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (path[i].length() > tol) rank[i] = k++;
+  std::size_t live = 0;
+  double lowX = INFINITY, highX = -INFINITY, widths = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (path[i].length() <= tol) continue;
+    rank[i] = live++;
+    boxes[i] = path[i].bounds();
+    lowX = std::min(lowX, boxes[i].min.x());
+    highX = std::max(highX, boxes[i].max.x());
+    widths += boxes[i].max.x() - boxes[i].min.x() + 2 * tol;
   }
-  const std::size_t live = byMinX.size();
+  // Sorting (min x, index) pairs directly is much faster than sorting indices through boxes. Only
+  // the box sweep needs it.
+  std::vector<std::pair<double, std::size_t>> byMinX;
+  auto sortByMinX = [&] {
+    if (byMinX.size() == live) return;
+    byMinX.reserve(live);
+    for (std::size_t i = 0; i < n; ++i)
+      if (rank[i] < n) byMinX.emplace_back(boxes[i].min.x(), i);
+    std::sort(byMinX.begin(), byMinX.end());
+  };
   auto isForward = [&](std::size_t i, std::size_t j) {
     return rank[j] == rank[i] + 1 && near(path[i].end, path[j].start, tol);
   };
@@ -437,14 +536,25 @@ SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, cons
     std::sort(r.contacts.begin(), r.contacts.end(), byPair);
     return r;
   };
-  if (options.method == SweepMethod::Boxes) return *boxSweep(0);
+  if (options.method == SweepMethod::Boxes) {
+    sortByMinX();
+    return *boxSweep(0);
+  }
 
   // On the shapes wire programs have, few boxes overlap and the box sweep is the fastest answer:
   // tried first with work linear in the path. Where boxes pile up (long spikes of a star), the
   // decision sweep shows in O(n log n) that the path does not meet itself — what a program that can
   // be cut needs; only a path that does meet itself is then swept by boxes in full to list where.
-  if (options.method == SweepMethod::Auto)
-    if (std::optional<SelfIntersectionResult> quick = boxSweep(16 * live + 100000)) return *quick;
+  // The box sweep's work is about the number of boxes times the boxes a vertical line meets on
+  // average (their widths over the extent): past the budget already on average, it is not tried.
+  if (options.method == SweepMethod::Auto) {
+    const std::size_t budget = 16 * live + 100000;
+    const double meets = widths / std::max(highX - lowX, 1e-300);
+    if (meets * static_cast<double>(live) <= static_cast<double>(budget)) {
+      sortByMinX();
+      if (std::optional<SelfIntersectionResult> quick = boxSweep(budget)) return *quick;
+    }
+  }
   std::vector<std::size_t> liveIndex;
   liveIndex.reserve(live);
   for (std::size_t i = 0; i < n; ++i)
@@ -457,10 +567,11 @@ SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, cons
     return !scratch.empty();
   };
   std::size_t tested = 0;
-  if (sweepFindsNoContact(path, liveIndex, touches, tested)) {
+  if (sweepFindsNoContact(path, liveIndex, touches, tol, tested)) {
     result.candidatePairs = tested;
     return result;
   }
+  sortByMinX();
   return *boxSweep(0);
 }
 

@@ -235,11 +235,14 @@ TEST(self_intersection, the_decision_sweep_agrees_with_the_box_sweep_on_random_s
   // Star-shaped polygons (sorted angles, random radii: simple), with arcs bulging from some edges,
   // axis-parallel and vertical edges, and in some trials one vertex pulled onto another edge
   // (a touch within the tolerance) or across it (a crossing). Whatever the case, the decision
-  // sweep must find a contact exactly when the box sweep lists one.
+  // sweep must find a contact exactly when the box sweep lists one. 3,000 trials; 120,000 with
+  // seeds 12-15 passed once. Two faults were found this way: pieces through one point hiding a
+  // touch from each other (the sweep now looks past them), and an arc's end recomputed from its
+  // angle, a rounding away from its neighbour's start, which put the two in the wrong order.
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0, 1);
   int clean = 0, touched = 0;
-  for (int trial = 0; trial < 1000; ++trial) {
+  for (int trial = 0; trial < 3000; ++trial) {
     const int n = 5 + static_cast<int>(unit(rng) * 60);
     std::vector<double> angles(n);
     for (double& a : angles) a = unit(rng) * 2 * std::numbers::pi;

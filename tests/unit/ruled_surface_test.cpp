@@ -248,3 +248,37 @@ TEST(ruled_surface_mesh, vertex_slope_is_the_generator_slope_and_leaning_patches
 }
 
 }  // namespace
+
+namespace {
+
+// A huge twisted arc pair (the fuzzer's slow input: R 50 m against a turned line): the mesh
+// counts its triangles before it makes vertices, so a small budget costs little memory.
+TEST(ruled_surface_mesh, the_triangle_budget_is_counted_before_any_vertex_is_made) {
+  using namespace kerf::geometry;
+  std::vector<Segment> lo, up;
+  for (int k = 0; k < 40; ++k) {
+    const double x = 100000.0 * k;
+    lo.push_back(Segment::arc({x, 0}, {x + 100000, 0}, {x + 50000, 100}, ArcDirection::Clockwise));
+    up.push_back(Segment::line({x + 30000, 5000}, {x + 70000, -5000}));
+  }
+  const Planes planes{0.0, 50.0};
+  MeshOptions opt;
+  opt.tolerance = 0.1;
+  const Mesh full = meshRuledSurface(std::span(lo).first(1), std::span(up).first(1), planes, opt);
+  ASSERT_FALSE(full.truncated);
+  ASSERT_GT(full.triangles.size(), 10000u) << "the case must be big enough to be cut short";
+  for (const std::size_t budget : {std::size_t{0}, std::size_t{1}, std::size_t{1000}, full.triangles.size() - 1}) {
+    opt.maxTriangles = budget;
+    const Mesh m = meshRuledSurface(lo, up, planes, opt);
+    EXPECT_TRUE(m.truncated) << budget;
+    EXPECT_LE(m.triangles.size(), budget);
+    // Each generator brings at most kMaxMeshCuts + 1 vertices, and each kept cell two triangles.
+    EXPECT_LE(m.vertices.size(), (budget / 2 + 2) * (kMaxMeshCuts + 1)) << budget;
+  }
+  opt.maxTriangles = full.triangles.size();
+  const Mesh exact = meshRuledSurface(std::span(lo).first(1), std::span(up).first(1), planes, opt);
+  EXPECT_FALSE(exact.truncated) << "a budget of exactly the mesh's triangles is enough";
+  EXPECT_EQ(exact.triangles.size(), full.triangles.size());
+}
+
+}  // namespace

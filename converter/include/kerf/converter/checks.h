@@ -15,6 +15,9 @@ struct CheckOptions {
   std::optional<double> uvRange;   ///< --uv-range: largest |upper - lower| per axis, mm
   int surfaceLevels = 16;          ///< sections of the surface tested: z at k/levels, 0 < k < levels
   double sectionTolerance = 5e-3;  ///< mm: chord tolerance of sections that are not lines or arcs
+  /// Pieces of one section at most, counted before any is made; past it every polyline patch gets
+  /// its share, coarser than sectionTolerance, and a note says so (K0657).
+  std::size_t sectionBudget = 100'000;
 };
 
 struct SurfaceMeasures;

@@ -126,6 +126,7 @@ enum class Code : std::uint16_t {
   SurfaceFold = 654,
   ClosureMismatch = 655,
   UvOutOfRange = 656,
+  SectionsCoarsened = 657,
   // Numbers
   IntegerUnitSuspect = 701,
   // Emitters and options

@@ -79,7 +79,14 @@ inline constexpr std::size_t kMaxSectionPieces = 4096;
 /// line or an arc (line with line, exact; two arcs with the same sweep, exact — two vectors turning
 /// at the same rate add up to one — or with sweeps that differ by d where d max(r) is within
 /// half the tolerance), otherwise a polyline within tolerance of it. Returns true when exact.
-bool appendSection(const Segment& lower, const Segment& upper, double s, double tolerance, std::vector<Segment>& out);
+/// maxPieces (at most kMaxSectionPieces) caps the polyline: a caller with a budget for a whole
+/// section (sectionPieces counts first) gives each patch its share.
+bool appendSection(const Segment& lower, const Segment& upper, double s, double tolerance, std::vector<Segment>& out,
+                   std::size_t maxPieces = kMaxSectionPieces);
+
+/// How many segments appendSection appends for the patch at s (without maxPieces), without making
+/// them.
+std::size_t sectionPieces(const Segment& lower, const Segment& upper, double s, double tolerance);
 
 // ---- meshes ------------------------------------------------------------------------------------
 

@@ -1,13 +1,12 @@
-// kerf export FILE -o part.vtp|.stl|.ply: the ruled surface for ParaView and CAD (VTK writers);
-// -o part.dxf: the contours as a drawing (converter/dxf_write.h). Its findings are those kerf check
-// reports for the same options.
+// kerf export FILE -o part.dxf: the contours as a drawing (converter/dxf_write.h); -o
+// part.vtp|.stl|.ply: the ruled surface for ParaView and CAD, written with VTK by the drawing
+// module (draw/export_mesh.cpp). Its findings are those kerf check reports for the same options.
 #include "commands.h"
-#include "draw.h"
+#include "draw_module.h"
 #include "file_io.h"
 #include "load.h"
 
 #include "kerf/converter/dxf_write.h"
-#include "kerf/export/mesh_export.h"
 
 #include <CLI/CLI.hpp>
 
@@ -76,31 +75,10 @@ int runExport(const ExportArgs& a) {
     reportError("--dxf and --rapids are for a drawing: -o must end in .dxf");
     return kExitUsage;
   }
-  const auto format = exporter::formatOfPath(a.output);
-  if (!format) {
-    reportError("-o must end in .vtp, .stl, .ply or .dxf, not '" + a.output + "'");
-    return kExitUsage;
-  }
-  std::optional<Loaded> in = loadOne(a.common);
-  if (!in) return kExitUsage;
-  const converter::Pipeline& p = in->pipeline;
-  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), a.caps);
-  if (data.surface.mesh.triangles.empty()) {
-    reportError("nothing is cut, so there is no surface to export");
-    return kExitErrors;
-  }
   std::string error;
-  const bool written = writeOutputVia(
-      a.output, in->inputs,
-      [&](const std::string& tmp, std::string& err) { return exporter::writeMesh(data, *format, tmp, err); }, error);
-  if (!written) {
-    reportError(error);
-    return kExitUsage;
-  }
-  std::cerr << "kerf: wrote " << data.surface.mesh.triangles.size() << " triangles, "
-            << data.surface.mesh.vertices.size() << " points to " << a.output
-            << (data.surface.mesh.truncated ? " (incomplete: triangle limit reached)" : "") << "\n";
-  return verdictExit(p);
+  const DrawCommands* draw = loadDrawCommands(error);
+  if (!draw) return drawModuleMissing(error);
+  return draw->exportMesh(a);
 }
 
 }  // namespace kerf::cli

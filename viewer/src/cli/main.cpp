@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   using namespace kerf::cli;
   CLI::App app{"Kerf: verify, explain and convert wire-EDM NC programs"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "kerf 0.1.0");
+  app.set_version_flag("--version", std::string("kerf ") + KERF_VERSION);
 
   CheckArgs check;
   ExplainArgs explain;

@@ -1,18 +1,9 @@
-// kerf render FILE -o part.png: a headless picture (no display, no GPU), with the findings kerf
-// check reports for the same options.
+// kerf render FILE -o part.png: its options. The picture itself is drawn by the drawing module
+// (draw/render.cpp, loaded by draw_module.h only when a command draws).
 #include "commands.h"
-#include "draw.h"
-#include "file_io.h"
-#include "load.h"
-
-#include "kerf/converter/points.h"
-#include "kerf/headless/context.h"
-#include "kerf/render/scene.h"
-#include "ui/picture.h"
+#include "draw_module.h"
 
 #include <CLI/CLI.hpp>
-
-#include <iostream>
 
 namespace kerf::cli {
 
@@ -42,40 +33,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& a) {
 }
 
 int runRender(const RenderArgs& a) {
-  ui::PictureRequest request;
-  if (!sizeOption(a.size, request.width, request.height)) return kExitUsage;
-  request.view = *render::parseView(a.view);
-  request.backend = *headless::parseBackend(a.backend);
-  request.samples = a.samples;
-  request.options.colourBySlope = a.colourBy.has_value();
-  request.options.highlightFindings = a.highlight;
-  const std::string& file = a.common.input.files.front();
-  std::optional<Loaded> in = loadOne(a.common);
-  if (!in) return kExitUsage;
-  const converter::Pipeline& p = in->pipeline;
-  const std::vector<geometry::Segment> reference = converter::referenceGeometry(p);
-  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), reference);
-  request.annotation = annotationOf(file, p);
-  request.annotation.legend = request.options.colourBySlope;
-  request.annotation.labels = a.highlight;
-  const ui::PictureResult result = ui::renderPicture(scene, request);
-  if (result.png.empty()) {
-    reportError(result.error);
-    return kExitUsage;
-  }
   std::string error;
-  if (!writeOutput(a.output, in->inputs, result.png, error)) {
-    reportError(error);
-    return kExitUsage;
-  }
-  std::cerr << "kerf: wrote " << request.width << "x" << request.height << " " << render::viewName(request.view)
-            << " view (" << scene.triangles() << " triangles) to " << a.output << "\n";
-  if (a.timings)
-    std::cerr << "kerf: " << result.context << "; context " << converter::formatFixed(result.contextSeconds, 3)
-              << " s, upload " << converter::formatFixed(result.uploadSeconds, 3) << " s, draw+read "
-              << converter::formatFixed(result.drawSeconds, 3) << " s, PNG "
-              << converter::formatFixed(result.encodeSeconds, 3) << " s\n";
-  return verdictExit(p);
+  const DrawCommands* draw = loadDrawCommands(error);
+  if (!draw) return drawModuleMissing(error);
+  return draw->render(a);
 }
 
 }  // namespace kerf::cli

@@ -1,6 +1,8 @@
-// What the commands that draw share: the picture's title and the scene's options.
+// The drawing module (libkerf-draw.so, cli/draw_module.h): the commands that draw, and what they
+// share (the picture's title and the scene's options).
 #pragma once
 
+#include "commands.h"
 #include "options.h"
 
 #include "kerf/converter/pipeline.h"
@@ -16,5 +18,9 @@ namespace kerf::cli {
 ui::Annotation annotationOf(const std::string& input, const converter::Pipeline& pipeline);
 
 render::SceneOptions sceneOptionsOf(const MeshOptions& mesh);
+
+int drawRender(const RenderArgs& args);
+int drawView(const ViewArgs& args);
+int drawExportMesh(const ExportArgs& args);
 
 }  // namespace kerf::cli

@@ -1,0 +1,41 @@
+// kerf export FILE -o part.vtp|.stl|.ply, in the drawing module: the ruled surface for ParaView
+// and CAD (VTK writers). Its findings are those kerf check reports for the same options.
+#include "draw.h"
+#include "file_io.h"
+#include "load.h"
+
+#include "kerf/export/mesh_export.h"
+
+#include <iostream>
+
+namespace kerf::cli {
+
+int drawExportMesh(const ExportArgs& a) {
+  const auto format = exporter::formatOfPath(a.output);
+  if (!format) {
+    reportError("-o must end in .vtp, .stl, .ply or .dxf, not '" + a.output + "'");
+    return kExitUsage;
+  }
+  std::optional<Loaded> in = loadOne(a.common);
+  if (!in) return kExitUsage;
+  const converter::Pipeline& p = in->pipeline;
+  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), a.caps);
+  if (data.surface.mesh.triangles.empty()) {
+    reportError("nothing is cut, so there is no surface to export");
+    return kExitErrors;
+  }
+  std::string error;
+  const bool written = writeOutputVia(
+      a.output, in->inputs,
+      [&](const std::string& tmp, std::string& err) { return exporter::writeMesh(data, *format, tmp, err); }, error);
+  if (!written) {
+    reportError(error);
+    return kExitUsage;
+  }
+  std::cerr << "kerf: wrote " << data.surface.mesh.triangles.size() << " triangles, "
+            << data.surface.mesh.vertices.size() << " points to " << a.output
+            << (data.surface.mesh.truncated ? " (incomplete: triangle limit reached)" : "") << "\n";
+  return verdictExit(p);
+}
+
+}  // namespace kerf::cli

@@ -1,0 +1,47 @@
+// kerf view FILE, in the drawing module: the window (GLFW + Dear ImGui), with the findings kerf
+// check reports for the same options.
+#include "draw.h"
+#include "load.h"
+
+#include "window/window.h"
+
+namespace kerf::cli {
+
+int drawView(const ViewArgs& a) {
+  window::WindowRequest request;
+  if (!sizeOption(a.size, request.width, request.height)) return kExitUsage;
+  if (a.screenshot && a.frames <= 0) {
+    reportError("--screenshot needs --frames N: the window is saved after N frames");
+    return kExitUsage;
+  }
+  const std::string& file = a.common.input.files.front();
+  std::optional<Loaded> in = loadOne(a.common);
+  if (!in) return kExitUsage;
+  const converter::Pipeline& p = in->pipeline;
+  request.reference = converter::referenceGeometry(p);
+  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), request.reference);
+  request.source = p.source.get();
+  request.toolpath = &p.toolpath;
+  request.findings = p.diags.all();
+  request.scene = &scene;
+  request.sceneOptions = sceneOptionsOf(a.mesh);
+  request.coarseFrames = a.coarse;
+  request.annotation = annotationOf(file, p);
+  request.annotation.legend = true;
+  request.options.colourBySlope = a.colourBy;
+  request.step = a.common.sampling.step.value_or(SamplingOptions::kDefaultStep);
+  request.screenshot = a.screenshot;
+  request.frames = a.frames;
+  request.benchmark = a.benchmark;
+  request.selectLine = a.line;
+  request.playback = a.playback;
+  request.inputs = in->inputs;
+  std::string error;
+  if (!window::runWindow(request, error)) {
+    reportError(error);
+    return kExitUsage;
+  }
+  return verdictExit(p);
+}
+
+}  // namespace kerf::cli

@@ -3,7 +3,10 @@
 // run in CTest fails if the harness rots). Speed targets are never checked here: machines are
 // shared and noisy; the figures go to the README.
 //
-//   kerf_bench [--blocks N] [--repeat R] [--shape circle|star]
+//   kerf_bench [--blocks N] [--repeat R] [--shape circle|star] [--write FILE]
+//
+// --write FILE writes the program and stops (tests/bench/compare.sh times kerf check and LinuxCNC's
+// rs274 on it).
 //
 // The program: a closed contour of N moves around a circle of radius 5 m, alternating G01 lines
 // and G02 R arcs that bulge out, 4 decimals, absolute coordinates. --shape star: N G01 lines
@@ -77,11 +80,14 @@ int main(int argc, char** argv) {
   std::size_t blocks = 1'000'000;
   int repeat = 3;
   bool star = false;
+  const char* write = nullptr;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--shape"))
       star = !std::strcmp(argv[i + 1], "star");
     else if (!std::strcmp(argv[i], "--blocks"))
       blocks = std::strtoul(argv[i + 1], nullptr, 10);
+    else if (!std::strcmp(argv[i], "--write"))
+      write = argv[i + 1];
     else if (!std::strcmp(argv[i], "--repeat"))
       repeat = std::max(1, std::atoi(argv[i + 1]));
   }
@@ -89,6 +95,17 @@ int main(int argc, char** argv) {
   if (star && blocks % 2) ++blocks;  // the spikes alternate: an even count closes the star
   const std::string text = star ? generateStar(blocks) : generate(blocks);
   const double mb = static_cast<double>(text.size()) / 1e6;
+  if (write) {
+    std::FILE* out = std::fopen(write, "wb");
+    const bool ok = out && std::fwrite(text.data(), 1, text.size(), out) == text.size();
+    if (out && std::fclose(out) != 0) return 1;
+    if (!ok) {
+      std::fprintf(stderr, "cannot write %s\n", write);
+      return 1;
+    }
+    std::printf("wrote %zu blocks, %.1f MB to %s\n", blocks, mb, write);
+    return 0;
+  }
   std::printf("program: %zu blocks, %.1f MB\n", blocks, mb);
   const long rssBefore = peakRssKiB();
 

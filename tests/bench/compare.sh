@@ -6,7 +6,13 @@
 #   self-intersection of a star of long spikes (kerf_bench --shape star: Kerf's findSelfIntersections
 #   as kerf check runs it) against CGAL's is_simple_2 (tests/bench/cgal_is_simple.cpp, built here
 #   against Debian's libcgal-dev), 1e4, 1e5 and 1e6 vertices.
-# [Not yet: rs274 -g on a 6 MB program, f3d on a 1e6-triangle mesh.]
+#   kerf check against LinuxCNC's rs274 -g (the standalone interpreter, Debian's linuxcnc-uspace)
+#   on the 6.1 MB benchmark program (kerf_bench --blocks 200000 --write): wall time and peak
+#   memory (GNU time), both reading, interpreting and (Kerf) checking the whole program.
+#   kerf render of the render benchmark's part from its NC file (kerf_bench_render --write: read,
+#   check, mesh 1,000,000 triangles, draw 1024x768 with OSMesa, PNG) against f3d drawing the same
+#   mesh from a ready STL (kerf export, not timed) at 1024x768 under xvfb-run; f3d alone is timed
+#   (inside xvfb-run, so the X server's start is not counted against it).
 set -euo pipefail
 build=${1:?usage: compare.sh BUILD_DIR [R]}
 runs=${2:-5}
@@ -22,7 +28,8 @@ g++ -std=c++17 -O2 -DNDEBUG "$here/cgal_is_simple.cpp" -o "$work/cgal_is_simple"
 stats() {  # min median max of the numbers on stdin
   sort -g | awk '{v[NR]=$1} END {printf "%.3f %.3f %.3f\n", v[1], (NR%2 ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2), v[NR]}'
 }
-for n in 10000 100000 1000000; do
+echo "# self-intersection (kerf_bench --shape star, Kerf's auto method) against CGAL is_simple_2"
+for n in ${KERF_COMPARE_STARS:-10000 100000 1000000}; do
   : > "$work/kerf" && : > "$work/cgal"
   for ((r = 0; r < runs; ++r)); do
     "$build/tests/kerf_bench" --shape star --blocks "$n" --repeat 1 |
@@ -34,3 +41,50 @@ for n in 10000 100000 1000000; do
   printf "star %8d vertices: kerf %s / %s / %s s   cgal is_simple_2 %s / %s / %s s   kerf/cgal %.2f\n" \
     "$n" "$kmin" "$kmed" "$kmax" "$cmin" "$cmed" "$cmax" "$(awk -v a="$kmed" -v b="$cmed" 'BEGIN {print a / b}')"
 done
+
+stats_pair() {  # label, file of "seconds KiB" lines -> "min / median / max s, median MiB"
+  read -r a b c < <(cut -d' ' -f1 "$1" | stats)
+  read -r _ m _ < <(cut -d' ' -f2 "$1" | stats)
+  printf "%s / %s / %s s, %.0f MiB" "$a" "$b" "$c" "$(awk -v k="$m" 'BEGIN {print k / 1024}')"
+}
+if command -v f3d > /dev/null && command -v xvfb-run > /dev/null && [[ -x "$build/tests/kerf_bench_render" ]]; then
+  echo "# kerf render from the NC file against f3d from a ready STL, 1,000,000 triangles, 1024x768"
+  "$build/tests/kerf_bench_render" --repeat 1 --write "$work/part.nc" > /dev/null
+  "$build/viewer/kerf" export "$work/part.nc" --mesh-tolerance 0.002 -o "$work/part.stl" 2> /dev/null
+  : > "$work/kr" && : > "$work/fr"
+  for ((r = 0; r < runs; ++r)); do
+    /usr/bin/time -f "%e %M" -o "$work/t" "$build/viewer/kerf" render "$work/part.nc" --mesh-tolerance 0.002 \
+      --size 1024x768 -o "$work/k.png" 2> /dev/null
+    cat "$work/t" >> "$work/kr"
+    xvfb-run -a -s "-screen 0 1280x800x24" /usr/bin/time -f "%e %M" -o "$work/t" f3d "$work/part.stl" \
+      --output "$work/f.png" --resolution 1024,768 > /dev/null 2>&1
+    cat "$work/t" >> "$work/fr"
+  done
+  printf "render: kerf %s   f3d %s   kerf/f3d %.2f\n" "$(stats_pair "$work/kr")" "$(stats_pair "$work/fr")" \
+    "$(awk -v a="$(cut -d' ' -f1 "$work/kr" | stats | cut -d' ' -f2)" -v b="$(cut -d' ' -f1 "$work/fr" | stats | cut -d' ' -f2)" 'BEGIN {print a / b}')"
+else
+  echo "compare.sh: f3d or xvfb-run is not installed (apt-get install f3d xvfb): the picture pair is skipped" >&2
+fi
+
+if command -v rs274 > /dev/null; then
+  echo "# kerf check against rs274 -g, 6.1 MB program (200,000 blocks): wall s, peak MiB"
+  "$build/tests/kerf_bench" --blocks 200000 --write "$work/program.ngc" > /dev/null
+  bytes=$(stat -c %s "$work/program.ngc")
+  : > "$work/kt" && : > "$work/km" && : > "$work/rt" && : > "$work/rm"
+  for ((r = 0; r < runs; ++r)); do
+    /usr/bin/time -f "%e %M" -o "$work/t" "$build/viewer/kerf" check "$work/program.ngc" > /dev/null
+    read -r t m < "$work/t" && echo "$t" >> "$work/kt" && echo "$m" >> "$work/km"
+    /usr/bin/time -f "%e %M" -o "$work/t" rs274 -g "$work/program.ngc" /dev/null > /dev/null 2>&1
+    read -r t m < "$work/t" && echo "$t" >> "$work/rt" && echo "$m" >> "$work/rm"
+  done
+  read -r kmin kmed kmax < <(stats < "$work/kt")
+  read -r rmin rmed rmax < <(stats < "$work/rt")
+  read -r _ kmem _ < <(stats < "$work/km")
+  read -r _ rmem _ < <(stats < "$work/rm")
+  printf "check %d bytes: kerf %s / %s / %s s, %.0f MiB   rs274 -g %s / %s / %s s, %.0f MiB   rs274/kerf %.1f   kerf bytes of memory per input byte %.1f\n" \
+    "$bytes" "$kmin" "$kmed" "$kmax" "$(awk -v k="$kmem" 'BEGIN {print k / 1024}')" "$rmin" "$rmed" "$rmax" \
+    "$(awk -v k="$rmem" 'BEGIN {print k / 1024}')" "$(awk -v a="$rmed" -v b="$kmed" 'BEGIN {print a / b}')" \
+    "$(awk -v k="$kmem" -v b="$bytes" 'BEGIN {print k * 1024 / b}')"
+else
+  echo "compare.sh: rs274 is not installed (apt-get install linuxcnc-uspace): the reader pair is skipped" >&2
+fi

@@ -4,6 +4,7 @@
 #include "kerf/converter/summary.h"
 #include "kerf/geometry/contour.h"
 #include "kerf/geometry/intersection.h"
+#include "kerf/geometry/parallel.h"
 #include "kerf/geometry/ruled_surface.h"
 
 #include <algorithm>
@@ -277,80 +278,97 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
                              ": the wire turns round by 180° there (after line " + std::to_string(moves[i].line) +
                              ")"));
   }
-  // Horizontal sections between the planes, each tested exactly.
+  // Horizontal sections between the planes, each tested exactly: made and swept a few at a time
+  // on every core (a batch of one per worker in memory at once), reported in order of height.
   const int levels = std::max(2, options.surfaceLevels);
-  bool coarsened = false;
-  for (int level = 1; level < levels; ++level) {
-    const double s = static_cast<double>(level) / levels;
+  struct Level {
     Contour section;
+    geometry::SelfIntersectionResult r;
+    std::size_t wanted = 0, share = geometry::kMaxSectionPieces;
+  };
+  auto makeLevel = [&](int level, Level& out) {
+    const double s = static_cast<double>(level) / levels;
+    Contour& section = out.section;
     section.z = planes.lower + s * planes.height();
     // Count before making: huge twisted arcs ask for thousands of pieces a patch. Past the budget,
     // each polyline patch gets its share of it (at least 2 pieces), and a note says so once.
-    std::size_t wanted = 0, polylines = 0, exact = 0;  // pieces; patches made as polylines; single segments
+    std::size_t polylines = 0, exact = 0;  // patches made as polylines; single segments
     for (const std::size_t i : path.moveIndex) {
       const std::size_t n = geometry::sectionPieces(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance);
-      wanted += n;
+      out.wanted += n;
       (n == 1 ? exact : polylines) += 1;
     }
-    std::size_t share = geometry::kMaxSectionPieces;
-    if (wanted > options.sectionBudget && polylines > 0) {
+    if (out.wanted > options.sectionBudget && polylines > 0) {
       const std::size_t room = options.sectionBudget > exact ? options.sectionBudget - exact : 0;
-      share = std::max<std::size_t>(2, room / polylines);
-      if (!coarsened) {
-        coarsened = true;
-        const std::size_t head = path.moveIndex.front();
-        diags.report(finding(Severity::Note, Code::SectionsCoarsened, src, moves[head], head,
-                             at3(moves[head].lower.start, planes.lower),
-                             "the sections of the surface would need " + std::to_string(wanted) +
-                                 " pieces, more than the budget of " + std::to_string(options.sectionBudget) +
-                                 ": the twisted patches are tested as polylines of at most " + std::to_string(share) +
-                                 " pieces, coarser than the section tolerance, so a wire crossing closer than their "
-                                 "chord error may be missed"));
-      }
+      out.share = std::max<std::size_t>(2, room / polylines);
     }
     for (std::size_t k = 0; k < path.moveIndex.size(); ++k) {
       const std::size_t i = path.moveIndex[k];
       const std::size_t before = section.segments.size();
-      geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, section.segments, share);
+      geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, section.segments,
+                              out.share);
       section.moveIndex.insert(section.moveIndex.end(), section.segments.size() - before, k);
     }
     geometry::SelfIntersectionOptions so;
     so.tolerance = options.tolerance;
     so.closed = closed;
     so.maxContacts = options.maxContacts;
-    const geometry::SelfIntersectionResult r = geometry::findSelfIntersections(section.segments, so);
-    const std::size_t n = path.moveIndex.size();
-    for (const geometry::Contact& x : r.contacts) {
-      const std::size_t ka = section.moveIndex[x.first], kb = section.moveIndex[x.second];
-      const std::size_t mi = path.moveIndex[ka], mj = path.moveIndex[kb];
-      if (seen.count({mi, mj}) || reported.count({mi, mj})) continue;
-      if (x.kind == geometry::ContactKind::Overlap &&
-          isRetrace(section.segments[x.first], section.segments[x.second], x, options.tolerance))
-        continue;
-      reported.insert({mi, mj});
-      const bool neighbours = kb == ka + 1 || (closed && ka == 0 && kb + 1 == n);
-      if (ka != kb && !neighbours && atSeam(toolpath, mi, mj, options.tolerance)) {
-        seamNote(toolpath, src, mi, mj, at3(x.point, section.z), " at z " + formatFixed(section.z, 3), diags);
-        continue;
-      }
-      const geometry::Vec3 p = at3(x.point, section.z);
-      const std::string where = " at z " + formatFixed(section.z, 3) + ", " + at(x.point);
-      if (ka == kb) {
-        diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
-                             "the wire crosses its own path inside this move" + where +
-                                 ": two positions of the wire meet between the planes"));
-      } else if (neighbours && x.kind == geometry::ContactKind::Overlap) {
+    out.r = geometry::findSelfIntersections(section.segments, so);
+  };
+  bool coarsened = false;
+  const int batchSize = static_cast<int>(std::max(1u, geometry::workerCount()));
+  for (int first = 1; first < levels; first += batchSize) {
+    std::vector<Level> batch(static_cast<std::size_t>(std::min(batchSize, levels - first)));
+    geometry::parallelFor(batch.size(), 1, [&](std::size_t b, std::size_t e) {
+      for (std::size_t k = b; k < e; ++k) makeLevel(first + static_cast<int>(k), batch[k]);
+    });
+    for (Level& level : batch) {
+      const Contour& section = level.section;
+      const geometry::SelfIntersectionResult& r = level.r;
+      if (level.share != geometry::kMaxSectionPieces && !coarsened) {
+        coarsened = true;
+        const std::size_t head = path.moveIndex.front();
         diags.report(finding(
-            Severity::Error, Code::SurfaceFold, src, moves[mj], mj, p,
-            "the surface folds back over the previous move (line " + std::to_string(moves[mi].line) + ")" + where));
-      } else if (neighbours) {
-        diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
-                             "the wire of this move crosses the wire of the previous move (line " +
-                                 std::to_string(moves[mi].line) + ")" + where));
-      } else {
-        diags.report(finding(Severity::Error, Code::SurfaceSelfIntersection, src, moves[mj], mj, p,
-                             "the surface the wire sweeps meets itself" + where +
-                                 ": this move meets the move on line " + std::to_string(moves[mi].line)));
+            Severity::Note, Code::SectionsCoarsened, src, moves[head], head, at3(moves[head].lower.start, planes.lower),
+            "the sections of the surface would need " + std::to_string(level.wanted) +
+                " pieces, more than the budget of " + std::to_string(options.sectionBudget) +
+                ": the twisted patches are tested as polylines of at most " + std::to_string(level.share) +
+                " pieces, coarser than the section tolerance, so a wire crossing closer than their "
+                "chord error may be missed"));
+      }
+      const std::size_t n = path.moveIndex.size();
+      for (const geometry::Contact& x : r.contacts) {
+        const std::size_t ka = section.moveIndex[x.first], kb = section.moveIndex[x.second];
+        const std::size_t mi = path.moveIndex[ka], mj = path.moveIndex[kb];
+        if (seen.count({mi, mj}) || reported.count({mi, mj})) continue;
+        if (x.kind == geometry::ContactKind::Overlap &&
+            isRetrace(section.segments[x.first], section.segments[x.second], x, options.tolerance))
+          continue;
+        reported.insert({mi, mj});
+        const bool neighbours = kb == ka + 1 || (closed && ka == 0 && kb + 1 == n);
+        if (ka != kb && !neighbours && atSeam(toolpath, mi, mj, options.tolerance)) {
+          seamNote(toolpath, src, mi, mj, at3(x.point, section.z), " at z " + formatFixed(section.z, 3), diags);
+          continue;
+        }
+        const geometry::Vec3 p = at3(x.point, section.z);
+        const std::string where = " at z " + formatFixed(section.z, 3) + ", " + at(x.point);
+        if (ka == kb) {
+          diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
+                               "the wire crosses its own path inside this move" + where +
+                                   ": two positions of the wire meet between the planes"));
+        } else if (neighbours && x.kind == geometry::ContactKind::Overlap) {
+          diags.report(finding(
+              Severity::Error, Code::SurfaceFold, src, moves[mj], mj, p,
+              "the surface folds back over the previous move (line " + std::to_string(moves[mi].line) + ")" + where));
+        } else if (neighbours) {
+          diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
+                               "the wire of this move crosses the wire of the previous move (line " +
+                                   std::to_string(moves[mi].line) + ")" + where));
+        } else {
+          diags.report(finding(Severity::Error, Code::SurfaceSelfIntersection, src, moves[mj], mj, p,
+                               "the surface the wire sweeps meets itself" + where +
+                                   ": this move meets the move on line " + std::to_string(moves[mi].line)));
+        }
       }
     }
   }

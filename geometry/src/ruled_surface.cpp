@@ -471,9 +471,13 @@ Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> u
     for (; k < j && gens.size() <= maxCells; ++k) {
       const bool leans =
           (upper[k].start - lower[k].start).norm() > kJoin || (upper[k].end - lower[k].end).norm() > kJoin;
-      const std::size_t pieces =
-          std::min(kMaxMeshPieces, std::max({sampleCount(lower[k], sampling), sampleCount(upper[k], sampling),
-                                             leans ? options.minTaperPieces : std::size_t{1}}));
+      std::size_t forced = leans ? options.minTaperPieces : std::size_t{1};
+      if (forced > 1 && options.minForcedPieceLength > 0.0) {
+        const double fit = std::max(lower[k].length(), upper[k].length()) / options.minForcedPieceLength;
+        forced = std::clamp<std::size_t>(static_cast<std::size_t>(std::min(fit, 1e9)), 1, forced);
+      }
+      const std::size_t pieces = std::min(
+          kMaxMeshPieces, std::max({sampleCount(lower[k], sampling), sampleCount(upper[k], sampling), forced}));
       for (std::size_t q = 1; q <= pieces; ++q) {
         const double t = static_cast<double>(q) / static_cast<double>(pieces);
         gens.push_back({lower[k].pointAt(t), upper[k].pointAt(t)});

@@ -85,11 +85,17 @@ int main(int argc, char** argv) {
   const auto& diags = p.diags;
   kerf::render::SceneOptions so;
   so.tolerance = tolerance;
+  const auto tRead = kerf::bench::Clock::now();
   const kerf::render::Scene scene = kerf::render::buildScene(toolpath, diags.all(), so);
   const auto t1 = kerf::bench::Clock::now();
-  std::printf("part: %d lobes, %zu moves, %s, %zu triangles (mesh tolerance %.4f mm); read + scene %.3f s\n", lobes,
-              toolpath.moves.size(), toolpath.isTaper() ? "taper" : "NOT TAPER", scene.triangles(), tolerance,
-              kerf::bench::seconds(t0, t1));
+  std::size_t lineSegments = 0;
+  for (const auto* set : {&scene.lower, &scene.upper, &scene.generators, &scene.rapids, &scene.reference})
+    lineSegments += set->vertices.size() / 2;
+  std::printf(
+      "part: %d lobes, %zu moves, %s, %zu triangles on %zu vertices, %zu line segments (mesh tolerance %.4f mm); "
+      "read + check %.3f s, scene %.3f s\n",
+      lobes, toolpath.moves.size(), toolpath.isTaper() ? "taper" : "NOT TAPER", scene.triangles(), scene.surface.size(),
+      lineSegments, tolerance, kerf::bench::seconds(t0, tRead), kerf::bench::seconds(tRead, t1));
   if (diags.hasErrors() || scene.triangles() == 0) {
     std::fprintf(stderr, "bench_render: the generated part has %zu errors%s%s\n", diags.errorCount(),
                  diags.hasErrors() ? ", the first: " : "",
@@ -127,8 +133,7 @@ int main(int argc, char** argv) {
   kerf::render::Renderer renderer;
   kerf::render::OffscreenTarget target;
   if (!context || !renderer.init(error) ||
-      !target.create(width, height, samples > 0 ? samples : kerf::ui::autoSamples(scene.triangles(), width, height),
-                     error)) {
+      !target.create(width, height, samples > 0 ? samples : kerf::ui::autoSamples(scene, width, height), error)) {
     std::fprintf(stderr, "bench_render: %s\n", error.c_str());
     return 1;
   }

@@ -90,6 +90,13 @@ TEST(render_scene, two_axis_wall_faces_outwards_with_zero_slope) {
     EXPECT_GT(out, 0.0);
   }
   EXPECT_EQ(s.lower.moveFirst.size(), p.toolpath.moves.size() + 1);
+  // Indexed: every index names a vertex, and a wall's two triangles share their vertices: four
+  // per wall (each wall its own, so the corners stay sharp), not the six of unshared triangles.
+  ASSERT_EQ(s.surfaceIndices.size(), 3 * s.triangles());
+  EXPECT_EQ(s.triangleMove.size(), s.triangles());
+  for (const std::uint32_t i : s.surfaceIndices) ASSERT_LT(i, s.surface.size());
+  EXPECT_EQ(s.triangles(), 8u);
+  EXPECT_EQ(s.surface.size(), 16u);
   EXPECT_NEAR(s.boundsMax.x(), 20.0, 1e-6);
   EXPECT_NEAR(s.boundsMax.y(), 10.0, 1e-6);
 }

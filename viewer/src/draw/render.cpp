@@ -26,7 +26,10 @@ int drawRender(const RenderArgs& a) {
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   const std::vector<geometry::Segment> reference = converter::referenceGeometry(p);
-  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), reference);
+  // No mesh piece is forced narrower than a pixel: it would show nothing (docs/rendering.md).
+  render::SceneOptions so = sceneOptionsOf(a.mesh);
+  so.minForcedPieceLength = ui::picturePixelMm(p.toolpath, so, request);
+  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, reference);
   request.annotation = annotationOf(file, p);
   request.annotation.legend = request.options.colourBySlope;
   request.annotation.labels = a.highlight;

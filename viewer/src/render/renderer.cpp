@@ -163,6 +163,7 @@ Renderer::~Renderer() {
   if (overlayTexture_) g.DeleteTextures(1, &overlayTexture_);
   for (Buffer* b : {&extra_, &triad_, &overlay_}) {
     if (b->vbo) g.DeleteBuffers(1, &b->vbo);
+    if (b->ebo) g.DeleteBuffers(1, &b->ebo);
     if (b->vao) g.DeleteVertexArrays(1, &b->vao);
   }
 }
@@ -210,6 +211,7 @@ void Renderer::releaseBuffers() {
   const GlApi& g = gl();
   for (Buffer* b : {&surface_, &lower_, &upper_, &generators_, &rapids_, &reference_, &markers_}) {
     if (b->vbo) g.DeleteBuffers(1, &b->vbo);
+    if (b->ebo) g.DeleteBuffers(1, &b->ebo);
     if (b->vao) g.DeleteVertexArrays(1, &b->vao);
     *b = Buffer{};
   }
@@ -242,7 +244,11 @@ void Renderer::setScene(const Scene& scene) {
   releaseBuffers();
   const GlApi& g = gl();
   upload(surface_.vao, surface_.vbo, scene.surface);
-  surface_.count = scene.surface.size();
+  g.GenBuffers(1, &surface_.ebo);
+  g.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, surface_.ebo);  // the vertex array keeps this binding
+  g.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(scene.surfaceIndices.size() * sizeof(std::uint32_t)),
+               scene.surfaceIndices.data(), GL_STATIC_DRAW);
+  surface_.count = scene.surfaceIndices.size();
   constexpr auto stride = static_cast<GLsizei>(sizeof(SurfaceVertex));
   g.EnableVertexAttribArray(0);
   g.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(SurfaceVertex, position)));
@@ -356,7 +362,7 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
     g.Uniform2f(uniform(surfaceProgram_, "uSlopeRange"), static_cast<float>(slopeMin_), static_cast<float>(slopeMax_));
     g.Uniform1i(uniform(surfaceProgram_, "uHighlight"), options.highlightFindings ? 1 : 0);
     g.BindVertexArray(surface_.vao);
-    g.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(surface_.count));
+    g.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(surface_.count), GL_UNSIGNED_INT, nullptr);
     g.Disable(GL_POLYGON_OFFSET_FILL);
   }
 

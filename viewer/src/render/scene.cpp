@@ -21,6 +21,7 @@ constexpr std::uint32_t kUpperColour = rgba(200, 90, 20);
 constexpr std::uint32_t kGeneratorColour = rgba(70, 75, 90, 70);
 constexpr std::uint32_t kRapidColour = rgba(110, 110, 110, 200);
 constexpr std::uint32_t kReferenceColour = rgba(200, 60, 150, 230);  // the drawing: magenta, dashed
+constexpr std::uint32_t kVertexDone = 0x80000000u;                   // buildScene's mark while it finishes a patch
 
 std::array<float, 3> toFloat(const Vec3& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
@@ -67,6 +68,24 @@ geometry::Planes displayPlanes(const converter::Toolpath& toolpath, double displ
   return {lower, lower + h};
 }
 
+void toolpathBounds(const converter::Toolpath& toolpath, double displayHeight, Vec3& lo, Vec3& hi) {
+  const geometry::Planes planes = displayPlanes(toolpath, displayHeight);
+  geometry::Box box;
+  box.add(toolpath.start);
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    const geometry::Box b = toolpath.moves[i].lower.bounds();
+    box.add(b.min);
+    box.add(b.max);
+    if (toolpath.isTaper()) {
+      const geometry::Box u = toolpath.upperOf(i).bounds();
+      box.add(u.min);
+      box.add(u.max);
+    }
+  }
+  lo = {box.min.x(), box.min.y(), planes.lower};
+  hi = {box.max.x(), box.max.y(), planes.upper};
+}
+
 CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOptions& options, bool caps) {
   CutSurface out;
   out.planes = displayPlanes(toolpath, options.displayHeight);
@@ -82,6 +101,7 @@ CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOption
   meshOptions.maxTriangles = options.maxTriangles;
   meshOptions.lowerCap = meshOptions.upperCap = caps;
   meshOptions.minTaperPieces = options.minTaperPieces;
+  meshOptions.minForcedPieceLength = options.minForcedPieceLength;
   out.mesh = geometry::meshRuledSurface(lowerCut, upperCut, out.planes, meshOptions);
   return out;
 }
@@ -121,11 +141,15 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
   scene.truncated = mesh.truncated;
 
   // Normals are averaged over the triangles of one patch only, so the corners between patches
-  // stay sharp: each patch gets its own copy of the vertices it uses.
-  scene.surface.reserve(mesh.triangles.size() * 3);
+  // stay sharp: each patch gets its own copy of the vertices it uses, shared by its triangles
+  // (about one vertex a triangle along a strip, not three: the indexed mesh is what the GPU and
+  // llvmpipe's vertex stage see).
+  scene.surface.reserve(mesh.vertices.size() + 4 * cutMove.size());
+  scene.surfaceIndices.reserve(mesh.triangles.size() * 3);
   scene.triangleMove.reserve(mesh.triangles.size());
   std::vector<Vec3> normalSum(mesh.vertices.size(), Vec3::Zero());
   std::vector<std::uint32_t> stamp(mesh.vertices.size(), 0);
+  std::vector<std::uint32_t> slot(mesh.vertices.size(), 0);  // the vertex's index in this patch's copy
   std::uint32_t run = 0;
   std::size_t t0 = 0;
   bool anySlope = false;
@@ -134,32 +158,43 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     const std::uint32_t patch = mesh.trianglePatch[t0];
     while (t1 < mesh.triangles.size() && mesh.trianglePatch[t1] == patch) ++t1;
     ++run;
+    const std::size_t patchFirst = scene.surface.size();
     for (std::size_t t = t0; t < t1; ++t) {
       const auto& tri = mesh.triangles[t];
       const Vec3 fn =
           (mesh.vertices[tri[1]] - mesh.vertices[tri[0]]).cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+      scene.surfaceArea += 0.5 * fn.norm();
       for (const std::uint32_t v : tri) {
         if (stamp[v] != run) {
           normalSum[v] = Vec3::Zero();
           stamp[v] = run;
+          slot[v] = static_cast<std::uint32_t>(scene.surface.size());
+          scene.surface.push_back({toFloat(mesh.vertices[v]), {0, 0, 0}, 0.0f, 0u});
         }
         normalSum[v] += fn;
+        scene.surfaceIndices.push_back(slot[v]);
       }
     }
     const std::size_t move = patch < cutMove.size() ? cutMove[patch] : SIZE_MAX;
     const std::uint32_t flags = move != SIZE_MAX && flagged[move] ? kOnFinding : 0u;
+    // The patch's vertices, in the order they were met: finish each once.
     for (std::size_t t = t0; t < t1; ++t) {
       for (const std::uint32_t v : mesh.triangles[t]) {
+        SurfaceVertex& out = scene.surface[slot[v]];
+        if (out.flags & kVertexDone) continue;
         const double len = normalSum[v].norm();
         const Vec3 nrm = len > 0 ? Vec3(normalSum[v] / len) : Vec3(0, 0, 1);
         const double slope = static_cast<double>(mesh.vertexSlope[v]) * 180.0 / geometry::kPi;
         if (!anySlope || slope < scene.minSlopeDegrees) scene.minSlopeDegrees = slope;
         if (!anySlope || slope > scene.maxSlopeDegrees) scene.maxSlopeDegrees = slope;
         anySlope = true;
-        scene.surface.push_back({toFloat(mesh.vertices[v]), toFloat(nrm), static_cast<float>(slope), flags});
+        out.normal = toFloat(nrm);
+        out.slopeDegrees = static_cast<float>(slope);
+        out.flags = kVertexDone;
       }
       scene.triangleMove.push_back(static_cast<std::uint32_t>(std::min<std::size_t>(move, 0xFFFFFFFFu)));
     }
+    for (std::size_t i = patchFirst; i < scene.surface.size(); ++i) scene.surface[i].flags = flags;
     t0 = t1;
   }
 

@@ -14,8 +14,28 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
-int autoSamples(std::size_t triangles, int width, int height) {
-  return triangles > static_cast<std::size_t>(width) * static_cast<std::size_t>(height) / 2 ? 1 : 4;
+int autoSamples(const render::Scene& scene, int width, int height, double mmPerPixel) {
+  const std::size_t triangles = scene.triangles();
+  if (triangles > static_cast<std::size_t>(width) * static_cast<std::size_t>(height) / 2) return 1;
+  // A triangle's area is at least its projected area: a mean under 2x2 pixels is a surface of
+  // slivers and specks, whose edges multisampling would smooth little; with more than one
+  // triangle to every eight pixels it would also cost much (few triangles cost little either way).
+  if (triangles * 8 > static_cast<std::size_t>(width) * static_cast<std::size_t>(height) && mmPerPixel > 0.0 &&
+      scene.surfaceArea / static_cast<double>(triangles) < 4.0 * mmPerPixel * mmPerPixel)
+    return 1;
+  return 4;
+}
+
+render::Camera pictureCamera(const geometry::Vec3& lo, const geometry::Vec3& hi, const PictureRequest& request) {
+  return render::fitCamera(lo, hi, request.view, request.width, request.height, 0.08, kTitleBand);
+}
+
+double picturePixelMm(const converter::Toolpath& toolpath, const render::SceneOptions& options,
+                      const PictureRequest& request) {
+  geometry::Vec3 lo, hi;
+  render::toolpathBounds(toolpath, options.displayHeight, lo, hi);
+  if (!lo.allFinite() || !hi.allFinite()) return 0.0;
+  return pictureCamera(lo, hi, request).mmPerPixel(request.height);
 }
 
 PictureResult renderPicture(const render::Scene& scene, const PictureRequest& request) {
@@ -26,11 +46,11 @@ PictureResult renderPicture(const render::Scene& scene, const PictureRequest& re
   result.context = context->description();
   render::OffscreenTarget target;
   render::Renderer renderer;
-  if (!renderer.init(result.error) ||
-      !target.create(
-          request.width, request.height,
-          request.samples > 0 ? request.samples : autoSamples(scene.triangles(), request.width, request.height),
-          result.error))
+  const render::Camera camera = pictureCamera(scene.boundsMin, scene.boundsMax, request);
+  const int samples = request.samples > 0
+                          ? request.samples
+                          : autoSamples(scene, request.width, request.height, camera.mmPerPixel(request.height));
+  if (!renderer.init(result.error) || !target.create(request.width, request.height, samples, result.error))
     return result;
   HeadlessOverlay overlay;
   overlay.uploadFont(renderer);
@@ -41,8 +61,6 @@ PictureResult renderPicture(const render::Scene& scene, const PictureRequest& re
   result.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const render::Camera camera = render::fitCamera(scene.boundsMin, scene.boundsMax, request.view, request.width,
-                                                  request.height, 0.08, kTitleBand);
   target.bind();
   renderer.render(camera, request.options, request.width, request.height);
   renderer.drawOverlay(overlay.frame(scene, camera, request.options, request.annotation, request.width, request.height),

@@ -27,11 +27,21 @@ struct PictureResult {
   double contextSeconds = 0, uploadSeconds = 0, drawSeconds = 0, encodeSeconds = 0;
 };
 
-/// Multisampling for a picture: 4x, unless the triangles outnumber half the pixels. Then most
-/// triangles are smaller than a pixel, 4x costs twice the time under llvmpipe (measured: 1e6
-/// triangles at 1024x768, 1.14 s against 0.55 s), and the surface gains little from it.
-int autoSamples(std::size_t triangles, int width, int height);
+/// Multisampling for a picture: 4x, unless most triangles are smaller than a pixel: the triangles
+/// outnumber half the pixels, or they outnumber an eighth of them and (given the pixel's size,
+/// mm) the surface's mean triangle covers less than 2x2 pixels. Then 4x costs about twice the time under llvmpipe
+/// (measured: 1e6 triangles at 1024x768, 1.14 s against 0.55 s; 250,000 sliver triangles, 0.85 s against 0.29 s) and
+/// the surface gains little from it.
+int autoSamples(const render::Scene& scene, int width, int height, double mmPerPixel = 0.0);
 
 PictureResult renderPicture(const render::Scene& scene, const PictureRequest& request);
+
+/// The picture's camera for a box (renderPicture fits the scene's bounds the same way).
+render::Camera pictureCamera(const geometry::Vec3& lo, const geometry::Vec3& hi, const PictureRequest& request);
+
+/// How long a pixel of the picture is, mm, at the box's fitted zoom: the shortest forced mesh
+/// piece worth making (SceneOptions::minForcedPieceLength).
+double picturePixelMm(const converter::Toolpath& toolpath, const render::SceneOptions& options,
+                      const PictureRequest& request);
 
 }  // namespace kerf::ui

@@ -290,14 +290,15 @@ bool runWindow(const WindowRequest& request, std::string& error) {
       const int viewW = std::max(16, fbW - static_cast<int>(textW) - static_cast<int>(sideW));
       const int viewH = fbH;
       if (viewW != targetW || viewH != targetH) {
-        if (!target.create(viewW, viewH, ui::autoSamples(request.scene->triangles(), viewW, viewH), error)) {
+        s.fitted = render::fitCamera(request.scene->boundsMin, request.scene->boundsMax, render::View::Iso, viewW,
+                                     viewH, 0.08, 36);
+        if (!target.create(viewW, viewH, ui::autoSamples(*request.scene, viewW, viewH, s.fitted.mmPerPixel(viewH)),
+                           error)) {
           ok = false;
           break;
         }
         targetW = viewW;
         targetH = viewH;
-        s.fitted = render::fitCamera(request.scene->boundsMin, request.scene->boundsMax, render::View::Iso, viewW,
-                                     viewH, 0.08, 36);
         if (!fittedOnce) s.camera = s.fitted;
         fittedOnce = true;
         if (!coarse && request.scene->triangles() > kCoarseAbove) {

@@ -114,6 +114,9 @@ struct MeshOptions {
   /// At least this many pieces along t in a patch whose generators are not all vertical, so
   /// values that vary along it (the slope) are sampled inside the patch, not only at its ends.
   std::size_t minTaperPieces = 1;
+  /// Those forced pieces (not the tolerance's) are no shorter than this, mm along the longer
+  /// contour: a picture sets it to its pixel, as pieces narrower than a pixel show nothing.
+  double minForcedPieceLength = 0.0;
 };
 
 /// Triangulates the patches (lower[i], upper[i]) into one mesh. Consecutive patches that share

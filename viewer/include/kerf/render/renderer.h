@@ -83,7 +83,8 @@ class Renderer {
  private:
   struct Buffer {
     unsigned vao = 0, vbo = 0;
-    std::size_t count = 0;
+    unsigned ebo = 0;       ///< indices (the surface only)
+    std::size_t count = 0;  ///< vertices drawn (indices, with ebo)
   };
   void drawLines(const Buffer& b, std::size_t first, std::size_t count, const Eigen::Matrix4f& viewProj, float width,
                  float dash, int width_px, int height_px, const float* colourOverride);

@@ -59,11 +59,16 @@ struct SceneOptions {
   std::size_t generators = 72;  ///< about this many generator lines along the whole cut (0: none)
   std::size_t maxTriangles = 20'000'000;
   std::size_t minTaperPieces = 16;  ///< pieces along a leaning patch at least, so the slope colours vary inside it
-  bool noteMarkers = false;         ///< notes get markers too (errors and warnings always do)
+  /// mm: those forced pieces are no shorter than this (a picture's pixel: finer shows nothing).
+  double minForcedPieceLength = 0.0;
+  bool noteMarkers = false;  ///< notes get markers too (errors and warnings always do)
 };
 
 struct Scene {
-  std::vector<SurfaceVertex> surface;  ///< triangles, three vertices each (flat per patch, unshared)
+  /// The surface's vertices: each patch has its own copy of every vertex it uses, so normals are
+  /// smooth inside a patch and the corners between patches stay sharp.
+  std::vector<SurfaceVertex> surface;
+  std::vector<std::uint32_t> surfaceIndices;  ///< triangles, three indices into surface each
   std::vector<std::uint32_t> triangleMove;
   LineSet lower, upper, generators, rapids;
   /// What the wire path was made from (converter::referenceGeometry): a drawing's contours, a
@@ -76,8 +81,9 @@ struct Scene {
   bool taper = false;
   bool truncated = false;  ///< the surface hit maxTriangles: drawn incomplete, said in the picture
   double minSlopeDegrees = 0.0, maxSlopeDegrees = 0.0;
+  double surfaceArea = 0.0;  ///< mm^2, of the triangles drawn
   std::size_t moves = 0;
-  [[nodiscard]] std::size_t triangles() const { return surface.size() / 3; }
+  [[nodiscard]] std::size_t triangles() const { return surfaceIndices.size() / 3; }
 };
 
 /// The ruled surface of the cut moves (rapids are not cut), meshed within `tolerance`, with the
@@ -94,6 +100,10 @@ CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOption
 /// reference (may be empty) is drawn beside the path: the geometry it was made from.
 Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter::Diagnostic> findings,
                  const SceneOptions& options = {}, std::span<const geometry::Segment> reference = {});
+
+/// The box a toolpath is drawn in (both contours between displayPlanes), before any scene is
+/// built: what a picture needs to know its scale.
+void toolpathBounds(const converter::Toolpath& toolpath, double displayHeight, geometry::Vec3& lo, geometry::Vec3& hi);
 
 /// The planes a toolpath is drawn between (taper: its own; 2-axis: lower .. lower + display height).
 geometry::Planes displayPlanes(const converter::Toolpath& toolpath, double displayHeight);

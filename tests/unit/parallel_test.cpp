@@ -1,0 +1,95 @@
+#include "kerf/geometry/parallel.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using kerf::geometry::parallelFor;
+using kerf::geometry::workerCount;
+
+/// Sets KERF_THREADS for one test and restores it after.
+class Threads {
+ public:
+  explicit Threads(const char* value) {
+    if (const char* old = std::getenv("KERF_THREADS")) old_ = old;
+    ::setenv("KERF_THREADS", value, 1);
+  }
+  ~Threads() {
+    if (old_.empty())
+      ::unsetenv("KERF_THREADS");
+    else
+      ::setenv("KERF_THREADS", old_.c_str(), 1);
+  }
+
+ private:
+  std::string old_;
+};
+
+TEST(Parallel, EveryIndexOnceWhateverTheSplit) {
+  const Threads t("4");
+  for (const std::size_t n : {0u, 1u, 7u, 100u, 4097u, 100000u}) {
+    for (const std::size_t chunk : {1u, 16u, 2048u}) {
+      std::vector<std::atomic<int>> seen(n);
+      std::atomic<int> calls{0};
+      parallelFor(n, chunk, [&](std::size_t b, std::size_t e) {
+        ASSERT_LT(b, e);
+        ++calls;
+        for (std::size_t i = b; i < e; ++i) ++seen[i];
+      });
+      for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(seen[i].load(), 1) << "n " << n << " chunk " << chunk << " i " << i;
+      // Below two chunks' worth, one call in the calling thread; never more calls than workers.
+      EXPECT_LE(calls.load(), 4);
+      if (n > 0 && n < 2 * chunk) {
+        EXPECT_EQ(calls.load(), 1);
+      }
+    }
+  }
+}
+
+TEST(Parallel, UsesOtherThreadsAndKerfThreadsOneIsSerial) {
+  const std::thread::id caller = std::this_thread::get_id();
+  auto threadsUsed = [&] {
+    std::vector<std::thread::id> ids(4);
+    parallelFor(4, 1, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) ids[i] = std::this_thread::get_id();
+    });
+    std::size_t others = 0;
+    for (const auto& id : ids) others += id != caller;
+    return others;
+  };
+  {
+    const Threads t("4");
+    EXPECT_EQ(workerCount(), 4u);
+    EXPECT_EQ(threadsUsed(), 3u);  // the calling thread takes the first chunk
+  }
+  {
+    const Threads t("1");
+    EXPECT_EQ(workerCount(), 1u);
+    EXPECT_EQ(threadsUsed(), 0u);
+  }
+  {
+    const Threads t("none");  // not a number: the hardware's count, at least 1
+    EXPECT_GE(workerCount(), 1u);
+  }
+}
+
+TEST(Parallel, AnExceptionReachesTheCallerAfterEveryThreadEnds) {
+  const Threads t("4");
+  std::atomic<int> finished{0};
+  EXPECT_THROW(parallelFor(4, 1,
+                           [&](std::size_t b, std::size_t) {
+                             if (b == 2) throw std::runtime_error("chunk 2");
+                             ++finished;
+                           }),
+               std::runtime_error);
+  EXPECT_EQ(finished.load(), 3);
+}
+
+}  // namespace

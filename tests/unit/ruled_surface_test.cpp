@@ -40,6 +40,46 @@ TEST(RuledSurface, SlopeMatchesTheClosedFormTo1e9Degrees) {
   }
 }
 
+TEST(RuledSurface, RefinedExtremesOfArcPatchesMatchADenseSearch) {
+  // Arc with line, arcs of different sweeps and centres: the extremes lie between the 65 samples.
+  // The refined maximum is at least every one of 200,001 dense samples, and no more than the
+  // largest of them plus what lies between two of them.
+  const Planes planes{0.0, 15.0};
+  const Segment arcA = Segment::arc({10, 0}, {-10, 0}, {0, 0}, ArcDirection::CounterClockwise);
+  const Segment arcB = Segment::arc({12, 1}, {-7, 3}, {2.5, 4.0}, ArcDirection::CounterClockwise);
+  const Segment arcC = Segment::arc({9, -1}, {-11, 0.5}, {-0.6, 8.0}, ArcDirection::Clockwise);
+  const Segment line = Segment::line({11, 2}, {-9, -1});
+  const std::pair<Segment, Segment> pairs[] = {{arcA, line}, {line, arcA}, {arcA, arcB}, {arcB, arcC}, {arcC, arcA}};
+  for (const auto& [lo, up] : pairs) {
+    const PatchMeasures m = measurePatch(lo, up, planes);
+    EXPECT_FALSE(m.exact);
+    double big = 0, small = 1e300, bx = 0, by = 0;
+    constexpr int kDense = 200000;
+    for (int i = 0; i <= kDense; ++i) {
+      const double t = static_cast<double>(i) / kDense;
+      const Vec2 o = up.pointAt(t) - lo.pointAt(t);
+      big = std::max(big, o.norm());
+      small = std::min(small, o.norm());
+      bx = std::max(bx, std::abs(o.x()));
+      by = std::max(by, std::abs(o.y()));
+    }
+    const double maxSlope = std::atan2(big, planes.height()), minSlope = std::atan2(small, planes.height());
+    EXPECT_GE(m.maxSlope.value, maxSlope - 1e-15);
+    EXPECT_LE(m.maxSlope.value, maxSlope + 1e-9);
+    EXPECT_LE(m.minSlope.value, minSlope + 1e-15);
+    // Where the contours nearly cross, |o| has a corner at its minimum: it can lie below the dense
+    // samples by up to half a step times |o'| (at most 100 mm per unit t here).
+    EXPECT_GE(m.minSlope.value, minSlope - 100.0 * 0.5 / kDense / planes.height());
+    EXPECT_GE(m.maxOffsetX.value, bx - 1e-12);
+    EXPECT_LE(m.maxOffsetX.value, bx + 1e-8);
+    EXPECT_GE(m.maxOffsetY.value, by - 1e-12);
+    EXPECT_LE(m.maxOffsetY.value, by + 1e-8);
+    // The t reported is where the value is.
+    EXPECT_NEAR(std::atan2((up.pointAt(m.maxSlope.t) - lo.pointAt(m.maxSlope.t)).norm(), planes.height()),
+                m.maxSlope.value, 1e-15);
+  }
+}
+
 TEST(RuledSurface, LinePairExtremesAreExact) {
   // Offset (0,-2) at t = 0 and (0,2) at t = 1: vertical in the middle, atan(2/10) at the ends.
   const Planes planes{0.0, 10.0};

@@ -47,7 +47,8 @@ struct PatchMeasures {
 };
 
 /// Line with line: closed form. Otherwise kExtremeSamples + 1 samples, each extreme refined by
-/// golden section to 1e-11 in t around its best sample.
+/// safeguarded Newton steps (exact first and second derivatives) to 1e-12 in t around its best
+/// sample.
 inline constexpr int kExtremeSamples = 64;
 PatchMeasures measurePatch(const Segment& lower, const Segment& upper, const Planes& planes);
 

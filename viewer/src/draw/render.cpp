@@ -26,9 +26,12 @@ int drawRender(const RenderArgs& a) {
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   const std::vector<geometry::Segment> reference = converter::referenceGeometry(p);
-  // No mesh piece is forced narrower than a pixel: it would show nothing (docs/rendering.md).
+  // No mesh piece is forced narrower than a pixel, and no line follows its arc closer than a
+  // quarter of one (half a pixel shows the surface's edge beside the line): finer shows nothing
+  // (docs/rendering.md).
   render::SceneOptions so = sceneOptionsOf(a.mesh);
   so.minForcedPieceLength = ui::picturePixelMm(p.toolpath, so, request);
+  so.lineTolerance = 0.25 * so.minForcedPieceLength;
   const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, reference);
   request.annotation = annotationOf(file, p);
   request.annotation.legend = request.options.colourBySlope;

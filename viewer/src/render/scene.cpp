@@ -199,7 +199,8 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
   }
 
   // Lines, per move, so a move can be drawn again selected.
-  const geometry::Sampling sampling = geometry::Sampling::tolerance(options.tolerance);
+  const geometry::Sampling sampling =
+      geometry::Sampling::tolerance(std::max(options.tolerance, options.lineTolerance));
   std::vector<Vec2> scratch;
   double cutLength = 0.0;
   for (std::size_t i : cutMove) cutLength += toolpath.moves[i].lower.length();

@@ -61,6 +61,8 @@ struct SceneOptions {
   std::size_t minTaperPieces = 16;  ///< pieces along a leaning patch at least, so the slope colours vary inside it
   /// mm: those forced pieces are no shorter than this (a picture's pixel: finer shows nothing).
   double minForcedPieceLength = 0.0;
+  /// mm: the lines' chord tolerance when coarser than `tolerance` (a picture: a quarter pixel).
+  double lineTolerance = 0.0;
   bool noteMarkers = false;  ///< notes get markers too (errors and warnings always do)
 };
 

@@ -101,6 +101,49 @@ TEST(render_scene, two_axis_wall_faces_outwards_with_zero_slope) {
   EXPECT_NEAR(s.boundsMax.y(), 10.0, 1e-6);
 }
 
+TEST(render_scene, moving_frames_merge_runs_of_moves_within_the_tolerance) {
+  // A circle of radius 10 as 720 lines, then a square corner: with 0.05 mm the runs of lines merge
+  // into chords (22 lines of 0.5° stay within 0.05 mm of theirs), the corner does not.
+  std::string text = "G90 G21\nG92 X10. Y0\n";
+  for (int k = 1; k <= 720; ++k) {
+    const double a = k * geometry::kPi / 360;
+    text += "G01 X" + std::to_string(10 * std::cos(a)) + " Y" + std::to_string(10 * std::sin(a)) + "\n";
+  }
+  text += "G01 X10. Y-5.\nX15. Y-5.\nM30\n";
+  const Part p = analyse(text);
+  const std::size_t n = p.toolpath.moves.size();
+  render::SceneOptions fine, merged;
+  merged.mergeTolerance = 0.05;
+  merged.generators = fine.generators = 0;
+  const render::Scene a = render::buildScene(p.toolpath, {}, fine);
+  // A finding on a move inside a run flags the run's patch.
+  converter::Diagnostic finding;
+  finding.severity = converter::Severity::Error;
+  finding.move = 100;
+  const render::Scene b = render::buildScene(p.toolpath, std::span(&finding, 1), merged);
+  EXPECT_EQ(a.triangles(), 2 * n);
+  EXPECT_LT(b.triangles(), 2 * n / 10);
+  EXPECT_GT(b.triangles(), 2 * 720 / 40);
+  // Every move keeps its place in the lines (a run's chord at its first move, nothing inside).
+  ASSERT_EQ(b.lower.moveFirst.size(), n + 1);
+  std::size_t empty = 0;
+  for (std::size_t m = 0; m < n; ++m) empty += b.lower.moveFirst[m] == b.lower.moveFirst[m + 1];
+  EXPECT_GT(empty, n / 2);
+  // The chords stay within the tolerance inside the circle; the corner's two lines are there.
+  for (std::size_t v = 0; v + 4 < b.lower.vertices.size(); ++v) {
+    const auto& q = b.lower.vertices[v].position;
+    const double r = std::hypot(static_cast<double>(q[0]), static_cast<double>(q[1]));
+    EXPECT_LE(r, 10.0 + 1e-5);
+    EXPECT_GE(r, 10.0 - 0.05 - 1e-5);
+  }
+  EXPECT_EQ(b.lower.moveFirst[n] - b.lower.moveFirst[n - 2], 4u);
+  std::size_t flaggedVertices = 0;
+  for (const auto& v : b.surface) flaggedVertices += (v.flags & render::kOnFinding) != 0;
+  EXPECT_EQ(flaggedVertices, 4u);  // one merged patch: two triangles, four vertices
+  // With no tolerance nothing merges.
+  EXPECT_EQ(render::displayRuns(p.toolpath, 0.0)[5], 6u);
+}
+
 TEST(render_scene, frustum_slope_is_the_taper) {
   const Part p = analyse(kFrustum);
   ASSERT_TRUE(p.toolpath.isTaper());

@@ -86,15 +86,71 @@ void toolpathBounds(const converter::Toolpath& toolpath, double displayHeight, V
   hi = {box.max.x(), box.max.y(), planes.upper};
 }
 
+namespace {
+
+/// How far the segment strays from the chord p..q, at most (its ends' distances, plus its own
+/// bulge for an arc: the distance to a segment is convex along the arc's chord).
+double strayFrom(const Segment& s, const Vec2& p, const Vec2& q) {
+  auto distance = [&](const Vec2& x) {
+    const Vec2 d = q - p;
+    const double dd = d.squaredNorm();
+    const double t = dd > 0 ? std::clamp((x - p).dot(d) / dd, 0.0, 1.0) : 0.0;
+    return (x - (p + t * d)).norm();
+  };
+  double bulge = 0.0;
+  if (s.isArc()) bulge = std::abs(s.sweep) >= geometry::kPi ? 2 * s.radius : s.radius * (1 - std::cos(s.sweep / 2));
+  return std::max(distance(s.start), distance(s.end)) + bulge;
+}
+
+}  // namespace
+
+std::vector<std::size_t> displayRuns(const converter::Toolpath& toolpath, double tolerance) {
+  constexpr std::size_t kMaxRun = 64;  // the merge re-tests its run at each step: O(n kMaxRun)
+  constexpr double kJoin = 1e-9;
+  const std::size_t n = toolpath.moves.size();
+  std::vector<std::size_t> end(n);
+  for (std::size_t i = 0; i < n; ++i) end[i] = i + 1;
+  if (tolerance <= 0.0) return end;
+  std::size_t i = 0;
+  while (i < n) {
+    std::size_t j = i + 1;  // [i, j) merged so far
+    if (toolpath.moves[i].isCut()) {
+      while (j < n && j - i < kMaxRun && toolpath.moves[j].isCut() &&
+             (toolpath.moves[j].lower.start - toolpath.moves[j - 1].lower.end).norm() <= kJoin &&
+             (toolpath.upperOf(j).start - toolpath.upperOf(j - 1).end).norm() <= kJoin) {
+        const Vec2 lp = toolpath.moves[i].lower.start, lq = toolpath.moves[j].lower.end;
+        const Vec2 up = toolpath.upperOf(i).start, uq = toolpath.upperOf(j).end;
+        bool fits = true;
+        for (std::size_t k = i; k <= j && fits; ++k)
+          fits = strayFrom(toolpath.moves[k].lower, lp, lq) <= tolerance &&
+                 strayFrom(toolpath.upperOf(k), up, uq) <= tolerance;
+        if (!fits) break;
+        ++j;
+      }
+    }
+    end[i] = j;
+    i = j;
+  }
+  return end;
+}
+
 CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOptions& options, bool caps) {
   CutSurface out;
   out.planes = displayPlanes(toolpath, options.displayHeight);
   std::vector<Segment> lowerCut, upperCut;
-  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+  const std::vector<std::size_t> runEnd = displayRuns(toolpath, options.mergeTolerance);
+  for (std::size_t i = 0; i < toolpath.moves.size(); i = runEnd[i]) {
     if (!toolpath.moves[i].isCut()) continue;
-    lowerCut.push_back(toolpath.moves[i].lower);
-    upperCut.push_back(toolpath.upperOf(i));
+    const std::size_t last = runEnd[i] - 1;
+    if (last == i) {
+      lowerCut.push_back(toolpath.moves[i].lower);
+      upperCut.push_back(toolpath.upperOf(i));
+    } else {
+      lowerCut.push_back(Segment::line(toolpath.moves[i].lower.start, toolpath.moves[last].lower.end));
+      upperCut.push_back(Segment::line(toolpath.upperOf(i).start, toolpath.upperOf(last).end));
+    }
     out.patchMove.push_back(i);
+    out.patchEnd.push_back(runEnd[i]);
   }
   geometry::MeshOptions meshOptions;
   meshOptions.tolerance = options.tolerance;
@@ -176,7 +232,10 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
       }
     }
     const std::size_t move = patch < cutMove.size() ? cutMove[patch] : SIZE_MAX;
-    const std::uint32_t flags = move != SIZE_MAX && flagged[move] ? kOnFinding : 0u;
+    bool onFinding = false;
+    if (move != SIZE_MAX)
+      for (std::size_t k = move; k < cut.patchEnd[patch] && !onFinding; ++k) onFinding = flagged[k];
+    const std::uint32_t flags = onFinding ? kOnFinding : 0u;
     // The patch's vertices, in the order they were met: finish each once.
     for (std::size_t t = t0; t < t1; ++t) {
       for (const std::uint32_t v : mesh.triangles[t]) {
@@ -199,31 +258,41 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
   }
 
   // Lines, per move, so a move can be drawn again selected.
-  const geometry::Sampling sampling =
-      geometry::Sampling::tolerance(std::max(options.tolerance, options.lineTolerance));
+  const geometry::Sampling sampling = geometry::Sampling::tolerance(std::max(options.tolerance, options.lineTolerance));
   std::vector<Vec2> scratch;
   double cutLength = 0.0;
   for (std::size_t i : cutMove) cutLength += toolpath.moves[i].lower.length();
   const double spacing = cutLength / static_cast<double>(std::max<std::size_t>(options.generators, 1));
   double untilNext = 0.0;
   for (LineSet* set : {&scene.lower, &scene.upper, &scene.generators, &scene.rapids}) set->moveFirst.reserve(n + 1);
+  // A merged run (SceneOptions::mergeTolerance) is drawn as its chords at its first move; the
+  // moves inside it draw nothing of their own.
+  std::vector<std::size_t> runEnd(n);
+  for (std::size_t k = 0; k < n; ++k) runEnd[k] = k + 1;
+  for (std::size_t p = 0; p < cutMove.size(); ++p) runEnd[cutMove[p]] = cut.patchEnd[p];
+  std::size_t insideUntil = 0;
   for (std::size_t i = 0; i < n; ++i) {
     for (LineSet* set : {&scene.lower, &scene.upper, &scene.generators, &scene.rapids})
       set->moveFirst.push_back(static_cast<std::uint32_t>(set->vertices.size()));
-    const auto& move = toolpath.moves[i];
-    const Segment& up = toolpath.upperOf(i);
-    if (!move.isCut()) {
-      addSegment(scene.rapids, move.lower, planes.lower, sampling, kRapidColour, scratch);
+    if (i < insideUntil) continue;
+    const std::size_t last = runEnd[i] - 1;
+    insideUntil = runEnd[i];
+    const Segment chordLower = Segment::line(toolpath.moves[i].lower.start, toolpath.moves[last].lower.end);
+    const Segment chordUpper = Segment::line(toolpath.upperOf(i).start, toolpath.upperOf(last).end);
+    const Segment& lower = last == i ? toolpath.moves[i].lower : chordLower;
+    const Segment& up = last == i ? toolpath.upperOf(i) : chordUpper;
+    if (!toolpath.moves[i].isCut()) {
+      addSegment(scene.rapids, lower, planes.lower, sampling, kRapidColour, scratch);
       if (scene.taper) addSegment(scene.rapids, up, planes.upper, sampling, kRapidColour, scratch);
       continue;
     }
-    addSegment(scene.lower, move.lower, planes.lower, sampling, kLowerColour, scratch);
+    addSegment(scene.lower, lower, planes.lower, sampling, kLowerColour, scratch);
     addSegment(scene.upper, up, planes.upper, sampling, kUpperColour, scratch);
     // Generators every `spacing` mm of the lower contour, and at every move's start (corners).
     if (options.generators == 0) continue;
-    const double len = move.lower.length();
+    const double len = lower.length();
     auto generatorAt = [&](double t) {
-      const Vec2 a = move.lower.pointAt(t), b = up.pointAt(t);
+      const Vec2 a = lower.pointAt(t), b = up.pointAt(t);
       scene.generators.add({a.x(), a.y(), planes.lower}, {b.x(), b.y(), planes.upper}, kGeneratorColour);
     };
     generatorAt(0.0);

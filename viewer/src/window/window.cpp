@@ -31,7 +31,8 @@ void onGlfwError(int /*code*/, const char* description) { glfwMessage = descript
 
 constexpr float kTextPanel = 0.30f;
 // Above this many triangles the view is drawn from a coarse scene while it moves (orbit, pan, zoom,
-// playback): a surface within half a pixel of the exact one at the fitted zoom, no forced pieces.
+// playback): a surface within half a pixel of the exact one at the fitted zoom, no forced pieces,
+// and runs of moves that stay within half a pixel of their chord drawn as one patch.
 constexpr std::size_t kCoarseAbove = 250'000;  // of the window's width
 constexpr float kSidePanel = 290.0f;           // pixels
 
@@ -304,6 +305,7 @@ bool runWindow(const WindowRequest& request, std::string& error) {
         if (!coarse && request.scene->triangles() > kCoarseAbove) {
           render::SceneOptions so = request.sceneOptions;
           so.tolerance = std::max(so.tolerance, 0.5 * s.fitted.mmPerPixel(viewH));
+          so.mergeTolerance = 0.5 * s.fitted.mmPerPixel(viewH);
           so.minTaperPieces = 1;
           coarse = render::buildScene(*request.toolpath, request.findings, so, request.reference);
           if (!coarseRenderer.init(error)) {

@@ -63,6 +63,10 @@ struct SceneOptions {
   double minForcedPieceLength = 0.0;
   /// mm: the lines' chord tolerance when coarser than `tolerance` (a picture: a quarter pixel).
   double lineTolerance = 0.0;
+  /// mm: runs of joined cuts whose contours stay this close to the chords from the run's start to
+  /// its end are drawn as one patch of those chords (0: never). The window's moving frames: the
+  /// detail under half a pixel, lines and surface alike, left out (displayRuns).
+  double mergeTolerance = 0.0;
   bool noteMarkers = false;  ///< notes get markers too (errors and warnings always do)
 };
 
@@ -93,8 +97,15 @@ struct Scene {
 struct CutSurface {
   geometry::Mesh mesh;
   std::vector<std::size_t> patchMove;
+  std::vector<std::size_t> patchEnd;  ///< one past the last move of the patch (patchMove + 1 unless merged)
   geometry::Planes planes;
 };
+/// For each move i, one past the last move of the run that starts at i: i + 1, or, with a
+/// tolerance, further over joined cut moves whose lower and upper contours stay within it of the
+/// chords from the run's start to its end (at most 64 moves a run). Entries inside a run are not
+/// used.
+std::vector<std::size_t> displayRuns(const converter::Toolpath& toolpath, double tolerance);
+
 CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOptions& options, bool caps = false);
 
 /// Builds the scene. findings are the check's diagnostics; those with a point become markers

@@ -249,7 +249,9 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   }
 
   MachineReading reading = readForMachine(*out.source, given, ro.upperAxesUZ);
-  out.program = std::move(reading.program);
+  // The parse tree lives only while the program is interpreted: nothing after needs it (the
+  // source and the toolpath say everything), and the checks then run without its memory.
+  Program program = std::move(reading.program);
   const MachineDetection& detection = reading.detection;
   if (!given) {
     out.machine = *reading.machine;
@@ -258,7 +260,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   const MachineProfile& machine = out.machine;
   const KnownCode* cCode = machine.find("C");
   const bool cIsRotary = !cCode || cCode->effect != CodeEffect::Harmless;  // Sodick: C is a condition
-  const bool millTurn = isMillTurnProgram(out.program) || (cIsRotary && hasRotaryMoves(out.program));
+  const bool millTurn = isMillTurnProgram(program) || (cIsRotary && hasRotaryMoves(program));
 
   // 2. The conventions: the options, the profile, or the evidence.
   InterpreterOptions io;
@@ -276,7 +278,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     io.integerUnit = *ro.integerUnit;
   } else if (machine.integerUnit) {
     io.integerUnit = *machine.integerUnit;
-  } else if (auto e = integerEvidence(out.program, machine)) {
+  } else if (auto e = integerEvidence(program, machine)) {
     io.integerUnit = IntegerUnit::Micrometre;
     evidence.push_back(*e);
   }
@@ -292,15 +294,15 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     mt.polarXDiameter = ro.polarXDiameter.value_or(!machine.polarXRadius);
     mt.polarCDiameter = machine.polarCDiameter;
     mt.polarFrameTable = ro.polarFrameTable.value_or(machine.polarFrameTable);
-    in.toolpath = readMillTurn(out.program, mt, interpretDiags);
+    in.toolpath = readMillTurn(program, mt, interpretDiags);
   } else {
-    in = interpretProgram(out.program, io, interpretDiags);
+    in = interpretProgram(program, io, interpretDiags);
   }
   if (!centreFixed && !millTurn) {
     if (const std::optional<ArcCentreMode> better = betterCentre(in.arcs, io.arcCentre)) {
       io.arcCentre = *better;
       interpretDiags = Diagnostics(100000);
-      in = interpretProgram(out.program, io, interpretDiags);
+      in = interpretProgram(program, io, interpretDiags);
       evidence.push_back(centreEvidence(in.arcs, *better));
     }
   } else if (machine.arcCentre && !ro.arcCentre && in.arcs.arcs > 0 &&
@@ -340,9 +342,10 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
   }
 
-  if (out.program.blocks.empty() && !out.diags.hasErrors())  // with errors, those say why nothing was read
+  if (program.blocks.empty() && !out.diags.hasErrors())  // with errors, those say why nothing was read
     out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},  // where a program would start
                     "the file holds no program (no block of words): nothing to cut");
+  program = Program{};
   runChecks(out, options);
   return out;
 }

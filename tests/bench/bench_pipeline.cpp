@@ -3,7 +3,8 @@
 // run in CTest fails if the harness rots). Speed targets are never checked here: machines are
 // shared and noisy; the figures go to the README.
 //
-//   kerf_bench [--blocks N] [--repeat R] [--shape circle|star] [--write FILE]
+//   kerf_bench [--blocks N] [--repeat R] [--shape circle|star] [--sweeps all|auto] [--write FILE]
+//   (--sweeps auto: only the method kerf check runs, not the box and decision sweeps alone)
 //
 // --write FILE writes the program and stops (tests/bench/compare.sh times kerf check and LinuxCNC's
 // rs274 on it).
@@ -79,9 +80,10 @@ std::string generate(std::size_t blocks) {
 int main(int argc, char** argv) {
   std::size_t blocks = 1'000'000;
   int repeat = 3;
-  bool star = false;
+  bool star = false, autoOnly = false;
   const char* write = nullptr;
   for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--sweeps")) autoOnly = !std::strcmp(argv[i + 1], "auto");
     if (!std::strcmp(argv[i], "--shape"))
       star = !std::strcmp(argv[i + 1], "star");
     else if (!std::strcmp(argv[i], "--blocks"))
@@ -155,6 +157,7 @@ int main(int argc, char** argv) {
     for (int m = 0; m < 3; ++m) {
       // The box sweep alone is quadratic on the star: 20 s at 1e5 spikes, half an hour at 1e6.
       if (star && m == 1 && blocks > 200'000) continue;
+      if (autoOnly && m > 0) continue;
       kerf::geometry::SelfIntersectionOptions o;
       o.closed = true;
       o.method = methods[m];
@@ -172,8 +175,11 @@ int main(int argc, char** argv) {
   if (best[1] < 1e30)
     std::printf("  boxes alone:      %8.3f s  %zu pairs\n", best[1], pairs[1]);
   else
-    std::printf("  boxes alone:      not run (quadratic on this shape)\n");
-  std::printf("  decision alone:   %8.3f s  %zu pairs\n", best[2], pairs[2]);
+    std::printf("  boxes alone:      not run (%s)\n", autoOnly ? "--sweeps auto" : "quadratic on this shape");
+  if (best[2] < 1e30)
+    std::printf("  decision alone:   %8.3f s  %zu pairs\n", best[2], pairs[2]);
+  else
+    std::printf("  decision alone:   not run (--sweeps auto)\n");
 
   Diagnostics checkDiags(20);
   const auto c0 = Clock::now();

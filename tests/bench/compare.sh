@@ -32,7 +32,7 @@ echo "# self-intersection (kerf_bench --shape star, Kerf's auto method) against 
 for n in ${KERF_COMPARE_STARS:-10000 100000 1000000}; do
   : > "$work/kerf" && : > "$work/cgal"
   for ((r = 0; r < runs; ++r)); do
-    "$build/tests/kerf_bench" --shape star --blocks "$n" --repeat 1 |
+    "$build/tests/kerf_bench" --shape star --blocks "$n" --repeat 1 --sweeps auto |
       awk '/^self-intersection:/ {print $2}' >> "$work/kerf"
     "$work/cgal_is_simple" "$n" | awk '{print $3}' >> "$work/cgal"
   done

@@ -21,9 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.read.maxMoves = 100000;
   const Pipeline p = runPipeline({"fuzz.nc", std::string(reinterpret_cast<const char*>(data), size)}, options);
   struct {
-    const Program& program;
     const Toolpath& toolpath;
-  } a{p.program, p.toolpath};
+  } a{p.toolpath};
   const SourceFile& src = *p.source;
   Diagnostics diags(20);
   for (const Diagnostic& d : p.diags.all()) (void)formatDiagnostic(d);

@@ -105,6 +105,12 @@ std::optional<std::string> readTextFile(const std::string& path, std::size_t max
     error = "cannot open '" + path + "': " + errnoText();
     return std::nullopt;
   }
+  // A regular file's size is known: the text is held once, not in a string that doubled past it
+  // (a file that grows while read is still read whole, up to the limit).
+  if (fs::is_regular_file(st)) {
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (!ec) text.reserve(static_cast<std::size_t>(std::min<std::uintmax_t>(size, maxBytes)) + 1);
+  }
   while (in.read(buf, sizeof buf) || in.gcount() > 0) {
     text.append(buf, static_cast<std::size_t>(in.gcount()));
     if (text.size() > maxBytes) {

@@ -78,7 +78,6 @@ struct Pipeline {
   std::unique_ptr<SourceFile> upperSource;    ///< two-file input
   std::unique_ptr<SourceFile> machineSource;  ///< --machine FILE
   InputFormat format = InputFormat::Iso;      ///< the format the program was read as
-  Program program;                            ///< ISO only (empty for 3B)
   std::optional<DrawingResult> drawing;       ///< DXF only: the toolpath then walks its contours
   /// DXF with --offset and --side: per contour (same index), the wire path (empty for open ones);
   /// the toolpath then walks the wire paths.

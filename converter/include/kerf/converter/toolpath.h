@@ -36,23 +36,24 @@ enum class OffsetRole : std::uint8_t {
 };
 
 struct Move {
-  MoveKind kind = MoveKind::Line;
+  // The fields largest first, so the move packs into 160 bytes (it took 192).
   // The contour on the lower plane. The upper contour of a 4-axis program (Move {lower, upper |
   // none} in the design) lives in Toolpath::upper, parallel to the moves, so 2-axis programs do not
   // pay 80 bytes a move for it.
   geometry::Segment lower;
-  std::uint32_t block = 0;  ///< index into Program::blocks
-  std::uint32_t line = 0;   ///< 1-based source line of that block
-  SourceSpan span;          ///< the block's text
   // How the geometry followed from the words (for `kerf explain`).
-  CentreForm centreForm = CentreForm::None;
-  double programmedRadius = 0.0;               ///< signed R as programmed, mm
   geometry::Vec2 programmedCentreWords{0, 0};  ///< I J as programmed, mm
+  double programmedRadius = 0.0;               ///< signed R as programmed, mm
   double radiusError = 0.0;                    ///< |end - centre| - |start - centre|, mm
   double feed = 0.0;                           ///< mm/min (0: none programmed)
+  SourceSpan span;                             ///< the block's text
+  std::uint32_t block = 0;                     ///< index into Program::blocks
+  std::uint32_t line = 0;                      ///< 1-based source line of that block
+  float taperDegrees = 0.0f;                   ///< taper-angle dialect: the angle in force, > 0 leaning left (G51)
+  std::uint16_t callDepth = 0;                 ///< 0 in the main program
+  MoveKind kind = MoveKind::Line;
+  CentreForm centreForm = CentreForm::None;
   WireOffset wireOffset = WireOffset::Off;
-  std::uint16_t callDepth = 0;  ///< 0 in the main program
-  float taperDegrees = 0.0f;    ///< taper-angle dialect: the angle in force, > 0 leaning left (G51)
 
   [[nodiscard]] bool isCut() const { return kind != MoveKind::Rapid; }
 };

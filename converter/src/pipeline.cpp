@@ -66,6 +66,7 @@ namespace {
 void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
+  if (options.check.sectionBudget) out.checkOptions.sectionBudget = *options.check.sectionBudget;
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
     checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);

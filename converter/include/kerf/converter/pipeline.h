@@ -62,8 +62,9 @@ struct ReadOptions {
 
 /// The checks' settings; nothing: the machine profile's value.
 struct CheckSettings {
-  std::optional<double> maxTaperDegrees;  ///< --max-taper
-  std::optional<double> uvRange;          ///< --uv-range, mm
+  std::optional<double> maxTaperDegrees;     ///< --max-taper
+  std::optional<double> uvRange;             ///< --uv-range, mm
+  std::optional<std::size_t> sectionBudget;  ///< CheckOptions::sectionBudget (the fuzz target lowers it)
 };
 
 struct PipelineOptions {

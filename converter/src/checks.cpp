@@ -108,9 +108,11 @@ void seamNote(const Toolpath& tp, const SourceFile* src, std::size_t mi, std::si
 }
 
 /// One plane's contour: the segments of the cut moves in order and each one's move.
+/// One contour to test: views of segments and their moves held elsewhere (the cut path is not
+/// copied again for it).
 struct Contour {
-  std::vector<geometry::Segment> segments;
-  std::vector<std::size_t> moveIndex;
+  std::span<const geometry::Segment> segments;
+  std::span<const std::size_t> moveIndex;
   const char* name = "the cut path";  ///< how messages name it
   double z = 0.0;
   bool upperPlane = false;
@@ -282,7 +284,9 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
   // on every core (a batch of one per worker in memory at once), reported in order of height.
   const int levels = std::max(2, options.surfaceLevels);
   struct Level {
-    Contour section;
+    Contour section;  // views of segments and moveIndex
+    std::vector<geometry::Segment> segments;
+    std::vector<std::size_t> moveIndex;
     geometry::SelfIntersectionResult r;
     std::size_t wanted = 0, share = geometry::kMaxSectionPieces;
   };
@@ -304,11 +308,12 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
     }
     for (std::size_t k = 0; k < path.moveIndex.size(); ++k) {
       const std::size_t i = path.moveIndex[k];
-      const std::size_t before = section.segments.size();
-      geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, section.segments,
-                              out.share);
-      section.moveIndex.insert(section.moveIndex.end(), section.segments.size() - before, k);
+      const std::size_t before = out.segments.size();
+      geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, out.segments, out.share);
+      out.moveIndex.insert(out.moveIndex.end(), out.segments.size() - before, k);
     }
+    section.segments = out.segments;
+    section.moveIndex = out.moveIndex;
     geometry::SelfIntersectionOptions so;
     so.tolerance = options.tolerance;
     so.closed = closed;
@@ -436,7 +441,10 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   upper.seamAllowed = true;
   upper.z = toolpath.heights.known ? toolpath.heights.planes.upper : 0.0;
   upper.moveIndex = path.moveIndex;
-  for (std::size_t i : path.moveIndex) upper.segments.push_back(toolpath.upper[i]);
+  std::vector<geometry::Segment> upperSegments;
+  upperSegments.reserve(path.moveIndex.size());
+  for (std::size_t i : path.moveIndex) upperSegments.push_back(toolpath.upper[i]);
+  upper.segments = upperSegments;
   const geometry::ClosureReport upperClosure = geometry::analyseClosure(upper.segments, options.tolerance);
   if (closure.loopFrom.has_value() != upperClosure.loopFrom.has_value()) {
     const std::size_t i = path.moveIndex.back();

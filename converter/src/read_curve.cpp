@@ -27,10 +27,12 @@ struct Statement {
   std::string_view text;     ///< trimmed, comment removed
 };
 
-std::vector<Statement> statements(std::string_view all) {
+/// The statements of the text, or with `first`, at most the first one (what detection reads: a
+/// program of megabytes is not split whole to look at its head).
+std::vector<Statement> statements(std::string_view all, bool first = false) {
   std::vector<Statement> out;
   std::size_t i = 0;
-  while (i <= all.size()) {
+  while (i <= all.size() && !(first && !out.empty())) {
     std::size_t end = i;
     while (end < all.size() && all[end] != '\n' && all[end] != ';' && all[end] != '#') ++end;
     std::size_t next = end;
@@ -153,7 +155,7 @@ bool reportFit(const geometry::BiarcFit& fit, const CurveOptions& o, const Sourc
 }  // namespace
 
 bool looksLikeCurve(std::string_view text) {
-  for (const Statement& s : statements(text)) {
+  for (const Statement& s : statements(text, true)) {
     std::size_t eq = 0;
     const std::string name = nameOf(s.text, eq);
     if (name == "x" || name == "y" || name == "t") return true;

@@ -277,6 +277,24 @@ bool runWindow(const WindowRequest& request, std::string& error) {
     std::vector<double> frameSeconds;
     int frame = 0;
     double lastPlaybackDrawn = -2;
+    // What the offscreen target holds: while the view, its options, the playback wire and the
+    // level stay the same, a frame shows it again (a resolve) instead of drawing the scene, so
+    // the panels answer at once at rest even with 1e6 triangles. --benchmark always draws.
+    struct Drawn {
+      render::Camera camera;
+      std::array<bool, 9> switches{};  // RenderOptions' switches, in sameSwitches' order
+      float lineWidth = 0.0f;
+      std::uint32_t background = 0;
+      std::size_t selected = SIZE_MAX;
+      double playback = -2;
+      bool coarse = false;
+      bool valid = false;
+    } shown;
+    static_assert(sizeof(render::RenderOptions) == 40, "a new RenderOptions field must join Drawn and switchesOf");
+    auto switchesOf = [](const render::RenderOptions& o) {
+      return std::array<bool, 9>{o.surface, o.contours, o.generators,    o.rapids,           o.reference,
+                                 o.markers, o.triad,    o.colourBySlope, o.highlightFindings};
+    };
     bool dragging = false;
     Eigen::Vector2d pressAt{0, 0};
     while (ok && !glfwWindowShouldClose(window)) {
@@ -300,6 +318,7 @@ bool runWindow(const WindowRequest& request, std::string& error) {
         }
         targetW = viewW;
         targetH = viewH;
+        shown.valid = false;
         if (!fittedOnce) s.camera = s.fitted;
         fittedOnce = true;
         if (!coarse && request.scene->triangles() > kCoarseAbove) {
@@ -395,7 +414,21 @@ bool runWindow(const WindowRequest& request, std::string& error) {
 
       target.bind();
       render::Renderer& drawing = moving && coarse ? coarseRenderer : renderer;
-      drawing.render(s.camera, options, viewW, viewH);
+      const bool coarseNow = &drawing == &coarseRenderer;
+      const std::size_t selectedNow = options.selectedMove ? *options.selectedMove : SIZE_MAX;
+      if (request.benchmark || !shown.valid || !(shown.camera == s.camera) || shown.switches != switchesOf(options) ||
+          shown.lineWidth != options.lineWidth || shown.background != options.background ||
+          shown.selected != selectedNow || shown.playback != lastPlaybackDrawn || shown.coarse != coarseNow) {
+        drawing.render(s.camera, options, viewW, viewH);
+        shown.camera = s.camera;
+        shown.switches = switchesOf(options);
+        shown.lineWidth = options.lineWidth;
+        shown.background = options.background;
+        shown.selected = selectedNow;
+        shown.playback = lastPlaybackDrawn;
+        shown.coarse = coarseNow;
+        shown.valid = true;
+      }
       const render::GlApi& g = render::gl();
       g.BindFramebuffer(GL_FRAMEBUFFER, 0);
       g.Viewport(0, 0, fbW, fbH);

@@ -22,6 +22,8 @@ struct Camera {
   double halfHeight = 1.0;  ///< half the visible height, mm
   double depth = 1.0;       ///< half the depth range, mm (near/far around the target)
 
+  bool operator==(const Camera&) const = default;
+
   [[nodiscard]] geometry::Vec3 eyeDirection() const;  ///< unit, from the target towards the eye
   [[nodiscard]] geometry::Vec3 right() const;
   [[nodiscard]] geometry::Vec3 up() const;

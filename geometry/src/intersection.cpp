@@ -5,6 +5,7 @@
 #include "kerf/geometry/intersection.h"
 
 #include "angles.h"
+#include "kerf/geometry/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -354,7 +355,7 @@ bool sweepFindsNoContact(std::span<const Segment> path, const std::vector<std::s
   }
   // By x, then y. At one point the pieces enter before any leaves (below), so that everything
   // meeting there is in the order at once.
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+  geometry::parallelSort(events.begin(), events.end(), [](const Event& a, const Event& b) {
     return a.at.x() != b.at.x() ? a.at.x() < b.at.x() : a.at.y() < b.at.y();
   });
   const auto probeIndex = static_cast<std::uint32_t>(pieces.size());
@@ -492,7 +493,7 @@ SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, cons
     byMinX.reserve(live);
     for (std::size_t i = 0; i < n; ++i)
       if (rank[i] < n) byMinX.emplace_back(boxes[i].min.x(), i);
-    std::sort(byMinX.begin(), byMinX.end());
+    geometry::parallelSort(byMinX.begin(), byMinX.end(), std::less<>{});
   };
   auto isForward = [&](std::size_t i, std::size_t j) {
     return rank[j] == rank[i] + 1 && near(path[i].end, path[j].start, tol);

@@ -2,11 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -77,6 +80,30 @@ TEST(Parallel, UsesOtherThreadsAndKerfThreadsOneIsSerial) {
   {
     const Threads t("none");  // not a number: the hardware's count, at least 1
     EXPECT_GE(workerCount(), 1u);
+  }
+}
+
+TEST(Parallel, SortGivesWhatStdSortGives) {
+  // Chunks sorted on their own then merged: the same order as one sort (keys with ties, compared
+  // by key only: the multiset of each key's values must match too).
+  std::uint64_t state = 12345;
+  auto next = [&] { return state = state * 6364136223846793005ULL + 1442695040888963407ULL; };
+  for (const char* threads : {"1", "2", "3", "8"}) {
+    const Threads t(threads);
+    for (const std::size_t n : {0u, 5u, 1000u, 70000u, 300001u}) {
+      std::vector<std::pair<int, int>> v(n);
+      for (auto& [key, value] : v) {
+        key = static_cast<int>(next() >> 52);  // 4096 keys: many ties
+        value = static_cast<int>(next() >> 40);
+      }
+      auto byKey = [](const std::pair<int, int>& a, const std::pair<int, int>& b) { return a.first < b.first; };
+      std::vector<std::pair<int, int>> expect = v;
+      std::sort(expect.begin(), expect.end());
+      kerf::geometry::parallelSort(v.begin(), v.end(), byKey, 1024);
+      ASSERT_TRUE(std::is_sorted(v.begin(), v.end(), byKey)) << threads << " threads, n " << n;
+      std::sort(v.begin(), v.end());  // within each key, the same values
+      ASSERT_EQ(v, expect) << threads << " threads, n " << n;
+    }
   }
 }
 

@@ -1,8 +1,10 @@
 // Work over independent indices on the machine's cores: the per-move measures of a long program.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <iterator>
 
 namespace kerf::geometry {
 
@@ -16,5 +18,25 @@ unsigned workerCount();
 /// then the result does not depend on the threads. An exception from body is rethrown here once
 /// every thread has finished.
 void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(std::size_t, std::size_t)>& body);
+
+/// Sorts [first, last) by less: one chunk per worker sorted at once, then merged pairwise (in
+/// place; std::inplace_merge takes a buffer when it can). Below minSize elements, or with one
+/// worker, std::sort alone. Not stable, as std::sort is not: equal elements may come in any order.
+template <typename It, typename Less>
+void parallelSort(It first, It last, Less less, std::size_t minSize = 1 << 16) {
+  const auto n = static_cast<std::size_t>(std::distance(first, last));
+  const std::size_t chunks = std::min<std::size_t>(workerCount(), n / std::max<std::size_t>(minSize / 2, 1));
+  if (chunks <= 1) {
+    std::sort(first, last, less);
+    return;
+  }
+  auto bound = [&](std::size_t c) { return first + static_cast<std::ptrdiff_t>(n * c / chunks); };
+  parallelFor(chunks, 1, [&](std::size_t b, std::size_t e) {
+    for (std::size_t c = b; c < e; ++c) std::sort(bound(c), bound(c + 1), less);
+  });
+  for (std::size_t width = 1; width < chunks; width *= 2)
+    for (std::size_t c = 0; c + width < chunks; c += 2 * width)
+      std::inplace_merge(bound(c), bound(c + width), bound(std::min(c + 2 * width, chunks)), less);
+}
 
 }  // namespace kerf::geometry

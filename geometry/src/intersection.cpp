@@ -556,6 +556,10 @@ SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, cons
       if (std::optional<SelfIntersectionResult> quick = boxSweep(budget)) return *quick;
     }
   }
+  // The decision sweep needs neither the boxes nor their order: their memory goes back first (48
+  // bytes a segment: 0.5 GB at 1e7), and the box sweep after it, if any, makes them again.
+  std::vector<Box>().swap(boxes);
+  std::vector<std::pair<double, std::size_t>>().swap(byMinX);
   std::vector<std::size_t> liveIndex;
   liveIndex.reserve(live);
   for (std::size_t i = 0; i < n; ++i)
@@ -572,6 +576,10 @@ SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, cons
     result.candidatePairs = tested;
     return result;
   }
+  std::vector<std::size_t>().swap(liveIndex);
+  boxes.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (rank[i] < n) boxes[i] = path[i].bounds();
   sortByMinX();
   return *boxSweep(0);
 }

@@ -277,8 +277,12 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     if (i < insideUntil) continue;
     const std::size_t last = runEnd[i] - 1;
     insideUntil = runEnd[i];
-    const Segment chordLower = Segment::line(toolpath.moves[i].lower.start, toolpath.moves[last].lower.end);
-    const Segment chordUpper = Segment::line(toolpath.upperOf(i).start, toolpath.upperOf(last).end);
+    // A merged run's chords (made only for a run: a plain move draws its own segments).
+    Segment chordLower, chordUpper;
+    if (last != i) {
+      chordLower = Segment::line(toolpath.moves[i].lower.start, toolpath.moves[last].lower.end);
+      chordUpper = Segment::line(toolpath.upperOf(i).start, toolpath.upperOf(last).end);
+    }
     const Segment& lower = last == i ? toolpath.moves[i].lower : chordLower;
     const Segment& up = last == i ? toolpath.upperOf(i) : chordUpper;
     if (!toolpath.moves[i].isCut()) {

@@ -148,7 +148,7 @@ void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const
     // much: a crossing that close to the end of the last move is the loop closing, rounded.
     constexpr double kResolution = 0.001;  // mm
     const double slack =
-        std::max({std::abs(moves[mi].radiusError), std::abs(later.radiusError), kResolution}) + options.tolerance;
+        std::max({std::abs(moves[mi].radiusError()), std::abs(later.radiusError()), kResolution}) + options.tolerance;
     const bool closingCrossing = x.kind == geometry::ContactKind::Crossing && !x.adjacent &&
                                  (c.segments[x.second].end - x.point).norm() <= slack &&
                                  closesTheContour(c.segments, x, slack);

@@ -475,7 +475,7 @@ class ThreeBReader {
       m.lower = geometry::Segment::arc(
           position_, end, centre, r.ccw ? geometry::ArcDirection::CounterClockwise : geometry::ArcDirection::Clockwise);
       m.centreForm = CentreForm::Reversed;  // x y are the start minus the centre
-      m.programmedCentreWords = startRel * kMm;
+      m.centreWords = startRel * kMm;
       // A count that ends where the other axis is the faster one puts the end imprecisely.
       if (three_b::arcAxis(endRel.x(), endRel.y()) != r.axis &&
           std::abs(std::abs(endRel.x()) - std::abs(endRel.y())) > 1.0)

@@ -308,7 +308,7 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
       m.kind = MoveKind::Arc;
       m.lower = build.arc;
       m.centreForm = R ? CentreForm::Radius : CentreForm::Incremental;
-      m.programmedRadius = R ? R->value : 0.0;
+      m.centreWords = Vec2(R ? R->value : 0.0, 0.0);
     } else {
       m.kind = motion == 0 ? MoveKind::Rapid : MoveKind::Line;
       m.lower = Segment::line(position, target);

@@ -62,6 +62,14 @@ const char* centreFormName(CentreForm f) {
   return "none";
 }
 
+/// How far the programmed arc's end lies off its circle, mm: for a move the wire offset made, the
+/// arc its words gave, not the offset one.
+double programmedRadiusError(const Toolpath& toolpath, std::size_t i) {
+  const bool offset = i < toolpath.offsetRole.size() && toolpath.offsetRole[i] == OffsetRole::Element;
+  const geometry::Segment& d = offset ? toolpath.programmed[i] : toolpath.moves[i].lower;
+  return d.isArc() ? (d.end - d.centre).norm() - d.radius : 0.0;
+}
+
 std::string blockText(const SourceFile& source, const Move& m) {
   return std::string(source.text().substr(m.span.offset, m.span.length));
 }
@@ -415,7 +423,7 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
     if (role == OffsetRole::Corner) {
       out += "  centre " + pt(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius) + " mm\n";
     } else if (m.centreForm == CentreForm::Radius) {
-      const double r = m.programmedRadius;
+      const double r = m.programmedRadius();
       const int zn = geometry::seedSignFactor(
           cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
       out += "  centre " + pt(d.centre) + " from R " + mm(r) + ": half the chord" +
@@ -424,23 +432,22 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
              (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
              " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
     } else if (threeB) {
-      const Vec2& xy = m.programmedCentreWords;
+      const Vec2& xy = m.programmedCentreWords();
       out += "  3B arc: x y = start - centre = (" + mm(xy.x()) + ", " + mm(xy.y()) +
              ") (signs from the start's quadrant in SR/NR), so the centre is " + pt(s.centre) + ", radius " +
              mm(s.radius) +
              " mm; the arc ends where it has travelled J along the count axis, over every quadrant it "
              "crosses\n";
     } else {
-      const Vec2& ij = m.programmedCentreWords;
+      const Vec2& ij = m.programmedCentreWords();
       std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"
                          : m.centreForm == CentreForm::Reversed  ? "centre = start - (I, J)"
                                                                  : "centre = (I, J)";
       out += "  centre " + pt(d.centre) + " from I " + mm(ij.x()) + " J " + mm(ij.y()) + ": " + rule +
              (role == OffsetRole::Element ? " (the programmed start " + pt(d.start) + ")" : std::string()) +
              "; radius by formula (3) = |start - centre| = " + mm(d.radius) + " mm\n";
-      if (std::abs(m.radiusError) > 0.0005)
-        out += "  the end point is " + mm(std::abs(m.radiusError)) +
-               " mm off that circle (within the accepted tolerance)\n";
+      if (const double error = programmedRadiusError(toolpath, i); std::abs(error) > 0.0005)
+        out += "  the end point is " + mm(std::abs(error)) + " mm off that circle (within the accepted tolerance)\n";
     }
     if (role == OffsetRole::Element)
       out += "  the wire path keeps that centre, " + std::string(s.radius > d.radius ? "outside" : "inside") +
@@ -504,15 +511,15 @@ std::string explainJson(const SourceFile& source, const Toolpath& toolpath, cons
       e["sweep_deg"] = std::abs(s.sweep) * 180.0 / geometry::kPi;
       e["centre_from"] = toolpath.format == InputFormat::ThreeB ? "3B-xy" : centreFormName(m.centreForm);
       if (toolpath.format == InputFormat::ThreeB) {
-        e["xy"] = vec(m.programmedCentreWords);
+        e["xy"] = vec(m.programmedCentreWords());
       } else if (m.centreForm == CentreForm::Radius) {
-        e["R"] = m.programmedRadius;
+        e["R"] = m.programmedRadius();
         e["zn"] = geometry::seedSignFactor(
             s.sweep < 0 ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise,
-            m.programmedRadius);
+            m.programmedRadius());
       } else {
-        e["IJ"] = vec(m.programmedCentreWords);
-        e["radius_error"] = m.radiusError;
+        e["IJ"] = vec(m.programmedCentreWords());
+        e["radius_error"] = programmedRadiusError(toolpath, i);
       }
       const geometry::ArcSampleStats st = geometry::sample(s, sampling, nullptr);
       e["points"] = st.points;

@@ -91,7 +91,7 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
     const double r = length(*w['R']);
     if (record) {
       record->centreForm = CentreForm::Radius;
-      record->programmedRadius = r;
+      record->centreWords = Vec2(r, 0);
     }
     build = geometry::arcFromRadius(start, end, r, dir, tolerance_);
   } else {
@@ -112,7 +112,7 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
         break;
     }
     if (record) {
-      record->programmedCentreWords = ij;
+      record->centreWords = ij;
       record->centreForm = form;
     }
     build = geometry::arcFromCentre(start, end, centre, dir, tolerance_);
@@ -123,7 +123,6 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
     return false;
   }
   out = build.arc;
-  if (record) record->radiusError = build.radiusError;
   return true;
 }
 
@@ -167,7 +166,7 @@ bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, con
   move.span = block.span();
   move.feed = feed_;
   move.wireOffset = wireOffset_;
-  move.callDepth = static_cast<std::uint16_t>(stack_.size());
+  move.callDepth = static_cast<std::uint8_t>(std::min<std::size_t>(stack_.size(), 255));
 
   const Vec2 start = position_;
   Vec2 end = start;

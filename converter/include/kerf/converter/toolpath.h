@@ -36,27 +36,38 @@ enum class OffsetRole : std::uint8_t {
 };
 
 struct Move {
-  // The fields largest first, so the move packs into 160 bytes (it took 192).
+  // The fields largest first, so the move packs into 128 bytes (it took 192, then 160). What can
+  // be computed from the segment (the arc's radius error) is computed, not stored.
   // The contour on the lower plane. The upper contour of a 4-axis program (Move {lower, upper |
   // none} in the design) lives in Toolpath::upper, parallel to the moves, so 2-axis programs do not
   // pay 80 bytes a move for it.
   geometry::Segment lower;
-  // How the geometry followed from the words (for `kerf explain`).
-  geometry::Vec2 programmedCentreWords{0, 0};  ///< I J as programmed, mm
-  double programmedRadius = 0.0;               ///< signed R as programmed, mm
-  double radiusError = 0.0;                    ///< |end - centre| - |start - centre|, mm
-  double feed = 0.0;                           ///< mm/min (0: none programmed)
-  SourceSpan span;                             ///< the block's text
-  std::uint32_t block = 0;                     ///< index into Program::blocks
-  std::uint32_t line = 0;                      ///< 1-based source line of that block
-  float taperDegrees = 0.0f;                   ///< taper-angle dialect: the angle in force, > 0 leaning left (G51)
-  std::uint16_t callDepth = 0;                 ///< 0 in the main program
+  /// How the arc's centre was programmed (for `kerf explain`), in mm: I J (or 3B's x y) as written
+  /// when centreForm is Incremental, Reversed or Absolute; the signed R in x when it is Radius.
+  geometry::Vec2 centreWords{0, 0};
+  double feed = 0.0;           ///< mm/min (0: none programmed)
+  SourceSpan span;             ///< the block's text
+  std::uint32_t block = 0;     ///< index into Program::blocks
+  std::uint32_t line = 0;      ///< 1-based source line of that block
+  float taperDegrees = 0.0f;   ///< taper-angle dialect: the angle in force, > 0 leaning left (G51)
+  std::uint8_t callDepth = 0;  ///< 0 in the main program (at most 255: calls nest 16 deep)
   MoveKind kind = MoveKind::Line;
   CentreForm centreForm = CentreForm::None;
   WireOffset wireOffset = WireOffset::Off;
 
   [[nodiscard]] bool isCut() const { return kind != MoveKind::Rapid; }
+  /// I J as programmed, mm ((0, 0) when the arc was given by R).
+  [[nodiscard]] geometry::Vec2 programmedCentreWords() const {
+    return centreForm == CentreForm::Radius ? geometry::Vec2(0, 0) : centreWords;
+  }
+  /// The signed R as programmed, mm (0 when the centre was given otherwise).
+  [[nodiscard]] double programmedRadius() const { return centreForm == CentreForm::Radius ? centreWords.x() : 0.0; }
+  /// How far the arc's end lies off its circle: |end - centre| - |start - centre|, mm (0 for a line).
+  [[nodiscard]] double radiusError() const {
+    return lower.isArc() ? (lower.end - lower.centre).norm() - lower.radius : 0.0;
+  }
 };
+static_assert(sizeof(Move) <= 128, "a move is stored for every block: keep it small");
 
 enum class LengthUnit : std::uint8_t { Millimetre, Inch };
 

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <set>
 #include <span>
 #include <string>
@@ -51,7 +52,7 @@ bool isRetrace(const geometry::Segment& earlier, const geometry::Segment& later,
 /// lead-out over the lead-in written in one block). The same path with that block split at the
 /// point meets itself only at shared vertices, which is no contact: this keeps the verdict the
 /// same however the blocks are split.
-bool closesTheContour(std::span<const geometry::Segment> path, const geometry::Contact& x, double tol) {
+bool closesTheContour(geometry::SegmentView path, const geometry::Contact& x, double tol) {
   const geometry::Segment& a = path[x.first];
   const geometry::Segment& b = path[x.second];
   const double ta = a.parameterOf(x.point), tb = b.parameterOf(x.point);
@@ -111,8 +112,8 @@ void seamNote(const Toolpath& tp, const SourceFile* src, std::size_t mi, std::si
 /// One contour to test: views of segments and their moves held elsewhere (the cut path is not
 /// copied again for it).
 struct Contour {
-  std::span<const geometry::Segment> segments;
-  std::span<const std::size_t> moveIndex;
+  geometry::SegmentView segments;
+  std::span<const std::uint32_t> moveIndex;
   const char* name = "the cut path";  ///< how messages name it
   double z = 0.0;
   bool upperPlane = false;
@@ -215,7 +216,7 @@ void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const
 }
 
 /// The surface checks of a taper program whose heights are known.
-void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, const SourceFile* src,
+void checkSurface(const Toolpath& toolpath, const CutView& path, bool closed, const SourceFile* src,
                   const CheckOptions& options, Diagnostics& diags, const SurfaceMeasures& m, MovePairs& seen) {
   const auto& moves = toolpath.moves;
   const geometry::Planes& planes = toolpath.heights.planes;
@@ -286,7 +287,7 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
   struct Level {
     Contour section;  // views of segments and moveIndex
     std::vector<geometry::Segment> segments;
-    std::vector<std::size_t> moveIndex;
+    std::vector<std::uint32_t> moveIndex;
     geometry::SelfIntersectionResult r;
     std::size_t wanted = 0, share = geometry::kMaxSectionPieces;
   };
@@ -310,7 +311,7 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
       const std::size_t i = path.moveIndex[k];
       const std::size_t before = out.segments.size();
       geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, out.segments, out.share);
-      out.moveIndex.insert(out.moveIndex.end(), out.segments.size() - before, k);
+      out.moveIndex.insert(out.moveIndex.end(), out.segments.size() - before, static_cast<std::uint32_t>(k));
     }
     section.segments = out.segments;
     section.moveIndex = out.moveIndex;
@@ -383,7 +384,7 @@ void checkSurface(const Toolpath& toolpath, const CutPath& path, bool closed, co
 
 void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options, Diagnostics& diags,
                    const SurfaceMeasures* measures) {
-  const CutPath path = cutPath(toolpath);
+  const CutView path = cutView(toolpath);
   if (path.segments.empty()) {
     // With errors, those say why; alone, this says the program is empty of cuts. It points at
     // the first move (a rapid), or where the program starts when nothing moves.
@@ -441,10 +442,16 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   upper.seamAllowed = true;
   upper.z = toolpath.heights.known ? toolpath.heights.planes.upper : 0.0;
   upper.moveIndex = path.moveIndex;
+  // In place when the cuts are contiguous, like the lower contour.
   std::vector<geometry::Segment> upperSegments;
-  upperSegments.reserve(path.moveIndex.size());
-  for (std::size_t i : path.moveIndex) upperSegments.push_back(toolpath.upper[i]);
-  upper.segments = upperSegments;
+  if (path.copy.empty()) {
+    upper.segments =
+        std::span<const geometry::Segment>(toolpath.upper).subspan(path.moveIndex.front(), path.moveIndex.size());
+  } else {
+    upperSegments.reserve(path.moveIndex.size());
+    for (std::size_t i : path.moveIndex) upperSegments.push_back(toolpath.upper[i]);
+    upper.segments = upperSegments;
+  }
   const geometry::ClosureReport upperClosure = geometry::analyseClosure(upper.segments, options.tolerance);
   if (closure.loopFrom.has_value() != upperClosure.loopFrom.has_value()) {
     const std::size_t i = path.moveIndex.back();

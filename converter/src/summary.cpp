@@ -17,6 +17,28 @@ CutPath cutPath(const Toolpath& toolpath) {
   return path;
 }
 
+CutView cutView(const Toolpath& toolpath) {
+  CutView view;
+  const std::vector<Move>& moves = toolpath.moves;
+  std::size_t first = 0, last = moves.size();
+  while (first < last && !moves[first].isCut()) ++first;
+  while (last > first && !moves[last - 1].isCut()) --last;
+  bool contiguous = true;
+  for (std::size_t i = first; i < last && contiguous; ++i) contiguous = moves[i].isCut();
+  view.moveIndex.reserve(last - first);
+  for (std::size_t i = first; i < last; ++i)
+    if (moves[i].isCut()) view.moveIndex.push_back(static_cast<std::uint32_t>(i));
+  if (contiguous) {
+    view.segments =
+        geometry::SegmentView::members(std::span<const Move>(moves).subspan(first, last - first), &Move::lower);
+    return view;
+  }
+  view.copy.reserve(view.moveIndex.size());
+  for (const std::uint32_t i : view.moveIndex) view.copy.push_back(moves[i].lower);
+  view.segments = view.copy;
+  return view;
+}
+
 SurfaceMeasures measureSurface(const Toolpath& toolpath) {
   SurfaceMeasures m;
   if (!toolpath.isTaper() || !toolpath.heights.known) return m;
@@ -90,8 +112,7 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
     s.bounds.add(m.lower.bounds());
   }
   s.sampling = sampling;
-  const CutPath path = cutPath(toolpath);
-  s.points = geometry::samplePath(path.segments, sampling, nullptr);
+  s.points = geometry::samplePath(cutView(toolpath).segments, sampling, nullptr);
   if (toolpath.isTaper() && toolpath.heights.known) {
     if (measures && measures->patches.size() == toolpath.moves.size()) {
       s.taper = summarizeTaper(toolpath, *measures);

@@ -53,7 +53,7 @@ class CellTable {
 
 }  // namespace
 
-ClosureReport analyseClosure(std::span<const Segment> path, double tol) {
+ClosureReport analyseClosure(SegmentView path, double tol) {
   ClosureReport report;
   if (path.empty()) return report;
   report.gap = (path.back().end - path.front().start).norm();

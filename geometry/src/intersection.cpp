@@ -164,8 +164,8 @@ bool sameDirection(const Segment& a, const Segment& b, const Vec2& at) {
 }
 
 /// Appends the contacts of the pair (i, j), i < j.
-void classifyPair(std::span<const Segment> path, std::size_t i, std::size_t j, bool adjacentForward, bool adjacentWrap,
-                  double tol, std::vector<Contact>& out) {
+void classifyPair(SegmentView path, std::size_t i, std::size_t j, bool adjacentForward, bool adjacentWrap, double tol,
+                  std::vector<Contact>& out) {
   const Segment& a = path[i];
   const Segment& b = path[j];
   const SegmentIntersection x = intersect(a, b, tol);
@@ -317,8 +317,8 @@ struct OrderAtSweep {
 /// True when no pair of the live segments touches (`touches` decides a pair exactly); tested counts
 /// the pairs it asked about.
 template <typename Touches>
-bool sweepFindsNoContact(std::span<const Segment> path, const std::vector<std::size_t>& live, Touches&& touches,
-                         double near, std::size_t& tested) {
+bool sweepFindsNoContact(SegmentView path, const std::vector<std::size_t>& live, Touches&& touches, double near,
+                         std::size_t& tested) {
   std::vector<Piece> pieces;
   pieces.reserve(live.size() + live.size() / 2);
   for (std::size_t i : live) addPieces(path[i], static_cast<std::uint32_t>(i), pieces);
@@ -467,7 +467,7 @@ bool sweepFindsNoContact(std::span<const Segment> path, const std::vector<std::s
 
 // ---- 4. report sweep --------------------------------------------------------------------------
 
-SelfIntersectionResult findSelfIntersections(std::span<const Segment> path, const SelfIntersectionOptions& options) {
+SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfIntersectionOptions& options) {
   SelfIntersectionResult result;
   const double tol = options.tolerance;
   const std::size_t n = path.size();

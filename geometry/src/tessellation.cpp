@@ -102,7 +102,7 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
   return stats;
 }
 
-PathSampleStats samplePath(std::span<const Segment> path, const Sampling& sampling, std::vector<Vec2>* out) {
+PathSampleStats samplePath(SegmentView path, const Sampling& sampling, std::vector<Vec2>* out) {
   PathSampleStats stats;
   if (path.empty()) return stats;
   Vec2 last = path.front().start;

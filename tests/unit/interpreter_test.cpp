@@ -1,5 +1,6 @@
 #include "converter_support.h"
 #include "kerf/converter/report.h"
+#include "kerf/converter/summary.h"
 
 #include <gtest/gtest.h>
 
@@ -298,6 +299,47 @@ TEST(interpreter, the_polar_section_is_one_error_and_what_follows_is_said_once) 
   // A polar section that ends the program leaves nothing to say after it.
   auto end = run("G92 X0 Y0\nG01 X10.\nG112\nG1 X5. C1.\nG113\nM30\n");
   EXPECT_FALSE(end->hasCode(Code::PositionUnknown)) << kerf::test::dump(end->diags);
+}
+
+}  // namespace
+
+namespace {
+
+// The checks read the cut path in place when no rapid lies between cuts, and copy it only when one
+// does: either way the view holds the cut moves' lower segments, in order.
+TEST(cut_view, reads_contiguous_cuts_in_place_and_copies_otherwise) {
+  auto r = run("G00 X1. Y0\nG01 X2.\nG03 X2. Y2. I0 J1.\nG01 X1. Y0\nG00 X0 Y0\nM02\n");
+  ASSERT_FALSE(r->diags.hasErrors()) << kerf::test::dump(r->diags);
+  const auto& moves = r->path().moves;
+  ASSERT_EQ(moves.size(), 5u);
+  const CutView in = cutView(r->path());
+  EXPECT_TRUE(in.copy.empty());
+  ASSERT_EQ(in.segments.size(), 3u);
+  ASSERT_EQ(in.moveIndex.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(in.moveIndex[k], k + 1);
+    EXPECT_EQ(&in.segments[k], &moves[k + 1].lower);  // the move's own segment, not a copy
+  }
+  std::size_t visited = 0;
+  for (const kerf::geometry::Segment& s : in.segments) EXPECT_EQ(&s, &moves[++visited].lower);
+  EXPECT_EQ(visited, 3u);
+  EXPECT_EQ(in.segments.back().kind, kerf::geometry::SegmentKind::Line);
+
+  auto gap = run("G01 X1. Y0\nG00 X5.\nG01 X6.\nX6. Y1.\nM02\n");
+  const CutView copied = cutView(gap->path());
+  ASSERT_EQ(copied.segments.size(), 3u);
+  EXPECT_FALSE(copied.copy.empty());
+  EXPECT_EQ(copied.moveIndex, (std::vector<std::uint32_t>{0, 2, 3}));
+  EXPECT_EQ(copied.segments[1].start, Vec2(5, 0));
+  EXPECT_EQ(copied.segments[2].end, Vec2(6, 1));
+
+  // Moving the view keeps it valid (it may point into its own copy).
+  CutView moved = cutView(gap->path());
+  const CutView again = std::move(moved);
+  EXPECT_EQ(again.segments[2].end, Vec2(6, 1));
+
+  auto none = run("G00 X1. Y0\nM02\n");
+  EXPECT_TRUE(cutView(none->path()).segments.empty());
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "kerf/geometry/tessellation.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -16,6 +17,22 @@ struct CutPath {
   std::vector<std::size_t> moveIndex;
 };
 CutPath cutPath(const Toolpath& toolpath);
+
+/// The cut segments as the checks read them: in place, a view of the moves' lower segments, when
+/// no rapid lies between the first cut and the last (the usual program); a copy only otherwise.
+/// Move-only, since the view may point into its own copy.
+struct CutView {
+  geometry::SegmentView segments;
+  std::vector<std::uint32_t> moveIndex;  ///< the Move of each segment
+  std::vector<geometry::Segment> copy;   ///< what segments shows, when it could not be a view
+
+  CutView() = default;
+  CutView(CutView&&) = default;
+  CutView& operator=(CutView&&) = default;
+  CutView(const CutView&) = delete;
+  CutView& operator=(const CutView&) = delete;
+};
+CutView cutView(const Toolpath& toolpath);
 
 /// The measures of the ruled surface of a taper program, one entry per move (rapids too, so the
 /// index is the move's).

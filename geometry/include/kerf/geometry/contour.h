@@ -18,6 +18,6 @@ struct ClosureReport {
 
 /// Does the path close a loop? The loop may start after a lead-in and be followed by a
 /// lead-out: any segment end that returns to an earlier vertex (within tol) closes one.
-ClosureReport analyseClosure(std::span<const Segment> path, double tol);
+ClosureReport analyseClosure(SegmentView path, double tol);
 
 }  // namespace kerf::geometry

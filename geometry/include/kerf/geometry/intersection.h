@@ -66,7 +66,6 @@ struct SelfIntersectionResult {
 /// sweep over x-monotone pieces decides whether any pair meets, testing only neighbours along the
 /// sweep line: O(n log n) on any shape. Only a path that meets itself is then swept by boxes in
 /// full to list its contacts (docs/geometry.md).
-SelfIntersectionResult findSelfIntersections(std::span<const Segment> path,
-                                             const SelfIntersectionOptions& options = {});
+SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfIntersectionOptions& options = {});
 
 }  // namespace kerf::geometry

@@ -6,7 +6,12 @@
 
 #include "kerf/geometry/vec.h"
 
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
+#include <ranges>
+#include <span>
+#include <type_traits>
 
 namespace kerf::geometry {
 
@@ -50,6 +55,70 @@ struct Segment {
   [[nodiscard]] double parameterOf(const Vec2& p) const;
   /// Distance (mm) from p to the nearest point of the segment.
   [[nodiscard]] double distanceTo(const Vec2& p) const;
+};
+
+/// Segments read where they are: a plain array, or one member of every record of an array (the
+/// lower segment of each move), a fixed number of bytes apart. The checks read a program's cut
+/// path through it, so they need no copy of it. Converts from any contiguous range of Segment.
+class SegmentView {
+ public:
+  class iterator {
+   public:
+    using iterator_category = std::forward_iterator_tag;
+    using value_type = Segment;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const Segment*;
+    using reference = const Segment&;
+    iterator() = default;
+    iterator(const std::byte* at, std::size_t stride) : at_(at), stride_(stride) {}
+    reference operator*() const { return *reinterpret_cast<const Segment*>(at_); }
+    pointer operator->() const { return reinterpret_cast<const Segment*>(at_); }
+    iterator& operator++() {
+      at_ += stride_;
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator was = *this;
+      at_ += stride_;
+      return was;
+    }
+    bool operator==(const iterator& o) const { return at_ == o.at_; }
+
+   private:
+    const std::byte* at_ = nullptr;
+    std::size_t stride_ = sizeof(Segment);
+  };
+
+  SegmentView() = default;
+  SegmentView(std::span<const Segment> s)  // NOLINT: converts like a span
+      : base_(reinterpret_cast<const std::byte*>(s.data())), size_(s.size()) {}
+  template <std::ranges::contiguous_range R>
+  requires std::is_same_v<std::ranges::range_value_t<R>, Segment> SegmentView(
+      const R& r)  // NOLINT: converts like a span
+      : SegmentView(std::span<const Segment>(std::ranges::data(r), std::ranges::size(r))) {}
+  /// The member `member` of each of the records.
+  template <typename Record>
+  static SegmentView members(std::span<const Record> records, Segment Record::*member) {
+    SegmentView v;
+    if (records.empty()) return v;
+    v.base_ = reinterpret_cast<const std::byte*>(&(records.front().*member));
+    v.stride_ = sizeof(Record);
+    v.size_ = records.size();
+    return v;
+  }
+
+  [[nodiscard]] std::size_t size() const { return size_; }
+  [[nodiscard]] bool empty() const { return size_ == 0; }
+  const Segment& operator[](std::size_t i) const { return *reinterpret_cast<const Segment*>(base_ + i * stride_); }
+  [[nodiscard]] const Segment& front() const { return (*this)[0]; }
+  [[nodiscard]] const Segment& back() const { return (*this)[size_ - 1]; }
+  [[nodiscard]] iterator begin() const { return {base_, stride_}; }
+  [[nodiscard]] iterator end() const { return {base_ + size_ * stride_, stride_}; }
+
+ private:
+  const std::byte* base_ = nullptr;
+  std::size_t stride_ = sizeof(Segment);
+  std::size_t size_ = 0;
 };
 
 }  // namespace kerf::geometry

@@ -58,7 +58,7 @@ struct PathSampleStats {
 
 /// Samples a path: its first start point, then every segment's points. Where a segment does not
 /// start at the previous end (a jump), its start is emitted as well.
-PathSampleStats samplePath(std::span<const Segment> path, const Sampling& sampling, std::vector<Vec2>* out);
+PathSampleStats samplePath(SegmentView path, const Sampling& sampling, std::vector<Vec2>* out);
 
 /// Result of fitting the sampling to a controller's point capacity.
 struct CapacityFit {

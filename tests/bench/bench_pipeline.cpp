@@ -3,7 +3,7 @@
 // run in CTest fails if the harness rots). Speed targets are never checked here: machines are
 // shared and noisy; the figures go to the README.
 //
-//   kerf_bench [--blocks N] [--repeat R] [--shape circle|star] [--sweeps all|auto] [--write FILE]
+//   kerf_bench [--blocks N] [--repeat R] [--shape circle|star|spiral] [--sweeps all|auto] [--write FILE]
 //   (--sweeps auto: only the method kerf check runs, not the box and decision sweeps alone)
 //
 // --write FILE writes the program and stops (tests/bench/compare.sh times kerf check and LinuxCNC's
@@ -12,7 +12,10 @@
 // The program: a closed contour of N moves around a circle of radius 5 m, alternating G01 lines
 // and G02 R arcs that bulge out, 4 decimals, absolute coordinates. --shape star: N G01 lines
 // between radii 100 and 40 mm, a star of long spikes whose boxes nearly all overlap (the
-// adversarial shape for a sweep over boxes, issue 13).
+// adversarial shape for a sweep over boxes, issue 13). --shape spiral: N modal `X Y` lines at 3
+// decimals, 1,000 a turn, on a spiral of radius 5000 mm growing 0.05 mm a turn, which never meets
+// itself (issue 13's 200 MB program is --blocks 10000000 --write: the turns' boxes pile up, so the
+// check takes the decision sweep).
 #include "kerf/converter/analysis.h"
 #include "kerf/converter/checks.h"
 #include "kerf/converter/summary.h"
@@ -75,18 +78,34 @@ std::string generate(std::size_t blocks) {
   return text;
 }
 
+std::string generateSpiral(std::size_t blocks) {
+  std::string text;
+  text.reserve(blocks * 21 + 64);
+  text += "%\nO9002 (kerf benchmark spiral)\nG21 G90 G17\nG92 X5000. Y0\nF2.\nG01";
+  char line[96];
+  for (std::size_t i = 1; i <= blocks; ++i) {
+    const double turns = static_cast<double>(i) / 1000.0;
+    const double r = 5000.0 + 0.05 * turns, a = 2 * M_PI * turns;
+    std::snprintf(line, sizeof line, " X%.3f Y%.3f\n", r * std::cos(a), r * std::sin(a));
+    text += i == 1 ? line : line + 1;
+  }
+  text += "M02\n%\n";
+  return text;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::size_t blocks = 1'000'000;
   int repeat = 3;
-  bool star = false, autoOnly = false;
+  bool star = false, spiral = false, autoOnly = false;
   const char* write = nullptr;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--sweeps")) autoOnly = !std::strcmp(argv[i + 1], "auto");
-    if (!std::strcmp(argv[i], "--shape"))
+    if (!std::strcmp(argv[i], "--shape")) {
       star = !std::strcmp(argv[i + 1], "star");
-    else if (!std::strcmp(argv[i], "--blocks"))
+      spiral = !std::strcmp(argv[i + 1], "spiral");
+    } else if (!std::strcmp(argv[i], "--blocks"))
       blocks = std::strtoul(argv[i + 1], nullptr, 10);
     else if (!std::strcmp(argv[i], "--write"))
       write = argv[i + 1];
@@ -95,7 +114,7 @@ int main(int argc, char** argv) {
   }
   using namespace kerf::converter;
   if (star && blocks % 2) ++blocks;  // the spikes alternate: an even count closes the star
-  const std::string text = star ? generateStar(blocks) : generate(blocks);
+  const std::string text = star ? generateStar(blocks) : spiral ? generateSpiral(blocks) : generate(blocks);
   const double mb = static_cast<double>(text.size()) / 1e6;
   if (write) {
     std::FILE* out = std::fopen(write, "wb");
@@ -156,7 +175,7 @@ int main(int argc, char** argv) {
   for (int r = 0; r < repeat; ++r) {
     for (int m = 0; m < 3; ++m) {
       // The box sweep alone is quadratic on the star: 20 s at 1e5 spikes, half an hour at 1e6.
-      if (star && m == 1 && blocks > 200'000) continue;
+      if ((star || spiral) && m == 1 && blocks > 200'000) continue;
       if (autoOnly && m > 0) continue;
       kerf::geometry::SelfIntersectionOptions o;
       o.closed = true;

@@ -242,7 +242,11 @@ double slopeAt(const Piece& p, const Segment& s, double x) {
   return p.upper ? -dx / h : dx / h;
 }
 
-void addPieces(const Segment& s, std::uint32_t index, std::vector<Piece>& out) {
+/// The x-monotone pieces of a segment, in order (a line is one; an arc is split where its x
+/// turns, into at most four), each passed to f. The same segment gives the same pieces bit for bit,
+/// so the sweep makes a piece again when it enters rather than keeping them all.
+template <typename F>
+void forEachPiece(const Segment& s, std::uint32_t index, F&& f) {
   auto lexLess = [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
   auto add = [&](const Vec2& a, const Vec2& b, bool arc, bool upper) {
     Piece p;
@@ -252,7 +256,7 @@ void addPieces(const Segment& s, std::uint32_t index, std::vector<Piece>& out) {
     p.arc = arc;
     p.upper = upper;
     if (!arc && p.right.x() != p.left.x()) p.slope = (p.right.y() - p.left.y()) / (p.right.x() - p.left.x());
-    out.push_back(p);
+    f(p);
   };
   if (!s.isArc()) {
     add(s.start, s.end, false, false);
@@ -261,19 +265,31 @@ void addPieces(const Segment& s, std::uint32_t index, std::vector<Piece>& out) {
   // Split where x turns: at the angles 0 and pi (mod 2 pi) inside the sweep.
   const double a0 = s.startAngle, a1 = s.startAngle + s.sweep;
   const double lo = std::min(a0, a1), hi = std::max(a0, a1);
-  std::vector<double> cuts{lo};
-  for (double k = std::ceil(lo / kPi); k * kPi < hi; k += 1.0)
-    if (k * kPi > lo) cuts.push_back(k * kPi);
-  cuts.push_back(hi);
+  double cuts[5];
+  int count = 0;
+  cuts[count++] = lo;
+  for (double k = std::ceil(lo / kPi); k * kPi < hi && count < 4; k += 1.0)  // at most 4 pieces: 2 bits
+    if (k * kPi > lo) cuts[count++] = k * kPi;
+  cuts[count++] = hi;
   auto at = [&](double ang) {
     if (ang == a0) return s.start;
     if (ang == a1) return s.end;  // the ends exactly: the neighbours share them, bit for bit
     return Vec2(s.centre + s.radius * Vec2(std::cos(ang), std::sin(ang)));
   };
-  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+  for (int k = 0; k + 1 < count; ++k) {
     const double mid = (cuts[k] + cuts[k + 1]) / 2;
     add(at(cuts[k]), at(cuts[k + 1]), true, std::sin(mid) > 0);
   }
+}
+
+/// Piece `sub` of a segment (forEachPiece's order).
+Piece pieceOf(const Segment& s, std::uint32_t index, unsigned sub) {
+  Piece out;
+  unsigned k = 0;
+  forEachPiece(s, index, [&](const Piece& p) {
+    if (k++ == sub) out = p;
+  });
+  return out;
 }
 
 /// A piece where the sweep stands: its y there and, to break a tie, its slope just right of it,
@@ -320,49 +336,58 @@ struct OrderAtSweep {
 template <typename Touches>
 bool sweepFindsNoContact(SegmentView path, const std::vector<std::uint32_t>& live, Touches&& touches, double near,
                          std::size_t& tested) {
-  std::vector<Piece> pieces;
-  pieces.reserve(live.size() + live.size() / 2);
-  for (std::size_t i : live) addPieces(path[i], static_cast<std::uint32_t>(i), pieces);
+  // The pieces are not kept: each is made again from its segment when it enters, and the sweep
+  // holds only those it crosses. Per piece, what stays is its segment (4 bytes), its place in the
+  // order (8) and its share of an event (24): 36 bytes, not the 104 a list of pieces cost.
   // An event: a point where one or two pieces enter or leave the sweep. Neighbouring pieces of a
   // path share their joint, so one event serves both and a closed path of n pieces sorts about n
-  // events, not 2n. An entry is piece << 1 | enters.
+  // events, not 2n. An entry is piece << 3 | sub-piece of its segment << 1 | enters.
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   struct Event {
-    Vec2 at;
+    double x, y;  // plain doubles: 24 bytes, not the 32 an aligned Vec2 would make it
     std::uint32_t entry[2];
   };
+  std::vector<std::uint32_t> pieceSeg;  // piece -> its segment
+  pieceSeg.reserve(live.size() + live.size() / 8 + 16);
   std::vector<Event> events;
-  events.reserve(pieces.size() + pieces.size() / 8 + 16);
+  events.reserve(live.size() + live.size() / 8 + 16);
   std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
-  for (std::size_t k = 0; k < pieces.size(); ++k) {
-    std::size_t mine[2];
-    for (int end = 0; end < 2; ++end) {
-      const Vec2& at = end == 0 ? pieces[k].left : pieces[k].right;
-      const std::uint32_t entry = static_cast<std::uint32_t>(k) << 1 | (end == 0 ? 1u : 0u);
-      mine[end] = SIZE_MAX;
-      for (const std::size_t e : previous)
-        if (e != SIZE_MAX && events[e].entry[1] == kNone && events[e].at.x() == at.x() && events[e].at.y() == at.y()) {
-          events[e].entry[1] = entry;
-          mine[end] = e;
-          break;
+  for (const std::uint32_t i : live) {
+    unsigned sub = 0;
+    forEachPiece(path[i], i, [&](const Piece& piece) {
+      const std::size_t k = pieceSeg.size();
+      if (k >= (std::size_t{1} << 29)) throw std::length_error("findSelfIntersections: more than 2^29 pieces");
+      pieceSeg.push_back(i);
+      std::size_t mine[2];
+      for (int end = 0; end < 2; ++end) {
+        const Vec2& at = end == 0 ? piece.left : piece.right;
+        const std::uint32_t entry = static_cast<std::uint32_t>(k) << 3 | sub << 1 | (end == 0 ? 1u : 0u);
+        mine[end] = SIZE_MAX;
+        for (const std::size_t e : previous)
+          if (e != SIZE_MAX && events[e].entry[1] == kNone && events[e].x == at.x() && events[e].y == at.y()) {
+            events[e].entry[1] = entry;
+            mine[end] = e;
+            break;
+          }
+        if (mine[end] == SIZE_MAX) {
+          events.push_back({at.x(), at.y(), {entry, kNone}});
+          mine[end] = events.size() - 1;
         }
-      if (mine[end] == SIZE_MAX) {
-        events.push_back({at, {entry, kNone}});
-        mine[end] = events.size() - 1;
       }
-    }
-    previous[0] = mine[0];
-    previous[1] = mine[1];
+      previous[0] = mine[0];
+      previous[1] = mine[1];
+      ++sub;
+    });
   }
   // By x, then y. At one point the pieces enter before any leaves (below), so that everything
   // meeting there is in the order at once.
-  geometry::parallelSort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-    return a.at.x() != b.at.x() ? a.at.x() < b.at.x() : a.at.y() < b.at.y();
-  });
-  const auto probeIndex = static_cast<std::uint32_t>(pieces.size());
-  pieces.emplace_back();
-  pieces.back().seg = std::numeric_limits<std::uint32_t>::max();
-  for (std::size_t k = 0; k < pieces.size(); ++k) pieces[k].index = static_cast<std::uint32_t>(k);
+  geometry::parallelSort(events.begin(), events.end(),
+                         [](const Event& a, const Event& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  const auto probeIndex = static_cast<std::uint32_t>(pieceSeg.size());
+  pieceSeg.push_back(std::numeric_limits<std::uint32_t>::max());
+  Piece probe;  // a flat piece, to find where a vertical line's range starts
+  probe.seg = pieceSeg.back();
+  probe.index = probeIndex;
   double sweepX = 0.0;
   // A piece entering is found with its own place computed once (heterogeneous lookup), not again
   // at every node it passes.
@@ -376,20 +401,20 @@ bool sweepFindsNoContact(SegmentView path, const std::vector<std::uint32_t>& liv
   std::pmr::unsynchronized_pool_resource arena;
   using Less = OrderAtSweep<decltype(yNow), decltype(slopeNow)>;
   std::pmr::set<Piece, Less> order(Less{yNow, slopeNow}, &arena);
-  std::vector<typename decltype(order)::iterator> where(pieces.size(), order.end());
-  std::vector<std::uint32_t> verticals;  // the vertical pieces at sweepX
+  std::vector<typename decltype(order)::iterator> where(pieceSeg.size(), order.end());
+  std::vector<Piece> verticals;  // the vertical pieces at sweepX
   double verticalsX = -INFINITY;
   auto test = [&](std::uint32_t a, std::uint32_t b) {
-    if (pieces[a].seg == pieces[b].seg) return false;  // two pieces of one arc meet where it turns
+    if (pieceSeg[a] == pieceSeg[b]) return false;  // two pieces of one arc meet where it turns
     ++tested;
-    return touches(pieces[a].seg, pieces[b].seg);
+    return touches(pieceSeg[a], pieceSeg[b]);
   };
   // A piece leaves at `at`: its neighbours become neighbours. False when they touch. A neighbour
   // within `near` of the point (another piece through it) may have hidden a piece beyond it that
   // touches this one there: those are tested too, up to the first piece farther away.
   auto leave = [&](std::uint32_t piece, const Vec2& at) {
-    if (pieces[piece].vertical()) return true;  // never in the order
     const auto it = where[piece];
+    if (it == order.end()) return true;  // a vertical piece: never in the order
     if (it != order.begin()) {
       auto q = std::prev(it);
       while (q != order.begin() && yNow(*q) >= at.y() - near) {
@@ -407,25 +432,26 @@ bool sweepFindsNoContact(SegmentView path, const std::vector<std::uint32_t>& liv
     return true;
   };
   // A piece enters at `at`: tested against its new neighbours. False when one touches it.
-  auto enter = [&](std::uint32_t piece, const Vec2& at) {
-    const Piece& p = pieces[piece];
+  auto enter = [&](std::uint32_t piece, unsigned sub, const Vec2& at) {
+    Piece p = pieceOf(path[pieceSeg[piece]], pieceSeg[piece], sub);
+    p.index = piece;
     // A point arriving at this x inside a vertical line there. Points arrive by y, so a line that
     // ends below this one is done with (a long vertical drawn in many pieces stays a short list).
-    std::erase_if(verticals, [&](std::uint32_t v) { return pieces[v].right.y() < at.y() - 1e-9; });
-    for (std::uint32_t v : verticals)
-      if (at.y() >= pieces[v].left.y() - 1e-9 && at.y() <= pieces[v].right.y() + 1e-9 && test(v, piece)) return false;
+    std::erase_if(verticals, [&](const Piece& v) { return v.right.y() < at.y() - 1e-9; });
+    for (const Piece& v : verticals)
+      if (at.y() >= v.left.y() - 1e-9 && at.y() <= v.right.y() + 1e-9 && test(v.index, piece)) return false;
     if (p.vertical()) {
       // Everything the sweep holds within the line's y range at this x.
-      for (std::uint32_t v : verticals)
-        if (test(v, piece)) return false;
-      Piece& probe = pieces[probeIndex];  // a flat piece at the range's foot, to find where it starts
+      for (const Piece& v : verticals)
+        if (test(v.index, piece)) return false;
+      // The probe at the range's foot finds where it starts.
       probe.left = Vec2(sweepX, p.left.y() - 1e-9);
       probe.right = Vec2(sweepX + 1.0, p.left.y() - 1e-9);
       for (auto q = order.lower_bound(probe); q != order.end(); ++q) {
         if (yNow(*q) > p.right.y() + 1e-9) break;
         if (test(q->index, piece)) return false;
       }
-      verticals.push_back(piece);
+      verticals.push_back(p);
       return true;
     }
     const auto it = order.emplace_hint(order.lower_bound(Place{yNow(p), slopeNow(p), p.index}), p);
@@ -445,9 +471,9 @@ bool sweepFindsNoContact(SegmentView path, const std::vector<std::uint32_t>& liv
     return true;
   };
   for (std::size_t g = 0; g < events.size();) {
-    const Vec2 at = events[g].at;
+    const Vec2 at(events[g].x, events[g].y);
     std::size_t h = g + 1;
-    while (h < events.size() && events[h].at.x() == at.x() && events[h].at.y() == at.y()) ++h;
+    while (h < events.size() && events[h].x == at.x() && events[h].y == at.y()) ++h;
     sweepX = at.x();
     if (sweepX != verticalsX) {
       verticals.clear();
@@ -455,10 +481,10 @@ bool sweepFindsNoContact(SegmentView path, const std::vector<std::uint32_t>& liv
     }
     for (std::size_t e = g; e < h; ++e)
       for (const std::uint32_t entry : events[e].entry)
-        if (entry != kNone && (entry & 1u) && !enter(entry >> 1, at)) return false;
+        if (entry != kNone && (entry & 1u) && !enter(entry >> 3, (entry >> 1) & 3u, at)) return false;
     for (std::size_t e = g; e < h; ++e)
       for (const std::uint32_t entry : events[e].entry)
-        if (entry != kNone && !(entry & 1u) && !leave(entry >> 1, at)) return false;
+        if (entry != kNone && !(entry & 1u) && !leave(entry >> 3, at)) return false;
     g = h;
   }
   return true;

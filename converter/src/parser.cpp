@@ -8,9 +8,15 @@
 #include "kerf/converter/program.h"
 
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <string>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 namespace kerf::converter {
 namespace {
@@ -721,6 +727,31 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
   }
   parser.reportMacroStatements();
   return program;
+}
+
+namespace {
+
+/// Gives the whole pages of [begin, end) back to the system; what they held reads as zeros after.
+void releasePages(const void* begin, const void* end) {
+#if defined(__linux__)
+  static const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) / page * page;
+  const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / page * page;
+  // Advice only: should the system refuse it, the memory simply stays.
+  if (to > from) (void)madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+#else
+  (void)begin;
+  (void)end;
+#endif
+}
+
+}  // namespace
+
+void releaseParsedBefore(const Program& program, std::size_t block) {
+  if (block < 2 || block >= program.blocks.size()) return;
+  // The first block stays (what is said of the whole program points at it).
+  releasePages(program.blocks.data() + 1, program.blocks.data() + block);
+  releasePages(program.words.data(), program.words.data() + program.blocks[block].firstWord);
 }
 
 }  // namespace kerf::converter

@@ -297,12 +297,17 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     mt.polarFrameTable = ro.polarFrameTable.value_or(machine.polarFrameTable);
     in.toolpath = readMillTurn(program, mt, interpretDiags);
   } else {
+    // The parse tree may give its memory back as the program runs (a long program that runs
+    // straight through): a second run, under another arc-centre convention, parses again.
+    io.releaseParsed = true;
     in = interpretProgram(program, io, interpretDiags);
   }
   if (!centreFixed && !millTurn) {
     if (const std::optional<ArcCentreMode> better = betterCentre(in.arcs, io.arcCentre)) {
       io.arcCentre = *better;
       interpretDiags = Diagnostics(100000);
+      Diagnostics again(reading.diags.cap());  // said already, by the first parse
+      program = parseProgram(*out.source, again, reading.parse);
       in = interpretProgram(program, io, interpretDiags);
       evidence.push_back(centreEvidence(in.arcs, *better));
     }

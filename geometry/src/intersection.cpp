@@ -331,10 +331,10 @@ struct OrderAtSweep {
   }
 };
 
-/// True when no pair of the live segments touches (`touches` decides a pair exactly); tested counts
+/// True when no pair of the live segments (isLive) touches (`touches` decides a pair exactly); tested counts
 /// the pairs it asked about.
-template <typename Touches>
-bool sweepFindsNoContact(SegmentView path, const std::vector<std::uint32_t>& live, Touches&& touches, double near,
+template <typename IsLive, typename Touches>
+bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, Touches&& touches, double near,
                          std::size_t& tested) {
   // The pieces are not kept: each is made again from its segment when it enters, and the sweep
   // holds only those it crosses. Per piece, what stays is its segment (4 bytes), its place in the
@@ -348,11 +348,12 @@ bool sweepFindsNoContact(SegmentView path, const std::vector<std::uint32_t>& liv
     std::uint32_t entry[2];
   };
   std::vector<std::uint32_t> pieceSeg;  // piece -> its segment
-  pieceSeg.reserve(live.size() + live.size() / 8 + 16);
+  pieceSeg.reserve(live + live / 8 + 16);
   std::vector<Event> events;
-  events.reserve(live.size() + live.size() / 8 + 16);
+  events.reserve(live + live / 8 + 16);
   std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
-  for (const std::uint32_t i : live) {
+  for (std::uint32_t i = 0; i < path.size(); ++i) {
+    if (!isLive(i)) continue;
     unsigned sub = 0;
     forEachPiece(path[i], i, [&](const Piece& piece) {
       const std::size_t k = pieceSeg.size();
@@ -526,15 +527,24 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   const double tol = options.tolerance;
   const std::size_t n = path.size();
   if (n >= kDead) throw std::length_error("findSelfIntersections: more than 2^32 - 2 segments");
-  std::vector<LooseBox> boxes(n);
   // Neighbours skip over zero-length segments (reported elsewhere): they share a vertex just the
-  // same. rank: the place among the live segments, kDead for the others.
-  std::vector<std::uint32_t> rank(n, kDead);
+  // same. A segment's rank is its place among the live segments, kDead for the others; the ranks
+  // are kept only when some segment is dead (else rank i is i: 4 bytes a segment saved).
   std::uint32_t live = 0;
+  for (std::size_t i = 0; i < n; ++i) live += path[i].length() > tol;
+  std::vector<std::uint32_t> ranks;
+  if (live < n) {
+    ranks.assign(n, kDead);
+    std::uint32_t r = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (path[i].length() > tol) ranks[i] = r++;
+  }
+  auto rank = [&](std::size_t i) { return ranks.empty() ? static_cast<std::uint32_t>(i) : ranks[i]; };
+  auto isLive = [&](std::size_t i) { return ranks.empty() || ranks[i] != kDead; };
+  std::vector<LooseBox> boxes(n);
   double lowX = INFINITY, highX = -INFINITY, widths = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (path[i].length() <= tol) continue;
-    rank[i] = live++;
+    if (!isLive(i)) continue;
     const Box b = path[i].bounds();
     boxes[i] = LooseBox::around(b);
     lowX = std::min(lowX, b.min.x());
@@ -548,14 +558,14 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     if (byMinX.size() == live) return;
     byMinX.reserve(live);
     for (std::size_t i = 0; i < n; ++i)
-      if (rank[i] != kDead) byMinX.emplace_back(boxes[i].minX, static_cast<std::uint32_t>(i));
+      if (isLive(i)) byMinX.emplace_back(boxes[i].minX, static_cast<std::uint32_t>(i));
     geometry::parallelSort(byMinX.begin(), byMinX.end(), std::less<>{});
   };
   auto isForward = [&](std::size_t i, std::size_t j) {
-    return rank[i] != kDead && rank[j] == rank[i] + 1 && near(path[i].end, path[j].start, tol);
+    return isLive(i) && rank(j) == rank(i) + 1 && near(path[i].end, path[j].start, tol);
   };
   auto isWrap = [&](std::size_t i, std::size_t j) {
-    return options.closed && live > 2 && rank[i] == 0 && rank[j] == live - 1 && near(path[j].end, path[i].start, tol);
+    return options.closed && live > 2 && rank(i) == 0 && rank(j) == live - 1 && near(path[j].end, path[i].start, tol);
   };
 
   auto byPair = [](const Contact& l, const Contact& r) {
@@ -616,10 +626,6 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   // bytes a segment: 0.24 GB at 1e7), and the box sweep after it, if any, makes them again.
   std::vector<LooseBox>().swap(boxes);
   std::vector<std::pair<float, std::uint32_t>>().swap(byMinX);
-  std::vector<std::uint32_t> liveIndex;
-  liveIndex.reserve(live);
-  for (std::size_t i = 0; i < n; ++i)
-    if (rank[i] != kDead) liveIndex.push_back(static_cast<std::uint32_t>(i));
   std::vector<Contact> scratch;
   auto touches = [&](std::size_t a, std::size_t b) {
     const std::size_t i = std::min(a, b), j = std::max(a, b);
@@ -628,14 +634,13 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     return !scratch.empty();
   };
   std::size_t tested = 0;
-  if (sweepFindsNoContact(path, liveIndex, touches, tol, tested)) {
+  if (sweepFindsNoContact(path, live, isLive, touches, tol, tested)) {
     result.candidatePairs = tested;
     return result;
   }
-  std::vector<std::uint32_t>().swap(liveIndex);
   boxes.resize(n);
   for (std::size_t i = 0; i < n; ++i)
-    if (rank[i] != kDead) boxes[i] = LooseBox::around(path[i].bounds());
+    if (isLive(i)) boxes[i] = LooseBox::around(path[i].bounds());
   sortByMinX();
   return *boxSweep(0);
 }

@@ -16,7 +16,7 @@ BlockPlan Interpreter::fillIn(const Block& block, const BlockWords& bw, const Bl
     p.motionWord = mw;
   } else {
     p.motion = motion_;
-    p.motionWord = motionWord_;
+    p.motionWord = motionWord_.get();
   }
   p.incremental = bw.group(ModalGroup::Distance) ? bw.code(ModalGroup::Distance) == GCode::Incremental : incremental_;
   if (bw.group(ModalGroup::Units)) {

@@ -121,6 +121,21 @@ struct UnknownPosition {
 
 enum class Flow : std::uint8_t { Continue, Stop };
 
+/// A word kept past its block (the motion word in force, a G41 not yet carried out): a copy, so
+/// that the parse tree may give its memory back as it is run (InterpreterOptions::releaseParsed).
+class HeldWord {
+ public:
+  void hold(const Word* w) {
+    held_ = w != nullptr;
+    if (w) word_ = *w;
+  }
+  [[nodiscard]] const Word* get() const { return held_ ? &word_ : nullptr; }
+
+ private:
+  Word word_;
+  bool held_ = false;
+};
+
 class Interpreter {
  public:
   Interpreter(const Program& program, const InterpreterOptions& options, Diagnostics& diags);
@@ -207,7 +222,7 @@ class Interpreter {
   Vec2 position_{0, 0};  // in the toolpath frame
   Vec2 shift_{0, 0};     // program coordinates = toolpath coordinates + shift (G92)
   Motion motion_ = Motion::None;
-  const Word* motionWord_ = nullptr;
+  HeldWord motionWord_;
   bool incremental_ = false;
   bool inch_ = false;
   double feed_ = 0.0;
@@ -216,7 +231,7 @@ class Interpreter {
   std::vector<Frame> stack_;
   std::unordered_map<long, std::size_t> oLabels_, nLabels_;
   UnknownPosition unknown_;
-  const Word* pendingOffset_ = nullptr;  // G40/G41/G42 not yet carried out by a move
+  HeldWord pendingOffset_;  // G40/G41/G42 not yet carried out by a move
   std::optional<double> offsetValue_;    // the wire offset in force (D/H register or --offset), mm
   struct OffsetRun {
     std::size_t first = 0, end = 0;  // moves [first, end) carry the offset; first starts it up
@@ -231,7 +246,7 @@ class Interpreter {
   Vec2 upperPosition_{0, 0};  // xyuv-abs, xyuv-linuxcnc, sodick-colon: where the upper contour is
   Vec2 upperShift_{0, 0};     // xyuv-abs, xyuv-linuxcnc: G92 U V
   Motion upperMotion_ = Motion::None;
-  const Word* upperMotionWord_ = nullptr;
+  HeldWord upperMotionWord_;
   Vec2 uvOffset_{0, 0};     // xyuv-rel: upper minus lower, the modal U V
   bool colonMode_ = false;  // G141/G142 in force
   TaperPhase taperPhase_ = TaperPhase::Off;

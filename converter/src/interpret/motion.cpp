@@ -171,7 +171,7 @@ bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, con
   const Vec2 start = position_;
   Vec2 end = start;
   Segment lower;
-  if (!buildSide(bw, 'X', 'Y', motion_, start, shift_, "", block, motionWord_, lower, end, &move)) {
+  if (!buildSide(bw, 'X', 'Y', motion_, start, shift_, "", block, motionWord_.get(), lower, end, &move)) {
     position_ = end;
     return false;
   }
@@ -188,18 +188,18 @@ bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, con
   if (move.kind == MoveKind::Line && lower.length() <= 1e-9 && upper.length() <= 1e-9)
     diags_.warning(Code::ZeroLengthMove, src_, block.span(), "move has zero length");
   // The wire offset starts and ends on a straight move: the control cannot ramp it along an arc.
-  if (pendingOffset_) {
+  if (const Word* pendingOffset = pendingOffset_.get()) {
     if (move.kind == MoveKind::Arc) {
       const bool cancel = wireOffset_ == WireOffset::Off;
       diags_.error(Code::OffsetOnArc, src_, block.span(),
                    std::string("the wire offset is ") + (cancel ? "cancelled" : "started") + " (" +
-                       std::string(src_->text().substr(pendingOffset_->offset, pendingOffset_->length)) + " on line " +
-                       std::to_string(src_->locate(pendingOffset_->offset).line) + ") on this arc: a control " +
+                       std::string(src_->text().substr(pendingOffset->offset, pendingOffset->length)) + " on line " +
+                       std::to_string(src_->locate(pendingOffset->offset).line) + ") on this arc: a control " +
                        (cancel ? "cancels" : "starts") + " it on a straight move",
                    std::string("put a straight ") + (cancel ? "lead-out" : "lead-in") + " move after " +
-                       std::string(src_->text().substr(pendingOffset_->offset, pendingOffset_->length)));
+                       std::string(src_->text().substr(pendingOffset->offset, pendingOffset->length)));
     }
-    pendingOffset_ = nullptr;
+    pendingOffset_.hold(nullptr);
   }
   push(std::move(move), upper);
   position_ = end;

@@ -41,7 +41,16 @@ Interpretation Interpreter::run() {
   toolpath_.reading.arcCentre = options_.arcCentre;
   chooseDialect();
   indexLabels();
-  for (const Word& w : program_.words) programHasV_ |= w.letter == 'V';
+  // A program that runs straight through (no subprogram call or return, no macro call) never
+  // comes back to a block it has run: the parse tree behind it may give its memory back.
+  bool straight = options_.releaseParsed;
+  for (const Word& w : program_.words) {
+    programHasV_ |= w.letter == 'V';
+    if (straight && w.letter == 'M' && w.isNumber())
+      if (const MCodeInfo* info = findMCode(w.value))
+        straight = info->code != MCode::CallSubprogram && info->code != MCode::ReturnFromSubprogram;
+  }
+  for (const Block& b : program_.blocks) straight = straight && b.kind != BlockKind::MacroCall;
   if (machine_.legacyTaperCodes) findLegacyTaperCodes();
   // Most blocks of a wire program are moves: reserving avoids copying them while growing.
   toolpath_.moves.reserve(std::min(program_.blocks.size(), options_.maxMoves));
@@ -57,6 +66,7 @@ Interpretation Interpreter::run() {
                        " executed blocks: the subprogram calls repeat without end or far too often");
       break;
     }
+    if (straight && pc % 8192 == 0) releaseParsedBefore(program_, pc);
     const Block& block = program_.blocks[pc];
     std::size_t next = pc + 1;
     if (!(block.blockDelete && options_.blockDelete) && !block.hasError) {
@@ -209,7 +219,7 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   if (plan.setPosition && !executeSetPosition(bw, ubw, block)) return Flow::Continue;
   if (const Word* mw = bw.group(ModalGroup::Motion)) {
     motion_ = motionOf(bw.code(ModalGroup::Motion));
-    motionWord_ = mw;
+    motionWord_.hold(mw);
   }
   if (plan.homing || plan.positionCode) {
     const Word* w = plan.positionCodeWord ? plan.positionCodeWord : bw.group(ModalGroup::NonModal);

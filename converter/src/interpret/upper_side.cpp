@@ -23,10 +23,10 @@ bool Interpreter::buildUpper(const BlockWords& bw, const BlockWords& ubw, const 
     case Dialect::XyuvAbs: {
       if (const Word* g = ubw.group(ModalGroup::Motion)) {
         upperMotion_ = motionOf(ubw.code(ModalGroup::Motion));
-        upperMotionWord_ = g;
+        upperMotionWord_.hold(g);
       } else if (bw.group(ModalGroup::Motion) || upperMotion_ == Motion::None) {
         upperMotion_ = motion_;
-        upperMotionWord_ = motionWord_;
+        upperMotionWord_.hold(motionWord_.get());
       }
       const bool moves = ubw.has('U') || ubw.has('V') || ubw.has('I') || ubw.has('J') || ubw.has('R');
       if (!moves) {  // the upper guide stays where it is
@@ -40,7 +40,7 @@ bool Interpreter::buildUpper(const BlockWords& bw, const BlockWords& ubw, const 
                                 (upperMotion_ == Motion::Clockwise || upperMotion_ == Motion::CounterClockwise);
       Vec2 end;
       const bool ok = buildSide(ubw, 'U', 'V', inheritedArc ? Motion::Line : upperMotion_, upperPosition_, upperShift_,
-                                "upper ", block, upperMotionWord_, upper, end, nullptr);
+                                "upper ", block, upperMotionWord_.get(), upper, end, nullptr);
       upperPosition_ = end;
       return ok;
     }
@@ -68,13 +68,13 @@ bool Interpreter::buildUpper(const BlockWords& bw, const BlockWords& ubw, const 
       }
       if (const Word* g = ubw.group(ModalGroup::Motion)) {
         upperMotion_ = motionOf(ubw.code(ModalGroup::Motion));
-        upperMotionWord_ = g;
+        upperMotionWord_.hold(g);
       } else if (upperMotion_ == Motion::None) {
         upperMotion_ = motion_;
-        upperMotionWord_ = motionWord_;
+        upperMotionWord_.hold(motionWord_.get());
       }
       Vec2 end;
-      const bool ok = buildSide(ubw, 'X', 'Y', upperMotion_, upperPosition_, shift_, "upper ", block, upperMotionWord_,
+      const bool ok = buildSide(ubw, 'X', 'Y', upperMotion_, upperPosition_, shift_, "upper ", block, upperMotionWord_.get(),
                                 upper, end, nullptr);
       upperPosition_ = end;
       return ok;

@@ -19,7 +19,7 @@ void Interpreter::executeWireOffset(const BlockWords& bw, const Word& o) {
   wireOffset_ = code == GCode::OffsetCancel ? WireOffset::Off
                 : code == GCode::OffsetLeft ? WireOffset::Left
                                             : WireOffset::Right;
-  if (wireOffset_ != before) pendingOffset_ = &o;  // carried out by the next move
+  if (wireOffset_ != before) pendingOffset_.hold(&o);  // carried out by the next move
   if (code == GCode::OffsetCancel) return;
   const Word* reg = bw.has('D') ? bw['D'] : bw['H'];
   offsetValue_.reset();

@@ -49,6 +49,11 @@ struct InterpreterOptions {
   std::size_t maxCallDepth = 16;     ///< M98 nesting
   std::size_t maxExecutedBlocks = 20'000'000;
   std::size_t maxMoves = 10'000'000;
+  /// The interpreter may give back the parse tree's memory behind it as it runs (program.h,
+  /// releaseParsedBefore) when the program runs straight through: no subprogram call or return
+  /// and no macro call. The Program must then not be read again, except for its sizes; a second
+  /// run needs a new parse.
+  bool releaseParsed = false;
 };
 
 /// How the arcs given by I J close under each convention (for detecting the convention).

@@ -8,8 +8,8 @@
 #include "kerf/converter/program.h"
 
 #include <array>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace {
 
@@ -134,6 +135,49 @@ TEST(machine_test, micrometres_and_absolute_centres_from_the_evidence) {
   const Pipeline forced = read(text, o);
   EXPECT_TRUE(has(forced, Code::ZeroRadius));
   EXPECT_NE(first(forced, Code::ZeroRadius).help.find("--arc-centre absolute"), std::string::npos);
+}
+
+// A long program that runs straight through gives its parse tree back as it runs (many thousand
+// blocks, pages at a time). What it reads must not change: the same moves as a run that keeps the
+// tree; a diagnostic that points at the motion word of the first block, 30,000 blocks later; and a
+// second run under the absolute-centre convention, which must parse the program again.
+TEST(machine_test, a_long_program_reads_the_same_when_its_parse_tree_goes_back_as_it_runs) {
+  std::string text = "G92 X0 Y0\nG01 X1. Y0\n";
+  for (int i = 0; i < 30000; ++i) text += "X" + std::to_string(1 + (i + 1) % 2) + ". Y" + std::to_string(i + 1) + ".\n";
+  // Absolute centres: each arc's centre is the origin, as I J give it (incremental puts it far off).
+  text += "G03 X-1. Y-30000. I0 J0\nG01 X0 Y0\nM02\n";
+  const Pipeline p = read(text);
+  EXPECT_FALSE(p.diags.hasErrors()) << kerf::test::dump(p.diags);
+  EXPECT_EQ(p.toolpath.reading.arcCentre, ArcCentreMode::Absolute);
+  ASSERT_EQ(p.toolpath.moves.size(), 30003u);
+  for (int i = 0; i < 30000; ++i) {
+    const kerf::geometry::Vec2 end(1 + (i + 1) % 2, i + 1);
+    ASSERT_EQ(p.toolpath.moves[static_cast<std::size_t>(i) + 1].lower.end, end) << "move " << i + 1;
+  }
+  EXPECT_EQ(p.toolpath.moves[30001].lower.centre, kerf::geometry::Vec2(0, 0));
+  EXPECT_NEAR(p.toolpath.moves[30001].lower.radius, std::hypot(1.0, 30000.0), 1e-9);
+  EXPECT_EQ(p.toolpath.moves[30002].lower.end, kerf::geometry::Vec2(0, 0));
+
+  // The G01 of line 2 is the motion word in force 30,000 blocks on: an arc that cannot be built
+  // there points at the block, and a G02 missing its centre at the motion word of its own block.
+  std::string bad = "G92 X0 Y0\nG01 X1. Y0\n";
+  for (int i = 0; i < 30000; ++i) bad += "X" + std::to_string(1 + (i + 1) % 2) + ". Y" + std::to_string(i + 1) + ".\n";
+  bad += "G02 X5. Y5.\nM02\n";
+  const Pipeline q = read(bad);
+  const Diagnostic& d = first(q, Code::ArcWithoutCentre);
+  EXPECT_EQ(q.source->locate(d.span.offset).line, 30003u);
+  EXPECT_EQ(q.source->text().substr(d.span.offset, d.span.length), "G02");
+
+  // A G41 held 30,000 blocks (feeds, no move) until an arc carries it out: the message quotes
+  // the word and its line, which are long gone from the parse tree by then.
+  std::string held = "G92 X0 Y0\nG01 X5. Y0\n";
+  for (int i = 0; i < 1000; ++i) held += "F2.\n";  // the G41 past the first pages
+  held += "G41 D1\n";
+  for (int i = 0; i < 30000; ++i) held += "F2.\n";
+  held += "G03 X15. Y0 I5. J0\nM02\n";
+  const Pipeline h = read(held);
+  const Diagnostic& started = first(h, Code::OffsetOnArc);
+  EXPECT_NE(started.message.find("(G41 on line 1003)"), std::string::npos) << started.message;
 }
 
 TEST(machine_test, a_code_the_profile_knows_is_a_note_and_others_stay_errors) {

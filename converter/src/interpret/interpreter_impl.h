@@ -231,8 +231,8 @@ class Interpreter {
   std::vector<Frame> stack_;
   std::unordered_map<long, std::size_t> oLabels_, nLabels_;
   UnknownPosition unknown_;
-  HeldWord pendingOffset_;  // G40/G41/G42 not yet carried out by a move
-  std::optional<double> offsetValue_;    // the wire offset in force (D/H register or --offset), mm
+  HeldWord pendingOffset_;             // G40/G41/G42 not yet carried out by a move
+  std::optional<double> offsetValue_;  // the wire offset in force (D/H register or --offset), mm
   struct OffsetRun {
     std::size_t first = 0, end = 0;  // moves [first, end) carry the offset; first starts it up
     WireOffset side = WireOffset::Off;

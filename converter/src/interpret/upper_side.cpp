@@ -74,8 +74,8 @@ bool Interpreter::buildUpper(const BlockWords& bw, const BlockWords& ubw, const 
         upperMotionWord_.hold(motionWord_.get());
       }
       Vec2 end;
-      const bool ok = buildSide(ubw, 'X', 'Y', upperMotion_, upperPosition_, shift_, "upper ", block, upperMotionWord_.get(),
-                                upper, end, nullptr);
+      const bool ok = buildSide(ubw, 'X', 'Y', upperMotion_, upperPosition_, shift_, "upper ", block,
+                                upperMotionWord_.get(), upper, end, nullptr);
       upperPosition_ = end;
       return ok;
     }

@@ -337,8 +337,9 @@ template <typename IsLive, typename Touches>
 bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, Touches&& touches, double near,
                          std::size_t& tested) {
   // The pieces are not kept: each is made again from its segment when it enters, and the sweep
-  // holds only those it crosses. Per piece, what stays is its segment (4 bytes), its place in the
-  // order (8) and its share of an event (24): 36 bytes, not the 104 a list of pieces cost.
+  // holds only those it crosses. Per piece, what stays is its segment (4 bytes, none for a path
+  // of lines), its place in the order (8) and its share of an event (24): at most 36 bytes, not
+  // the 104 a list of pieces cost.
   // An event: a point where one or two pieces enter or leave the sweep. Neighbouring pieces of a
   // path share their joint, so one event serves both and a closed path of n pieces sorts about n
   // events, not 2n. An entry is piece << 3 | sub-piece of its segment << 1 | enters.
@@ -347,8 +348,14 @@ bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, To
     double x, y;  // plain doubles: 24 bytes, not the 32 an aligned Vec2 would make it
     std::uint32_t entry[2];
   };
-  std::vector<std::uint32_t> pieceSeg;  // piece -> its segment
-  pieceSeg.reserve(live + live / 8 + 16);
+  // Piece -> its segment; not kept when every segment is live and a line (then piece k is
+  // segment k: 4 bytes a piece saved).
+  bool identity = live == path.size();
+  for (std::size_t i = 0; i < path.size() && identity; ++i) identity = !path[i].isArc();
+  std::vector<std::uint32_t> pieceSeg;
+  if (!identity) pieceSeg.reserve(live + live / 8 + 16);
+  std::size_t pieces = 0;
+  auto segOf = [&](std::uint32_t piece) { return identity ? piece : pieceSeg[piece]; };
   std::vector<Event> events;
   events.reserve(live + live / 8 + 16);
   std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
@@ -356,9 +363,9 @@ bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, To
     if (!isLive(i)) continue;
     unsigned sub = 0;
     forEachPiece(path[i], i, [&](const Piece& piece) {
-      const std::size_t k = pieceSeg.size();
+      const std::size_t k = pieces++;
       if (k >= (std::size_t{1} << 29)) throw std::length_error("findSelfIntersections: more than 2^29 pieces");
-      pieceSeg.push_back(i);
+      if (!identity) pieceSeg.push_back(i);
       std::size_t mine[2];
       for (int end = 0; end < 2; ++end) {
         const Vec2& at = end == 0 ? piece.left : piece.right;
@@ -384,10 +391,10 @@ bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, To
   // meeting there is in the order at once.
   geometry::parallelSort(events.begin(), events.end(),
                          [](const Event& a, const Event& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
-  const auto probeIndex = static_cast<std::uint32_t>(pieceSeg.size());
-  pieceSeg.push_back(std::numeric_limits<std::uint32_t>::max());
+  const auto probeIndex = static_cast<std::uint32_t>(pieces++);
+  if (!identity) pieceSeg.push_back(std::numeric_limits<std::uint32_t>::max());
   Piece probe;  // a flat piece, to find where a vertical line's range starts
-  probe.seg = pieceSeg.back();
+  probe.seg = std::numeric_limits<std::uint32_t>::max();
   probe.index = probeIndex;
   double sweepX = 0.0;
   // A piece entering is found with its own place computed once (heterogeneous lookup), not again
@@ -402,13 +409,13 @@ bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, To
   std::pmr::unsynchronized_pool_resource arena;
   using Less = OrderAtSweep<decltype(yNow), decltype(slopeNow)>;
   std::pmr::set<Piece, Less> order(Less{yNow, slopeNow}, &arena);
-  std::vector<typename decltype(order)::iterator> where(pieceSeg.size(), order.end());
+  std::vector<typename decltype(order)::iterator> where(pieces, order.end());
   std::vector<Piece> verticals;  // the vertical pieces at sweepX
   double verticalsX = -INFINITY;
   auto test = [&](std::uint32_t a, std::uint32_t b) {
-    if (pieceSeg[a] == pieceSeg[b]) return false;  // two pieces of one arc meet where it turns
+    if (segOf(a) == segOf(b)) return false;  // two pieces of one arc meet where it turns
     ++tested;
-    return touches(pieceSeg[a], pieceSeg[b]);
+    return touches(segOf(a), segOf(b));
   };
   // A piece leaves at `at`: its neighbours become neighbours. False when they touch. A neighbour
   // within `near` of the point (another piece through it) may have hidden a piece beyond it that
@@ -434,7 +441,7 @@ bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, To
   };
   // A piece enters at `at`: tested against its new neighbours. False when one touches it.
   auto enter = [&](std::uint32_t piece, unsigned sub, const Vec2& at) {
-    Piece p = pieceOf(path[pieceSeg[piece]], pieceSeg[piece], sub);
+    Piece p = pieceOf(path[segOf(piece)], segOf(piece), sub);
     p.index = piece;
     // A point arriving at this x inside a vertical line there. Points arrive by y, so a line that
     // ends below this one is done with (a long vertical drawn in many pieces stays a short list).

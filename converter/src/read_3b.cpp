@@ -268,7 +268,7 @@ class ThreeBReader {
       std::size_t next = i;
       if (parseRecord(i, r, next)) {
         ++records;
-        apply(r, records - 1);
+        apply(r);
         i = next;
       } else {
         i = lineEnd(next);  // go on at the next line
@@ -401,20 +401,19 @@ class ThreeBReader {
     return true;
   }
 
-  Move moveFor(const Record& r, std::size_t index) const {
+  Move moveFor(const Record& r) const {
     Move m;
     m.span = SourceSpan{r.begin, r.end - r.begin};
-    m.block = static_cast<std::uint32_t>(index);
     m.line = src_.locate(r.begin).line;
     return m;
   }
 
-  void apply(const Record& r, std::size_t index) {
+  void apply(const Record& r) {
     constexpr double kMm = 1e-3;
     const double x = static_cast<double>(r.field[0]), y = static_cast<double>(r.field[1]);
     const double j = static_cast<double>(r.field[2]);
     const Vec2 signs = three_b::quadrantSigns(r.quadrant);
-    Move m = moveFor(r, index);
+    Move m = moveFor(r);
     const SourceSpan jSpan = span(r.fieldAt[2], r.axisAt);
     if (!r.arc) {
       Vec2 d;

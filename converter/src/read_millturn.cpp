@@ -266,7 +266,6 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
       y = yy;
     }
     Move m;
-    m.block = static_cast<std::uint32_t>(bi);
     m.line = b.line;
     m.span = b.span();
     m.feed = feed;

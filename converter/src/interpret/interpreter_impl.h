@@ -164,8 +164,7 @@ class Interpreter {
   void setHeight(std::optional<Height>& slot, double value, const char* what, std::uint32_t line);
   double length(const Word& w) const;
   // motion.cpp
-  bool executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan,
-                     std::uint32_t blockIndex);
+  bool executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
   bool buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
                  const std::string& side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
                  Move* record);

@@ -126,8 +126,8 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
   return true;
 }
 
-bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan,
-                                std::uint32_t blockIndex) {
+bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block,
+                                const BlockPlan& plan) {
   const bool hasEnd = bw.has('X') || bw.has('Y');
   if (!plan.lowerWords && !plan.upperWords) return true;  // modal words only
   if (motion_ == Motion::None) {
@@ -161,7 +161,6 @@ bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, con
     return true;
   }
   Move move;
-  move.block = blockIndex;
   move.line = block.line;
   move.span = block.span();
   move.feed = feed_;

@@ -186,7 +186,6 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   // Phase 3: check.
   if (!checkBlock(block, bw, ubw, plan)) return Flow::Continue;
   // Phase 4: execute, in the documented order.
-  const std::uint32_t blockIndex = static_cast<std::uint32_t>(pc);
   warnIgnoredWords(bw, plan);
   if (const Word* f = bw['F']) {
     if (f->value <= 0)
@@ -236,7 +235,7 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
         w->span());
     skipMove(block, plan.motion != Motion::Rapid);
   } else if (!plan.dwell && !plan.setPosition && !plan.noMotion) {
-    if (!executeMotion(bw, ubw, block, plan, blockIndex)) return Flow::Continue;
+    if (!executeMotion(bw, ubw, block, plan)) return Flow::Continue;
   }
   // Program flow.
   for (std::size_t k = 0; k < bw.mCount; ++k) {

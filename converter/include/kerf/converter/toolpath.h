@@ -114,7 +114,7 @@ struct Reading {
 struct Toolpath {
   std::vector<Move> moves;
   InputFormat format = InputFormat::Iso;
-  std::size_t blocks = 0;  ///< blocks (ISO) or records (3B) read: what Move::block indexes
+  std::size_t blocks = 0;  ///< blocks (ISO) or records (3B) read
   Reading reading;
   geometry::Vec2 start{0, 0};                       ///< where the wire is before the first move
   LengthUnit programUnit = LengthUnit::Millimetre;  ///< the last G20/G21 in force

@@ -411,7 +411,7 @@ bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, To
   std::pmr::set<Piece, Less> order(Less{yNow, slopeNow}, &arena);
   std::vector<typename decltype(order)::iterator> where(pieces, order.end());
   std::vector<Piece> verticals;  // the vertical pieces at sweepX
-  double verticalsX = -INFINITY;
+  double verticalsX = -std::numeric_limits<double>::infinity();
   auto test = [&](std::uint32_t a, std::uint32_t b) {
     if (segOf(a) == segOf(b)) return false;  // two pieces of one arc meet where it turns
     ++tested;
@@ -532,8 +532,9 @@ struct LooseBox {
     return {below(b.min.x()), below(b.min.y()), above(b.max.x()), above(b.max.y())};
   }
   [[nodiscard]] bool overlaps(const LooseBox& b, double tol) const {
-    return double{minX} <= double{b.maxX} + tol && double{b.minX} <= double{maxX} + tol &&
-           double{minY} <= double{b.maxY} + tol && double{b.minY} <= double{maxY} + tol;
+    auto d = [](float v) { return static_cast<double>(v); };
+    return d(minX) <= d(b.maxX) + tol && d(b.minX) <= d(maxX) + tol && d(minY) <= d(b.maxY) + tol &&
+           d(b.minY) <= d(maxY) + tol;
   }
 };
 
@@ -559,7 +560,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   auto rank = [&](std::size_t i) { return ranks.empty() ? static_cast<std::uint32_t>(i) : ranks[i]; };
   auto isLive = [&](std::size_t i) { return ranks.empty() || ranks[i] != kDead; };
   std::vector<LooseBox> boxes(n);
-  double lowX = INFINITY, highX = -INFINITY, widths = 0.0;
+  double lowX = std::numeric_limits<double>::infinity(), highX = -lowX, widths = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!isLive(i)) continue;
     const Box b = path[i].bounds();
@@ -601,7 +602,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
       std::size_t w = 0;
       for (std::size_t a = 0; a < active.size(); ++a) {
         const std::uint32_t other = active[a];
-        if (double{boxes[other].maxX} < double{box.minX} - tol) continue;  // leaves the sweep
+        if (static_cast<double>(boxes[other].maxX) < static_cast<double>(box.minX) - tol) continue;  // leaves the sweep
         active[w++] = other;
         if (!boxes[other].overlaps(box, tol)) continue;
         ++r.candidatePairs;

@@ -9,6 +9,9 @@
 #   kerf check against LinuxCNC's rs274 -g (the standalone interpreter, Debian's linuxcnc-uspace)
 #   on the 6.1 MB benchmark program (kerf_bench --blocks 200000 --write): wall time and peak
 #   memory (GNU time), both reading, interpreting and (Kerf) checking the whole program.
+#   kerf check of issue 13's 200 MB program (kerf_bench --shape spiral, 10 M modal X Y lines; no peer:
+#   its target is 2 GB of memory), once: wall time and peak memory. KERF_COMPARE_SPIRAL=N sets the
+#   lines (0 skips it).
 #   kerf render of the render benchmark's part from its NC file (kerf_bench_render --write: read,
 #   check, mesh 1,000,000 triangles, draw 1024x768 with OSMesa, PNG) against f3d drawing the same
 #   mesh from a ready STL (kerf export, not timed) at 1024x768 under xvfb-run; f3d alone is timed
@@ -87,4 +90,15 @@ if command -v rs274 > /dev/null; then
     "$(awk -v k="$kmem" -v b="$bytes" 'BEGIN {print k * 1024 / b}')"
 else
   echo "compare.sh: rs274 is not installed (apt-get install linuxcnc-uspace): the reader pair is skipped" >&2
+fi
+
+spiral=${KERF_COMPARE_SPIRAL:-10000000}
+if [[ "$spiral" != 0 ]]; then
+  echo "# kerf check of the spiral program ($spiral lines), once: wall s, peak memory"
+  "$build/tests/kerf_bench" --shape spiral --blocks "$spiral" --write "$work/spiral.nc" > /dev/null
+  bytes=$(stat -c %s "$work/spiral.nc")
+  # An open path: one warning (K0605), exit 0.
+  /usr/bin/time -f "%e %M" -o "$work/t" "$build/viewer/kerf" check "$work/spiral.nc" > /dev/null 2>&1
+  read -r t m < "$work/t"
+  printf "spiral %d bytes: kerf check %s s, %d KiB (%.2f GB)\n" "$bytes" "$t" "$m" "$(awk -v k="$m" 'BEGIN {print k * 1024 / 1e9}')"
 fi

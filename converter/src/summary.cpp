@@ -23,12 +23,10 @@ CutView cutView(const Toolpath& toolpath) {
   std::size_t first = 0, last = moves.size();
   while (first < last && !moves[first].isCut()) ++first;
   while (last > first && !moves[last - 1].isCut()) --last;
-  bool contiguous = true;
-  for (std::size_t i = first; i < last && contiguous; ++i) contiguous = moves[i].isCut();
   view.moveIndex.reserve(last - first);
   for (std::size_t i = first; i < last; ++i)
     if (moves[i].isCut()) view.moveIndex.push_back(static_cast<std::uint32_t>(i));
-  if (contiguous) {
+  if (view.moveIndex.size() == last - first) {  // no rapid between the cuts
     view.segments =
         geometry::SegmentView::members(std::span<const Move>(moves).subspan(first, last - first), &Move::lower);
     return view;

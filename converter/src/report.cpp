@@ -66,8 +66,7 @@ const char* centreFormName(CentreForm f) {
 /// arc its words gave, not the offset one.
 double programmedRadiusError(const Toolpath& toolpath, std::size_t i) {
   const bool offset = i < toolpath.offsetRole.size() && toolpath.offsetRole[i] == OffsetRole::Element;
-  const geometry::Segment& d = offset ? toolpath.programmed[i] : toolpath.moves[i].lower;
-  return d.isArc() ? (d.end - d.centre).norm() - d.radius : 0.0;
+  return (offset ? toolpath.programmed[i] : toolpath.moves[i].lower).radiusError();
 }
 
 std::string blockText(const SourceFile& source, const Move& m) {
@@ -432,14 +431,14 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
              (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
              " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
     } else if (threeB) {
-      const Vec2& xy = m.programmedCentreWords();
+      const Vec2 xy = m.programmedCentreWords();
       out += "  3B arc: x y = start - centre = (" + mm(xy.x()) + ", " + mm(xy.y()) +
              ") (signs from the start's quadrant in SR/NR), so the centre is " + pt(s.centre) + ", radius " +
              mm(s.radius) +
              " mm; the arc ends where it has travelled J along the count axis, over every quadrant it "
              "crosses\n";
     } else {
-      const Vec2& ij = m.programmedCentreWords();
+      const Vec2 ij = m.programmedCentreWords();
       std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"
                          : m.centreForm == CentreForm::Reversed  ? "centre = start - (I, J)"
                                                                  : "centre = (I, J)";

@@ -83,19 +83,14 @@ ClosureReport analyseClosure(SegmentView path, double tol) {
   if (path.size() >= std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("analyseClosure: more than 2^32 - 2 segments");
   CellTable starts(path.size());
-  auto cellOfEnd = [&](const Vec2& e, std::int64_t& gx, std::int64_t& gy, std::int64_t& sideX, std::int64_t& sideY) {
-    const double fx = e.x() / cell, fy = e.y() / cell;
-    gx = static_cast<std::int64_t>(std::floor(fx));
-    gy = static_cast<std::int64_t>(std::floor(fy));
-    sideX = fx - static_cast<double>(gx) < 0.5 ? -1 : 1;
-    sideY = fy - static_cast<double>(gy) < 0.5 ? -1 : 1;
-  };
   for (std::size_t k = 0; k < path.size(); ++k) {
     const auto [sx, sy] = cellOf(path[k].start);
     starts.insert(sx, sy, static_cast<std::uint32_t>(k));
     const Vec2& e = path[k].end;
-    std::int64_t gx, gy, sideX, sideY;
-    cellOfEnd(e, gx, gy, sideX, sideY);
+    const double fx = e.x() / cell, fy = e.y() / cell;
+    const auto gx = static_cast<std::int64_t>(std::floor(fx)), gy = static_cast<std::int64_t>(std::floor(fy));
+    const std::int64_t sideX = fx - static_cast<double>(gx) < 0.5 ? -1 : 1;
+    const std::int64_t sideY = fy - static_cast<double>(gy) < 0.5 ? -1 : 1;
     for (const std::int64_t dx : {std::int64_t{0}, sideX})
       for (const std::int64_t dy : {std::int64_t{0}, sideY})
         starts.forEach(gx + dx, gy + dy, [&](std::size_t v) {

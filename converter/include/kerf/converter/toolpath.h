@@ -63,9 +63,7 @@ struct Move {
   /// The signed R as programmed, mm (0 when the centre was given otherwise).
   [[nodiscard]] double programmedRadius() const { return centreForm == CentreForm::Radius ? centreWords.x() : 0.0; }
   /// How far the arc's end lies off its circle: |end - centre| - |start - centre|, mm (0 for a line).
-  [[nodiscard]] double radiusError() const {
-    return lower.isArc() ? (lower.end - lower.centre).norm() - lower.radius : 0.0;
-  }
+  [[nodiscard]] double radiusError() const { return lower.radiusError(); }
 };
 static_assert(sizeof(Move) <= 128, "a move is stored for every block: keep it small");
 

@@ -55,6 +55,8 @@ struct Segment {
   [[nodiscard]] double parameterOf(const Vec2& p) const;
   /// Distance (mm) from p to the nearest point of the segment.
   [[nodiscard]] double distanceTo(const Vec2& p) const;
+  /// How far an arc's end lies off its circle: |end - centre| - radius, mm (0 for a line).
+  [[nodiscard]] double radiusError() const { return isArc() ? (end - centre).norm() - radius : 0.0; }
 };
 
 /// Segments read where they are: a plain array, or one member of every record of an array (the

@@ -306,8 +306,10 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     if (const std::optional<ArcCentreMode> better = betterCentre(in.arcs, io.arcCentre)) {
       io.arcCentre = *better;
       interpretDiags = Diagnostics(100000);
-      Diagnostics again(reading.diags.cap());  // said already, by the first parse
-      program = parseProgram(*out.source, again, reading.parse);
+      if (in.parseReleased) {
+        Diagnostics again(reading.diags.cap());  // said already, by the first parse
+        program = parseProgram(*out.source, again, reading.parse);
+      }
       in = interpretProgram(program, io, interpretDiags);
       evidence.push_back(centreEvidence(in.arcs, *better));
     }

@@ -215,6 +215,7 @@ class Interpreter {
   Diagnostics& diags_;
   Toolpath toolpath_;
   ArcCentreTally tally_;
+  bool released_ = false;  // releaseParsedBefore was called
 
   // Modal state (the interpreter's "settings").
   Dialect dialect_ = Dialect::Plain;

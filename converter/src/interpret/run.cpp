@@ -66,7 +66,10 @@ Interpretation Interpreter::run() {
                        " executed blocks: the subprogram calls repeat without end or far too often");
       break;
     }
-    if (straight && pc % 8192 == 0) releaseParsedBefore(program_, pc);
+    if (straight && pc > 0 && pc % 8192 == 0) {
+      releaseParsedBefore(program_, pc);
+      released_ = true;
+    }
     const Block& block = program_.blocks[pc];
     std::size_t next = pc + 1;
     if (!(block.blockDelete && options_.blockDelete) && !block.hasError) {
@@ -93,7 +96,7 @@ Interpretation Interpreter::run() {
   if (dialect_ == Dialect::XyuvRel) resolveRel();
   if (dialect_ == Dialect::TaperAngle) resolveTaperAngle();
   resolveWireOffsets();
-  return {std::move(toolpath_), tally_};
+  return {std::move(toolpath_), tally_, released_};
 }
 
 void Interpreter::chooseDialect() {

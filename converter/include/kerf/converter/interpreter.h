@@ -67,6 +67,7 @@ struct ArcCentreTally {
 struct Interpretation {
   Toolpath toolpath;
   ArcCentreTally arcs;
+  bool parseReleased = false;  ///< part of the parse tree went back (releaseParsed): parse again to rerun
 };
 
 Interpretation interpretProgram(const Program& program, const InterpreterOptions& options, Diagnostics& diags);

@@ -67,6 +67,9 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
   if (options.check.sectionBudget) out.checkOptions.sectionBudget = *options.check.sectionBudget;
+  // The checks and what follows them quote the text only: a long program's text goes back here.
+  if (options.rereadSource && out.source && (out.format == InputFormat::Iso || out.format == InputFormat::ThreeB))
+    out.source->releaseText(options.rereadSource);
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
     checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
@@ -298,8 +301,11 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     in.toolpath = readMillTurn(program, mt, interpretDiags);
   } else {
     // The parse tree may give its memory back as the program runs (a long program that runs
-    // straight through): a second run, under another arc-centre convention, parses again.
+    // straight through): a second run, under another arc-centre convention, parses again. The
+    // text goes back before it when only quotes need it (the interpreter quotes words only in
+    // rare diagnostics, which read the file again).
     io.releaseParsed = true;
+    if (options.rereadSource) out.source->releaseText(options.rereadSource);
     in = interpretProgram(program, io, interpretDiags);
   }
   if (!centreFixed && !millTurn) {

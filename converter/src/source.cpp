@@ -1,11 +1,39 @@
 #include "kerf/converter/source.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 
 namespace kerf::converter {
 
-SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
+namespace {
+
+/// 64-bit hash of a text, 8 bytes a step (a multiply-xorshift mix): enough to tell that a file
+/// changed, not a cryptographic check. About 1 ms for 6 MB.
+std::uint64_t hashOf(std::string_view text) {
+  std::uint64_t h = 0x243F6A8885A308D3ull ^ text.size();
+  const auto mix = [&h](std::uint64_t w) {
+    h = (h ^ w) * 0x9E3779B97F4A7C15ull;
+    h ^= h >> 32;
+  };
+  std::size_t k = 0;
+  for (; k + 8 <= text.size(); k += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, text.data() + k, 8);
+    mix(w);
+  }
+  std::uint64_t tail = 0;
+  std::memcpy(&tail, text.data() + k, text.size() - k);
+  mix(tail);
+  return h ^ (h >> 29);
+}
+
+}  // namespace
+
+SourceFile::SourceFile(std::string name, std::string text)
+    : name_(std::move(name)), text_(std::move(text)), size_(text_.size()) {
   lineStarts_.push_back(0);
   const char* data = text_.data();
   const std::size_t size = text_.size();
@@ -26,8 +54,29 @@ SourceLocation SourceFile::locate(std::uint32_t offset) const {
   return {line, offset - lineStarts_[line - 1] + 1};
 }
 
+void SourceFile::releaseText(TextSource readAgain) {
+  if (released_ || !readAgain) return;
+  readAgain_ = std::move(readAgain);
+  hash_ = hashOf(text_);
+  std::string().swap(text_);
+  released_ = true;
+}
+
+void SourceFile::reload() const {
+  released_ = false;
+  std::optional<std::string> again = readAgain_();
+  if (!again || again->size() != size_ || hashOf(*again) != hash_) {
+    // Changed: blank lines of the old lengths keep every position valid.
+    changed_ = true;
+    again.emplace(size_, ' ');
+    for (std::size_t k = 1; k < lineStarts_.size(); ++k) (*again)[lineStarts_[k] - 1] = '\n';
+  }
+  text_ = std::move(*again);
+}
+
 std::pair<std::uint32_t, std::uint32_t> SourceFile::lineRange(std::uint32_t line) const {
   if (line == 0 || line > lineStarts_.size()) return {0, 0};
+  if (released_) reload();
   const std::uint32_t begin = lineStarts_[line - 1];
   std::uint32_t end = line < lineStarts_.size() ? lineStarts_[line] : static_cast<std::uint32_t>(text_.size());
   // Drop the line break: LF, CR LF or CR.
@@ -38,7 +87,7 @@ std::pair<std::uint32_t, std::uint32_t> SourceFile::lineRange(std::uint32_t line
 
 std::string_view SourceFile::lineText(std::uint32_t line) const {
   const auto [begin, end] = lineRange(line);
-  return std::string_view(text_).substr(begin, end - begin);
+  return text().substr(begin, end - begin);
 }
 
 }  // namespace kerf::converter

@@ -379,6 +379,22 @@ elseif(CASE STREQUAL "drawing_module")
   run("${CMAKE_COMMAND}" -E env KERF_DRAW_LIBRARY=${WORK}/missing.so "${KERF}" check "${sample}")
   expect("check needs no drawing module" rc EQUAL 0)
 
+elseif(CASE STREQUAL "check_quotes_lines_it_gave_back")
+  # kerf check gives a program's text back once it is interpreted and reads the file again to
+  # quote a finding's line (SourceFile::releaseText); standard input keeps its text.
+  set(quote "    G1 X10. Y0 G1 U0 V0\n    ^~~~~~~~~~~~~~~~~~~")
+  run("${KERF}" check "${SOURCE}/samples/bad/wire_crossing.nc")
+  expect("exit 1" rc EQUAL 1)
+  string(FIND "${err}" "wire_crossing.nc:8:1: error:" at)
+  expect("the finding's place" NOT at EQUAL -1)
+  string(FIND "${err}" "${quote}" at)
+  expect("the line quoted from the file read again" NOT at EQUAL -1)
+  run(sh -c "\"${KERF}\" check - < \"${SOURCE}/samples/bad/wire_crossing.nc\"")
+  string(FIND "${err}" "${quote}" at)
+  expect("the line quoted from standard input" NOT at EQUAL -1)
+  run("${KERF}" check "${SOURCE}/samples/bad/wire_crossing.nc" --json)
+  string(FIND "${out}" "\"line\": 8" at)
+  expect("JSON keeps the line" NOT at EQUAL -1)
 elseif(CASE STREQUAL "threads_do_not_change_findings")
   # The measures and the sections run on every core: one thread or several, the same report, on
   # every sample (the bad ones have section findings) and on a taper part long enough to split.

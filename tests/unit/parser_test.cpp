@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <random>
 
 using namespace kerf::converter;
@@ -205,6 +206,40 @@ TEST(parser, lines_end_at_lf_cr_lf_or_a_lone_cr) {
     ASSERT_EQ(p.blocks.size(), 3u) << text;
     EXPECT_EQ(p.blocks[2].line, 3u);
     EXPECT_EQ(src.lineText(2), "G1 Y2.");
+  }
+}
+
+TEST(source, a_released_text_is_read_again_and_a_changed_one_gives_blank_lines) {
+  const std::string text = "G1 X1.\r\nG1 Y2.\r\nM2\r\n";
+  std::string onDisk = text;  // what reading again gives
+  int reads = 0;
+  const SourceFile::TextSource readAgain = [&]() -> std::optional<std::string> {
+    ++reads;
+    return onDisk;
+  };
+  {
+    SourceFile src("p.nc", text);
+    src.releaseText(readAgain);
+    EXPECT_TRUE(src.released());
+    EXPECT_EQ(src.size(), text.size());
+    EXPECT_EQ(src.locate(9).line, 2u);  // positions without reading again
+    EXPECT_EQ(src.lineCount(), 4u);
+    EXPECT_EQ(reads, 0);
+    EXPECT_EQ(src.lineText(2), "G1 Y2.");  // read again, once
+    EXPECT_EQ(src.text(), text);
+    EXPECT_EQ(reads, 1);
+    EXPECT_FALSE(src.released());
+    EXPECT_FALSE(src.changedOnDisk());
+  }
+  for (const std::optional<std::string>& changed :
+       {std::optional<std::string>("G1 X1.\r\nG1 Y3.\r\nM2\r\n"), std::optional<std::string>("G1 X1.\n"),
+        std::optional<std::string>()}) {  // other bytes of the same size, another size, unreadable
+    SourceFile src("p.nc", text);
+    src.releaseText([&changed]() { return changed; });
+    EXPECT_EQ(src.lineText(2), std::string(7, ' '));  // the old length, blank (the CR turned blank)
+    EXPECT_TRUE(src.changedOnDisk());
+    EXPECT_EQ(src.lineText(3), "   ");
+    EXPECT_EQ(src.locate(9).column, 2u);
   }
 }
 

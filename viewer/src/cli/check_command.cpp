@@ -38,7 +38,8 @@ int runCheck(const CheckArgs& a) {
     return kExitUsage;
   }
   for (const std::string& file : a.common.input.files) {
-    std::optional<Loaded> in = load(a.common, file);
+    // The text is needed again only for quotes, except by --trace (it prints each move's words).
+    std::optional<Loaded> in = load(a.common, file, !a.trace);
     if (!in) {
       worst = std::max(worst, kExitUsage);
       continue;

@@ -21,7 +21,7 @@ void printDiagnostics(const converter::Diagnostics& diags, const CommonOptions& 
 
 int verdictExit(const converter::Pipeline& pipeline) { return pipeline.diags.hasErrors() ? kExitErrors : kExitOk; }
 
-std::optional<Loaded> load(const CommonOptions& options, const std::string& file) {
+std::optional<Loaded> load(const CommonOptions& options, const std::string& file, bool quoteOnly) {
   std::string error;
   converter::PipelineOptions po;
   if (!pipelineOptions(options, po, error)) {
@@ -29,6 +29,12 @@ std::optional<Loaded> load(const CommonOptions& options, const std::string& file
     return std::nullopt;
   }
   const bool curve = options.input.curve && file == kCurveInput;
+  if (quoteOnly && !curve && file != "-") {
+    po.rereadSource = [file]() -> std::optional<std::string> {
+      std::string why;
+      return readTextFile(file, converter::SourceFile::kMaxSize, why);
+    };
+  }
   std::optional<std::string> text = curve ? std::optional<std::string>(curveText(options.input))
                                           : readTextFile(file, converter::SourceFile::kMaxSize, error);
   if (!text) {

@@ -23,7 +23,9 @@ struct Loaded {
 
 /// Reads `file` (with --upper and --machine) and runs the pipeline. Nothing, with the reason
 /// printed, when a file cannot be read or the machine profile is wrong (exit 2).
-std::optional<Loaded> load(const CommonOptions& options, const std::string& file);
+/// quoteOnly: the caller needs the program's text again only to quote diagnostics, so the
+/// pipeline may give its memory back (PipelineOptions::rereadSource).
+std::optional<Loaded> load(const CommonOptions& options, const std::string& file, bool quoteOnly = false);
 
 /// For the commands that take one program: load() it and print its diagnostics, as check does.
 std::optional<Loaded> loadOne(const CommonOptions& options);

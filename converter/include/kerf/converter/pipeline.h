@@ -70,6 +70,10 @@ struct CheckSettings {
 struct PipelineOptions {
   ReadOptions read;
   CheckSettings check;
+  /// When the caller needs the program's text again only to quote diagnostics (kerf check): how
+  /// to read it again. A program (ISO or 3B) then gives the text's memory back once parsed, and
+  /// a quote reads it again (SourceFile::releaseText). Empty: the text is kept.
+  SourceFile::TextSource rereadSource;
 };
 
 /// Everything a command needs after reading and checking a program. The sources live as long as

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -35,7 +37,13 @@ class SourceFile {
   SourceFile(std::string name, std::string text);
 
   [[nodiscard]] const std::string& name() const { return name_; }
-  [[nodiscard]] std::string_view text() const { return text_; }
+  /// The text. After releaseText() the first call reads the file again (see there).
+  [[nodiscard]] std::string_view text() const {
+    if (released_) reload();
+    return text_;
+  }
+  /// The size of the text in bytes (without reading a released text again).
+  [[nodiscard]] std::size_t size() const { return size_; }
   [[nodiscard]] SourceLocation locate(std::uint32_t offset) const;
   /// The text of a 1-based line, without its line break.
   [[nodiscard]] std::string_view lineText(std::uint32_t line) const;
@@ -43,10 +51,30 @@ class SourceFile {
   [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> lineRange(std::uint32_t line) const;
   [[nodiscard]] std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
 
+  /// Reads the text again: what the file holds now, or nothing when it cannot be read.
+  using TextSource = std::function<std::optional<std::string>()>;
+  /// Gives the text's memory back while positions (locate, lineCount) stay known: for a long
+  /// program whose text is needed again only to quote a diagnostic's line. The first later use of
+  /// the text calls `readAgain`; text that is not the same bytes (size or a 64-bit hash differ)
+  /// gives blank lines of the old lengths instead, and changedOnDisk() says so. Not thread-safe:
+  /// the reading again happens in a const accessor.
+  void releaseText(TextSource readAgain);
+  [[nodiscard]] bool released() const { return released_; }
+  /// The text was read again after releaseText() and the file had changed.
+  [[nodiscard]] bool changedOnDisk() const { return changed_; }
+
  private:
   std::string name_;
-  std::string text_;
+  void reload() const;
+
+  mutable std::string text_;
   std::vector<std::uint32_t> lineStarts_;
+  std::size_t size_ = 0;
+  // After releaseText(): how to read the text again, and what it must be.
+  TextSource readAgain_;
+  std::uint64_t hash_ = 0;
+  mutable bool released_ = false;
+  mutable bool changed_ = false;
 };
 
 }  // namespace kerf::converter

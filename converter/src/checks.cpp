@@ -113,7 +113,7 @@ void seamNote(const Toolpath& tp, const SourceFile* src, std::size_t mi, std::si
 /// copied again for it).
 struct Contour {
   geometry::SegmentView segments;
-  std::span<const std::uint32_t> moveIndex;
+  MoveIndex moveIndex;
   const char* name = "the cut path";  ///< how messages name it
   double z = 0.0;
   bool upperPlane = false;

@@ -23,17 +23,19 @@ CutView cutView(const Toolpath& toolpath) {
   std::size_t first = 0, last = moves.size();
   while (first < last && !moves[first].isCut()) ++first;
   while (last > first && !moves[last - 1].isCut()) --last;
-  view.moveIndex.reserve(last - first);
-  for (std::size_t i = first; i < last; ++i)
-    if (moves[i].isCut()) view.moveIndex.push_back(static_cast<std::uint32_t>(i));
-  if (view.moveIndex.size() == last - first) {  // no rapid between the cuts
+  if (std::all_of(moves.begin() + static_cast<std::ptrdiff_t>(first), moves.begin() + static_cast<std::ptrdiff_t>(last),
+                  [](const Move& m) { return m.isCut(); })) {  // no rapid between the cuts
     view.segments =
         geometry::SegmentView::members(std::span<const Move>(moves).subspan(first, last - first), &Move::lower);
+    view.moveIndex = MoveIndex(static_cast<std::uint32_t>(first), last - first);
     return view;
   }
-  view.copy.reserve(view.moveIndex.size());
-  for (const std::uint32_t i : view.moveIndex) view.copy.push_back(moves[i].lower);
+  for (std::size_t i = first; i < last; ++i)
+    if (moves[i].isCut()) view.table.push_back(static_cast<std::uint32_t>(i));
+  view.copy.reserve(view.table.size());
+  for (const std::uint32_t i : view.table) view.copy.push_back(moves[i].lower);
   view.segments = view.copy;
+  view.moveIndex = view.table;
   return view;
 }
 

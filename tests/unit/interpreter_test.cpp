@@ -329,7 +329,11 @@ TEST(cut_view, reads_contiguous_cuts_in_place_and_copies_otherwise) {
   const CutView copied = cutView(gap->path());
   ASSERT_EQ(copied.segments.size(), 3u);
   EXPECT_FALSE(copied.copy.empty());
-  EXPECT_EQ(copied.moveIndex, (std::vector<std::uint32_t>{0, 2, 3}));
+  EXPECT_EQ(copied.table, (std::vector<std::uint32_t>{0, 2, 3}));
+  ASSERT_EQ(copied.moveIndex.size(), 3u);
+  EXPECT_EQ(copied.moveIndex[1], 2u);
+  EXPECT_EQ(copied.moveIndex.back(), 3u);
+  EXPECT_TRUE(in.table.empty());  // contiguous: first + k, nothing stored
   EXPECT_EQ(copied.segments[1].start, Vec2(5, 0));
   EXPECT_EQ(copied.segments[2].end, Vec2(6, 1));
 
@@ -337,6 +341,7 @@ TEST(cut_view, reads_contiguous_cuts_in_place_and_copies_otherwise) {
   CutView moved = cutView(gap->path());
   const CutView again = std::move(moved);
   EXPECT_EQ(again.segments[2].end, Vec2(6, 1));
+  EXPECT_EQ(again.moveIndex[2], 3u);
 
   auto none = run("G00 X1. Y0\nM02\n");
   EXPECT_TRUE(cutView(none->path()).segments.empty());

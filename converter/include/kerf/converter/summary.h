@@ -18,13 +18,53 @@ struct CutPath {
 };
 CutPath cutPath(const Toolpath& toolpath);
 
+/// The Move of each of a run of segments, as a view: first + k when the moves are contiguous
+/// (nothing stored: 4 bytes a segment saved on the usual program), else a table held elsewhere.
+class MoveIndex {
+ public:
+  MoveIndex() = default;
+  MoveIndex(std::uint32_t first, std::size_t count) : first_(first), count_(count) {}
+  MoveIndex(const std::vector<std::uint32_t>& table) : table_(table.data()), count_(table.size()) {}  // NOLINT
+
+  [[nodiscard]] std::uint32_t operator[](std::size_t k) const {
+    return table_ ? table_[k] : first_ + static_cast<std::uint32_t>(k);
+  }
+  [[nodiscard]] std::size_t size() const { return count_; }
+  [[nodiscard]] bool empty() const { return count_ == 0; }
+  [[nodiscard]] std::uint32_t front() const { return (*this)[0]; }
+  [[nodiscard]] std::uint32_t back() const { return (*this)[count_ - 1]; }
+
+  class Iterator {
+   public:
+    Iterator(const MoveIndex* index, std::size_t k) : index_(index), k_(k) {}
+    std::uint32_t operator*() const { return (*index_)[k_]; }
+    Iterator& operator++() {
+      ++k_;
+      return *this;
+    }
+    bool operator!=(const Iterator& o) const { return k_ != o.k_; }
+
+   private:
+    const MoveIndex* index_;
+    std::size_t k_;
+  };
+  [[nodiscard]] Iterator begin() const { return {this, 0}; }
+  [[nodiscard]] Iterator end() const { return {this, count_}; }
+
+ private:
+  const std::uint32_t* table_ = nullptr;
+  std::uint32_t first_ = 0;
+  std::size_t count_ = 0;
+};
+
 /// The cut segments as the checks read them: in place, a view of the moves' lower segments, when
 /// no rapid lies between the first cut and the last (the usual program); a copy only otherwise.
-/// Move-only, since the view may point into its own copy.
+/// Move-only, since the views may point into its own copies.
 struct CutView {
   geometry::SegmentView segments;
-  std::vector<std::uint32_t> moveIndex;  ///< the Move of each segment
-  std::vector<geometry::Segment> copy;   ///< what segments shows, when it could not be a view
+  MoveIndex moveIndex;                  ///< the Move of each segment
+  std::vector<geometry::Segment> copy;  ///< what segments shows, when it could not be a view
+  std::vector<std::uint32_t> table;     ///< what moveIndex shows, when it could not be first + k
 
   CutView() = default;
   CutView(CutView&&) = default;

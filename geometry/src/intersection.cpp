@@ -559,6 +559,12 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   }
   auto rank = [&](std::size_t i) { return ranks.empty() ? static_cast<std::uint32_t>(i) : ranks[i]; };
   auto isLive = [&](std::size_t i) { return ranks.empty() || ranks[i] != kDead; };
+  // Sorting (min x, index) pairs directly is much faster than sorting indices through boxes. Only
+  // the box sweep needs them; they are made with the extent's figures, from one box each. The
+  // boxes themselves are not kept (16 bytes a segment): a segment's box is made again when it
+  // enters the sweep and lives in the active list while it is there.
+  std::vector<std::pair<float, std::uint32_t>> byMinX;
+  byMinX.reserve(live);
   double lowX = std::numeric_limits<double>::infinity(), highX = -lowX, widths = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!isLive(i)) continue;
@@ -566,17 +572,17 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     lowX = std::min(lowX, b.min.x());
     highX = std::max(highX, b.max.x());
     widths += b.max.x() - b.min.x() + 2 * tol;
+    byMinX.emplace_back(LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i));
   }
-  // Sorting (min x, index) pairs directly is much faster than sorting indices through boxes. Only
-  // the box sweep needs it. The boxes themselves are not kept (16 bytes a segment): a segment's
-  // box is made again when it enters the sweep and lives in the active list while it is there.
-  std::vector<std::pair<float, std::uint32_t>> byMinX;
+  bool sorted = false;
   auto sortByMinX = [&] {
-    if (byMinX.size() == live) return;
-    byMinX.reserve(live);
-    for (std::size_t i = 0; i < n; ++i)
-      if (isLive(i)) byMinX.emplace_back(LooseBox::below(path[i].bounds().min.x()), static_cast<std::uint32_t>(i));
-    geometry::parallelSort(byMinX.begin(), byMinX.end(), std::less<>{});
+    if (byMinX.empty()) {  // given back for the decision sweep: made again
+      byMinX.reserve(live);
+      for (std::size_t i = 0; i < n; ++i)
+        if (isLive(i)) byMinX.emplace_back(LooseBox::below(path[i].bounds().min.x()), static_cast<std::uint32_t>(i));
+    }
+    if (!sorted) geometry::parallelSort(byMinX.begin(), byMinX.end(), std::less<>{});
+    sorted = true;
   };
   auto isForward = [&](std::size_t i, std::size_t j) {
     return isLive(i) && rank(j) == rank(i) + 1 && near(path[i].end, path[j].start, tol);
@@ -647,6 +653,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   // The decision sweep does not need the boxes' order: its memory goes back first (8 bytes a
   // segment: 80 MB at 1e7), and the box sweep after it, if any, sorts again.
   std::vector<std::pair<float, std::uint32_t>>().swap(byMinX);
+  sorted = false;
   std::vector<Contact> scratch;
   auto touches = [&](std::size_t a, std::size_t b) {
     const std::size_t i = std::min(a, b), j = std::max(a, b);

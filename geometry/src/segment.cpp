@@ -64,9 +64,12 @@ Box Segment::bounds() const {
   b.add(end);
   if (kind == SegmentKind::Arc) {
     // Axis extremes (0, 90, 180, 270 degrees) that the arc passes through.
+    // The directions are exact (cos and sin of q pi/2 are not: cos(pi/2) is 6e-17), and no sine is
+    // taken: the sweeps make every segment's box.
+    static constexpr double kAxis[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
     for (int q = 0; q < 4; ++q) {
       const double phi = q * kPi / 2;
-      if (detail::angleAlong(*this, phi) <= std::abs(sweep)) b.add(centre + radius * geometry::direction(phi));
+      if (detail::angleAlong(*this, phi) <= std::abs(sweep)) b.add(centre + radius * Vec2(kAxis[q][0], kAxis[q][1]));
     }
   }
   return b;

@@ -1,10 +1,7 @@
 #include "kerf/converter/source.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 
 namespace kerf::converter {
 

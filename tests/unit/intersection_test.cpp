@@ -224,6 +224,43 @@ TEST(closure, open_path_has_no_loop) {
   EXPECT_NEAR(c.gap, std::sqrt(200.0), 1e-12);
 }
 
+TEST(closure, the_first_loop_is_the_one_a_search_of_every_pair_finds) {
+  // Random walks on a coarse grid (so the walk comes back to where it was), jittered within the
+  // tolerance, some of 20,000 steps: the table's answer (first end on an earlier start, earliest
+  // such start) must be what comparing every pair gives.
+  std::mt19937 rng(5);
+  const double tol = 1e-3;
+  std::uniform_int_distribution<int> step(-1, 1);
+  std::uniform_real_distribution<double> jitter(-0.4 * tol, 0.4 * tol);
+  int loops = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = trial % 10 == 9 ? 20000 : 50 + trial * 20;
+    const int spread = 2 + trial % 7;  // grid steps of 1..spread: small ones come back sooner
+    std::vector<Segment> p;
+    Vec2 at(0, 0);
+    for (int k = 0; k < n; ++k) {
+      Vec2 next = at + Vec2(step(rng) * (1 + trial % spread), step(rng) * (1 + k % spread));
+      if (next == at) next.x() += 1;
+      const Vec2 start = at + Vec2(jitter(rng), jitter(rng));
+      p.push_back(Segment::line(start, next));
+      at = next;
+    }
+    std::optional<std::size_t> from, to;
+    for (std::size_t k = 0; k < p.size() && !to; ++k)
+      for (std::size_t v = 0; v <= k; ++v)
+        if ((p[v].start - p[k].end).norm() <= tol && !(v == k && p[k].length() <= tol)) {
+          from = v;
+          to = k;
+          break;
+        }
+    const ClosureReport c = analyseClosure(p, tol);
+    EXPECT_EQ(c.loopFrom, from) << "trial " << trial;
+    EXPECT_EQ(c.loopTo, to) << "trial " << trial;
+    loops += from.has_value();
+  }
+  EXPECT_GT(loops, 40);  // most walks do come back
+}
+
 TEST(closure, full_circle_closes_itself) {
   std::vector<Segment> p = {Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::Clockwise)};
   EXPECT_TRUE(analyseClosure(p, 1e-6).loopFrom.has_value());

@@ -8,7 +8,9 @@
 #   against Debian's libcgal-dev), 1e4, 1e5 and 1e6 vertices.
 #   kerf check against LinuxCNC's rs274 -g (the standalone interpreter, Debian's linuxcnc-uspace)
 #   on the 6.1 MB benchmark program (kerf_bench --blocks 200000 --write): wall time and peak
-#   memory (GNU time), both reading, interpreting and (Kerf) checking the whole program.
+#   memory (GNU time), both reading, interpreting and (Kerf) checking the whole program; then Kerf
+#   once on the same kind of program ten times as long, for the memory's slope (bytes per input
+#   byte without the fixed amount).
 #   kerf check of issue 13's 200 MB program (kerf_bench --shape spiral, 10 M modal X Y lines; no peer:
 #   its target is 2 GB of memory), once: wall time and peak memory. KERF_COMPARE_SPIRAL=N sets the
 #   lines (0 skips it).
@@ -88,6 +90,16 @@ if command -v rs274 > /dev/null; then
     "$bytes" "$kmin" "$kmed" "$kmax" "$(awk -v k="$kmem" 'BEGIN {print k / 1024}')" "$rmin" "$rmed" "$rmax" \
     "$(awk -v k="$rmem" 'BEGIN {print k / 1024}')" "$(awk -v a="$rmed" -v b="$kmed" 'BEGIN {print a / b}')" \
     "$(awk -v k="$kmem" -v b="$bytes" 'BEGIN {print k * 1024 / b}')"
+  # "Bytes per input byte plus a fixed amount": the slope between this program and one of the
+  # same kind ten times as long, so no fixed cost (libraries, tables) is counted in it.
+  "$build/tests/kerf_bench" --blocks 2000000 --write "$work/program10.ngc" > /dev/null
+  bytes10=$(stat -c %s "$work/program10.ngc")
+  /usr/bin/time -f "%e %M" -o "$work/t" "$build/viewer/kerf" check "$work/program10.ngc" > /dev/null
+  read -r _ m10 < "$work/t"
+  rm -f "$work/program10.ngc"
+  printf "check %d bytes, once: %.0f MiB; bytes of memory per input byte between the two sizes %.2f\n" \
+    "$bytes10" "$(awk -v k="$m10" 'BEGIN {print k / 1024}')" \
+    "$(awk -v a="$kmem" -v b="$m10" -v x="$bytes" -v y="$bytes10" 'BEGIN {print (b - a) * 1024 / (y - x)}')"
 else
   echo "compare.sh: rs274 is not installed (apt-get install linuxcnc-uspace): the reader pair is skipped" >&2
 fi

@@ -64,6 +64,11 @@ std::string formatDiagnostic(const Diagnostic& d) {
   if (d.source && !d.span.isWholeFile()) {
     const SourceLocation loc = d.source->locate(d.span.offset);
     std::string_view text = d.source->lineText(loc.line);
+    if (d.source->changedOnDisk()) {  // read again for the quote, and no longer what was checked
+      out += "    (the file changed after it was read: its line is not quoted)\n";
+      if (!d.help.empty()) out += "    help: " + d.help + "\n";
+      return out;
+    }
     std::size_t col = loc.column - 1;
     // Long lines are shown as a window around the column, so a binary file or a megabyte-long
     // line cannot flood the terminal.

@@ -240,6 +240,12 @@ TEST(source, a_released_text_is_read_again_and_a_changed_one_gives_blank_lines) 
     EXPECT_TRUE(src.changedOnDisk());
     EXPECT_EQ(src.lineText(3), "   ");
     EXPECT_EQ(src.locate(9).column, 2u);
+    // A diagnostic says so rather than quote a blank line.
+    Diagnostics d;
+    d.error(Code::UnknownGCode, &src, SourceSpan{8, 2}, "unknown G code G1", "a help");
+    EXPECT_EQ(formatDiagnostic(d.all()[0]),
+              "p.nc:2:1: error: unknown G code G1 [K0201]\n"
+              "    (the file changed after it was read: its line is not quoted)\n    help: a help\n");
   }
 }
 

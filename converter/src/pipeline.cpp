@@ -62,14 +62,20 @@ std::string centreEvidence(const ArcCentreTally& t, ArcCentreMode m) {
 
 namespace {
 
+/// Gives a program's text back when the caller needs it again only for quotes
+/// (PipelineOptions::rereadSource): before the interpreter runs, and again before the checks when
+/// a second parse read it back. A drawing keeps its text.
+void releaseSource(Pipeline& out, const PipelineOptions& options) {
+  if (options.rereadSource && out.source && (out.format == InputFormat::Iso || out.format == InputFormat::ThreeB))
+    out.source->releaseText(options.rereadSource);
+}
+
 /// The checks, with the machine's limits unless the user gave others.
 void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
   if (options.check.sectionBudget) out.checkOptions.sectionBudget = *options.check.sectionBudget;
-  // The checks and what follows them quote the text only: a long program's text goes back here.
-  if (options.rereadSource && out.source && (out.format == InputFormat::Iso || out.format == InputFormat::ThreeB))
-    out.source->releaseText(options.rereadSource);
+  releaseSource(out, options);  // the checks and what follows them only quote the text
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
     checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
@@ -305,7 +311,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     // text goes back before it when only quotes need it (the interpreter quotes words only in
     // rare diagnostics, which read the file again).
     io.releaseParsed = true;
-    if (options.rereadSource) out.source->releaseText(options.rereadSource);
+    releaseSource(out, options);
     in = interpretProgram(program, io, interpretDiags);
   }
   if (!centreFixed && !millTurn) {

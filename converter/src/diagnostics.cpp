@@ -58,44 +58,50 @@ std::string formatLocation(const Diagnostic& d) {
   return d.source->name() + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
 }
 
+namespace {
+
+/// The diagnostic's line with a caret under its span, or why the line is not shown.
+void appendQuote(std::string& out, const Diagnostic& d) {
+  const SourceLocation loc = d.source->locate(d.span.offset);
+  std::string_view text = d.source->lineText(loc.line);
+  if (d.source->changedOnDisk()) {  // read again for the quote, and no longer what was checked
+    out += "    (the file changed after it was read: its line is not quoted)\n";
+    return;
+  }
+  std::size_t col = loc.column - 1;
+  // Long lines are shown as a window around the column, so a binary file or a megabyte-long
+  // line cannot flood the terminal.
+  constexpr std::size_t kBefore = 40, kWidth = 100;
+  std::string prefix, suffix;
+  if (text.size() > kWidth) {
+    const std::size_t from = col > kBefore ? col - kBefore : 0;
+    if (from > 0) prefix = "...";
+    if (from + kWidth < text.size()) suffix = "...";
+    text = text.substr(from, kWidth);
+    col = col - from + prefix.size();
+  }
+  out += "    " + prefix;
+  // Control and non-ASCII bytes would garble the terminal; show them as '?'.
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    out += ((u < 0x20 && c != '\t') || u >= 0x7f) ? '?' : c;
+  }
+  out += suffix + "\n    ";
+  const std::string shown = prefix + std::string(text);
+  for (std::size_t i = 0; i < col && i < shown.size(); ++i) out += shown[i] == '\t' ? '\t' : ' ';
+  out += '^';
+  const std::size_t room = shown.size() > col ? shown.size() - col : 0;
+  const std::size_t tail = std::min<std::size_t>(d.span.length > 0 ? d.span.length - 1 : 0, room > 0 ? room - 1 : 0);
+  out.append(tail, '~');
+  out += '\n';
+}
+
+}  // namespace
+
 std::string formatDiagnostic(const Diagnostic& d) {
   std::string out =
       formatLocation(d) + ": " + severityName(d.severity) + ": " + d.message + " [" + codeName(d.code) + "]\n";
-  if (d.source && !d.span.isWholeFile()) {
-    const SourceLocation loc = d.source->locate(d.span.offset);
-    std::string_view text = d.source->lineText(loc.line);
-    if (d.source->changedOnDisk()) {  // read again for the quote, and no longer what was checked
-      out += "    (the file changed after it was read: its line is not quoted)\n";
-      if (!d.help.empty()) out += "    help: " + d.help + "\n";
-      return out;
-    }
-    std::size_t col = loc.column - 1;
-    // Long lines are shown as a window around the column, so a binary file or a megabyte-long
-    // line cannot flood the terminal.
-    constexpr std::size_t kBefore = 40, kWidth = 100;
-    std::string prefix, suffix;
-    if (text.size() > kWidth) {
-      const std::size_t from = col > kBefore ? col - kBefore : 0;
-      if (from > 0) prefix = "...";
-      if (from + kWidth < text.size()) suffix = "...";
-      text = text.substr(from, kWidth);
-      col = col - from + prefix.size();
-    }
-    out += "    " + prefix;
-    // Control and non-ASCII bytes would garble the terminal; show them as '?'.
-    for (char c : text) {
-      const auto u = static_cast<unsigned char>(c);
-      out += ((u < 0x20 && c != '\t') || u >= 0x7f) ? '?' : c;
-    }
-    out += suffix + "\n    ";
-    const std::string shown = prefix + std::string(text);
-    for (std::size_t i = 0; i < col && i < shown.size(); ++i) out += shown[i] == '\t' ? '\t' : ' ';
-    out += '^';
-    const std::size_t room = shown.size() > col ? shown.size() - col : 0;
-    const std::size_t tail = std::min<std::size_t>(d.span.length > 0 ? d.span.length - 1 : 0, room > 0 ? room - 1 : 0);
-    out.append(tail, '~');
-    out += '\n';
-  }
+  if (d.source && !d.span.isWholeFile()) appendQuote(out, d);
   if (!d.help.empty()) out += "    help: " + d.help + "\n";
   return out;
 }

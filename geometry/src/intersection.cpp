@@ -564,7 +564,8 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   // boxes themselves are not kept (16 bytes a segment): a segment's box is made again when it
   // enters the sweep and lives in the active list while it is there.
   std::vector<std::pair<float, std::uint32_t>> byMinX;
-  byMinX.reserve(live);
+  const bool boxesFirst = options.method != SweepMethod::Decision;
+  if (boxesFirst) byMinX.reserve(live);
   double lowX = std::numeric_limits<double>::infinity(), highX = -lowX, widths = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!isLive(i)) continue;
@@ -572,11 +573,11 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     lowX = std::min(lowX, b.min.x());
     highX = std::max(highX, b.max.x());
     widths += b.max.x() - b.min.x() + 2 * tol;
-    byMinX.emplace_back(LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i));
+    if (boxesFirst) byMinX.emplace_back(LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i));
   }
   bool sorted = false;
   auto sortByMinX = [&] {
-    if (byMinX.empty()) {  // given back for the decision sweep: made again
+    if (byMinX.empty()) {  // not made yet, or given back for the decision sweep
       byMinX.reserve(live);
       for (std::size_t i = 0; i < n; ++i)
         if (isLive(i)) byMinX.emplace_back(LooseBox::below(path[i].bounds().min.x()), static_cast<std::uint32_t>(i));

@@ -42,8 +42,6 @@ class SourceFile {
     if (released_) reload();
     return text_;
   }
-  /// The size of the text in bytes (without reading a released text again).
-  [[nodiscard]] std::size_t size() const { return size_; }
   [[nodiscard]] SourceLocation locate(std::uint32_t offset) const;
   /// The text of a 1-based line, without its line break.
   [[nodiscard]] std::string_view lineText(std::uint32_t line) const;

@@ -421,8 +421,18 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "wire programs usually thread the wire again (M-code) at a new start hole"));
   }
 
-  // Closure.
-  const geometry::ClosureReport closure = geometry::analyseClosure(path.segments, options.tolerance);
+  // Closure, on another core while the lower contour is tested: neither reads what the other
+  // writes, and the contour's findings are reported after the closure's, as in one pass.
+  geometry::ClosureReport closure;
+  Diagnostics contourDiags(diags.cap());
+  MovePairs seen;
+  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
+  geometry::parallelInvoke(
+      [&] {
+        checkContour(lower, geometry::endsAtStart(path.segments, options.tolerance), toolpath, src, options,
+                     contourDiags, seen);
+      },
+      [&] { closure = geometry::analyseClosure(path.segments, options.tolerance); });
   if (!closure.loopFrom) {
     const Move& last = moves[path.moveIndex.back()];
     diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(),
@@ -430,10 +440,7 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "the cut path never closes a loop: the part stays attached (the end is " +
                              formatFixed(closure.gap, 3) + " mm from the start)"));
   }
-
-  MovePairs seen;
-  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
-  checkContour(lower, closure.endsAtStart, toolpath, src, options, diags, seen);
+  diags.append(std::move(contourDiags));
   if (!taper) return;
 
   Contour upper;

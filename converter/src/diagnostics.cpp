@@ -30,6 +30,19 @@ void Diagnostics::report(Diagnostic d) {
   items_.push_back(std::move(d));
 }
 
+void Diagnostics::append(Diagnostics&& later) {
+  errors_ += later.errors_;
+  warnings_ += later.warnings_;
+  dropped_ += later.dropped_;
+  for (Diagnostic& d : later.items_) {
+    if (items_.size() >= cap_)
+      ++dropped_;
+    else
+      items_.push_back(std::move(d));
+  }
+  later = Diagnostics(later.cap_);
+}
+
 void Diagnostics::error(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help) {
   report({Severity::Error, code, src, span, std::move(message), std::move(help), std::nullopt, std::nullopt});
 }

@@ -7,6 +7,9 @@
 //           5. the whole text: byte-order mark, lines, '%' frame
 #include "kerf/converter/program.h"
 
+#include "kerf/geometry/parallel.h"
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -171,6 +174,24 @@ std::size_t scanMacroValue(std::string_view text, std::size_t pos, std::size_t l
 
 // ---- 3. one block ----------------------------------------------------------------------------
 
+/// The macro B statements of some lines: how many, the first one, and the lines they span.
+struct MacroTally {
+  std::size_t count = 0;
+  SourceSpan first;
+  std::uint32_t firstLine = 0, lastLine = 0;
+
+  /// Adds the tally of lines that come after these.
+  void add(const MacroTally& later) {
+    if (later.count == 0) return;
+    if (count == 0) {
+      first = later.first;
+      firstLine = later.firstLine;
+    }
+    count += later.count;
+    lastLine = later.lastLine;
+  }
+};
+
 class LineParser {
  public:
   LineParser(const SourceFile& src, Program& program, Diagnostics& diags, const ParseOptions& options)
@@ -183,20 +204,8 @@ class LineParser {
     while (i < end) i = parseBlock(i, end, line);
   }
 
-  /// The macro B statements of the file: one diagnostic at the first, naming how many there are.
-  void reportMacroStatements() const {
-    if (macroStatements_ == 0) return;
-    std::string where;
-    if (macroStatements_ > 1)
-      where = " (" + std::to_string(macroStatements_) + " macro lines, on lines " + std::to_string(firstMacroLine_) +
-              " to " + std::to_string(lastMacroLine_) + ")";
-    diags_.error(Code::MacroStatement, &src_, firstMacro_,
-                 "macro B statement: variables, loops and jumps (#, WHILE, IF, GOTO) are evaluated by the control, "
-                 "and Kerf does not run them" +
-                     where,
-                 "the blocks around them are read once, in order, as if the macro lines were absent; a value "
-                 "written as #n is known only at the machine");
-  }
+  /// The macro B statements of the lines parsed.
+  [[nodiscard]] const MacroTally& macros() const { return macros_; }
 
  private:
   /// Parses one block from i; returns where the next block on this line starts (or end).
@@ -364,13 +373,13 @@ class LineParser {
   }
 
   void noteMacroStatement(std::size_t begin, std::size_t blockEnd, std::uint32_t line) {
-    if (macroStatements_++ == 0) {
+    if (macros_.count++ == 0) {
       std::size_t last = blockEnd;
       while (last > begin && isBlank(text_[last - 1])) --last;
-      firstMacro_ = {static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(last - begin)};
-      firstMacroLine_ = line;
+      macros_.first = {static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(last - begin)};
+      macros_.firstLine = line;
     }
-    lastMacroLine_ = line;
+    macros_.lastLine = line;
   }
 
   /// A Sodick macro call: Q, a name of letters and digits, '(' arguments ')', and an optional L
@@ -686,14 +695,91 @@ class LineParser {
   bool sawMotion_ = false;           ///< a motion word (G00-G03) seen in this block
   bool homing_ = false;              ///< G28 or G30 seen in this block: bare axis letters allowed
   bool hasUpper_ = false;            ///< assignSides set upperFrom for this block
-  std::size_t macroStatements_ = 0;
-  SourceSpan firstMacro_;
-  std::uint32_t firstMacroLine_ = 0, lastMacroLine_ = 0;
+  MacroTally macros_;
 };
 
 }  // namespace
 
 // ---- 5. the whole text ------------------------------------------------------------------------
+
+namespace {
+
+/// The macro B statements of the file: one diagnostic at the first, naming how many there are.
+void reportMacroStatements(const MacroTally& macros, const SourceFile& src, Diagnostics& diags) {
+  if (macros.count == 0) return;
+  std::string where;
+  if (macros.count > 1)
+    where = " (" + std::to_string(macros.count) + " macro lines, on lines " + std::to_string(macros.firstLine) +
+            " to " + std::to_string(macros.lastLine) + ")";
+  diags.error(Code::MacroStatement, &src, macros.first,
+              "macro B statement: variables, loops and jumps (#, WHILE, IF, GOTO) are evaluated by the control, "
+              "and Kerf does not run them" +
+                  where,
+              "the blocks around them are read once, in order, as if the macro lines were absent; a value "
+              "written as #n is known only at the machine");
+}
+
+/// What a run of lines gave besides its blocks.
+struct LinesRead {
+  bool sawContent = false;  ///< a block or a setting was read (so a later '%' closes the program)
+  bool closed = false;      ///< a '%' after content closed the program: nothing after it is read
+  MacroTally macros;
+};
+
+/// Parses lines [first, last) into program. sawContent: whether the lines before held a block or a
+/// setting, which makes a '%' line a closing one.
+LinesRead parseLines(const SourceFile& source, Program& program, Diagnostics& diags, const ParseOptions& options,
+                     std::uint32_t first, std::uint32_t last, std::size_t bom, bool sawContent) {
+  const std::string_view text = source.text();
+  LineParser parser(source, program, diags, options);
+  LinesRead read;
+  for (std::uint32_t line = first; line < last; ++line) {
+    auto [begin, end] = source.lineRange(line);
+    if (line == 1) begin = static_cast<std::uint32_t>(std::min<std::size_t>(bom, end));
+    // A '%' line opens the program; a '%' line after content closes it (the rest is ignored).
+    std::size_t at = begin;
+    while (at < end && isBlank(text[at])) ++at;
+    if (at < end && text[at] == '%') {
+      if (sawContent) {
+        read.closed = true;
+        break;
+      }
+      continue;
+    }
+    const std::size_t before = program.blocks.size() + program.settings.size();
+    parser.parseLine(begin, end, line);
+    if (program.blocks.size() + program.settings.size() != before) sawContent = read.sawContent = true;
+  }
+  read.macros = parser.macros();
+  return read;
+}
+
+/// Appends the blocks of the lines after to's, read on their own (their word indices start at 0).
+void appendPart(Program& to, Program&& part) {
+  const auto base = static_cast<std::uint32_t>(to.words.size());
+  to.words.insert(to.words.end(), part.words.begin(), part.words.end());
+  std::vector<Word>().swap(part.words);
+  to.blocks.reserve(to.blocks.size() + part.blocks.size());
+  for (Block b : part.blocks) {
+    b.firstWord += base;
+    to.blocks.push_back(b);
+  }
+  std::vector<Block>().swap(part.blocks);
+  for (Setting& s : part.settings) to.settings.push_back(std::move(s));
+  to.heights.insert(to.heights.end(), part.heights.begin(), part.heights.end());
+  to.anyDecimalPoint = to.anyDecimalPoint || part.anyDecimalPoint;
+  to.integerLengthWords += part.integerLengthWords;
+  if (part.largestInteger > to.largestInteger) {  // the first of equal ones stays, as in one pass
+    to.largestInteger = part.largestInteger;
+    to.largestIntegerWord = part.largestIntegerWord + base;
+  }
+}
+
+/// Texts from this size on are parsed in parts, one per core: each line is parsed on its own, so
+/// the parts are independent but for the '%' frame and the macro count, which are joined after.
+constexpr std::size_t kPartBytes = 256 * 1024;
+
+}  // namespace
 
 Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOptions& options) {
   Program program;
@@ -709,23 +795,53 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
   }
   // A UTF-8 byte-order mark (some Windows editors write one) is not part of the program.
   const std::size_t bom = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
-  LineParser parser(source, program, diags, options);
-  bool sawContent = false;
-  for (std::uint32_t line = 1; line <= source.lineCount(); ++line) {
-    auto [begin, end] = source.lineRange(line);
-    if (line == 1) begin = static_cast<std::uint32_t>(std::min<std::size_t>(bom, end));
-    // A '%' line opens the program; a '%' line after content closes it (the rest is ignored).
-    std::size_t first = begin;
-    while (first < end && isBlank(text[first])) ++first;
-    if (first < end && text[first] == '%') {
-      if (sawContent) break;
-      continue;
-    }
-    const std::size_t before = program.blocks.size() + program.settings.size();
-    parser.parseLine(begin, end, line);
-    if (program.blocks.size() + program.settings.size() != before) sawContent = true;
+  const std::uint32_t lines = source.lineCount();
+
+  // Parts of nearly equal bytes, on whole lines: part k reads lines [firstLine[k], firstLine[k + 1]).
+  const std::size_t parts = text.size() < kPartBytes
+                                ? 1
+                                : std::clamp<std::size_t>(text.size() / (kPartBytes / 2), 1, geometry::workerCount());
+  std::vector<std::uint32_t> firstLine{1};
+  for (std::size_t k = 1; k < parts; ++k) {
+    const std::uint32_t line = source.locate(static_cast<std::uint32_t>(text.size() * k / parts)).line;
+    if (line > firstLine.back() && line <= lines) firstLine.push_back(line);
   }
-  parser.reportMacroStatements();
+  firstLine.push_back(lines + 1);
+  const std::size_t n = firstLine.size() - 1;
+  // Every part but the first is read as if content came before it (so a '%' there closes); the
+  // join reads it again in the rare case that nothing did.
+  std::vector<Program> later(n - 1);
+  std::vector<Diagnostics> laterDiags(n - 1, Diagnostics(diags.cap()));
+  std::vector<LinesRead> read(n);
+  geometry::parallelFor(n, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      Program& into = k == 0 ? program : later[k - 1];
+      into.source = &source;
+      if (k > 0) {
+        const std::size_t bytes = source.lineRange(firstLine[k + 1] - 1).second - source.lineRange(firstLine[k]).first;
+        into.words.reserve(bytes / 6);
+        into.blocks.reserve(bytes / 24);
+      }
+      read[k] = parseLines(source, into, k == 0 ? diags : laterDiags[k - 1], options, firstLine[k], firstLine[k + 1],
+                           bom, k > 0);
+    }
+  });
+  LinesRead whole = read[0];
+  for (std::size_t k = 1; k < n && !whole.closed; ++k) {
+    if (!whole.sawContent) {  // nothing before this part: its first '%' opens the program
+      later[k - 1] = Program{};
+      later[k - 1].source = &source;
+      laterDiags[k - 1] = Diagnostics(diags.cap());
+      read[k] =
+          parseLines(source, later[k - 1], laterDiags[k - 1], options, firstLine[k], firstLine[k + 1], bom, false);
+    }
+    appendPart(program, std::move(later[k - 1]));
+    diags.append(std::move(laterDiags[k - 1]));
+    whole.sawContent = whole.sawContent || read[k].sawContent;
+    whole.closed = read[k].closed;
+    whole.macros.add(read[k].macros);
+  }
+  reportMacroStatements(whole.macros, source, diags);
   return program;
 }
 

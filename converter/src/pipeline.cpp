@@ -4,6 +4,7 @@
 #include "kerf/converter/analysis.h"
 #include "kerf/converter/curve.h"
 #include "kerf/converter/points.h"
+#include "kerf/geometry/parallel.h"
 
 #include <cstdio>
 
@@ -70,7 +71,13 @@ void releaseSource(Pipeline& out, const PipelineOptions& options) {
     out.source->releaseText(options.rereadSource);
 }
 
-/// The checks, with the machine's limits unless the user gave others.
+/// The summary, when the caller asked for one.
+void summarizeInto(Pipeline& out, const PipelineOptions& options) {
+  if (options.summarize) out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
+}
+
+/// The checks, with the machine's limits unless the user gave others, and the summary beside them
+/// on another core (it reads the toolpath and the measures, which the checks do not write).
 void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
@@ -78,7 +85,11 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   releaseSource(out, options);  // the checks and what follows them only quote the text
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
-    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
+    geometry::parallelInvoke(
+        [&] { checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures); },
+        [&] { summarizeInto(out, options); });
+  } else {
+    summarizeInto(out, options);
   }
   out.diags.sortByPosition();
 }
@@ -180,6 +191,7 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
   }
   path.endedProperly = true;
   out.drawing = std::move(result);
+  summarizeInto(out, options);
 }
 
 void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::optional<SourceText> upper) {

@@ -97,6 +97,8 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
   s.dialect = toolpath.dialect;
   s.blocks = toolpath.blocks;
   s.moves = toolpath.moves.size();
+  // The cut moves sampled where they lie, among the rapids: no copy of the path.
+  geometry::PathSampler sampler(sampling, nullptr);
   for (const Move& m : toolpath.moves) {
     if (!m.isCut()) {
       ++s.rapidMoves;
@@ -110,9 +112,10 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
       ++s.lines;
     s.cutLength += m.lower.length();
     s.bounds.add(m.lower.bounds());
+    sampler.add(m.lower);
   }
   s.sampling = sampling;
-  s.points = geometry::samplePath(cutView(toolpath).segments, sampling, nullptr);
+  s.points = sampler.stats();
   if (toolpath.isTaper() && toolpath.heights.known) {
     if (measures && measures->patches.size() == toolpath.moves.size()) {
       s.taper = summarizeTaper(toolpath, *measures);

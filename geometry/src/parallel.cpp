@@ -49,4 +49,11 @@ void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(s
   if (failure) std::rethrow_exception(failure);
 }
 
+void parallelInvoke(const std::function<void()>& first, const std::function<void()>& second) {
+  const std::function<void()>* tasks[] = {&first, &second};
+  parallelFor(2, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) (*tasks[k])();
+  });
+}
+
 }  // namespace kerf::geometry

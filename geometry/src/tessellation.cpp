@@ -102,31 +102,38 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
   return stats;
 }
 
-PathSampleStats samplePath(SegmentView path, const Sampling& sampling, std::vector<Vec2>* out) {
-  PathSampleStats stats;
-  if (path.empty()) return stats;
-  Vec2 last = path.front().start;
-  stats.points = 1;
-  if (out) out->push_back(last);
-  double weighted = 0.0;
-  for (const Segment& seg : path) {
-    if ((seg.start - last).norm() > 1e-9) {
-      ++stats.points;
-      if (out) out->push_back(seg.start);
-    }
-    const ArcSampleStats s = sample(seg, sampling, out);
-    stats.points += s.points;
-    if (seg.isArc()) {
-      ++stats.arcs;
-      stats.maxDeviation = std::max(stats.maxDeviation, s.maxDeviation);
-      const double len = seg.length();
-      stats.arcLength += len;
-      weighted += len * s.meanRelativeError;
-    }
-    last = seg.end;
+void PathSampler::add(const Segment& seg) {
+  if (stats_.points == 0) {
+    last_ = seg.start;
+    stats_.points = 1;
+    if (out_) out_->push_back(last_);
   }
-  stats.meanRelativeError = stats.arcLength > 0 ? weighted / stats.arcLength : 0.0;
+  if ((seg.start - last_).norm() > 1e-9) {
+    ++stats_.points;
+    if (out_) out_->push_back(seg.start);
+  }
+  const ArcSampleStats s = sample(seg, sampling_, out_);
+  stats_.points += s.points;
+  if (seg.isArc()) {
+    ++stats_.arcs;
+    stats_.maxDeviation = std::max(stats_.maxDeviation, s.maxDeviation);
+    const double len = seg.length();
+    stats_.arcLength += len;
+    weighted_ += len * s.meanRelativeError;
+  }
+  last_ = seg.end;
+}
+
+PathSampleStats PathSampler::stats() const {
+  PathSampleStats stats = stats_;
+  stats.meanRelativeError = stats.arcLength > 0 ? weighted_ / stats.arcLength : 0.0;
   return stats;
+}
+
+PathSampleStats samplePath(SegmentView path, const Sampling& sampling, std::vector<Vec2>* out) {
+  PathSampler sampler(sampling, out);
+  for (const Segment& seg : path) sampler.add(seg);
+  return sampler.stats();
 }
 
 namespace {

@@ -1,5 +1,7 @@
 #include "kerf/geometry/parallel.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,23 +19,7 @@ namespace {
 using kerf::geometry::parallelFor;
 using kerf::geometry::workerCount;
 
-/// Sets KERF_THREADS for one test and restores it after.
-class Threads {
- public:
-  explicit Threads(const char* value) {
-    if (const char* old = std::getenv("KERF_THREADS")) old_ = old;
-    ::setenv("KERF_THREADS", value, 1);
-  }
-  ~Threads() {
-    if (old_.empty())
-      ::unsetenv("KERF_THREADS");
-    else
-      ::setenv("KERF_THREADS", old_.c_str(), 1);
-  }
-
- private:
-  std::string old_;
-};
+using Threads = kerf::test::ScopedThreads;
 
 TEST(Parallel, EveryIndexOnceWhateverTheSplit) {
   const Threads t("4");
@@ -117,6 +103,33 @@ TEST(Parallel, AnExceptionReachesTheCallerAfterEveryThreadEnds) {
                            }),
                std::runtime_error);
   EXPECT_EQ(finished.load(), 3);
+}
+
+TEST(Parallel, InvokeRunsBothOnceAndTogetherWhenThereAreTwoWorkers) {
+  for (const char* threads : {"1", "2", "4"}) {
+    const Threads t(threads);
+    std::atomic<int> first{0}, second{0};
+    std::thread::id firstOn, secondOn;
+    kerf::geometry::parallelInvoke(
+        [&] {
+          ++first;
+          firstOn = std::this_thread::get_id();
+        },
+        [&] {
+          ++second;
+          secondOn = std::this_thread::get_id();
+        });
+    EXPECT_EQ(first.load(), 1) << threads;
+    EXPECT_EQ(second.load(), 1) << threads;
+    // One worker: both in the calling thread, first then second; more: the second on another.
+    EXPECT_EQ(firstOn, std::this_thread::get_id()) << threads;
+    EXPECT_EQ(secondOn == std::this_thread::get_id(), std::string(threads) == "1") << threads;
+  }
+  const Threads t("2");
+  std::atomic<bool> firstDone{false};
+  EXPECT_THROW(kerf::geometry::parallelInvoke([&] { firstDone = true; }, [] { throw std::runtime_error("second"); }),
+               std::runtime_error);
+  EXPECT_TRUE(firstDone.load());
 }
 
 }  // namespace

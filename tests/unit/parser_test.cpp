@@ -1,6 +1,7 @@
 #include "kerf/converter/program.h"
 
 #include "converter_support.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -351,3 +352,116 @@ TEST(parser, the_second_plane_named_u_z_is_read_as_u_v_only_when_asked) {
   const Program plain = parse(src, e);
   EXPECT_EQ(lettersOf(plain, plain.blocks[0], true), "U");
 }
+
+namespace {
+
+/// A long text of every kind of line the parser reads: words, upper sides, settings, plane heights,
+/// macro statements, syntax errors, integers without a point, comments, blank lines and CR LF ends.
+std::string mixedProgram(std::size_t lines, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::string text;
+  for (std::size_t k = 0; k < lines; ++k) {
+    const auto pick = rng() % 20;
+    const std::string n = std::to_string(rng() % 100000);
+    switch (pick) {
+      case 0: text += "H" + std::to_string(rng() % 1000) + " = +000000." + n + ";\n"; break;
+      case 1: text += "TP" + n + ".5 TN1.\n"; break;
+      case 2: text += "#" + std::to_string(rng() % 200) + " = " + n + "\n"; break;
+      case 3: text += "G01 X1.$ Y2.\n"; break;                                            // a syntax error
+      case 4: text += "G01 X" + n + " Y" + std::to_string(rng() % 900000) + "\n"; break;  // integers
+      case 5: text += "(comment " + n + ")\n"; break;
+      case 6: text += "\n"; break;
+      case 7: text += "G02 X" + n + ". Y1.5 I-2. J0 : U1. V2.\r\n"; break;
+      case 8: text += "G01 X1. X2.\n"; break;  // a repeated word
+      default: text += "N" + n + " G01 X" + n + ".25 Y-" + n + ".5 F2.\n"; break;
+    }
+  }
+  return text;
+}
+
+void expectSameProgram(const Program& a, const Program& b, const std::string& what) {
+  ASSERT_EQ(a.words.size(), b.words.size()) << what;
+  for (std::size_t k = 0; k < a.words.size(); ++k) {
+    const Word &x = a.words[k], &y = b.words[k];
+    ASSERT_TRUE(x.letter == y.letter && x.offset == y.offset && x.length == y.length && x.hasPoint == y.hasPoint &&
+                x.kind == y.kind && x.value == y.value)
+        << what << ": word " << k;
+  }
+  ASSERT_EQ(a.blocks.size(), b.blocks.size()) << what;
+  for (std::size_t k = 0; k < a.blocks.size(); ++k) {
+    const Block &x = a.blocks[k], &y = b.blocks[k];
+    ASSERT_TRUE(x.firstWord == y.firstWord && x.wordCount == y.wordCount && x.offset == y.offset &&
+                x.length == y.length && x.line == y.line && x.upperFrom == y.upperFrom && x.kind == y.kind &&
+                x.colon == y.colon && x.hasError == y.hasError)
+        << what << ": block " << k;
+  }
+  ASSERT_EQ(a.settings.size(), b.settings.size()) << what;
+  for (std::size_t k = 0; k < a.settings.size(); ++k)
+    EXPECT_TRUE(a.settings[k].name == b.settings[k].name && a.settings[k].value == b.settings[k].value &&
+                a.settings[k].line == b.settings[k].line)
+        << what << ": setting " << k;
+  ASSERT_EQ(a.heights.size(), b.heights.size()) << what;
+  for (std::size_t k = 0; k < a.heights.size(); ++k)
+    EXPECT_TRUE(a.heights[k].value == b.heights[k].value && a.heights[k].line == b.heights[k].line) << what;
+  EXPECT_EQ(a.anyDecimalPoint, b.anyDecimalPoint) << what;
+  EXPECT_EQ(a.largestInteger, b.largestInteger) << what;
+  EXPECT_EQ(a.largestIntegerWord, b.largestIntegerWord) << what;
+  EXPECT_EQ(a.integerLengthWords, b.integerLengthWords) << what;
+}
+
+void expectSameDiagnostics(const Diagnostics& a, const Diagnostics& b, const std::string& what) {
+  EXPECT_EQ(a.errorCount(), b.errorCount()) << what;
+  EXPECT_EQ(a.warningCount(), b.warningCount()) << what;
+  EXPECT_EQ(a.dropped(), b.dropped()) << what;
+  ASSERT_EQ(a.all().size(), b.all().size()) << what;
+  for (std::size_t k = 0; k < a.all().size(); ++k) {
+    const Diagnostic &x = a.all()[k], &y = b.all()[k];
+    EXPECT_TRUE(x.code == y.code && x.span.offset == y.span.offset && x.message == y.message)
+        << what << ": diagnostic " << k << ": " << x.message << " | " << y.message;
+  }
+}
+
+TEST(parser, parts_parsed_on_several_cores_give_what_one_pass_gives) {
+  // Long texts are parsed in parts, one per worker, and joined. What the join must get right: word
+  // indices, the statistics of integers, the macro count and its lines, the diagnostics in order
+  // (and those past the cap counted), and the '%' frame, whichever part its lines fall in.
+  const std::string body = mixedProgram(60000, 7);  // about 1.3 MB
+  const std::string head(400000, '\n');             // blank lines: the first part holds no block
+  const std::size_t middle = body.find('\n', body.size() * 2 / 3) + 1;
+  const std::vector<std::pair<std::string, std::string>> texts = {
+      {"words only", body},
+      {"opened by %", "%\n" + body},
+      {"closed by % in a later part", "%\n" + body.substr(0, middle) + "%\n" + body.substr(middle)},
+      {"nothing before a later part's %", head + "%\n" + body + "%\nG01 X1 Y$\n"},
+      {"a % line alone in a later part", head + "%\n"},
+  };
+  for (const auto& [what, text] : texts) {
+    ASSERT_GT(text.size(), 256u * 1024u) << what << ": long enough to be parsed in parts";
+    const SourceFile src("p.nc", text);
+    for (const std::size_t cap : {std::size_t{5}, std::size_t{100000}}) {
+      Program serial;
+      Diagnostics serialDiags(cap);
+      {
+        const kerf::test::ScopedThreads one("1");
+        serial = parseProgram(src, serialDiags);
+      }
+      for (const char* threads : {"2", "3", "8"}) {
+        const kerf::test::ScopedThreads t(threads);
+        Diagnostics d(cap);
+        const Program parts = parseProgram(src, d);
+        const std::string label = what + ", " + threads + " threads, cap " + std::to_string(cap);
+        expectSameProgram(serial, parts, label);
+        expectSameDiagnostics(serialDiags, d, label);
+      }
+    }
+    if (what == "closed by % in a later part") {  // the blocks after the closing % are not read
+      Diagnostics d;
+      const Program p = parseProgram(src, d);
+      ASSERT_FALSE(p.blocks.empty());
+      EXPECT_LT(p.blocks.back().offset, 2 + middle);
+      EXPECT_GT(p.blocks.back().offset, middle / 2);
+    }
+  }
+}
+
+}  // namespace

@@ -5,9 +5,31 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdlib>
 #include <random>
+#include <string>
 
 namespace kerf::test {
+
+/// Sets KERF_THREADS (the workers of geometry/parallel.h) for one test and restores it after.
+class ScopedThreads {
+ public:
+  explicit ScopedThreads(const char* value) {
+    if (const char* old = std::getenv("KERF_THREADS")) old_ = old;
+    ::setenv("KERF_THREADS", value, 1);
+  }
+  ~ScopedThreads() {
+    if (old_.empty())
+      ::unsetenv("KERF_THREADS");
+    else
+      ::setenv("KERF_THREADS", old_.c_str(), 1);
+  }
+  ScopedThreads(const ScopedThreads&) = delete;
+  ScopedThreads& operator=(const ScopedThreads&) = delete;
+
+ private:
+  std::string old_;
+};
 
 using geometry::Segment;
 using geometry::Vec2;

@@ -39,13 +39,14 @@ int runCheck(const CheckArgs& a) {
   }
   for (const std::string& file : a.common.input.files) {
     // The text is needed again only for quotes, except by --trace (it prints each move's words).
-    std::optional<Loaded> in = load(a.common, file, !a.trace);
+    std::optional<Loaded> in = load(a.common, file, {.quoteOnly = !a.trace, .summary = true});
     if (!in) {
       worst = std::max(worst, kExitUsage);
       continue;
     }
     const converter::Pipeline& p = in->pipeline;
-    const converter::Summary summary = converter::summarize(p.toolpath, a.common.sampling.sampling(), &p.measures);
+    const converter::Summary summary =
+        p.summary ? *p.summary : converter::summarize(p.toolpath, a.common.sampling.sampling(), &p.measures);
     const converter::Diagnostics shown = capped(p.diags, a.common.checks.maxDiagnostics);
     if (a.trace) {
       std::cout << converter::formatTrace(p.toolpath, p.diags);

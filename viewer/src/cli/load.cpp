@@ -21,7 +21,7 @@ void printDiagnostics(const converter::Diagnostics& diags, const CommonOptions& 
 
 int verdictExit(const converter::Pipeline& pipeline) { return pipeline.diags.hasErrors() ? kExitErrors : kExitOk; }
 
-std::optional<Loaded> load(const CommonOptions& options, const std::string& file, bool quoteOnly) {
+std::optional<Loaded> load(const CommonOptions& options, const std::string& file, LoadNeeds needs) {
   std::string error;
   converter::PipelineOptions po;
   if (!pipelineOptions(options, po, error)) {
@@ -29,7 +29,8 @@ std::optional<Loaded> load(const CommonOptions& options, const std::string& file
     return std::nullopt;
   }
   const bool curve = options.input.curve && file == kCurveInput;
-  if (quoteOnly && !curve && file != "-") {
+  if (needs.summary) po.summarize = options.sampling.sampling();
+  if (needs.quoteOnly && !curve && file != "-") {
     po.rereadSource = [file]() -> std::optional<std::string> {
       std::string why;
       return readTextFile(file, converter::SourceFile::kMaxSize, why);

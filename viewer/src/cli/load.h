@@ -21,11 +21,18 @@ struct Loaded {
   std::vector<std::string> inputs;  ///< every file read: an output may replace none of them
 };
 
+/// What a command needs of the pipeline besides the toolpath and the diagnostics.
+struct LoadNeeds {
+  /// The program's text is needed again only to quote diagnostics, so the pipeline may give its
+  /// memory back (PipelineOptions::rereadSource).
+  bool quoteOnly = false;
+  /// The summary at the options' sampling (Pipeline::summary, made beside the checks).
+  bool summary = false;
+};
+
 /// Reads `file` (with --upper and --machine) and runs the pipeline. Nothing, with the reason
 /// printed, when a file cannot be read or the machine profile is wrong (exit 2).
-/// quoteOnly: the caller needs the program's text again only to quote diagnostics, so the
-/// pipeline may give its memory back (PipelineOptions::rereadSource).
-std::optional<Loaded> load(const CommonOptions& options, const std::string& file, bool quoteOnly = false);
+std::optional<Loaded> load(const CommonOptions& options, const std::string& file, LoadNeeds needs = {});
 
 /// For the commands that take one program: load() it and print its diagnostics, as check does.
 std::optional<Loaded> loadOne(const CommonOptions& options);

@@ -168,6 +168,8 @@ class Diagnostics {
   void error(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
   void warning(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
   void note(Code code, const SourceFile* src, SourceSpan span, std::string message, std::string help = {});
+  /// Appends what later reported (its counts and its dropped ones too), as if reported here.
+  void append(Diagnostics&& later);
 
   [[nodiscard]] const std::vector<Diagnostic>& all() const { return items_; }
   [[nodiscard]] std::size_t errorCount() const { return errors_; }

@@ -74,6 +74,8 @@ struct PipelineOptions {
   /// to read it again. A program (ISO or 3B) then gives the text's memory back once parsed, and
   /// a quote reads it again (SourceFile::releaseText). Empty: the text is kept.
   SourceFile::TextSource rereadSource;
+  /// Set: Pipeline::summary at this sampling, made on another core while the checks run.
+  std::optional<geometry::Sampling> summarize;
 };
 
 /// Everything a command needs after reading and checking a program. The sources live as long as
@@ -88,11 +90,12 @@ struct Pipeline {
   /// the toolpath then walks the wire paths.
   std::vector<ContourWire> wires;
   Toolpath toolpath;
-  MachineProfile machine;        ///< the profile in force
-  bool machineDetected = false;  ///< chosen from the evidence, not given
-  SurfaceMeasures measures;      ///< per move, for a taper program whose heights are known
-  CheckOptions checkOptions;     ///< the settings the checks ran with
-  Diagnostics diags{100000};     ///< every diagnostic, sorted by position
+  MachineProfile machine;          ///< the profile in force
+  bool machineDetected = false;    ///< chosen from the evidence, not given
+  SurfaceMeasures measures;        ///< per move, for a taper program whose heights are known
+  CheckOptions checkOptions;       ///< the settings the checks ran with
+  Diagnostics diags{100000};       ///< every diagnostic, sorted by position
+  std::optional<Summary> summary;  ///< what was read, when PipelineOptions::summarize asked for it
   /// false: nothing was read (the machine profile file is wrong); diags says why.
   bool read = false;
 };

@@ -19,6 +19,11 @@ unsigned workerCount();
 /// every thread has finished.
 void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(std::size_t, std::size_t)>& body);
 
+/// Runs first and second at once, second on another thread, when there are two workers or more;
+/// otherwise first, then second. The two must not write what the other reads. An exception from
+/// either is rethrown here once both have finished (one of them, when both throw).
+void parallelInvoke(const std::function<void()>& first, const std::function<void()>& second);
+
 /// Sorts [first, last) by less: one chunk per worker sorted at once, then merged pairwise (in
 /// place; std::inplace_merge takes a buffer when it can). Below minSize elements, or with one
 /// worker, std::sort alone. Not stable, as std::sort is not: equal elements may come in any order.

@@ -60,6 +60,22 @@ struct PathSampleStats {
 /// start at the previous end (a jump), its start is emitted as well.
 PathSampleStats samplePath(SegmentView path, const Sampling& sampling, std::vector<Vec2>* out);
 
+/// samplePath a segment at a time, for a path not stored as one view (the cut moves among a
+/// toolpath's rapids): the same figures, added in the same order.
+class PathSampler {
+ public:
+  PathSampler(const Sampling& sampling, std::vector<Vec2>* out) : sampling_(sampling), out_(out) {}
+  void add(const Segment& seg);
+  [[nodiscard]] PathSampleStats stats() const;
+
+ private:
+  Sampling sampling_;
+  std::vector<Vec2>* out_;
+  PathSampleStats stats_;
+  Vec2 last_{0, 0};
+  double weighted_ = 0.0;
+};
+
 /// Result of fitting the sampling to a controller's point capacity.
 struct CapacityFit {
   bool fits = false;

@@ -383,9 +383,10 @@ void checkSurface(const Toolpath& toolpath, const CutView& path, bool closed, co
 }  // namespace
 
 void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options, Diagnostics& diags,
-                   const SurfaceMeasures* measures) {
+                   const SurfaceMeasures* measures, const std::function<void()>& beside) {
   const CutView path = cutView(toolpath);
   if (path.segments.empty()) {
+    if (beside) beside();
     // With errors, those say why; alone, this says the program is empty of cuts. It points at
     // the first move (a rapid), or where the program starts when nothing moves.
     if (!diags.hasErrors())
@@ -421,18 +422,12 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "wire programs usually thread the wire again (M-code) at a new start hole"));
   }
 
-  // Closure, on another core while the lower contour is tested: neither reads what the other
-  // writes, and the contour's findings are reported after the closure's, as in one pass.
+  // Closure, with the caller's work beside it on another core.
   geometry::ClosureReport closure;
-  Diagnostics contourDiags(diags.cap());
-  MovePairs seen;
-  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
-  geometry::parallelInvoke(
-      [&] {
-        checkContour(lower, geometry::endsAtStart(path.segments, options.tolerance), toolpath, src, options,
-                     contourDiags, seen);
-      },
-      [&] { closure = geometry::analyseClosure(path.segments, options.tolerance); });
+  geometry::parallelInvoke([&] { closure = geometry::analyseClosure(path.segments, options.tolerance); },
+                           [&] {
+                             if (beside) beside();
+                           });
   if (!closure.loopFrom) {
     const Move& last = moves[path.moveIndex.back()];
     diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(),
@@ -440,7 +435,10 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "the cut path never closes a loop: the part stays attached (the end is " +
                              formatFixed(closure.gap, 3) + " mm from the start)"));
   }
-  diags.append(std::move(contourDiags));
+
+  MovePairs seen;
+  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
+  checkContour(lower, closure.endsAtStart, toolpath, src, options, diags, seen);
   if (!taper) return;
 
   Contour upper;

@@ -754,17 +754,40 @@ LinesRead parseLines(const SourceFile& source, Program& program, Diagnostics& di
   return read;
 }
 
+/// Gives the whole pages of [begin, end) back to the system; what they held reads as zeros after.
+void releasePages(const void* begin, const void* end) {
+#if defined(__linux__)
+  static const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) / page * page;
+  const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / page * page;
+  // Advice only: should the system refuse it, the memory simply stays.
+  if (to > from) (void)madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+#else
+  (void)begin;
+  (void)end;
+#endif
+}
+
+/// Appends part to to, a slice at a time, giving each slice of part back to the system once it is
+/// copied: the two copies never stand whole side by side.
+template <typename T>
+void appendReleasing(std::vector<T>& to, std::vector<T>& part) {
+  constexpr std::size_t kSlice = (1 << 20) / sizeof(T);  // about 1 MB
+  to.reserve(to.size() + part.size());
+  for (std::size_t k = 0; k < part.size(); k += kSlice) {
+    const std::size_t end = std::min(part.size(), k + kSlice);
+    to.insert(to.end(), part.begin() + static_cast<std::ptrdiff_t>(k), part.begin() + static_cast<std::ptrdiff_t>(end));
+    releasePages(part.data() + k, part.data() + end);
+  }
+  std::vector<T>().swap(part);
+}
+
 /// Appends the blocks of the lines after to's, read on their own (their word indices start at 0).
 void appendPart(Program& to, Program&& part) {
   const auto base = static_cast<std::uint32_t>(to.words.size());
-  to.words.insert(to.words.end(), part.words.begin(), part.words.end());
-  std::vector<Word>().swap(part.words);
-  to.blocks.reserve(to.blocks.size() + part.blocks.size());
-  for (Block b : part.blocks) {
-    b.firstWord += base;
-    to.blocks.push_back(b);
-  }
-  std::vector<Block>().swap(part.blocks);
+  appendReleasing(to.words, part.words);
+  for (Block& b : part.blocks) b.firstWord += base;
+  appendReleasing(to.blocks, part.blocks);
   for (Setting& s : part.settings) to.settings.push_back(std::move(s));
   to.heights.insert(to.heights.end(), part.heights.begin(), part.heights.end());
   to.anyDecimalPoint = to.anyDecimalPoint || part.anyDecimalPoint;
@@ -844,24 +867,6 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
   reportMacroStatements(whole.macros, source, diags);
   return program;
 }
-
-namespace {
-
-/// Gives the whole pages of [begin, end) back to the system; what they held reads as zeros after.
-void releasePages(const void* begin, const void* end) {
-#if defined(__linux__)
-  static const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-  const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) / page * page;
-  const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / page * page;
-  // Advice only: should the system refuse it, the memory simply stays.
-  if (to > from) (void)madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
-#else
-  (void)begin;
-  (void)end;
-#endif
-}
-
-}  // namespace
 
 void releaseParsedBefore(const Program& program, std::size_t block) {
   if (block < 2 || block >= program.blocks.size()) return;

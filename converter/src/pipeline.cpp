@@ -4,7 +4,6 @@
 #include "kerf/converter/analysis.h"
 #include "kerf/converter/curve.h"
 #include "kerf/converter/points.h"
-#include "kerf/geometry/parallel.h"
 
 #include <cstdio>
 
@@ -85,9 +84,8 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   releaseSource(out, options);  // the checks and what follows them only quote the text
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
-    geometry::parallelInvoke(
-        [&] { checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures); },
-        [&] { summarizeInto(out, options); });
+    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures,
+                  [&] { summarizeInto(out, options); });
   } else {
     summarizeInto(out, options);
   }

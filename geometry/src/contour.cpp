@@ -76,15 +76,11 @@ class CellTable {
 
 }  // namespace
 
-bool endsAtStart(SegmentView path, double tol) {
-  return !path.empty() && (path.back().end - path.front().start).norm() <= tol;
-}
-
 ClosureReport analyseClosure(SegmentView path, double tol) {
   ClosureReport report;
   if (path.empty()) return report;
   report.gap = (path.back().end - path.front().start).norm();
-  report.endsAtStart = endsAtStart(path, tol);
+  report.endsAtStart = report.gap <= tol;
   // Vertices on a grid of cell size 2.5 tol. The disc of radius tol around an end reaches at
   // most 0.4 cell each way, so it stays inside the 2 x 2 block of its own cell and the neighbours
   // on the side of the cell's middle it lies on (with 0.1 cell to spare for rounding): four

@@ -16,9 +16,6 @@ struct ClosureReport {
   double gap = 0.0;                     ///< distance from last end to first start, mm
 };
 
-/// Does the last end come back to the first start, within tol? (ClosureReport::endsAtStart.)
-bool endsAtStart(SegmentView path, double tol);
-
 /// Does the path close a loop? The loop may start after a lead-in and be followed by a
 /// lead-out: any segment end that returns to an earlier vertex (within tol) closes one.
 ClosureReport analyseClosure(SegmentView path, double tol);

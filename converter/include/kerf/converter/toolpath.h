@@ -36,8 +36,9 @@ enum class OffsetRole : std::uint8_t {
 };
 
 struct Move {
-  // The fields largest first, so the move packs into 128 bytes (it took 192, then 160). What can
-  // be computed from the segment (the arc's radius error) is computed, not stored.
+  // The fields largest first, so the move packs into 128 bytes (it took 192, then 160): 124 bytes
+  // of fields, rounded up by the segment's 16-byte alignment. What can be computed from the
+  // segment (the arc's radius error) is computed, not stored.
   // The contour on the lower plane. The upper contour of a 4-axis program (Move {lower, upper |
   // none} in the design) lives in Toolpath::upper, parallel to the moves, so 2-axis programs do not
   // pay 80 bytes a move for it.
@@ -47,7 +48,6 @@ struct Move {
   geometry::Vec2 centreWords{0, 0};
   double feed = 0.0;           ///< mm/min (0: none programmed)
   SourceSpan span;             ///< the block's text
-  std::uint32_t block = 0;     ///< index into Program::blocks
   std::uint32_t line = 0;      ///< 1-based source line of that block
   float taperDegrees = 0.0f;   ///< taper-angle dialect: the angle in force, > 0 leaning left (G51)
   std::uint8_t callDepth = 0;  ///< 0 in the main program (at most 255: calls nest 16 deep)

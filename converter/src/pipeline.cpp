@@ -16,10 +16,6 @@ std::string number(double v) {
   return buf;
 }
 
-void merge(const Diagnostics& from, Diagnostics& to) {
-  for (const Diagnostic& d : from.all()) to.report(d);
-}
-
 // ---- 2. conventions from the evidence --------------------------------------------------------
 
 /// Integers without a decimal point: micrometres when no length word has a point and the largest
@@ -75,8 +71,9 @@ void summarizeInto(Pipeline& out, const PipelineOptions& options) {
   if (options.summarize) out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
 }
 
-/// The checks, with the machine's limits unless the user gave others, and the summary beside them
-/// on another core (it reads the toolpath and the measures, which the checks do not write).
+/// The checks, with the machine's limits unless the user gave others; the summary is made on
+/// another core while the closure is analysed (it reads the toolpath and the measures, which the
+/// checks do not write).
 void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
@@ -218,13 +215,13 @@ void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::opti
       upperPath = readThreeB(*out.upperSource, tb, upperDiags);
     } else {
       MachineReading reading = readForMachine(*out.upperSource, &out.machine, std::nullopt);
-      merge(reading.diags, upperDiags);
+      upperDiags.append(std::move(reading.diags));
       InterpreterOptions io;
       io.machine = &out.machine;
       io.dialect = Dialect::Plain;
       upperPath = interpret(reading.program, io, upperDiags);
     }
-    merge(upperDiags, out.diags);
+    out.diags.append(std::move(upperDiags));
     pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
   }
   runChecks(out, options);
@@ -340,7 +337,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     evidence.push_back(centreEvidence(in.arcs, *machine.arcCentre));
   }
   out.toolpath = std::move(in.toolpath);
-  merge(reading.diags, out.diags);
+  out.diags.append(std::move(reading.diags));
 
   // The note that says how the program was read, and why.
   const bool namedMachine = out.machineDetected && machine.name != "generic";
@@ -361,14 +358,14 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
         Code::MachineDetected, out.source.get(), span, message,
         "override with --machine NAME or FILE, --integer-unit, --arc-centre (kerf machines lists the profiles)");
   }
-  merge(interpretDiags, out.diags);
+  out.diags.append(std::move(interpretDiags));
 
   if (upper) {
     out.upperSource = std::make_unique<SourceFile>(std::move(upper->name), std::move(upper->text));
     Diagnostics upperDiags(100000);
     const Program upperProgram = parseProgram(*out.upperSource, upperDiags, reading.parse);
     const Toolpath upperPath = interpret(upperProgram, io, upperDiags);
-    merge(upperDiags, out.diags);
+    out.diags.append(std::move(upperDiags));
     pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
   }
 

@@ -45,8 +45,7 @@ int runCheck(const CheckArgs& a) {
       continue;
     }
     const converter::Pipeline& p = in->pipeline;
-    const converter::Summary summary =
-        p.summary ? *p.summary : converter::summarize(p.toolpath, a.common.sampling.sampling(), &p.measures);
+    const converter::Summary& summary = *p.summary;  // load() asked for it, and the program was read
     const converter::Diagnostics shown = capped(p.diags, a.common.checks.maxDiagnostics);
     if (a.trace) {
       std::cout << converter::formatTrace(p.toolpath, p.diags);

@@ -90,12 +90,13 @@ struct Pipeline {
   /// the toolpath then walks the wire paths.
   std::vector<ContourWire> wires;
   Toolpath toolpath;
-  MachineProfile machine;          ///< the profile in force
-  bool machineDetected = false;    ///< chosen from the evidence, not given
-  SurfaceMeasures measures;        ///< per move, for a taper program whose heights are known
-  CheckOptions checkOptions;       ///< the settings the checks ran with
-  Diagnostics diags{100000};       ///< every diagnostic, sorted by position
-  std::optional<Summary> summary;  ///< what was read, when PipelineOptions::summarize asked for it
+  MachineProfile machine;        ///< the profile in force
+  bool machineDetected = false;  ///< chosen from the evidence, not given
+  SurfaceMeasures measures;      ///< per move, for a taper program whose heights are known
+  CheckOptions checkOptions;     ///< the settings the checks ran with
+  Diagnostics diags{100000};     ///< every diagnostic, sorted by position
+  /// What was read: set whenever `read` is, if PipelineOptions::summarize asked for it.
+  std::optional<Summary> summary;
   /// false: nothing was read (the machine profile file is wrong); diags says why.
   bool read = false;
 };

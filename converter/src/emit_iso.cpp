@@ -228,9 +228,9 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
       else
         words += " " + w.motion(u, rapid, 'U', 'V', !rapid);  // a rapid moves both sides alike
     }
-    if (!rapid && m.feed > 0 && m.feed != feed) {
-      words += " F" + formatFixed(m.feed, 3);
-      feed = m.feed;
+    if (const double f = toolpath.feedOf(i); !rapid && f > 0 && f != feed) {
+      words += " F" + formatFixed(f, 3);
+      feed = f;
     }
     w.block(words);
     ++written;

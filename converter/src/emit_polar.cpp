@@ -38,7 +38,8 @@ std::optional<EmitOutput> writePolar(const Toolpath& toolpath, const SourceFile*
   std::size_t points = 1;
   double worst = 0.0, feed = 0.0;
   bool rapidMode = true;
-  for (const Move& m : toolpath.moves) {
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    const Move& m = toolpath.moves[i];
     if (m.kind == MoveKind::Rapid) {
       at = geometry::toPolar(m.lower.end, at.c);
       text += "G00 " + point(at) + "\n";
@@ -72,9 +73,9 @@ std::optional<EmitOutput> writePolar(const Toolpath& toolpath, const SourceFile*
       std::string line = rapidMode ? "G01 " : "";
       rapidMode = false;
       line += point(sub.points[k]);
-      if (m.feed > 0 && m.feed != feed) {
-        line += " F" + formatFixed(m.feed, 3);
-        feed = m.feed;
+      if (const double mf = toolpath.feedOf(i); mf > 0 && mf != feed) {
+        line += " F" + formatFixed(mf, 3);
+        feed = mf;
       }
       text += line + "\n";
     }

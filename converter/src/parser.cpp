@@ -299,6 +299,12 @@ class LineParser {
         break;
       }
       if (isLowerLetter(c)) block.lowerCase = true;
+      if (static_cast<std::size_t>(wordsSoFar(block)) >= Block::kMaxWords) {
+        error(block, Code::BlockTooLong, i, 1,
+              "a block of more than " + std::to_string(Block::kMaxWords) + " words: the rest of the line is not read",
+              "split the line into blocks");
+        break;
+      }
       i = parseWord(block, i, end);
       if (block.hasError) break;  // one error per block: what follows is likely noise from it
     }
@@ -312,7 +318,8 @@ class LineParser {
     std::size_t last = blockEnd;
     while (last > block.offset && isBlank(text_[last - 1])) --last;
     block.length = static_cast<std::uint32_t>(last - block.offset);
-    block.wordCount = static_cast<std::uint32_t>(program_.words.size()) - block.firstWord;
+    // At most Block::kMaxWords: the word loop stops there, and the sides' reordering adds none.
+    block.wordCount = static_cast<std::uint16_t>(program_.words.size() - block.firstWord);
     if (block.kind == BlockKind::Words && block.upperFrom == 0 && block.wordCount > 0 && !hasUpper_)
       block.upperFrom = block.wordCount;
     hasUpper_ = false;
@@ -663,7 +670,7 @@ class LineParser {
       seen[side[k]] |= bit;
       placed += side[k] == 0;
     }
-    block.upperFrom = placed;
+    block.upperFrom = static_cast<std::uint16_t>(placed);  // at most the block's words
     hasUpper_ = true;
     if (splitAt_ >= 0 || !upperLetters_) return;  // already in order
     // By letter: the lower side first, each side in the order written.

@@ -290,6 +290,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   io.wireOffset = ro.wireOffset;
   io.maxExecutedBlocks = ro.maxExecutedBlocks;
   io.maxMoves = ro.maxMoves;
+  io.recordCentreWords = options.centreWords;
   std::vector<std::string> evidence;
   if (ro.integerUnit) {
     io.integerUnit = *ro.integerUnit;

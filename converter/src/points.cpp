@@ -282,8 +282,10 @@ std::optional<Toolpath> toolpathAtPlane(const Toolpath& toolpath, const PlaneCho
   out.programUnit = toolpath.programUnit;
   out.endedProperly = toolpath.endedProperly;
   out.heights = toolpath.heights;
+  out.feeds = toolpath.feeds;  // the moves keep their feeds
   if (!toolpath.isTaper()) {
     out.moves = toolpath.moves;
+    out.centreWords = toolpath.centreWords;
     return out;
   }
   double s = 0.0;

@@ -414,6 +414,7 @@ class ThreeBReader {
     const double j = static_cast<double>(r.field[2]);
     const Vec2 signs = three_b::quadrantSigns(r.quadrant);
     Move m = moveFor(r);
+    Vec2 centreWords(0, 0);  // x y as written, for an arc
     const SourceSpan jSpan = span(r.fieldAt[2], r.axisAt);
     if (!r.arc) {
       Vec2 d;
@@ -474,7 +475,7 @@ class ThreeBReader {
       m.lower = geometry::Segment::arc(
           position_, end, centre, r.ccw ? geometry::ArcDirection::CounterClockwise : geometry::ArcDirection::Clockwise);
       m.centreForm = CentreForm::Reversed;  // x y are the start minus the centre
-      m.centreWords = startRel * kMm;
+      centreWords = startRel * kMm;
       // A count that ends where the other axis is the faster one puts the end imprecisely.
       if (three_b::arcAxis(endRel.x(), endRel.y()) != r.axis &&
           std::abs(std::abs(endRel.x()) - std::abs(endRel.y())) > 1.0)
@@ -486,6 +487,7 @@ class ThreeBReader {
     }
     position_ = m.lower.end;
     path_.moves.push_back(std::move(m));
+    path_.centreWords.push_back(centreWords);
   }
 
   /// The machine moves in whole micrometres from where it started: every record ends on that grid.

@@ -268,7 +268,8 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
     Move m;
     m.line = b.line;
     m.span = b.span();
-    m.feed = feed;
+    m.feedIndex = path.feedIndexFor(feed);
+    Vec2 centreWords(0, 0);  // R as written, for an arc
     const bool rotary = !polar && C && std::abs(newC - c) > 1e-12;
     if (motion == 2 || motion == 3) {
       const auto dir = motion == 2 ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise;
@@ -307,7 +308,7 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
       m.kind = MoveKind::Arc;
       m.lower = build.arc;
       m.centreForm = R ? CentreForm::Radius : CentreForm::Incremental;
-      m.centreWords = Vec2(R ? R->value : 0.0, 0.0);
+      centreWords = Vec2(R ? R->value : 0.0, 0.0);
     } else {
       m.kind = motion == 0 ? MoveKind::Rapid : MoveKind::Line;
       m.lower = Segment::line(position, target);
@@ -334,6 +335,7 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
             part.kind = piece.isArc() ? MoveKind::Arc : MoveKind::Line;
             part.lower = piece;
             path.moves.push_back(std::move(part));
+            path.centreWords.push_back(Vec2::Zero());
           }
           spirals += spiral.pieces.size();
           c = newC;
@@ -350,6 +352,7 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
     position = target;
     if ((m.lower.end - m.lower.start).norm() < 1e-12 && m.kind != MoveKind::Arc) continue;
     path.moves.push_back(std::move(m));
+    path.centreWords.push_back(centreWords);
   }
   path.endedProperly = ends;
   if (!ends && !diags.hasErrors() && !path.moves.empty())

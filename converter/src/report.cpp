@@ -86,7 +86,7 @@ std::string segmentText(const geometry::Segment& s, int decimals) {
 constexpr double kToDegrees = 180.0 / geometry::kPi;
 
 /// Why the upper segment of a move is what it is, by dialect (for `kerf explain`).
-std::string pairingReason(const Toolpath& tp, const Move& m) {
+std::string pairingReason(const Toolpath& tp, std::size_t i) {
   switch (tp.dialect) {
     case Dialect::Plain: return "the wire is vertical";
     case Dialect::XyuvAbs:
@@ -99,12 +99,14 @@ std::string pairingReason(const Toolpath& tp, const Move& m) {
       return "the upper side is the block's U V words (absolute, same frame as X Y), moved in a straight line "
              "during the block even when X Y follow an arc (LinuxCNC moves extra axes so)";
     case Dialect::SodickColon: return "the upper side is the words after ':' (absolute, its own modal motion)";
-    case Dialect::TaperAngle:
-      if (m.taperDegrees == 0.0f) return "no taper is in force here: the wire is vertical";
-      return std::string("the programmed contour offset by h tan(") + formatFixed(std::abs(m.taperDegrees), 3) +
-             "°) to the " + (m.taperDegrees > 0 ? "left (G51)" : "right (G52)") +
+    case Dialect::TaperAngle: {
+      const double degrees = tp.taperDegreesOf(i);
+      if (degrees == 0.0) return "no taper is in force here: the wire is vertical";
+      return std::string("the programmed contour offset by h tan(") + formatFixed(std::abs(degrees), 3) + "°) to the " +
+             (degrees > 0 ? "left (G51)" : "right (G52)") +
              " of travel, h measured from the program plane; lines stay parallel, arcs concentric, corners sharp "
              "where the offsets meet";
+    }
     case Dialect::TwoFile: return "the upper side is the move with the same index in the upper program";
   }
   return {};
@@ -390,7 +392,7 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
     if (toolpath.isTaper()) {
       const geometry::Segment& u = toolpath.upper[i];
       out += "  upper: " + segmentText(u, 3) + ", length " + mm(u.length()) + " mm\n";
-      out += "  pairing: " + pairingReason(toolpath, m) + "\n";
+      out += "  pairing: " + pairingReason(toolpath, i) + "\n";
       if (toolpath.heights.known) {
         const geometry::Planes& pl = toolpath.heights.planes;
         const geometry::PatchMeasures pm = geometry::measurePatch(s, u, pl);
@@ -422,7 +424,7 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
     if (role == OffsetRole::Corner) {
       out += "  centre " + pt(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius) + " mm\n";
     } else if (m.centreForm == CentreForm::Radius) {
-      const double r = m.programmedRadius();
+      const double r = toolpath.programmedRadius(i);
       const int zn = geometry::seedSignFactor(
           cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
       out += "  centre " + pt(d.centre) + " from R " + mm(r) + ": half the chord" +
@@ -431,14 +433,14 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
              (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
              " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
     } else if (threeB) {
-      const Vec2 xy = m.programmedCentreWords();
+      const Vec2 xy = toolpath.programmedCentreWords(i);
       out += "  3B arc: x y = start - centre = (" + mm(xy.x()) + ", " + mm(xy.y()) +
              ") (signs from the start's quadrant in SR/NR), so the centre is " + pt(s.centre) + ", radius " +
              mm(s.radius) +
              " mm; the arc ends where it has travelled J along the count axis, over every quadrant it "
              "crosses\n";
     } else {
-      const Vec2 ij = m.programmedCentreWords();
+      const Vec2 ij = toolpath.programmedCentreWords(i);
       std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"
                          : m.centreForm == CentreForm::Reversed  ? "centre = start - (I, J)"
                                                                  : "centre = (I, J)";
@@ -496,7 +498,7 @@ std::string explainJson(const SourceFile& source, const Toolpath& toolpath, cons
         up["radius"] = u.radius;
         up["direction"] = u.sweep < 0 ? "cw" : "ccw";
       }
-      up["pairing"] = pairingReason(toolpath, m);
+      up["pairing"] = pairingReason(toolpath, i);
       if (toolpath.heights.known) {
         up["slope_start_deg"] = geometry::slopeAt(s, u, toolpath.heights.planes, 0.0) * kToDegrees;
         up["slope_end_deg"] = geometry::slopeAt(s, u, toolpath.heights.planes, 1.0) * kToDegrees;
@@ -510,14 +512,14 @@ std::string explainJson(const SourceFile& source, const Toolpath& toolpath, cons
       e["sweep_deg"] = std::abs(s.sweep) * 180.0 / geometry::kPi;
       e["centre_from"] = toolpath.format == InputFormat::ThreeB ? "3B-xy" : centreFormName(m.centreForm);
       if (toolpath.format == InputFormat::ThreeB) {
-        e["xy"] = vec(m.programmedCentreWords());
+        e["xy"] = vec(toolpath.programmedCentreWords(i));
       } else if (m.centreForm == CentreForm::Radius) {
-        e["R"] = m.programmedRadius();
+        e["R"] = toolpath.programmedRadius(i);
         e["zn"] = geometry::seedSignFactor(
             s.sweep < 0 ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise,
-            m.programmedRadius());
+            toolpath.programmedRadius(i));
       } else {
-        e["IJ"] = vec(m.programmedCentreWords());
+        e["IJ"] = vec(toolpath.programmedCentreWords(i));
         e["radius_error"] = programmedRadiusError(toolpath, i);
       }
       const geometry::ArcSampleStats st = geometry::sample(s, sampling, nullptr);

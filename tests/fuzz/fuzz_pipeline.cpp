@@ -23,6 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Sections past a tenth of the default budget are coarsened (K0657): sorting 15 sections of
   // 100,000 pieces under coverage instrumentation took 28 s, past libFuzzer's 10 s timeout.
   options.check.sectionBudget = 10000;
+  options.centreWords = true;  // explain shows them, below
   std::string text(reinterpret_cast<const char*>(data), size);
   // Half the inputs run as kerf check does: the text given back once parsed and read again for
   // the quotes (and for explain, below), here from memory.

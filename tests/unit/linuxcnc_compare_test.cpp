@@ -144,7 +144,7 @@ TEST(linuxcnc, random_programs_agree_to_1e_4_mm) {
       ++arcsCompared;
       if (m.centreForm == kerf::converter::CentreForm::Radius) {
         ++radiusArcs;
-        negativeR += m.programmedRadius() < 0;
+        negativeR += ours->path().programmedRadius(i) < 0;
       }
       EXPECT_LE((m.lower.centre - c.centre).norm(), 1e-4);
       worst = std::max(worst, (m.lower.centre - c.centre).norm());

@@ -97,6 +97,24 @@ TEST(parser, one_error_per_block_and_parsing_goes_on) {
   EXPECT_FALSE(p.blocks[1].hasError);
 }
 
+TEST(parser, a_block_of_more_words_than_a_block_holds_is_an_error_at_the_first_word_too_many) {
+  // A block holds Block::kMaxWords words (16-bit counts): the word after them is reported, the
+  // block keeps the ones before it, and the next line is read as usual.
+  std::string line = "G01";
+  for (std::size_t k = 1; k < Block::kMaxWords + 10; ++k) line += " G01";
+  SourceFile src("p.nc", line + "\nG01 X2.\n");
+  Diagnostics d;
+  const Program p = parse(src, d);
+  ASSERT_EQ(d.errorCount(), 1u);
+  EXPECT_EQ(d.all().front().code, Code::BlockTooLong);
+  EXPECT_EQ(d.all().front().span.offset, 4 * Block::kMaxWords);  // "G01 " a word
+  ASSERT_EQ(p.blocks.size(), 2u);
+  EXPECT_EQ(p.blocks[0].wordCount, Block::kMaxWords);
+  EXPECT_TRUE(p.blocks[0].hasError);
+  EXPECT_EQ(p.blocks[1].wordCount, 2u);
+  EXPECT_EQ(p.wordsOf(p.blocks[1])[1].letter, 'X');
+}
+
 TEST(diagnostics, long_lines_are_shown_as_a_window_around_the_column) {
   const std::string line = "G01 X1. (" + std::string(5000, 'a') + ") B5";
   SourceFile src("p.nc", line + "\n");

@@ -225,7 +225,10 @@ class Interpreter {
   HeldWord motionWord_;
   bool incremental_ = false;
   bool inch_ = false;
-  double feed_ = 0.0;
+  std::uint32_t feedIndex_ = 0;  // the feed in force: Toolpath::feeds[feedIndex_ - 1]; 0: none programmed
+  // What the move being built records beside it (Toolpath::centreWords, taperDegrees).
+  Vec2 moveCentreWords_{0, 0};
+  float moveTaper_ = 0.0f;
   WireOffset wireOffset_ = WireOffset::Off;
   geometry::ArcTolerance tolerance_{};
   std::vector<Frame> stack_;

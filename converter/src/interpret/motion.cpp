@@ -91,7 +91,7 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
     const double r = length(*w['R']);
     if (record) {
       record->centreForm = CentreForm::Radius;
-      record->centreWords = Vec2(r, 0);
+      moveCentreWords_ = Vec2(r, 0);
     }
     build = geometry::arcFromRadius(start, end, r, dir, tolerance_);
   } else {
@@ -112,7 +112,7 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
         break;
     }
     if (record) {
-      record->centreWords = ij;
+      moveCentreWords_ = ij;
       record->centreForm = form;
     }
     build = geometry::arcFromCentre(start, end, centre, dir, tolerance_);
@@ -163,7 +163,9 @@ bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, con
   Move move;
   move.line = block.line;
   move.span = block.span();
-  move.feed = feed_;
+  move.feedIndex = feedIndex_;
+  moveCentreWords_ = Vec2::Zero();
+  moveTaper_ = 0.0f;
   move.wireOffset = wireOffset_;
   move.callDepth = static_cast<std::uint8_t>(std::min<std::size_t>(stack_.size(), 255));
 
@@ -219,6 +221,8 @@ void Interpreter::push(Move&& m, const Segment& upper) {
   }
   toolpath_.moves.push_back(std::move(m));
   if (dialect_ != Dialect::Plain) toolpath_.upper.push_back(upper);
+  if (dialect_ == Dialect::TaperAngle) toolpath_.taperDegrees.push_back(moveTaper_);
+  if (options_.recordCentreWords) toolpath_.centreWords.push_back(moveCentreWords_);
 }
 
 }  // namespace kerf::converter::interp

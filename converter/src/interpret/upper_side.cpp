@@ -126,7 +126,7 @@ bool Interpreter::buildUpper(const BlockWords& bw, const BlockWords& ubw, const 
           }
           break;
       }
-      move.taperDegrees = static_cast<float>(taperSide_ * taperDegrees_);
+      moveTaper_ = static_cast<float>(taperSide_ * taperDegrees_);
       taperRecords_.push_back(t);
       return true;
     }

@@ -66,6 +66,12 @@ void Interpreter::resolveWireOffsets() {
   std::vector<Move> out;
   std::vector<OffsetRole> role;
   std::vector<Segment> programmed;
+  // The centres as written stay with the moves they came from (when they are kept).
+  const std::vector<Vec2>& centres = toolpath_.centreWords;
+  std::vector<Vec2> outCentres;
+  auto keepCentre = [&](std::size_t from) {
+    if (!centres.empty()) outCentres.push_back(centres[from]);
+  };
   out.reserve(moves.size() + moves.size() / 2);
   std::size_t next = 0;  // first move not yet copied
   bool applied = false;
@@ -75,6 +81,7 @@ void Interpreter::resolveWireOffsets() {
     for (; next < end; ++next) {
       firstOut[next] = out.size();
       out.push_back(moves[next]);
+      keepCentre(next);
       role.push_back(OffsetRole::None);
       programmed.push_back(moves[next].lower);
     }
@@ -103,15 +110,18 @@ void Interpreter::resolveWireOffsets() {
     startUp.lower = Segment::line(startUp.lower.start, path.front().segment.start);
     firstOut[run.first] = out.size();
     out.push_back(startUp);
+    keepCentre(run.first);
     role.push_back(OffsetRole::StartUp);
     programmed.push_back(moves[run.first].lower);
     for (const geometry::WirePiece& piece : path) {
       const std::size_t source = run.first + 1 + piece.element;
-      Move m = moves[piece.corner && source + 1 < run.end ? source + 1 : source];
+      const std::size_t from = piece.corner && source + 1 < run.end ? source + 1 : source;
+      Move m = moves[from];
       m.lower = piece.segment;
       m.kind = piece.segment.isArc() ? MoveKind::Arc : MoveKind::Line;
       if (!piece.corner && firstOut[source] == SIZE_MAX) firstOut[source] = out.size();
       out.push_back(m);
+      keepCentre(from);
       role.push_back(piece.corner ? OffsetRole::Corner : OffsetRole::Element);
       programmed.push_back(piece.corner ? Segment::line(chain[piece.element].end, chain[piece.element].end)
                                         : chain[piece.element]);
@@ -123,6 +133,7 @@ void Interpreter::resolveWireOffsets() {
       cancel.lower = Segment::line(path.back().segment.end, cancel.lower.end);
       firstOut[run.end] = out.size();
       out.push_back(cancel);
+      keepCentre(run.end);
       role.push_back(OffsetRole::Cancel);
       programmed.push_back(moves[run.end].lower);
       next = run.end + 1;
@@ -157,6 +168,7 @@ void Interpreter::resolveWireOffsets() {
   for (std::uint32_t& s : toolpath_.stops)
     s = static_cast<std::uint32_t>(firstOut[std::min<std::size_t>(s, moves.size())]);
   moves = std::move(out);
+  if (!centres.empty()) toolpath_.centreWords = std::move(outCentres);
   toolpath_.offsetRole = std::move(role);
   toolpath_.programmed = std::move(programmed);
   const OffsetRun& first = runs.front();

@@ -18,7 +18,7 @@ CLI::App* addExplainCommand(CLI::App& app, ExplainArgs& a) {
 }
 
 int runExplain(const ExplainArgs& a) {
-  std::optional<Loaded> in = loadOne(a.common);
+  std::optional<Loaded> in = loadOne(a.common, {.centreWords = true});
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   const auto sampling = a.common.sampling.sampling();

@@ -30,6 +30,7 @@ std::optional<Loaded> load(const CommonOptions& options, const std::string& file
   }
   const bool curve = options.input.curve && file == kCurveInput;
   if (needs.summary) po.summarize = options.sampling.sampling();
+  po.centreWords = needs.centreWords;
   if (needs.quoteOnly && !curve && file != "-") {
     po.rereadSource = [file]() -> std::optional<std::string> {
       std::string why;
@@ -62,8 +63,8 @@ std::optional<Loaded> load(const CommonOptions& options, const std::string& file
   return out;
 }
 
-std::optional<Loaded> loadOne(const CommonOptions& options) {
-  std::optional<Loaded> in = load(options, options.input.files.front());
+std::optional<Loaded> loadOne(const CommonOptions& options, LoadNeeds needs) {
+  std::optional<Loaded> in = load(options, options.input.files.front(), needs);
   if (in) printDiagnostics(in->pipeline.diags, options);
   return in;
 }

@@ -28,6 +28,8 @@ struct LoadNeeds {
   bool quoteOnly = false;
   /// The summary at the options' sampling (Pipeline::summary, made beside the checks).
   bool summary = false;
+  /// How each arc's centre was written (PipelineOptions::centreWords): kerf explain shows it.
+  bool centreWords = false;
 };
 
 /// Reads `file` (with --upper and --machine) and runs the pipeline. Nothing, with the reason
@@ -35,7 +37,7 @@ struct LoadNeeds {
 std::optional<Loaded> load(const CommonOptions& options, const std::string& file, LoadNeeds needs = {});
 
 /// For the commands that take one program: load() it and print its diagnostics, as check does.
-std::optional<Loaded> loadOne(const CommonOptions& options);
+std::optional<Loaded> loadOne(const CommonOptions& options, LoadNeeds needs = {});
 
 /// The first `cap` diagnostics, with every one still counted.
 converter::Diagnostics capped(const converter::Diagnostics& all, std::size_t cap);

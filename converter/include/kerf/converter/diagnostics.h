@@ -35,6 +35,7 @@ enum class Code : std::uint16_t {
   MalformedSetting = 110,
   DecimalComma = 112,
   MacroStatement = 113,
+  BlockTooLong = 114,
   ThreeBSyntax = 120,
   DxfSyntax = 121,
   DxfEntity = 122,

@@ -54,6 +54,9 @@ struct InterpreterOptions {
   /// and no macro call. The Program must then not be read again, except for its sizes; a second
   /// run needs a new parse.
   bool releaseParsed = false;
+  /// Keep how each arc's centre was written (Toolpath::centreWords, 16 bytes a move): `kerf
+  /// explain` shows it; a check does not need it.
+  bool recordCentreWords = true;
 };
 
 /// How the arcs given by I J close under each convention (for detecting the convention).

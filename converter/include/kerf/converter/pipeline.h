@@ -76,6 +76,9 @@ struct PipelineOptions {
   SourceFile::TextSource rereadSource;
   /// Set: Pipeline::summary at this sampling, made on another core while the checks run.
   std::optional<geometry::Sampling> summarize;
+  /// Keep how each arc's centre was written (Toolpath::centreWords; `kerf explain` shows it). The
+  /// 3B and mill-turn readers always keep it.
+  bool centreWords = false;
 };
 
 /// Everything a command needs after reading and checking a program. The sources live as long as

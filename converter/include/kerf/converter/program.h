@@ -53,26 +53,31 @@ enum class BlockKind : std::uint8_t {
 };
 
 struct Block {
+  /// Most words a block may hold (wordCount and upperFrom are 16 bits, so that a block stays 24
+  /// bytes: a program holds one per line). The parser reports a longer block (K0114).
+  static constexpr std::size_t kMaxWords = 0xFFFF;
+
   std::uint32_t firstWord = 0;
-  std::uint32_t wordCount = 0;
   std::uint32_t offset = 0;  ///< start of the block's text
   std::uint32_t length = 0;  ///< to the end of the block's text (without the line break)
   std::uint32_t line = 0;    ///< 1-based
+  std::uint16_t wordCount = 0;
   /// Words from this index on (relative to firstWord) describe the upper contour. The parser
   /// orders a block's words so that the lower side's come first: those before a Sodick ':' or a
   /// second motion word after a coordinate (`G2 X Y I J G1 U V`, cnc3) in the order written;
   /// otherwise by letter — U V K L, and a second I J or R, belong to the upper side, whatever the
   /// order (RS274 gives word order no meaning). Equal to wordCount when the block has no upper side.
-  std::uint32_t upperFrom = 0;
+  std::uint16_t upperFrom = 0;
   BlockKind kind = BlockKind::Words;
-  bool colon = false;          ///< the upper side was opened with ':'
-  bool twoMotions = false;     ///< the upper side was opened by a second motion word (cnc3)
-  bool blockDelete = false;    ///< started with '/'
-  bool hasError = false;       ///< the parser reported an error in this block
-  bool lowerCase = false;      ///< some word letter was written in lower case
-  bool unusualValues = false;  ///< some word's value is not a number (WordValue other than Number)
+  bool colon : 1 = false;          ///< the upper side was opened with ':'
+  bool twoMotions : 1 = false;     ///< the upper side was opened by a second motion word (cnc3)
+  bool blockDelete : 1 = false;    ///< started with '/'
+  bool hasError : 1 = false;       ///< the parser reported an error in this block
+  bool lowerCase : 1 = false;      ///< some word letter was written in lower case
+  bool unusualValues : 1 = false;  ///< some word's value is not a number (WordValue other than Number)
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
 };
+static_assert(sizeof(Block) == 24, "a Block is 24 bytes: a program holds one per line");
 
 /// A plane height written in the program outside the word set (docs/taper.md): Sodick `TP` /
 /// `TN` words and LinuxCNC `(AXIS,XY_Z_POS,z)` / `(AXIS,UV_Z_POS,z)` comments.
@@ -113,7 +118,7 @@ struct Program {
     return {words.data() + b.firstWord, b.upperFrom};
   }
   [[nodiscard]] std::span<const Word> upperWordsOf(const Block& b) const {
-    return {words.data() + b.firstWord + b.upperFrom, b.wordCount - b.upperFrom};
+    return {words.data() + b.firstWord + b.upperFrom, static_cast<std::size_t>(b.wordCount - b.upperFrom)};
   }
   /// The block's text as written.
   [[nodiscard]] std::string_view textOf(const Block& b) const { return source->text().substr(b.offset, b.length); }

@@ -36,36 +36,25 @@ enum class OffsetRole : std::uint8_t {
 };
 
 struct Move {
-  // The fields largest first, so the move packs into 128 bytes (it took 192, then 160): 124 bytes
-  // of fields, rounded up by the segment's 16-byte alignment. What can be computed from the
-  // segment (the arc's radius error) is computed, not stored.
-  // The contour on the lower plane. The upper contour of a 4-axis program (Move {lower, upper |
-  // none} in the design) lives in Toolpath::upper, parallel to the moves, so 2-axis programs do not
-  // pay 80 bytes a move for it.
-  geometry::Segment lower;
-  /// How the arc's centre was programmed (for `kerf explain`), in mm: I J (or 3B's x y) as written
-  /// when centreForm is Incremental, Reversed or Absolute; the signed R in x when it is Radius.
-  geometry::Vec2 centreWords{0, 0};
-  double feed = 0.0;           ///< mm/min (0: none programmed)
-  SourceSpan span;             ///< the block's text
-  std::uint32_t line = 0;      ///< 1-based source line of that block
-  float taperDegrees = 0.0f;   ///< taper-angle dialect: the angle in force, > 0 leaning left (G51)
-  std::uint8_t callDepth = 0;  ///< 0 in the main program (at most 255: calls nest 16 deep)
+  // A program holds one move per block, so the move is 96 bytes (it took 192, then 160, then 128).
+  // The small fields sit in the segment's tail padding (a [[no_unique_address]] member's padding
+  // may hold the members after it); what only some programs or commands need lives beside the
+  // moves in the Toolpath: the upper contour, the taper angle, the centre as written, the feeds.
+  // What can be computed from the segment (the arc's radius error) is computed, not stored.
+  [[no_unique_address]] geometry::Segment lower;  ///< the contour on the lower plane
+  std::uint8_t callDepth = 0;                     ///< 0 in the main program (at most 255: calls nest 16 deep)
   MoveKind kind = MoveKind::Line;
   CentreForm centreForm = CentreForm::None;
   WireOffset wireOffset = WireOffset::Off;
+  SourceSpan span;              ///< the block's text
+  std::uint32_t line = 0;       ///< 1-based source line of that block
+  std::uint32_t feedIndex = 0;  ///< the feed in force: Toolpath::feeds[feedIndex - 1] mm/min; 0: none programmed
 
   [[nodiscard]] bool isCut() const { return kind != MoveKind::Rapid; }
-  /// I J as programmed, mm ((0, 0) when the arc was given by R).
-  [[nodiscard]] geometry::Vec2 programmedCentreWords() const {
-    return centreForm == CentreForm::Radius ? geometry::Vec2(0, 0) : centreWords;
-  }
-  /// The signed R as programmed, mm (0 when the centre was given otherwise).
-  [[nodiscard]] double programmedRadius() const { return centreForm == CentreForm::Radius ? centreWords.x() : 0.0; }
   /// How far the arc's end lies off its circle: |end - centre| - |start - centre|, mm (0 for a line).
   [[nodiscard]] double radiusError() const { return lower.radiusError(); }
 };
-static_assert(sizeof(Move) <= 128, "a move is stored for every block: keep it small");
+static_assert(sizeof(Move) <= 96, "a move is stored for every block: keep it small");
 
 enum class LengthUnit : std::uint8_t { Millimetre, Inch };
 
@@ -133,6 +122,42 @@ struct Toolpath {
   /// moves). Empty when no offset was applied.
   std::vector<OffsetRole> offsetRole;
   std::vector<geometry::Segment> programmed;
+
+  /// The feeds programmed, in the order they came into force (Move::feedIndex counts from 1), mm/min.
+  std::vector<double> feeds;
+  /// The taper-angle dialect: per move (same index), the angle in force in degrees, > 0 leaning
+  /// left (G51); empty for other dialects.
+  std::vector<float> taperDegrees;
+  /// How each arc's centre was programmed (for `kerf explain`), per move (same index), in mm: I J
+  /// (or 3B's x y) as written when centreForm is Incremental, Reversed or Absolute; the signed R in
+  /// x when it is Radius. Kept only when asked for (InterpreterOptions::recordCentreWords): empty
+  /// otherwise.
+  std::vector<geometry::Vec2> centreWords;
+
+  /// The Move::feedIndex that gives `mmPerMinute` (0 for none, <= 0): the last entry of feeds when
+  /// it holds the same value, else a new one.
+  std::uint32_t feedIndexFor(double mmPerMinute) {
+    if (!(mmPerMinute > 0)) return 0;
+    if (feeds.empty() || feeds.back() != mmPerMinute) feeds.push_back(mmPerMinute);
+    return static_cast<std::uint32_t>(feeds.size());
+  }
+  /// The feed of move i, mm/min (0: none programmed).
+  [[nodiscard]] double feedOf(std::size_t i) const {
+    const std::uint32_t k = moves[i].feedIndex;
+    return k == 0 || k > feeds.size() ? 0.0 : feeds[k - 1];
+  }
+  /// The taper angle in force at move i, degrees (taper-angle dialect; 0 otherwise).
+  [[nodiscard]] double taperDegreesOf(std::size_t i) const {
+    return i < taperDegrees.size() ? static_cast<double>(taperDegrees[i]) : 0.0;
+  }
+  /// I J as programmed for move i, mm ((0, 0) when the arc was given by R or not recorded).
+  [[nodiscard]] geometry::Vec2 programmedCentreWords(std::size_t i) const {
+    return i < centreWords.size() && moves[i].centreForm != CentreForm::Radius ? centreWords[i] : geometry::Vec2(0, 0);
+  }
+  /// The signed R as programmed for move i, mm (0 when the centre was given otherwise or not recorded).
+  [[nodiscard]] double programmedRadius(std::size_t i) const {
+    return i < centreWords.size() && moves[i].centreForm == CentreForm::Radius ? centreWords[i].x() : 0.0;
+  }
 
   [[nodiscard]] bool isTaper() const { return !upper.empty(); }
   /// The upper segment of move i: the lower one where the wire is vertical.

@@ -3,13 +3,16 @@
 #   .ci/install-deps.sh          what building and running kerf needs
 #   .ci/install-deps.sh --tests  plus what the test suite needs (LinuxCNC's rs274 as the
 #                                independent interpreter the arc tests compare against; Xvfb
-#                                for the window tests)
+#                                for the window tests; Microsoft's SARIF Multitool from the npm
+#                                registry, into /opt/kerf-test-tools, to validate SARIF output)
 # Skips apt entirely when everything is already installed.
 set -euo pipefail
 packages=(g++ cmake make pkg-config libeigen3-dev libcli11-dev libmuparser-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libvtk9-dev libglfw3-dev libimgui-dev libstb-dev libgl-dev libosmesa6-dev libegl-dev libegl-mesa0)
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(linuxcnc-uspace python3 python3-ezdxf python3-shapely xvfb xauth)
+  # Debian's Node.js and npm, unless a Node.js with its own npm is installed already.
+  command -v npm > /dev/null || packages+=(nodejs npm)
 fi
 missing=()
 for p in "${packages[@]}"; do
@@ -19,4 +22,17 @@ if ((${#missing[@]})); then
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The SARIF validator the tests use (tests/tools/ci_reports_check.py): a pinned version, installed
+# once. npm 11 runs no install scripts unless approved; the package's only one marks its binary
+# executable, which is done here.
+if [[ "${1:-}" == "--tests" ]]; then
+  tools=/opt/kerf-test-tools
+  multitool="$tools/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool"
+  if [[ ! -x "$multitool" ]]; then
+    mkdir -p "$tools"
+    npm install --prefix "$tools" --no-audit --no-fund --loglevel=error @microsoft/sarif-multitool@5.7.0
+    chmod u+x "$multitool"
+  fi
 fi

@@ -30,6 +30,34 @@ void Diagnostics::report(Diagnostic d) {
   items_.push_back(std::move(d));
 }
 
+std::optional<Severity> DiagnosticPolicy::levelOf(const Diagnostic& d) const {
+  auto named = [&](const std::vector<Code>& codes) {
+    return std::find(codes.begin(), codes.end(), d.code) != codes.end();
+  };
+  if (d.severity == Severity::Error) return Severity::Error;
+  if (named(silenced)) return std::nullopt;
+  if (named(promoted) || (warningsAreErrors && d.severity == Severity::Warning)) return Severity::Error;
+  return d.severity;
+}
+
+Diagnostics Diagnostics::under(const DiagnosticPolicy& policy) const {
+  Diagnostics out(cap_);
+  std::size_t seenErrors = 0, seenWarnings = 0;
+  for (const Diagnostic& d : items_) {
+    seenErrors += d.severity == Severity::Error;
+    seenWarnings += d.severity == Severity::Warning;
+    const std::optional<Severity> level = policy.levelOf(d);
+    if (!level) continue;
+    Diagnostic copy = d;
+    copy.severity = *level;
+    out.report(std::move(copy));
+  }
+  out.errors_ += errors_ - seenErrors;
+  out.warnings_ += warnings_ - seenWarnings;
+  out.dropped_ += dropped_;
+  return out;
+}
+
 void Diagnostics::append(Diagnostics&& later) {
   errors_ += later.errors_;
   warnings_ += later.warnings_;

@@ -1,69 +1,195 @@
-// kerf check FILE... : diagnostics, geometric findings and the part's numbers, for each file.
+// kerf check FILE|DIR... : diagnostics, geometric findings and the part's numbers, for each file;
+// folders are walked, files are checked on every core, and the exit code is the worst one.
 #include "commands.h"
 #include "file_io.h"
 #include "load.h"
 
+#include "kerf/converter/ci_report.h"
 #include "kerf/converter/report.h"
 #include "kerf/converter/summary.h"
+#include "kerf/geometry/parallel.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <filesystem>
 #include <iostream>
+#include <memory>
+#include <thread>
 
 namespace kerf::cli {
 
+namespace {
+
+/// The extensions a folder is searched for (case does not matter); a file named on the command
+/// line is read whatever its name. docs/ci.md lists them.
+constexpr std::string_view kProgramExtensions[] = {".nc",  ".ngc", ".iso", ".gcode", ".tap", ".cnc",
+                                                   ".mpf", ".ptp", ".eia", ".3b",    ".dxf"};
+
+bool isProgramName(const std::filesystem::path& p) {
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return std::find(std::begin(kProgramExtensions), std::end(kProgramExtensions), ext) != std::end(kProgramExtensions);
+}
+
+/// The files to check: each argument, or for a folder the programs under it, in name order.
+/// False after saying what is wrong.
+bool expandInputs(const std::vector<std::string>& args, std::vector<std::string>& files) {
+  for (const std::string& a : args) {
+    std::error_code ec;
+    if (a == "-" || !std::filesystem::is_directory(a, ec)) {
+      files.push_back(a);
+      continue;
+    }
+    std::vector<std::string> found;
+    std::filesystem::recursive_directory_iterator it(a, std::filesystem::directory_options::skip_permission_denied, ec);
+    for (; !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+      if (it->is_regular_file(ec) && isProgramName(it->path())) found.push_back(it->path().string());
+    if (ec) {
+      reportError(a + ": the folder cannot be read: " + ec.message());
+      return false;
+    }
+    std::sort(found.begin(), found.end());
+    files.insert(files.end(), found.begin(), found.end());
+  }
+  return true;
+}
+
+/// What checking one file gave: the text for the terminal and what a report needs.
+struct Outcome {
+  std::string out, err;  ///< standard output and standard error, printed in the files' order
+  int exit = kExitOk;
+  converter::Diagnostics shown;  ///< what the terminal shows (and the reports carry)
+  std::string failure;           ///< why the file was not read
+  // The diagnostics point into the sources: they live as long as the outcome.
+  std::unique_ptr<converter::SourceFile> source, upperSource, machineSource;
+  std::size_t errors = 0, warnings = 0;
+};
+
+Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
+  Outcome o;
+  // The text is needed again only for quotes, except by --trace (it prints each move's words).
+  std::optional<Loaded> in = loadQuietly(a.common, file, {.quoteOnly = !a.trace, .summary = true}, o.failure);
+  if (!in) {
+    o.exit = kExitUsage;
+    o.err = "kerf: error: " + o.failure + "\n";
+    return o;
+  }
+  converter::Pipeline& p = in->pipeline;
+  o.shown = shownDiagnostics(p.diags, a.common.checks);
+  o.errors = p.diags.errorCount();
+  o.warnings = p.diags.warningCount();
+  if (!p.read) {  // the machine profile is wrong: its diagnostics say why
+    o.exit = kExitUsage;
+    o.failure = "the machine profile cannot be used";
+    o.err = diagnosticsText(o.shown, a.common.checks);
+  } else {
+    o.exit = verdictExit(p);
+    const std::string format = a.json ? "json" : a.format;
+    if (a.trace) {
+      o.out = converter::formatTrace(p.toolpath, p.diags);
+    } else if (format == "json") {
+      o.out = converter::checkReportJson(displayName(file), *p.summary, o.shown, p.drawing ? &*p.drawing : nullptr,
+                                         p.wires.empty() ? nullptr : &p.wires);
+      while (!o.out.empty() && o.out.back() == '\n') o.out.pop_back();
+      if (!many) o.out += "\n";
+    } else if (format == "text") {
+      o.err = diagnosticsText(o.shown, a.common.checks);
+      if (!a.common.checks.quiet) o.out = converter::formatSummaryText(displayName(file), *p.summary, o.shown);
+    }
+  }
+  // The quotes of a report read the text again (a source may have given it back): keep the sources.
+  o.source = std::move(p.source);
+  o.upperSource = std::move(p.upperSource);
+  o.machineSource = std::move(p.machineSource);
+  return o;
+}
+
+}  // namespace
+
 CLI::App* addCheckCommand(CLI::App& app, CheckArgs& a) {
-  CLI::App* cmd = app.add_subcommand("check", "verify programs: diagnostics, geometric findings, summary");
+  CLI::App* cmd = app.add_subcommand(
+      "check", "verify programs (files, or folders of them): diagnostics, geometric findings, summary");
   addCommonOptions(*cmd, a.common, true);
-  auto* json =
-      cmd->add_flag("--json", a.json, "machine-readable output on stdout (an array when several files are checked)");
+  auto* format = cmd->add_option("--format", a.format,
+                                 "text (default), json, sarif (SARIF 2.1.0 for code scanning) or junit (JUnit XML), on "
+                                 "stdout; sarif and junit make one report of every file")
+                     ->check(CLI::IsMember({"text", "json", "sarif", "junit"}));
+  auto* json = cmd->add_flag("--json", a.json,
+                             "the same as --format json: machine-readable output on stdout (an array when several "
+                             "files are checked)")
+                   ->excludes(format);
   cmd->add_flag(
          "--trace", a.trace,
          "the toolpath and every diagnostic in a stable fixed-decimal text on stdout (golden files, bug reports)")
-      ->excludes(json);
+      ->excludes(json)
+      ->excludes(format);
   return cmd;
 }
 
 int runCheck(const CheckArgs& a) {
-  int worst = kExitOk;
-  std::string jsonArray;
-  const bool many = a.common.input.files.size() > 1;
+  std::vector<std::string> files;
+  if (!expandInputs(a.common.input.files, files)) return kExitUsage;
+  if (files.empty()) {
+    reportError("no programs to check: the folders hold no file named " + std::string(".nc, .ngc, .iso, ...") +
+                " (docs/ci.md lists the extensions)");
+    return kExitUsage;
+  }
+  const bool many = files.size() > 1;
   if (a.common.input.upper && many) {
     reportError("--upper pairs one lower program with one upper program: give a single file with it");
     return kExitUsage;
   }
-  if (std::count(a.common.input.files.begin(), a.common.input.files.end(), "-") > 1) {
+  if (std::count(files.begin(), files.end(), "-") > 1) {
     reportError("standard input ('-') can be read only once");
     return kExitUsage;
   }
-  for (const std::string& file : a.common.input.files) {
-    // The text is needed again only for quotes, except by --trace (it prints each move's words).
-    std::optional<Loaded> in = load(a.common, file, {.quoteOnly = !a.trace, .summary = true});
-    if (!in) {
-      worst = std::max(worst, kExitUsage);
-      continue;
-    }
-    const converter::Pipeline& p = in->pipeline;
-    const converter::Summary& summary = *p.summary;  // load() asked for it, and the program was read
-    const converter::Diagnostics shown = capped(p.diags, a.common.checks.maxDiagnostics);
-    if (a.trace) {
-      std::cout << converter::formatTrace(p.toolpath, p.diags);
-    } else if (a.json) {
-      std::string one = converter::checkReportJson(displayName(file), summary, shown, p.drawing ? &*p.drawing : nullptr,
-                                                   p.wires.empty() ? nullptr : &p.wires);
-      while (!one.empty() && one.back() == '\n') one.pop_back();
-      if (many)
-        jsonArray += (jsonArray.empty() ? "[\n" : ",\n") + one;
-      else
-        std::cout << one << "\n";
-    } else {
-      std::cerr << converter::formatDiagnosticsText(shown);
-      std::cout << converter::formatSummaryText(displayName(file), summary, shown);
-    }
-    worst = std::max(worst, verdictExit(p));
+  // Every file on its own core; each one's output is kept and printed in the files' order.
+  std::vector<Outcome> outcomes(files.size());
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < files.size();) outcomes[i] = checkOne(a, files[i], many);
+  };
+  const std::size_t threads = std::min<std::size_t>(geometry::workerCount(), files.size());
+  {
+    std::vector<std::jthread> pool;
+    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+    work();
   }
-  if (a.json && many) std::cout << (jsonArray.empty() ? "[" : jsonArray) << "\n]\n";
+
+  const std::string format = a.json ? "json" : a.format;
+  int worst = kExitOk;
+  std::size_t withErrors = 0, withWarnings = 0, errors = 0, warnings = 0, unread = 0;
+  std::string jsonArray;
+  std::vector<converter::CheckedFile> report;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const Outcome& o = outcomes[i];
+    worst = std::max(worst, o.exit);
+    errors += o.errors;
+    warnings += o.warnings;
+    withErrors += o.errors > 0;
+    withWarnings += o.warnings > 0;
+    unread += !o.failure.empty();
+    report.push_back({displayName(files[i]), &o.shown, o.failure});
+    std::cerr << o.err;
+    if (format == "json" && many && !a.trace) {
+      if (!o.out.empty()) jsonArray += (jsonArray.empty() ? "[\n" : ",\n") + o.out;
+    } else {
+      std::cout << o.out;
+    }
+  }
+  if (format == "json" && many && !a.trace) std::cout << (jsonArray.empty() ? "[" : jsonArray) << "\n]\n";
+  if (format == "sarif") std::cout << converter::sarifLog(report, KERF_VERSION);
+  if (format == "junit") std::cout << converter::junitReport(report);
+  if (many && !a.common.checks.quiet) {
+    const char* verdict = worst == kExitUsage ? "unreadable files" : worst == kExitErrors ? "errors" : "ok";
+    std::cerr << "kerf: " << files.size() << " files checked: " << withErrors << " with errors, " << withWarnings
+              << " with warnings" << (unread ? ", " + std::to_string(unread) + " not read" : std::string()) << "; "
+              << errors << (errors == 1 ? " error, " : " errors, ") << warnings
+              << (warnings == 1 ? " warning" : " warnings") << "; worst: " << verdict << "\n";
+  }
   return worst;
 }
 

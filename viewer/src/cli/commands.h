@@ -16,7 +16,8 @@ namespace kerf::cli {
 
 struct CheckArgs {
   CommonOptions common;
-  bool json = false;
+  std::string format = "text";  ///< --format text|json|sarif|junit
+  bool json = false;            ///< --json: --format json
   bool trace = false;
 };
 CLI::App* addCheckCommand(CLI::App& app, CheckArgs& args);

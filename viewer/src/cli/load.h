@@ -36,11 +36,25 @@ struct LoadNeeds {
 /// printed, when a file cannot be read or the machine profile is wrong (exit 2).
 std::optional<Loaded> load(const CommonOptions& options, const std::string& file, LoadNeeds needs = {});
 
+/// load() without a word on the terminal: nothing with `failure` saying why when a file cannot be
+/// read or an option is wrong; a pipeline with read == false when the machine profile is wrong
+/// (its diagnostics say why).
+std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::string& file, LoadNeeds needs,
+                                  std::string& failure);
+
 /// For the commands that take one program: load() it and print its diagnostics, as check does.
 std::optional<Loaded> loadOne(const CommonOptions& options, LoadNeeds needs = {});
 
 /// The first `cap` diagnostics, with every one still counted.
 converter::Diagnostics capped(const converter::Diagnostics& all, std::size_t cap);
+
+/// What the terminal shows of `all`: errors only under --quiet, at most --max-diagnostics, every
+/// one still counted.
+converter::Diagnostics shownDiagnostics(const converter::Diagnostics& all, const CheckOptions& options);
+
+/// The shown diagnostics as text, coloured by severity when --color asks for it (auto: standard
+/// error is a terminal and NO_COLOR is not set).
+std::string diagnosticsText(const converter::Diagnostics& shown, const CheckOptions& options);
 
 /// The diagnostics on standard error, compiler style, at most options.checks.maxDiagnostics.
 void printDiagnostics(const converter::Diagnostics& diags, const CommonOptions& options);

@@ -1,5 +1,7 @@
 #include "options.h"
 
+#include "kerf/converter/ci_report.h"
+
 #include "file_io.h"
 #include "kerf/converter/dialect.h"
 #include "kerf/converter/machine.h"
@@ -54,7 +56,7 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
 
   // Reading: what the words mean.
   const std::string reading = "Reading (default: the machine profile's, else the program's evidence)";
-  cmd.add_option("--format", o.reading.format, "input format; auto: detected from the content (docs/formats.md)")
+  cmd.add_option("--input-format", o.reading.format, "input format; auto: detected from the content (docs/formats.md)")
       ->check(CLI::IsMember({"auto", "iso", "3b", "dxf", "curve"}))
       ->group(reading);
   cmd.add_option("--start", o.reading.start, "where a 3B program starts, X,Y in mm (default 0,0)")->group(reading);
@@ -123,6 +125,16 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
   cmd.add_option("--max-diagnostics", o.checks.maxDiagnostics, "show at most this many diagnostics (default 50)")
       ->check(CLI::Range(1, 100000))
       ->group(checks);
+  cmd.add_option("-W", o.checks.codeOptions,
+                 "-Wno-K0604 silences a warning or note, -Werror=K0650 makes a code an error, -Werror every warning "
+                 "(as compilers take them; errors cannot be silenced)")
+      ->allow_extra_args(false)
+      ->group(checks);
+  cmd.add_flag("-q,--quiet", o.checks.quiet, "print errors only")->group(checks);
+  cmd.add_option("--color", o.checks.color,
+                 "colour the diagnostics: auto (on a terminal, unless NO_COLOR is set), always, never")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->group(checks);
 
   // Sampling of arcs.
   auto* step = cmd.add_option("--step", o.sampling.step, "arc interpolation step k in mm (chord length; default 0.1)")
@@ -159,6 +171,35 @@ std::string curveText(const InputOptions& input) {
   std::string text = input.curve.value_or("");
   if (input.range) text += "; t = " + *input.range;
   return text;
+}
+
+bool diagnosticPolicy(const CheckOptions& options, converter::DiagnosticPolicy& out, std::string& error) {
+  using converter::Code;
+  out = {};
+  for (const std::string& w : options.codeOptions) {
+    if (w == "error") {
+      out.warningsAreErrors = true;
+      continue;
+    }
+    const bool silence = w.starts_with("no-");
+    const bool promote = w.starts_with("error=");
+    const std::string id = silence ? w.substr(3) : promote ? w.substr(6) : std::string();
+    const auto& codes = converter::diagnosticCodes();
+    const auto known =
+        std::find_if(codes.begin(), codes.end(), [&](const converter::CodeInfo& c) { return c.id == id; });
+    if ((!silence && !promote) || known == codes.end()) {
+      error =
+          "-W" + w + ": give -Wno-CODE, -Werror=CODE or -Werror, with a code that docs/diagnostics.md lists (K0604)";
+      return false;
+    }
+    const auto code = static_cast<Code>(std::stoi(id.substr(1)));
+    if (silence && known->severity == converter::Severity::Error) {
+      error = "-W" + w + ": " + id + " (" + known->name + ") is an error, and errors cannot be silenced";
+      return false;
+    }
+    (silence ? out.silenced : out.promoted).push_back(code);
+  }
+  return true;
 }
 
 bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, std::string& error) {

@@ -55,7 +55,13 @@ struct CheckOptions {
   std::optional<double> maxTaper;  ///< degrees
   std::optional<double> uvRange;   ///< mm
   std::size_t maxDiagnostics = 50;
+  std::vector<std::string> codeOptions;  ///< -W values as given: no-K0604, error=K0650, error
+  bool quiet = false;                    ///< --quiet: errors only
+  std::string color = "auto";            ///< --color auto|always|never (auto: a terminal, and no NO_COLOR)
 };
+
+/// The -W values as a policy; false after saying what is wrong (an unknown code, an error silenced).
+bool diagnosticPolicy(const CheckOptions& options, converter::DiagnosticPolicy& out, std::string& error);
 
 struct SamplingOptions {
   static constexpr double kDefaultStep = 0.1;  ///< mm: the seed's finest interpolation step

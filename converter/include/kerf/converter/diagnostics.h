@@ -160,6 +160,17 @@ struct Diagnostic {
   std::optional<geometry::Vec3> point;
 };
 
+/// What the user asked of the codes, as compilers take it (-Wno-K0604, -Werror=K0650, -Werror).
+/// Every command applies it to the pipeline's findings, so they all say the same.
+struct DiagnosticPolicy {
+  std::vector<Code> silenced;      ///< -Wno-CODE: a warning or note not reported
+  std::vector<Code> promoted;      ///< -Werror=CODE: reported as an error
+  bool warningsAreErrors = false;  ///< -Werror: every warning is an error
+  [[nodiscard]] bool empty() const { return silenced.empty() && promoted.empty() && !warningsAreErrors; }
+  /// The severity d is reported with, or nothing when it is silenced. Errors are never silenced.
+  [[nodiscard]] std::optional<Severity> levelOf(const Diagnostic& d) const;
+};
+
 /// Collects diagnostics up to a cap; counts every one.
 class Diagnostics {
  public:
@@ -180,6 +191,9 @@ class Diagnostics {
   [[nodiscard]] bool hasErrors() const { return errors_ > 0; }
   /// Stable order for output: by file position, then as reported.
   void sortByPosition();
+  /// The same diagnostics under a policy: silenced ones gone, promoted ones errors. Those dropped
+  /// past the cap were never seen, so they keep their severities in the counts.
+  [[nodiscard]] Diagnostics under(const DiagnosticPolicy& policy) const;
 
  private:
   std::size_t cap_;

@@ -12,6 +12,11 @@
 int main(int argc, char** argv) {
   using namespace kerf::cli;
   CLI::App app{"Kerf: verify, explain and convert wire-EDM NC programs"};
+  app.name("kerf");  // the help's usage line, whatever path the program was started by
+  app.footer(
+      "Exit status: 0 no errors (warnings and notes allowed), 1 a program has errors, 2 a usage or file problem; "
+      "kerf check of several files exits with the worst.\n"
+      "kerf COMMAND --help gives a command's options; docs/diagnostics.md lists the K codes.");
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("kerf ") + KERF_VERSION);
 

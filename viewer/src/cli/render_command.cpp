@@ -12,7 +12,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& a) {
   addCommonOptions(*cmd, a.common, false);
   const std::string g = "Picture";
   cmd->add_option("-o,--output", a.output, "PNG file to write")->required()->group(g);
-  cmd->add_option("--view", a.view, "iso, top, front or side")
+  cmd->add_option("--view", a.view, "iso (default), top, front or side")
       ->check(CLI::IsMember({"iso", "top", "front", "side"}))
       ->group(g);
   cmd->add_option("--size", a.size, "WIDTHxHEIGHT in pixels (default 800x600)")->group(g);

@@ -132,8 +132,11 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
     out += "  read for the " + s.reading.machine + " machine: integers in " + integerUnitName(s.reading.integerUnit) +
            ", I J " + arcCentreName(s.reading.arcCentre) + "\n";
   out += std::string(s.format == InputFormat::ThreeB ? "  records " : "  blocks ") + std::to_string(s.blocks) +
-         ", moves " + std::to_string(s.moves) + " (" + std::to_string(s.cutMoves) + " cut: " + plural(s.lines, "line") +
-         ", " + plural(s.arcs, "arc") + "; " + std::to_string(s.rapidMoves) + " rapid)\n";
+         ", moves " + std::to_string(s.moves) + " (" + std::to_string(s.cutMoves) + " cut: " +
+         (s.taperProgram ? "lower " + plural(s.lines, "line") + ", " + plural(s.arcs, "arc") + ", upper " +
+                               plural(s.upperLines, "line") + ", " + plural(s.upperArcs, "arc")
+                         : plural(s.lines, "line") + ", " + plural(s.arcs, "arc")) +
+         "; " + std::to_string(s.rapidMoves) + " rapid)\n";
   out += "  cut length " + mm(s.cutLength) + " mm, rapid length " + mm(s.rapidLength) + " mm\n";
   if (!s.bounds.empty())
     out += "  bounds X " + mm(s.bounds.min.x()) + " .. " + mm(s.bounds.max.x()) + ", Y " + mm(s.bounds.min.y()) +
@@ -288,6 +291,10 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
   sum["rapid_moves"] = s.rapidMoves;
   sum["lines"] = s.lines;
   sum["arcs"] = s.arcs;
+  if (s.taperProgram) {
+    sum["upper_lines"] = s.upperLines;
+    sum["upper_arcs"] = s.upperArcs;
+  }
   sum["cut_length_mm"] = s.cutLength;
   sum["rapid_length_mm"] = s.rapidLength;
   if (!s.bounds.empty()) sum["bounds_mm"] = {{"min", vec(s.bounds.min)}, {"max", vec(s.bounds.max)}};

@@ -99,7 +99,9 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
   s.moves = toolpath.moves.size();
   // The cut moves sampled where they lie, among the rapids: no copy of the path.
   geometry::PathSampler sampler(sampling, nullptr);
-  for (const Move& m : toolpath.moves) {
+  s.taperProgram = toolpath.isTaper();
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    const Move& m = toolpath.moves[i];
     if (!m.isCut()) {
       ++s.rapidMoves;
       s.rapidLength += m.lower.length();
@@ -110,6 +112,7 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
       ++s.arcs;
     else
       ++s.lines;
+    if (s.taperProgram) ++(toolpath.upper[i].isArc() ? s.upperArcs : s.upperLines);
     s.cutLength += m.lower.length();
     s.bounds.add(m.lower.bounds());
     sampler.add(m.lower);

@@ -18,6 +18,11 @@
 #   check, mesh 1,000,000 triangles, draw 1024x768 with OSMesa, PNG) against f3d drawing the same
 #   mesh from a ready STL (kerf export, not timed) at 1024x768 under xvfb-run; f3d alone is timed
 #   (inside xvfb-run, so the X server's start is not counted against it).
+#   kerf check of a folder of 1,000 programs (the real corpus's programs and drawings copied in turn,
+#   KERF_COMPARE_REALWORLD points at it; KERF_COMPARE_BATCH=0 skips it) in one call against 1,000
+#   separate calls (issue 14): wall time.
+# KERF_COMPARE_STARS (a list of sizes, " " for none), KERF_COMPARE_RENDER=0, KERF_COMPARE_READER=0,
+# KERF_COMPARE_SPIRAL=0 and KERF_COMPARE_BATCH=0 leave pairs out.
 set -euo pipefail
 build=${1:?usage: compare.sh BUILD_DIR [R]}
 runs=${2:-5}
@@ -52,7 +57,7 @@ stats_pair() {  # label, file of "seconds KiB" lines -> "min / median / max s, m
   read -r _ m _ < <(cut -d' ' -f2 "$1" | stats)
   printf "%s / %s / %s s, %.0f MiB" "$a" "$b" "$c" "$(awk -v k="$m" 'BEGIN {print k / 1024}')"
 }
-if command -v f3d > /dev/null && command -v xvfb-run > /dev/null && [[ -x "$build/tests/kerf_bench_render" ]]; then
+if [[ "${KERF_COMPARE_RENDER:-1}" != 0 ]] && command -v f3d > /dev/null && command -v xvfb-run > /dev/null && [[ -x "$build/tests/kerf_bench_render" ]]; then
   echo "# kerf render from the NC file against f3d from a ready STL, 1,000,000 triangles, 1024x768"
   "$build/tests/kerf_bench_render" --repeat 1 --write "$work/part.nc" > /dev/null
   "$build/viewer/kerf" export "$work/part.nc" --mesh-tolerance 0.002 -o "$work/part.stl" 2> /dev/null
@@ -71,7 +76,7 @@ else
   echo "compare.sh: f3d or xvfb-run is not installed (apt-get install f3d xvfb): the picture pair is skipped" >&2
 fi
 
-if command -v rs274 > /dev/null; then
+if [[ "${KERF_COMPARE_READER:-1}" != 0 ]] && command -v rs274 > /dev/null; then
   echo "# kerf check against rs274 -g, 6.1 MB program (200,000 blocks): wall s, peak MiB"
   "$build/tests/kerf_bench" --blocks 200000 --write "$work/program.ngc" > /dev/null
   bytes=$(stat -c %s "$work/program.ngc")
@@ -113,4 +118,27 @@ if [[ "$spiral" != 0 ]]; then
   /usr/bin/time -f "%e %M" -o "$work/t" "$build/viewer/kerf" check "$work/spiral.nc" > /dev/null 2>&1
   read -r t m < "$work/t"
   printf "spiral %d bytes: kerf check %s s, %d KiB (%.2f GB)\n" "$bytes" "$t" "$m" "$(awk -v k="$m" 'BEGIN {print k * 1024 / 1e9}')"
+fi
+
+realworld=${KERF_COMPARE_REALWORLD:-$here/../../../shared/realworld}
+if [[ "${KERF_COMPARE_BATCH:-1}" != 0 && -d "$realworld" ]]; then
+  echo "# kerf check of a folder of 1,000 programs (the real corpus copied in turn): one call against 1,000 calls, wall s"
+  mapfile -t sources < <(find "$realworld" -type f \( -iname '*.nc' -o -iname '*.ngc' -o -iname '*.iso' -o -iname '*.gcode' \
+    -o -iname '*.dxf' \) | sort)
+  mkdir -p "$work/batch"
+  for ((i = 0; i < 1000; ++i)); do
+    src=${sources[i % ${#sources[@]}]}
+    cp "$src" "$work/batch/$(printf %04d "$i")_$(basename "$src")"
+  done
+  : > "$work/bt" && : > "$work/st"
+  for ((r = 0; r < runs; ++r)); do
+    /usr/bin/time -f "%e" -o "$work/t" "$build/viewer/kerf" check "$work/batch" --quiet > /dev/null 2>&1 || true
+    cat "$work/t" >> "$work/bt"
+    start=$(date +%s.%N)
+    for f in "$work/batch"/*; do "$build/viewer/kerf" check "$f" --quiet > /dev/null 2>&1 || true; done
+    awk -v a="$(date +%s.%N)" -v b="$start" 'BEGIN {printf "%.3f\n", a - b}' >> "$work/st"
+  done
+  printf "batch of 1000 files: one call %s   1000 calls %s   one/many %.2f\n" "$(stats < "$work/bt" | tr ' ' '/')" \
+    "$(stats < "$work/st" | tr ' ' '/')" \
+    "$(awk -v a="$(stats < "$work/bt" | cut -d' ' -f2)" -v b="$(stats < "$work/st" | cut -d' ' -f2)" 'BEGIN {print a / b}')"
 fi

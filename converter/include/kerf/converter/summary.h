@@ -102,8 +102,11 @@ struct Summary {
   std::size_t moves = 0;
   std::size_t cutMoves = 0;
   std::size_t rapidMoves = 0;
-  std::size_t lines = 0;
+  std::size_t lines = 0;  ///< cut moves: lines and arcs of the lower contour (the only one of a 2-axis program)
   std::size_t arcs = 0;
+  std::size_t upperLines = 0;  ///< a taper program: lines and arcs of the upper contour's cut moves
+  std::size_t upperArcs = 0;
+  bool taperProgram = false;   ///< the program has an upper contour (Toolpath::isTaper)
   double cutLength = 0.0;    ///< mm
   double rapidLength = 0.0;  ///< mm
   geometry::Box bounds;      ///< of the cut path

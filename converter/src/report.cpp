@@ -35,8 +35,9 @@ std::string plural(std::size_t n, const char* word) {
 json vec(const Vec2& p) { return json::array({p.x(), p.y()}); }
 
 std::string samplingText(const geometry::Sampling& s) {
-  return s.mode == geometry::SamplingMode::Step ? "step k = " + formatFixed(s.value, 6) + " mm"
-                                                : "tolerance " + formatFixed(s.value, 6) + " mm";
+  // Six decimals, or the value in scientific notation when those would show it as 0.000000.
+  const std::string value = s.value >= 1e-6 ? formatFixed(s.value, 6) : sci(s.value);
+  return s.mode == geometry::SamplingMode::Step ? "step k = " + value + " mm" : "tolerance " + value + " mm";
 }
 json samplingJson(const geometry::Sampling& s) {
   return {{"mode", s.mode == geometry::SamplingMode::Step ? "step" : "tolerance"}, {"value", s.value}};

@@ -25,6 +25,22 @@ std::vector<std::string> builtinMachineNames() {
   return names;
 }
 
+namespace {
+
+/// A length that must be greater than zero, said in words (CLI::PositiveNumber prints its range
+/// to the largest double: 300 digits).
+const CLI::Validator kPositiveLength(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !std::isfinite(v) || v <= 0)
+        return "must be a length greater than 0 mm, not " + text;
+      return {};
+    },
+    "MM > 0");
+
+}  // namespace
+
 void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
   // Input.
   // The file is required unless --curve stands in for it (checked once everything is parsed).
@@ -108,7 +124,7 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
   cmd.add_option("--lower-z", o.reading.lowerZ, "z of the lower contour's plane, mm (default 0)")->group(reading);
   auto* upperZ = cmd.add_option("--upper-z", o.reading.upperZ, "z of the upper contour's plane, mm")->group(reading);
   auto* thickness = cmd.add_option("--thickness", o.reading.thickness, "upper minus lower plane, mm")
-                        ->check(CLI::PositiveNumber)
+                        ->check(kPositiveLength)
                         ->group(reading);
   upperZ->excludes(thickness);
   cmd.add_option("--program-z", o.reading.programZ, "z of the programmed contour (taper-angle, xyuv-rel), mm")
@@ -120,7 +136,7 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
       ->check(CLI::Range(0.0, 89.0))
       ->group(checks);
   cmd.add_option("--uv-range", o.checks.uvRange, "largest U/V travel from the lower guide, mm")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositiveLength)
       ->group(checks);
   cmd.add_option("--max-diagnostics", o.checks.maxDiagnostics, "show at most this many diagnostics (default 50)")
       ->check(CLI::Range(1, 100000))
@@ -138,11 +154,11 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
 
   // Sampling of arcs.
   auto* step = cmd.add_option("--step", o.sampling.step, "arc interpolation step k in mm (chord length; default 0.1)")
-                   ->check(CLI::PositiveNumber)
+                   ->check(kPositiveLength)
                    ->group("Sampling");
   auto* tol = cmd.add_option("--tolerance", o.sampling.tolerance,
                              "arc chord tolerance in mm (max deviation), instead of --step")
-                  ->check(CLI::PositiveNumber)
+                  ->check(kPositiveLength)
                   ->group("Sampling");
   step->excludes(tol);
 }

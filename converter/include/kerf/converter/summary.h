@@ -106,10 +106,10 @@ struct Summary {
   std::size_t arcs = 0;
   std::size_t upperLines = 0;  ///< a taper program: lines and arcs of the upper contour's cut moves
   std::size_t upperArcs = 0;
-  bool taperProgram = false;   ///< the program has an upper contour (Toolpath::isTaper)
-  double cutLength = 0.0;    ///< mm
-  double rapidLength = 0.0;  ///< mm
-  geometry::Box bounds;      ///< of the cut path
+  bool taperProgram = false;  ///< the program has an upper contour (Toolpath::isTaper)
+  double cutLength = 0.0;     ///< mm
+  double rapidLength = 0.0;   ///< mm
+  geometry::Box bounds;       ///< of the cut path
   geometry::Sampling sampling;
   geometry::PathSampleStats points;   ///< the cut path sampled at `sampling`
   std::optional<TaperSummary> taper;  ///< taper programs whose heights are known

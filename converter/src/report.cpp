@@ -34,6 +34,29 @@ std::string plural(std::size_t n, const char* word) {
 }
 json vec(const Vec2& p) { return json::array({p.x(), p.y()}); }
 
+/// JSON output's stated precision (docs/formats.md): lengths and angles to 10 decimals (0.1 nm,
+/// 1e-10 degree), so arithmetic noise (3.55e-15 for 0, 90.00000000000001 for 90) does not reach
+/// the report; a relative error keeps 4 significant digits, as the text shows it.
+void roundNumbers(json& j, bool relative = false) {
+  if (j.is_number_float()) {
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) return;
+    double r = v;
+    if (relative) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.3e", v);
+      r = std::strtod(buf, nullptr);
+    } else {
+      if (std::abs(v) < 1e5) r = std::round(v * 1e10) / 1e10;  // larger doubles hold fewer decimals anyway
+    }
+    j = r == 0.0 ? 0.0 : r;  // no -0
+  } else if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it) roundNumbers(it.value(), it.key().ends_with("relative_error"));
+  } else if (j.is_array()) {
+    for (json& e : j) roundNumbers(e, relative);
+  }
+}
+
 std::string samplingText(const geometry::Sampling& s) {
   // Six decimals, or the value in scientific notation when those would show it as 0.000000.
   const std::string value = s.value >= 1e-6 ? formatFixed(s.value, 6) : sci(s.value);
@@ -315,6 +338,7 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
                     {"surface_area_mm2", t.area},          {"patches", t.patches}};
   }
   j["summary"] = std::move(sum);
+  roundNumbers(j);
   return j.dump(2) + "\n";
 }
 
@@ -540,6 +564,7 @@ std::string explainJson(const SourceFile& source, const Toolpath& toolpath, cons
     moves.push_back(std::move(e));
   }
   j["moves"] = std::move(moves);
+  roundNumbers(j);
   return j.dump(2) + "\n";
 }
 

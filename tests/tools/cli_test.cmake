@@ -163,6 +163,11 @@ elseif(CASE STREQUAL "json_reports")
 elseif(CASE STREQUAL "taper_commands")
   set(punch "${SOURCE}/samples/taper_punch_2deg.nc")
   set(circle "${SOURCE}/samples/circle_under_square.nc")
+  # JSON is rounded at its stated precision (10 decimals): no 2.0000000000000004, no 1e-15 for 0.
+  run("${KERF}" explain "${punch}" --json)
+  string(REGEX MATCH "[0-9]\\.[0-9]*000000000[0-9]|[0-9]\\.[0-9]*999999999[0-9]|[0-9]e-1[0-9]" noise "${out}")
+  string(FIND "${out}" "slope_start_deg" slope)
+  expect("explain --json should carry no float noise, found '${noise}'" NOT noise AND NOT slope EQUAL -1)
   # The summary counts both contours: the colon sample's upper side has an arc where the lower has a line.
   run("${KERF}" check "${SOURCE}/samples/sodick_colon_bulge.nc")
   string(FIND "${out}" "(7 cut: lower 7 lines, 0 arcs, upper 6 lines, 1 arc; 0 rapid)" at)

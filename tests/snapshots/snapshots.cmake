@@ -30,9 +30,12 @@ kerf_snapshot_test(NAME taper_punch_iso_egl ARGS samples/taper_punch_2deg.nc ${s
 # The window under xvfb-run: text panel, 3D view, findings panel; a block selected, the wire shown.
 if(KERF_XVFB_RUN)
   kerf_snapshot_test(NAME view_taper_punch WINDOW
-                     ARGS samples/taper_punch_2deg.nc --size 900x560 --frames 4 --line 16 --colour-by-slope)
+                     ARGS samples/taper_punch_2deg.nc --size 900x560 --frames 4 --line 16 --colour-by slope)
   kerf_snapshot_test(NAME view_punch_playback WINDOW
                      ARGS samples/punch_outline.nc --size 900x560 --frames 4 --playback 0.4)
+  # --line with --playback: the block asked for stays selected (line 14), the wire is drawn halfway.
+  kerf_snapshot_test(NAME view_line_with_playback WINDOW
+                     ARGS samples/taper_punch_2deg.nc --size 900x560 --frames 4 --line 14 --playback 0.5)
 else()
   message(WARNING "xvfb-run (package xvfb) not found: the window snapshot tests are not built")
 endif()

@@ -224,6 +224,10 @@ elseif(CASE STREQUAL "taper_commands")
   string(FIND "${err}" "[K0217]" at)
   expect("two files without heights" rc EQUAL 1 AND NOT at EQUAL -1)
 elseif(CASE STREQUAL "picture_commands")
+  # view --line on a line with no move (a comment) is said, with the nearest move lines, before any window opens.
+  run("${KERF}" view "${SOURCE}/samples/taper_punch_2deg.nc" --line 3 --frames 1)
+  string(FIND "${err}" "--line 3: no move is programmed on that line; the nearest moves are on line 12" at)
+  expect("view --line 3 (a comment) should be refused with the nearest move line" rc EQUAL 2 AND NOT at EQUAL -1)
   set(punch "${SOURCE}/samples/taper_punch_2deg.nc")
   set(headless ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY)
   # Same input, same bytes, with no display.

@@ -85,7 +85,8 @@ struct ViewArgs {
   std::optional<std::size_t> line;
   double playback = -1;
   MeshOptions mesh;
-  bool colourBy = false;
+  bool colourBy = false;     ///< start with the surface coloured by slope
+  std::string colourByName;  ///< --color-by slope, as render spells it
   bool coarse = false;
 };
 CLI::App* addViewCommand(CLI::App& app, ViewArgs& args);

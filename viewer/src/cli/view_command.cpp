@@ -21,7 +21,11 @@ CLI::App* addViewCommand(CLI::App& app, ViewArgs& a) {
       ->group(g);
   cmd->add_flag("--coarse", a.coarse, "draw every frame as while the view moves (with --benchmark)")->group(g);
   addMeshOptions(*cmd, a.mesh, true);
-  cmd->add_flag("--color-by-slope,--colour-by-slope", a.colourBy, "start with the surface coloured by slope")->group(g);
+  // Spelt as render spells it; the earlier flag --color-by-slope stays, hidden, for scripts.
+  cmd->add_option("--color-by,--colour-by", a.colourByName, "start with the surface coloured by the wire slope")
+      ->check(CLI::IsMember({"slope"}))
+      ->group(g);
+  cmd->add_flag("--color-by-slope,--colour-by-slope", a.colourBy, "the same as --color-by slope")->group("");
   return cmd;
 }
 
@@ -29,7 +33,9 @@ int runView(const ViewArgs& a) {
   std::string error;
   const DrawCommands* draw = loadDrawCommands(error);
   if (!draw) return drawModuleMissing(error);
-  return draw->view(a);
+  ViewArgs args = a;
+  args.colourBy = a.colourBy || a.colourByName == "slope";
+  return draw->view(args);
 }
 
 }  // namespace kerf::cli

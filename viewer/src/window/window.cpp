@@ -45,6 +45,9 @@ struct State {
   bool scrollText = false;
   double playback = -1;  // fraction of the moves, < 0 hidden
   bool playing = false;
+  // The selection follows the playback wire once the user moves or plays it; a --line given with
+  // --playback keeps its block selected until then.
+  bool followPlayback = true;
   float step = 0.1f;
   geometry::PathSampleStats stepStats;
   std::vector<std::size_t> firstMoveOfLine;  // per source line (1-based), SIZE_MAX: none
@@ -172,10 +175,14 @@ void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
   ImGui::Separator();
   ImGui::TextUnformatted("Wire playback");
   float play = static_cast<float>(std::max(0.0, s.playback));
-  if (ImGui::SliderFloat("##play", &play, 0.0f, 1.0f, "%.3f")) s.playback = play;
+  if (ImGui::SliderFloat("##play", &play, 0.0f, 1.0f, "%.3f")) {
+    s.playback = play;
+    s.followPlayback = true;
+  }
   ImGui::SameLine();
   if (ImGui::Button(s.playing ? "stop" : "play")) {
     s.playing = !s.playing;
+    s.followPlayback = true;
     if (s.playback < 0) s.playback = 0;
   }
 
@@ -241,8 +248,10 @@ bool runWindow(const WindowRequest& request, std::string& error) {
     if (line < s.firstMoveOfLine.size() && s.firstMoveOfLine[line] == SIZE_MAX) s.firstMoveOfLine[line] = i;
   }
   if (request.selectLine && *request.selectLine < s.firstMoveOfLine.size() &&
-      s.firstMoveOfLine[*request.selectLine] != SIZE_MAX)
+      s.firstMoveOfLine[*request.selectLine] != SIZE_MAX) {
     selectMove(s, s.firstMoveOfLine[*request.selectLine]);
+    s.followPlayback = false;
+  }
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -383,7 +392,7 @@ bool runWindow(const WindowRequest& request, std::string& error) {
         renderer.setExtraLines(wireAt(*request.toolpath, request.scene->planes, s.playback), 3.0f);
         if (coarse) coarseRenderer.setExtraLines(wireAt(*request.toolpath, request.scene->planes, s.playback), 3.0f);
         lastPlaybackDrawn = s.playback;
-        if (s.playback >= 0 && !request.toolpath->moves.empty()) {
+        if (s.playback >= 0 && s.followPlayback && !request.toolpath->moves.empty()) {
           const auto m =
               std::min(request.toolpath->moves.size() - 1,
                        static_cast<std::size_t>(s.playback * static_cast<double>(request.toolpath->moves.size())));

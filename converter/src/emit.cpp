@@ -5,10 +5,13 @@ namespace kerf::converter {
 
 namespace {
 
-EmitOutput fromPoints(PointOutput&& p, const EmitRequest& request) {
+/// pairs: points4 (an X Y U V pair a line, in the profile's number format).
+EmitOutput fromPoints(PointOutput&& p, const EmitRequest& request, bool pairs = false) {
   EmitOutput out;
   out.text = std::move(p.text);
-  out.what = std::to_string(p.points) + " points (" + request.profile.name + " profile)";
+  out.what = pairs ? std::to_string(p.points) + " point pairs (points4: X Y U V, numbers as the " +
+                         request.profile.name + " profile writes them)"
+                   : std::to_string(p.points) + " points (" + request.profile.name + " profile)";
   const std::size_t capacity = request.maxPoints ? *request.maxPoints : request.profile.maxPoints.value_or(0);
   out.detail = std::string("; ") + (p.sampling.mode == geometry::SamplingMode::Step ? "step k = " : "tolerance ") +
                formatFixed(p.sampling.value, 6) + " mm" +
@@ -39,7 +42,7 @@ std::optional<EmitOutput> writePoints4(const Toolpath& toolpath, const SourceFil
   std::optional<PointOutput> p =
       emitPoints4(toolpath, source, request.profile, pointRequest(request), request.relativeUv, diags);
   if (!p) return std::nullopt;
-  return fromPoints(std::move(*p), request);
+  return fromPoints(std::move(*p), request, true);
 }
 
 const std::vector<Emitter>& emitters() {

@@ -376,6 +376,7 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
                 "use a coarser --step or --tolerance (points4 does not fit the step by itself)");
     return std::nullopt;
   }
+  PointOutput out;
   std::vector<Row> rows;
   rows.reserve(planned);
   for (const auto& [i, joins] : cuts) {
@@ -387,15 +388,21 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
       rows.push_back({l.x(), l.y(), uv.x(), uv.y()});
     };
     if (!joins) push(lo.start, up.start);
+    // The chords of n equal steps of an arc lie r (1 - cos(sweep / 2n)) from it at most.
+    for (const geometry::Segment* side : {&lo, &up})
+      if (side->isArc())
+        out.stats.maxDeviation =
+            std::max(out.stats.maxDeviation,
+                     side->radius * (1.0 - std::cos(std::abs(side->sweep) / (2.0 * static_cast<double>(n)))));
     // Both planes at the same t, so each pair is one position of the wire.
     for (std::size_t k = 1; k <= n; ++k) {
       const double t = static_cast<double>(k) / static_cast<double>(n);
       push(k == n ? lo.end : lo.pointAt(t), k == n ? up.end : up.pointAt(t));
     }
   }
-  PointOutput out;
   out.sampling = request.sampling;
   out.points = rows.size();
+  out.stats.points = rows.size();
   out.text = writeRows(rows, 4, profile);
   return out;
 }

@@ -168,6 +168,11 @@ elseif(CASE STREQUAL "taper_commands")
   string(REGEX MATCH "[0-9]\\.[0-9]*000000000[0-9]|[0-9]\\.[0-9]*999999999[0-9]|[0-9]e-1[0-9]" noise "${out}")
   string(FIND "${out}" "slope_start_deg" slope)
   expect("explain --json should carry no float noise, found '${noise}'" NOT noise AND NOT slope EQUAL -1)
+  # points4 names itself and its deviation: the R10 circle at step 0.5 lies 10 (1 - cos(step / 2R)) = 0.003 mm off its chords.
+  run("${KERF}" convert "${circle}" --to points4 --step 0.5 -o "${WORK}/circle.p4")
+  string(FIND "${err}" "point pairs (points4: X Y U V" named)
+  string(FIND "${err}" "max deviation 0.003012 mm" deviation)
+  expect("points4 should name itself and its true deviation" rc EQUAL 0 AND NOT named EQUAL -1 AND NOT deviation EQUAL -1)
   # The summary counts both contours: the colon sample's upper side has an arc where the lower has a line.
   run("${KERF}" check "${SOURCE}/samples/sodick_colon_bulge.nc")
   string(FIND "${out}" "(7 cut: lower 7 lines, 0 arcs, upper 6 lines, 1 arc; 0 rapid)" at)

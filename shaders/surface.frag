@@ -1,5 +1,5 @@
 #version 330 core
-// Two-sided headlight shading; optional colour ramp by slope; optional tint of flagged moves.
+// Two-sided headlight shading; optional colour ramp by slope; optional highlight of flagged moves.
 in vec3 vNormal;
 in float vSlope;
 flat in uint vFlags;
@@ -31,7 +31,11 @@ void main() {
     float span = max(uSlopeRange.y - uSlopeRange.x, 1e-6);
     base = ramp((vSlope - uSlopeRange.x) / span);
   }
-  if (uHighlight != 0 && (vFlags & 1u) != 0u) base = mix(base, vec3(0.95, 0.12, 0.10), 0.7);
+  // Moves with findings: tinted red; under the slope colours (whose top is red) they keep their
+  // colour and the others are greyed instead.
+  bool flagged = (vFlags & 1u) != 0u;
+  if (uHighlight != 0 && uColourBySlope == 0 && flagged) base = mix(base, vec3(0.95, 0.12, 0.10), 0.7);
+  if (uHighlight != 0 && uColourBySlope != 0 && !flagged) base = mix(base, vec3(0.62, 0.63, 0.66), 0.8);
   // A key light from the upper left, a fill from the right, both fixed to the eye.
   vec3 key = normalize(vec3(-0.45, 0.60, 0.65));
   vec3 fill = normalize(vec3(0.70, -0.15, 0.70));

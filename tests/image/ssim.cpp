@@ -8,10 +8,11 @@ namespace kerf::test {
 
 namespace {
 
-std::vector<float> luma(const ImageView& v) {
+/// One colour channel (0 red, 1 green, 2 blue) as floats.
+std::vector<float> channel(const ImageView& v, std::size_t c) {
   std::vector<float> y(static_cast<std::size_t>(v.width) * v.height);
   const auto& p = *v.rgba;
-  for (std::size_t i = 0; i < y.size(); ++i) y[i] = 0.299f * p[4 * i] + 0.587f * p[4 * i + 1] + 0.114f * p[4 * i + 2];
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] = p[4 * i + c];
   return y;
 }
 
@@ -49,28 +50,32 @@ SsimResult compareImages(const ImageView& a, const ImageView& b) {
   SsimResult r;
   if (a.width != b.width || a.height != b.height || a.width <= 0 || a.height <= 0) return r;
   const int w = a.width, h = a.height;
-  const std::vector<float> x = luma(a), y = luma(b);
-  std::vector<float> xx(x.size()), yy(x.size()), xy(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    xx[i] = x[i] * x[i];
-    yy[i] = y[i] * y[i];
-    xy[i] = x[i] * y[i];
+  // Per channel, the worst at each pixel: a change of colour that keeps the brightness (red for
+  // blue of the same luma) is a change.
+  r.map.assign(static_cast<std::size_t>(w) * h, 1.0f);
+  for (std::size_t c = 0; c < 3; ++c) {
+    const std::vector<float> x = channel(a, c), y = channel(b, c);
+    std::vector<float> xx(x.size()), yy(x.size()), xy(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      xx[i] = x[i] * x[i];
+      yy[i] = y[i] * y[i];
+      xy[i] = x[i] * y[i];
+    }
+    const std::vector<float> mx = blur(x, w, h), my = blur(y, w, h);
+    const std::vector<float> sxx = blur(xx, w, h), syy = blur(yy, w, h), sxy = blur(xy, w, h);
+    constexpr double c1 = (0.01 * 255) * (0.01 * 255), c2 = (0.03 * 255) * (0.03 * 255);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double ux = mx[i], uy = my[i];
+      const double vx = std::max(0.0, static_cast<double>(sxx[i]) - ux * ux);
+      const double vy = std::max(0.0, static_cast<double>(syy[i]) - uy * uy);
+      const double cov = static_cast<double>(sxy[i]) - ux * uy;
+      const double ssim = ((2 * ux * uy + c1) * (2 * cov + c2)) / ((ux * ux + uy * uy + c1) * (vx + vy + c2));
+      r.map[i] = std::min(r.map[i], static_cast<float>(ssim));
+    }
   }
-  const std::vector<float> mx = blur(x, w, h), my = blur(y, w, h);
-  const std::vector<float> sxx = blur(xx, w, h), syy = blur(yy, w, h), sxy = blur(xy, w, h);
-  constexpr double c1 = (0.01 * 255) * (0.01 * 255), c2 = (0.03 * 255) * (0.03 * 255);
-  r.map.resize(x.size());
   double total = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double ux = mx[i], uy = my[i];
-    const double vx = std::max(0.0, static_cast<double>(sxx[i]) - ux * ux);
-    const double vy = std::max(0.0, static_cast<double>(syy[i]) - uy * uy);
-    const double cov = static_cast<double>(sxy[i]) - ux * uy;
-    const double s = ((2 * ux * uy + c1) * (2 * cov + c2)) / ((ux * ux + uy * uy + c1) * (vx + vy + c2));
-    r.map[i] = static_cast<float>(s);
-    total += s;
-  }
-  r.meanSsim = total / static_cast<double>(x.size());
+  for (const float v : r.map) total += static_cast<double>(v);
+  r.meanSsim = total / static_cast<double>(r.map.size());
   r.error = 0;
   for (int ty = 0; ty < h; ty += kSsimTile)
     for (int tx = 0; tx < w; tx += kSsimTile) {

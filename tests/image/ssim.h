@@ -1,5 +1,6 @@
-// The snapshot tests' image error: structural similarity (SSIM, Wang et al. 2004) of the luma of
-// two images, with an 11x11 Gaussian window (sigma 1.5) and the paper's constants
+// The snapshot tests' image error: structural similarity (SSIM, Wang et al. 2004) of two images,
+// per colour channel (the worst of red, green and blue at each pixel, so a change of colour at the
+// same brightness counts), with an 11x11 Gaussian window (sigma 1.5) and the paper's constants
 // C1 = (0.01 * 255)^2, C2 = (0.03 * 255)^2.
 //
 // A mean over the whole picture hides a small local change (a missing marker in a mostly white

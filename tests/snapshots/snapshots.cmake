@@ -21,6 +21,9 @@ kerf_snapshot_test(NAME path_crosses_highlight EXIT 1 ARGS tests/bad/path_crosse
 kerf_snapshot_test(NAME too_steep_highlight EXIT 1 ARGS samples/bad/too_steep.nc ${s} --highlight-findings --color-by slope)
 kerf_snapshot_test(NAME surface_meets_itself_highlight EXIT 1 ARGS samples/bad/surface_meets_itself.nc ${s} --highlight-findings)
 kerf_snapshot_test(NAME wire_crossing_highlight EXIT 1 ARGS samples/bad/wire_crossing.nc ${s} --highlight-findings)
+# Nine errors and warnings: labels that would cover one another are left out and counted ("+3 more").
+kerf_snapshot_test(NAME offset_collapses_more_findings EXIT 1
+                   ARGS samples/bad/offset_collapses.nc --size 480x360 --highlight-findings)
 # The wire path beside what it was made from (dashed): a drawing's contours, a G41 program as written.
 kerf_snapshot_test(NAME plate_dxf_wire_top ARGS samples/plate.dxf ${s} --offset 1 --side outside --view top)
 kerf_snapshot_test(NAME g41_applied_top ARGS samples/inch_g91_bare_g41.nc ${s} --offset 1 --view top)

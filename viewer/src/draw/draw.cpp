@@ -12,6 +12,7 @@ ui::Annotation annotationOf(const std::string& input, const converter::Pipeline&
   a.title = slash == std::string::npos ? name : name.substr(slash + 1);
   const converter::Toolpath& tp = p.toolpath;
   const std::size_t errors = p.diags.errorCount(), warnings = p.diags.warningCount();
+  a.findings = errors + warnings;
   a.subtitle =
       std::string(tp.isTaper() ? converter::dialectName(tp.dialect) : "2-axis") + " | " +
       std::to_string(tp.moves.size()) + " moves | " +

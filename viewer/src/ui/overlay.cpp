@@ -62,8 +62,10 @@ void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render:
     textWithBackground(list, ImVec2(8, y), kText, line->c_str());
     y += lineHeight + 3;
   }
-  if (scene.truncated)
+  if (scene.truncated) {
     textWithBackground(list, ImVec2(8, y), IM_COL32(200, 0, 0, 255), "surface incomplete: triangle limit reached");
+    y += lineHeight + 3;
+  }
 
   // Scale bar, bottom right: a 1-2-5 length of at most a fifth of the width.
   const double mmPerPixel = camera.mmPerPixel(height);
@@ -101,15 +103,37 @@ void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render:
     list.AddText(ImVec2(x0 + barW + 3, y0 + barH - lineHeight + 2), kText, lo.c_str());
   }
 
-  // Finding labels beside their markers.
+  // Finding labels beside their markers: errors first, each where it covers no label placed
+  // before it and stays in the picture; what finds no place is counted under the title.
   if (annotation.labels && options.markers) {
-    for (const render::Marker& m : scene.findings) {
-      const Eigen::Vector2d p = camera.project(m.position, width, height);
-      const ImU32 colour = m.severity == converter::Severity::Error     ? IM_COL32(190, 0, 0, 255)
-                           : m.severity == converter::Severity::Warning ? IM_COL32(150, 90, 0, 255)
-                                                                        : IM_COL32(20, 80, 180, 255);
-      textWithBackground(list, ImVec2(static_cast<float>(p.x()) + 10, static_cast<float>(p.y()) - lineHeight - 2),
-                         colour, m.label.c_str());
+    std::vector<const render::Marker*> order;
+    for (const render::Marker& m : scene.findings) order.push_back(&m);
+    std::stable_sort(order.begin(), order.end(),
+                     [](const render::Marker* a, const render::Marker* b) { return a->severity > b->severity; });
+    std::vector<ImVec4> placed;
+    std::size_t labelled = 0;
+    for (const render::Marker* m : order) {
+      const Eigen::Vector2d p = camera.project(m->position, width, height);
+      const ImVec2 at(static_cast<float>(p.x()) + 10, static_cast<float>(p.y()) - lineHeight - 2);
+      const ImVec2 size = ImGui::CalcTextSize(m->label.c_str());
+      const ImVec4 box(at.x - 2, at.y - 1, at.x + size.x + 2, at.y + size.y + 1);
+      const bool inside =
+          box.x >= 0 && box.y >= 0 && box.z <= static_cast<float>(width) && box.w <= static_cast<float>(height);
+      const bool covers = std::any_of(placed.begin(), placed.end(), [&](const ImVec4& o) {
+        return box.x < o.z && o.x < box.z && box.y < o.w && o.y < box.w;
+      });
+      if (!inside || covers) continue;
+      placed.push_back(box);
+      if (m->severity != converter::Severity::Note) ++labelled;
+      const ImU32 colour = m->severity == converter::Severity::Error     ? IM_COL32(190, 0, 0, 255)
+                           : m->severity == converter::Severity::Warning ? IM_COL32(150, 90, 0, 255)
+                                                                         : IM_COL32(20, 80, 180, 255);
+      textWithBackground(list, at, colour, m->label.c_str());
+    }
+    if (annotation.findings > labelled) {
+      const std::string more =
+          "+" + std::to_string(annotation.findings - labelled) + " more errors and warnings: kerf check lists them";
+      textWithBackground(list, ImVec2(8, y), IM_COL32(190, 0, 0, 255), more.c_str());
     }
   }
 

@@ -20,6 +20,9 @@ struct Annotation {
   std::string subtitle;  ///< second line: dialect, moves, verdict
   bool legend = false;   ///< the slope colour ramp with its range
   bool labels = false;   ///< finding labels next to their markers
+  /// The errors and warnings of the program: those not labelled (no place in the picture, or a
+  /// label that would cover another) are counted under the title, "+6 more".
+  std::size_t findings = 0;
 };
 
 /// Draws the annotations of `scene` seen through `camera` into `list`, for a width x height image.

@@ -73,7 +73,7 @@ if [[ "${KERF_COMPARE_RENDER:-1}" != 0 ]] && command -v f3d > /dev/null && comma
   printf "render: kerf %s   f3d %s   kerf/f3d %.2f\n" "$(stats_pair "$work/kr")" "$(stats_pair "$work/fr")" \
     "$(awk -v a="$(cut -d' ' -f1 "$work/kr" | stats | cut -d' ' -f2)" -v b="$(cut -d' ' -f1 "$work/fr" | stats | cut -d' ' -f2)" 'BEGIN {print a / b}')"
 else
-  echo "compare.sh: f3d or xvfb-run is not installed (apt-get install f3d xvfb): the picture pair is skipped" >&2
+  echo "compare.sh: the picture pair is skipped (KERF_COMPARE_RENDER=0, or f3d or xvfb-run is not installed: apt-get install f3d xvfb)" >&2
 fi
 
 if [[ "${KERF_COMPARE_READER:-1}" != 0 ]] && command -v rs274 > /dev/null; then
@@ -106,7 +106,7 @@ if [[ "${KERF_COMPARE_READER:-1}" != 0 ]] && command -v rs274 > /dev/null; then
     "$bytes10" "$(awk -v k="$m10" 'BEGIN {print k / 1024}')" \
     "$(awk -v a="$kmem" -v b="$m10" -v x="$bytes" -v y="$bytes10" 'BEGIN {print (b - a) * 1024 / (y - x)}')"
 else
-  echo "compare.sh: rs274 is not installed (apt-get install linuxcnc-uspace): the reader pair is skipped" >&2
+  echo "compare.sh: the reader pair is skipped (KERF_COMPARE_READER=0, or rs274 is not installed: apt-get install linuxcnc-uspace)" >&2
 fi
 
 spiral=${KERF_COMPARE_SPIRAL:-10000000}
@@ -132,8 +132,10 @@ if [[ "${KERF_COMPARE_BATCH:-1}" != 0 && -d "$realworld" ]]; then
   done
   : > "$work/bt" && : > "$work/st"
   for ((r = 0; r < runs; ++r)); do
+    # The folder holds programs with errors: GNU time then writes "Command exited with non-zero
+    # status 1" before the figure, so the last line is the figure.
     /usr/bin/time -f "%e" -o "$work/t" "$build/viewer/kerf" check "$work/batch" --quiet > /dev/null 2>&1 || true
-    cat "$work/t" >> "$work/bt"
+    tail -n 1 "$work/t" >> "$work/bt"
     start=$(date +%s.%N)
     for f in "$work/batch"/*; do "$build/viewer/kerf" check "$f" --quiet > /dev/null 2>&1 || true; done
     awk -v a="$(date +%s.%N)" -v b="$start" 'BEGIN {printf "%.3f\n", a - b}' >> "$work/st"

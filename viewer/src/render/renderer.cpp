@@ -430,6 +430,28 @@ TriadLayout triadLayout(const Camera& camera, int height) {
   return t;
 }
 
+Camera clearOfTriad(Camera camera, const geometry::Vec3& boxMin, const geometry::Vec3& boxMax, int width, int height) {
+  // The triad's square: its origin 1.3 arms in, an arm long, and the axis letters past the tips.
+  const double corner = 2.3 * 0.09 * height + 14.0;
+  double left = width, bottom = 0;
+  for (int i = 0; i < 8; ++i) {
+    const geometry::Vec3 p{(i & 1) ? boxMax.x() : boxMin.x(), (i & 2) ? boxMax.y() : boxMin.y(),
+                           (i & 4) ? boxMax.z() : boxMin.z()};
+    const Eigen::Vector2d q = camera.project(p, width, height);
+    left = std::min(left, q.x());
+    bottom = std::max(bottom, q.y());
+  }
+  if (left >= corner || bottom <= height - corner) return camera;
+  const double cx = 0.5 * width, cy = 0.5 * height;
+  // Zoomed by s about the centre, the box's left edge is at cx - s (cx - left): clear of the
+  // corner in x or in y, whichever needs less.
+  const double sx = cx - left > 0 ? (cx - corner) / (cx - left) : 1.0;
+  const double sy = bottom - cy > 0 ? (cy - corner) / (bottom - cy) : 1.0;
+  const double s = std::clamp(std::max(sx, sy), 0.6, 1.0);
+  camera.halfHeight /= s;
+  return camera;
+}
+
 // ---- overlay --------------------------------------------------------------------------------
 
 void Renderer::drawOverlay(const OverlayDrawData& data, int width, int height) {

@@ -199,7 +199,15 @@ void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
     const converter::Diagnostic& d = r.findings[i];
     const std::string text = converter::codeName(d.code) + " " + converter::severityName(d.severity) + ": " + d.message;
     ImGui::PushID(static_cast<int>(i));
-    if (ImGui::Selectable(text.c_str(), d.move && s.selected == d.move)) {
+    // The whole message, wrapped to the panel: a selectable row as tall as the wrapped text, the
+    // text drawn over it.
+    const float wrap = ImGui::GetContentRegionAvail().x;
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const bool clicked = ImGui::Selectable("##finding", d.move && s.selected == d.move, 0, ImVec2(0, size.y));
+    ImGui::GetWindowDrawList()->AddText(nullptr, 0.0f, at, ImGui::GetColorU32(ImGuiCol_Text), text.c_str(), nullptr,
+                                        wrap);
+    if (clicked) {
       if (d.move) selectMove(s, *d.move);
       if (d.point) {
         s.camera.target = *d.point;
@@ -318,8 +326,10 @@ bool runWindow(const WindowRequest& request, std::string& error) {
       const int viewW = std::max(16, fbW - static_cast<int>(textW) - static_cast<int>(sideW));
       const int viewH = fbH;
       if (viewW != targetW || viewH != targetH) {
-        s.fitted = render::fitCamera(request.scene->boundsMin, request.scene->boundsMax, render::View::Iso, viewW,
-                                     viewH, 0.08, 36);
+        // Fitted below the title, and clear of the triad in the bottom-left corner.
+        s.fitted = render::clearOfTriad(render::fitCamera(request.scene->boundsMin, request.scene->boundsMax,
+                                                          render::View::Iso, viewW, viewH, 0.08, 36),
+                                        request.scene->boundsMin, request.scene->boundsMax, viewW, viewH);
         if (!target.create(viewW, viewH, ui::autoSamples(*request.scene, viewW, viewH, s.fitted.mmPerPixel(viewH)),
                            error)) {
           ok = false;

@@ -111,4 +111,8 @@ struct TriadLayout {
 };
 TriadLayout triadLayout(const Camera& camera, int height);
 
+/// The camera zoomed out about the picture's centre (at most to 0.6 of its scale) so that the box's
+/// outline keeps out of the triad's corner (bottom left), when it would reach into it.
+Camera clearOfTriad(Camera camera, const geometry::Vec3& boxMin, const geometry::Vec3& boxMax, int width, int height);
+
 }  // namespace kerf::render

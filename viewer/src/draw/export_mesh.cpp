@@ -35,6 +35,10 @@ int drawExportMesh(const ExportArgs& a) {
   std::cerr << "kerf: wrote " << data.surface.mesh.triangles.size() << " triangles, "
             << data.surface.mesh.vertices.size() << " points to " << a.output
             << (data.surface.mesh.truncated ? " (incomplete: triangle limit reached)" : "") << "\n";
+  if (data.surface.leadPatchesLeftOut > 0)
+    std::cerr << "kerf: note: the solid is the closed contour, capped; " << data.surface.leadPatchesLeftOut
+              << (data.surface.leadPatchesLeftOut == 1 ? " move" : " moves")
+              << " of the lead-in and lead-out (wire paths, not the part) are left out\n";
   return verdictExit(p);
 }
 

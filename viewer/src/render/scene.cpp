@@ -1,5 +1,7 @@
 #include "kerf/render/scene.h"
 
+#include "kerf/geometry/contour.h"
+
 #include "kerf/geometry/tessellation.h"
 
 #include <Eigen/Geometry>
@@ -151,6 +153,25 @@ CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOption
     }
     out.patchMove.push_back(i);
     out.patchEnd.push_back(runEnd[i]);
+  }
+  if (caps) {
+    // The solid is the closed contour: a loop on both planes. The patches before and after it
+    // (the lead paths) are left out.
+    constexpr double kClose = 1e-6;
+    const geometry::ClosureReport closure = geometry::analyseClosure(lowerCut, kClose);
+    if (closure.loopFrom && closure.loopTo &&
+        (upperCut[*closure.loopTo].end - upperCut[*closure.loopFrom].start).norm() <= kClose) {
+      const std::size_t from = *closure.loopFrom, to = *closure.loopTo + 1;
+      out.leadPatchesLeftOut = lowerCut.size() - (to - from);
+      auto keep = [&](auto& v) {
+        v.erase(v.begin() + static_cast<std::ptrdiff_t>(to), v.end());
+        v.erase(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(from));
+      };
+      keep(lowerCut);
+      keep(upperCut);
+      keep(out.patchMove);
+      keep(out.patchEnd);
+    }
   }
   geometry::MeshOptions meshOptions;
   meshOptions.tolerance = options.tolerance;

@@ -99,6 +99,8 @@ struct CutSurface {
   std::vector<std::size_t> patchMove;
   std::vector<std::size_t> patchEnd;  ///< one past the last move of the patch (patchMove + 1 unless merged)
   geometry::Planes planes;
+  /// With caps: cut patches outside the closed contour (lead-in, lead-out) left out of the solid.
+  std::size_t leadPatchesLeftOut = 0;
 };
 /// For each move i, one past the last move of the run that starts at i: i + 1, or, with a
 /// tolerance, further over joined cut moves whose lower and upper contours stay within it of the
@@ -106,6 +108,9 @@ struct CutSurface {
 /// used.
 std::vector<std::size_t> displayRuns(const converter::Toolpath& toolpath, double tolerance);
 
+/// The cut surface as triangles. caps: a solid for CAD: the closed contour capped on both planes,
+/// and a lead-in or lead-out, which would stand on it as a fin of no thickness (edges of three
+/// faces), left out (leadPatchesLeftOut).
 CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOptions& options, bool caps = false);
 
 /// Builds the scene. findings are the check's diagnostics; those with a point become markers

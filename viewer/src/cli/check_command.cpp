@@ -11,7 +11,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <glob.h>
 #include <algorithm>
+
 #include <atomic>
 #include <filesystem>
 #include <iostream>
@@ -53,6 +55,44 @@ bool expandInputs(const std::vector<std::string>& args, std::vector<std::string>
     }
     std::sort(found.begin(), found.end());
     files.insert(files.end(), found.begin(), found.end());
+  }
+  return true;
+}
+
+/// The lines of --files-from (a file, or standard input for "-"): each a file, a folder or a glob
+/// pattern, expanded in name order; blank lines and lines starting with '#' skipped. False after
+/// saying what is wrong (a list that cannot be read, a pattern that matches nothing).
+bool readFileList(const std::string& list, std::vector<std::string>& out) {
+  std::string error;
+  const std::optional<std::string> read = readTextFile(list, converter::SourceFile::kMaxSize, error);  // "-": stdin
+  if (!read) {
+    reportError(error);
+    return false;
+  }
+  const std::string& text = *read;
+  std::size_t lineNumber = 0;
+  for (std::size_t at = 0; at < text.size();) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(at, end - at);
+    at = end + 1;
+    ++lineNumber;
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
+    if (line.empty() || line.front() == '#') continue;
+    if (line.find_first_of("*?[") == std::string::npos) {
+      out.push_back(line);
+      continue;
+    }
+    glob_t g{};
+    const int rc = ::glob(line.c_str(), 0, nullptr, &g);
+    if (rc == 0)
+      for (std::size_t k = 0; k < g.gl_pathc; ++k) out.emplace_back(g.gl_pathv[k]);  // sorted by glob()
+    ::globfree(&g);
+    if (rc != 0) {
+      reportError((list == "-" ? std::string("<stdin>") : list) + ":" + std::to_string(lineNumber) + ": '" + line +
+                  "' matches no file");
+      return false;
+    }
   }
   return true;
 }
@@ -130,8 +170,16 @@ CLI::App* addCheckCommand(CLI::App& app, CheckArgs& a) {
 }
 
 int runCheck(const CheckArgs& a) {
+  std::vector<std::string> named = a.common.input.files;
+  if (a.common.input.filesFrom) {
+    if (*a.common.input.filesFrom == "-" && std::count(named.begin(), named.end(), "-") > 0) {
+      reportError("standard input can hold the list of files (--files-from -) or a program ('-'), not both");
+      return kExitUsage;
+    }
+    if (!readFileList(*a.common.input.filesFrom, named)) return kExitUsage;
+  }
   std::vector<std::string> files;
-  if (!expandInputs(a.common.input.files, files)) return kExitUsage;
+  if (!expandInputs(named, files)) return kExitUsage;
   if (files.empty()) {
     reportError("no programs to check: the folders hold no file named " + std::string(".nc, .ngc, .iso, ...") +
                 " (docs/ci.md lists the extensions)");

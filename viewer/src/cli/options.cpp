@@ -44,9 +44,13 @@ const CLI::Validator kPositiveLength(
 void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
   // Input.
   // The file is required unless --curve stands in for it (checked once everything is parsed).
-  if (manyFiles)
-    cmd.add_option("files", o.input.files, "NC programs ('-' reads standard input)");
-  else
+  if (manyFiles) {
+    cmd.add_option("files", o.input.files, "NC programs or folders of them ('-' reads a program from standard input)");
+    cmd.add_option("--files-from", o.input.filesFrom,
+                   "read the files to check from this list, one a line: files, folders or glob patterns (* ? [...]); "
+                   "'-' reads the list from standard input")
+        ->group("Input");
+  } else
     cmd.add_option("file", o.input.files, "NC program ('-' reads standard input)")->expected(0, 1);
   cmd.add_option("--curve", o.input.curve,
                  "a curve instead of a file: \"x = EXPR; y = EXPR\" of the parameter t (muparser), fitted with "
@@ -59,7 +63,7 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
       o.input.files = {kCurveInput};
     } else if (o.input.range) {
       throw CLI::ValidationError("--t", "--t is the range of a --curve");
-    } else if (o.input.files.empty() && o.input.fileRequired) {
+    } else if (o.input.files.empty() && o.input.fileRequired && !o.input.filesFrom) {
       throw CLI::RequiredError(manyFiles ? "files" : "file");
     }
   });

@@ -17,9 +17,10 @@ namespace kerf::cli {
 
 /// The programs to read.
 struct InputOptions {
-  std::vector<std::string> files;      ///< "-" is standard input
-  std::optional<std::string> upper;    ///< --upper: two-file input
-  std::optional<std::string> machine;  ///< --machine NAME or FILE
+  std::vector<std::string> files;        ///< "-" is standard input
+  std::optional<std::string> filesFrom;  ///< --files-from: a list of files, folders or glob patterns ("-": stdin)
+  std::optional<std::string> upper;      ///< --upper: two-file input
+  std::optional<std::string> machine;    ///< --machine NAME or FILE
   /// --curve "x=…; y=…" and --t A:B: a curve (converter/curve.h) instead of a file; files then
   /// holds kCurveInput.
   std::optional<std::string> curve, range;

@@ -165,7 +165,11 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
   if (!s.bounds.empty())
     out += "  bounds X " + mm(s.bounds.min.x()) + " .. " + mm(s.bounds.max.x()) + ", Y " + mm(s.bounds.min.y()) +
            " .. " + mm(s.bounds.max.y()) + " mm\n";
-  out += "  points at " + samplingText(s.sampling) + ": " + std::to_string(s.points.points) + " (max deviation " +
+  // A count past what any output writes says so: the summary promises no file of that many points.
+  const std::string cap = s.points.points > kMaxPointsWritten
+                              ? ", more than the " + std::to_string(kMaxPointsWritten) + " any output writes"
+                              : std::string();
+  out += "  points at " + samplingText(s.sampling) + ": " + std::to_string(s.points.points) + cap + " (max deviation " +
          formatFixed(s.points.maxDeviation, 6) + " mm, mean relative error " + sci(s.points.meanRelativeError) + ")\n";
   if (s.taper) {
     const TaperSummary& t = *s.taper;

@@ -1,19 +1,6 @@
 # Behaviour of the kerf program as a user meets it. One CTest per CASE.
 #   cmake -DKERF=... -DSOURCE=<repo> -DWORK=<scratch dir> -DCASE=<name> -P cli_test.cmake
-# Each run goes through lsan_retry.sh: in the ASan build, LeakSanitizer's tracer sometimes crashes at
-# exit, which is the sanitizer's fault and not the case's (the script's head says which failure).
-function(run)
-  execute_process(COMMAND sh ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/lsan_retry.sh ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  set(rc "${rc}" PARENT_SCOPE)
-  set(out "${out}" PARENT_SCOPE)
-  set(err "${err}" PARENT_SCOPE)
-endfunction()
-# expect("message" <if() condition words...>)
-function(expect msg)
-  if(NOT (${ARGN}))
-    message(FATAL_ERROR "${CASE}: ${msg}\nexit ${rc}\nstdout:\n${out}\nstderr:\n${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/script_run.cmake)  # run(), expect()
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 

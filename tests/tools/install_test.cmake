@@ -5,20 +5,8 @@
 #    machine profiles are there.
 # 2. DEB: cpack -G DEB; dpkg-deb -c lists the program and the module, the package depends on
 #    runtime libraries only (no -dev package), and the program unpacked from it checks a sample.
-# Through lsan_retry.sh, as cli_test.cmake runs kerf: in the ASan build, LeakSanitizer's tracer
-# sometimes crashes at exit (Mesa keeps threads), which is the sanitizer's fault, not the install's.
-function(run)
-  execute_process(COMMAND sh ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/lsan_retry.sh ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
-                  ERROR_VARIABLE err)
-  set(rc "${rc}" PARENT_SCOPE)
-  set(out "${out}" PARENT_SCOPE)
-  set(err "${err}" PARENT_SCOPE)
-endfunction()
-function(expect msg)
-  if(NOT (${ARGN}))
-    message(FATAL_ERROR "${msg}\nexit ${rc}\nstdout:\n${out}\nstderr:\n${err}")
-  endif()
-endfunction()
+set(CASE install)
+include(${CMAKE_CURRENT_LIST_DIR}/script_run.cmake)  # run(), expect(): kerf through lsan_retry.sh
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 

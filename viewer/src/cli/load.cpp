@@ -14,12 +14,6 @@ namespace kerf::cli {
 
 void reportError(const std::string& message) { std::cerr << "kerf: error: " << message << "\n"; }
 
-converter::Diagnostics capped(const converter::Diagnostics& all, std::size_t cap) {
-  converter::Diagnostics shown(cap);
-  for (const converter::Diagnostic& d : all.all()) shown.report(d);
-  return shown;
-}
-
 converter::Diagnostics shownDiagnostics(const converter::Diagnostics& all, const CheckOptions& options) {
   converter::Diagnostics shown(options.maxDiagnostics);
   for (const converter::Diagnostic& d : all.all())

@@ -113,13 +113,13 @@ DialectDetection detectDialect(const Program& program, const MachineProfile& mac
       const Word& w = words[k];
       const bool upperSide = k >= b.upperFrom;
       if (w.letter == 'G' && w.isNumber()) {
-        const long tenths = std::lround(w.value * 10);
+        const long tenths = roundHalfAway(w.value * 10);
         if (tenths == 510 || tenths == 520) taperAngle.set(onLine(tenths == 510 ? "G51" : "G52", b.line), w.span());
         if (tenths >= 1400 && tenths <= 1420 && tenths % 10 == 0)
           colonMode.set(onLine("G" + std::to_string(tenths / 10), b.line), w.span());
         if (tenths == 920) setPosition = true;
       } else if (w.letter == 'M' && w.isNumber()) {
-        const long m = std::lround(w.value);
+        const long m = roundHalfAway(w.value);
         if (m == 100 || m == 101) abs.set(onLine("M" + std::to_string(m), b.line), w.span());
       } else if (w.letter == 'U' || w.letter == 'V') {
         hasUv = true;

@@ -102,7 +102,7 @@ std::string normaliseKey(std::string_view raw) {
       std::count(number.begin(), number.end(), '.') > 1)
     return {};
   const double v = std::strtod(number.c_str(), nullptr);
-  const long tenths = std::lround(v * 10);
+  const long tenths = roundHalfAway(v * 10);
   if (std::abs(v * 10 - static_cast<double>(tenths)) > 1e-9) return {};
   std::string out(1, key[0]);
   out += std::to_string(tenths / 10);
@@ -442,10 +442,10 @@ MachineDetection detectMachine(const Program& program) {
         if (!(w.letter == 'G' && (std::abs(w.value - 12.1) < 1e-9 || std::abs(w.value - 13.1) < 1e-9)))
           if (!(w.letter == 'G' && w.value == 92)) continue;
       }
-      const long n = std::lround(w.value);
+      const long n = roundHalfAway(w.value);
       const bool whole = std::abs(w.value - static_cast<double>(n)) < 1e-9;
       if (w.letter == 'G') {
-        const long tenths = std::lround(w.value * 10);
+        const long tenths = roundHalfAway(w.value * 10);
         if (whole && (n == 60 || n == 38 || n == 39))
           t["robofil"].add(
               "G" + std::to_string(n), [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);

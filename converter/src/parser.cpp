@@ -60,39 +60,40 @@ struct NumberScan {
 
 /// [sign] digits [. digits] — no exponent, no spaces inside. The value is mantissa / 10^k with
 /// both exact doubles, so it is correctly rounded (the same as strtod) for up to 15 digits.
+/// Leading zeros are not digits (after the point they still count as places); past 18 digits an
+/// integer part is refused and a fraction's further digits are dropped.
 NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit) {
   NumberScan s;
-  std::size_t i = pos;
+  const char* const base = text.data();
+  const char* p = base + pos;
+  const char* const end = base + limit;
   bool negative = false;
-  if (i < limit && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
+  if (p < end && (*p == '+' || *p == '-')) negative = *p++ == '-';
+  const char* const first = p;
+  while (p < end && *p == '0') ++p;  // leading zeros
   std::uint64_t mantissa = 0;
-  int digits = 0, fraction = 0;
-  bool anyDigit = false;
-  auto takeDigits = [&](bool afterPoint) {
-    while (i < limit && isDigit(text[i])) {
-      anyDigit = true;
-      if (mantissa == 0 && text[i] == '0') {  // leading zeros do not count as digits
-        if (afterPoint) ++fraction;
-        ++i;
-        continue;
-      }
-      if (digits < kMaxDigits) {
-        mantissa = mantissa * 10 + static_cast<std::uint64_t>(text[i] - '0');
-        ++digits;
-        if (afterPoint) ++fraction;
-      } else if (!afterPoint) {
-        s.status = NumberScan::TooManyDigits;
-      }  // further fraction digits beyond 18 significant ones are dropped
-      ++i;
-    }
-  };
-  takeDigits(false);
-  if (i < limit && text[i] == '.') {
+  const char* const significant = p;
+  while (p < end && isDigit(*p)) mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p++ - '0');
+  int digits = static_cast<int>(p - significant);
+  bool anyDigit = p > first;
+  if (digits > kMaxDigits) s.status = NumberScan::TooManyDigits;
+  int fraction = 0;
+  if (p < end && *p == '.') {
     s.hasPoint = true;
-    ++i;
-    takeDigits(true);
+    ++p;
+    const char* const point = p;
+    if (mantissa == 0)
+      while (p < end && *p == '0') ++p;  // zeros before the first significant digit: places only
+    fraction = static_cast<int>(p - point);
+    for (; p < end && isDigit(*p); ++p) {
+      if (digits >= kMaxDigits) continue;  // past 18 significant digits: dropped
+      mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
+      ++digits;
+      ++fraction;
+    }
+    anyDigit |= p > point;
   }
-  s.end = i;
+  s.end = static_cast<std::size_t>(p - base);
   if (!anyDigit) {
     s.status = NumberScan::Missing;
     return s;

@@ -30,7 +30,7 @@ Vec2 rotate(const Vec2& p, double degrees) {
 }
 
 bool isG(const Word& w, int whole, int tenth = 0) {
-  return w.letter == 'G' && w.isNumber() && std::lround(w.value * 10) == whole * 10 + tenth;
+  return w.letter == 'G' && w.isNumber() && roundHalfAway(w.value * 10) == whole * 10 + tenth;
 }
 
 /// A code as written: G12.1, M30, T707.
@@ -88,12 +88,18 @@ bool harmlessG(const Word& w) {
 }  // namespace
 
 bool isMillTurnProgram(const Program& program) {
+  // The ranges hold G12.1 and G112 with room to spare: most G words are out after two comparisons.
   for (const Word& w : program.words)
-    if (isG(w, 12, 1) || isG(w, 112)) return true;
+    if (w.letter == 'G' && ((w.value >= 12 && w.value < 12.2) || (w.value >= 111.9 && w.value < 112.1)) &&
+        (isG(w, 12, 1) || isG(w, 112)))
+      return true;
   return false;
 }
 
 bool hasRotaryMoves(const Program& program) {
+  // Nearly every wire program has no C word at all: one pass over the letters says so.
+  if (std::none_of(program.words.begin(), program.words.end(), [](const Word& w) { return w.letter == 'C'; }))
+    return false;
   for (const Block& b : program.blocks) {
     bool x = false, c = false, y = false, home = false;
     for (const Word& w : program.wordsOf(b)) {

@@ -9,7 +9,21 @@ namespace kerf::geometry::detail {
 
 /// a reduced into [0, 2 pi).
 inline double wrapPositive(double a) {
-  double r = std::fmod(a, kTwoPi);
+  // Within two turns either way (nearly every angle a program gives), fmod(a, 2 pi) is a, a - 2 pi
+  // or a + 2 pi, and those differences are exact (Sterbenz: |a| <= 2 * 2 pi), so the fast path
+  // gives fmod's result bit for bit without the library call (a bounding box takes four).
+  // The turns' end points themselves (signed zeros) go to fmod.
+  double r;
+  if (a >= 0 && a < kTwoPi)
+    return a;
+  else if (a > kTwoPi && a < 2 * kTwoPi)
+    r = a - kTwoPi;
+  else if (a < 0 && a > -kTwoPi)
+    r = a;
+  else if (a < -kTwoPi && a > -2 * kTwoPi)
+    r = a + kTwoPi;
+  else
+    r = std::fmod(a, kTwoPi);
   if (r < 0) r += kTwoPi;
   if (r >= kTwoPi) r -= kTwoPi;
   return r;

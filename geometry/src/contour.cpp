@@ -1,9 +1,13 @@
 #include "kerf/geometry/contour.h"
 
+#include "kerf/geometry/parallel.h"
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -92,10 +96,19 @@ ClosureReport analyseClosure(SegmentView path, double tol) {
   };
   if (path.size() >= std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("analyseClosure: more than 2^32 - 2 segments");
+  // The first segment k whose end meets the start of a segment v <= k, and the earliest such v.
+  // Every start goes into the table first; then the ends are probed on every core, each thread
+  // over its stretch in order, a hit past k only when v <= k, and no thread going past the
+  // earliest k found so far. The earliest k of all stretches is the one a single pass that
+  // inserts and probes in turn would stop at.
   CellTable starts(path.size());
   for (std::size_t k = 0; k < path.size(); ++k) {
     const auto [sx, sy] = cellOf(path[k].start);
     starts.insert(sx, sy, static_cast<std::uint32_t>(k));
+  }
+  // The earliest v whose start the end of k meets, v <= k; none: the path's size.
+  auto probe = [&](std::size_t k) {
+    std::size_t best = path.size();
     const Vec2& e = path[k].end;
     const double fx = e.x() / cell, fy = e.y() / cell;
     const auto gx = static_cast<std::int64_t>(std::floor(fx)), gy = static_cast<std::int64_t>(std::floor(fy));
@@ -104,16 +117,33 @@ ClosureReport analyseClosure(SegmentView path, double tol) {
     for (const std::int64_t dx : {std::int64_t{0}, sideX})
       for (const std::int64_t dy : {std::int64_t{0}, sideY})
         starts.forEach(gx + dx, gy + dy, [&](std::size_t v) {
-          if ((path[v].start - e).norm() > tol) return;
+          if (v > k || v >= best || (path[v].start - e).norm() > tol) return;
           // v == k: the segment closes on its own start — a full circle does; a zero-length
           // move does not count as a loop.
           if (v == k && path[k].length() <= tol) return;
-          if (!report.loopFrom || v < *report.loopFrom) {
-            report.loopFrom = v;
-            report.loopTo = k;
-          }
+          best = v;
         });
-    if (report.loopFrom) return report;
+    return best;
+  };
+  std::atomic<std::size_t> earliest{path.size()};  // the earliest k with a hit found so far
+  std::mutex mutex;
+  std::size_t loopTo = path.size(), loopFrom = path.size();
+  geometry::parallelFor(path.size(), 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end && k < earliest.load(std::memory_order_relaxed); ++k) {
+      const std::size_t v = probe(k);
+      if (v == path.size()) continue;
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (k < loopTo) {
+        loopTo = k;
+        loopFrom = v;
+        earliest.store(k, std::memory_order_relaxed);
+      }
+      return;
+    }
+  });
+  if (loopTo < path.size()) {
+    report.loopFrom = loopFrom;
+    report.loopTo = loopTo;
   }
   return report;
 }

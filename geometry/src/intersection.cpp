@@ -8,9 +8,11 @@
 #include "kerf/geometry/parallel.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <memory_resource>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <set>
@@ -518,15 +520,25 @@ constexpr std::uint32_t kDead = std::numeric_limits<std::uint32_t>::max();  // a
 
 /// A box in floats, rounded outwards: half the memory of a Box, and a filter that never drops a
 /// pair whose boxes overlap (only lets a few more through, which the exact tests settle).
+/// The float next to f towards minus infinity (f finite and not the lowest): std::nextafter
+/// without the library call, by the bits (floats of one sign are ordered as their bits are).
+float nextDown(float f) {
+  if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>(f > 0 ? bits - 1 : bits + 1);
+}
+float nextUp(float f) { return -nextDown(-f); }
+
 struct LooseBox {
   float minX, minY, maxX, maxY;
+  // A double beyond the floats' range rounds to an infinity, which is already below or above it.
   static float below(double v) {
     const auto f = static_cast<float>(v);
-    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) > v && f != -std::numeric_limits<float>::infinity() ? nextDown(f) : f;
   }
   static float above(double v) {
     const auto f = static_cast<float>(v);
-    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) < v && f != std::numeric_limits<float>::infinity() ? nextUp(f) : f;
   }
   static LooseBox around(const Box& b) {
     return {below(b.min.x()), below(b.min.y()), above(b.max.x()), above(b.max.y())};
@@ -565,16 +577,37 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   // enters the sweep and lives in the active list while it is there.
   std::vector<std::pair<float, std::uint32_t>> byMinX;
   const bool boxesFirst = options.method != SweepMethod::Decision;
-  if (boxesFirst) byMinX.reserve(live);
+  if (boxesFirst) byMinX.resize(live);
+  // On every core, in stretches of a fixed length whose sums are added in order: the figures do
+  // not depend on the number of threads.
+  constexpr std::size_t kStretch = 4096;
+  const std::size_t stretches = (n + kStretch - 1) / kStretch;
+  struct Extent {
+    double lowX = std::numeric_limits<double>::infinity(), highX = -std::numeric_limits<double>::infinity();
+    double widths = 0.0;
+  };
+  std::vector<Extent> extents(stretches);
+  geometry::parallelFor(stretches, 8, [&](std::size_t sb, std::size_t se) {
+    for (std::size_t st = sb; st < se; ++st) {
+      Extent e;
+      for (std::size_t i = st * kStretch; i < std::min(n, (st + 1) * kStretch); ++i) {
+        if (!isLive(i)) continue;
+        const Box b = path[i].bounds();
+        e.lowX = std::min(e.lowX, b.min.x());
+        e.highX = std::max(e.highX, b.max.x());
+        e.widths += b.max.x() - b.min.x() + 2 * tol;
+        if (boxesFirst) byMinX[rank(i)] = {LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i)};
+      }
+      extents[st] = e;
+    }
+  });
   double lowX = std::numeric_limits<double>::infinity(), highX = -lowX, widths = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!isLive(i)) continue;
-    const Box b = path[i].bounds();
-    lowX = std::min(lowX, b.min.x());
-    highX = std::max(highX, b.max.x());
-    widths += b.max.x() - b.min.x() + 2 * tol;
-    if (boxesFirst) byMinX.emplace_back(LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i));
+  for (const Extent& e : extents) {
+    lowX = std::min(lowX, e.lowX);
+    highX = std::max(highX, e.highX);
+    widths += e.widths;
   }
+  std::vector<Extent>().swap(extents);
   bool sorted = false;
   auto sortByMinX = [&] {
     if (byMinX.empty()) {  // not made yet, or given back for the decision sweep
@@ -597,7 +630,13 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   };
   // The box sweep: every pair whose boxes overlap, tested exactly. With a budget of work (entries
   // of the active list visited), it gives up past it and says so (nothing: not finished).
+  //
+  // The sweep itself only finds the pairs; their exact tests, most of its time, run on every core
+  // in batches of kBatch pairs (8 bytes each: the memory stays fixed). A batch's contacts join
+  // the result in the order of its pairs, so the result, its truncation at maxContacts and the
+  // pairs counted up to there are the same as testing each pair as it is found.
   auto boxSweep = [&](std::size_t budget) -> std::optional<SelfIntersectionResult> {
+    constexpr std::size_t kBatch = std::size_t{1} << 15;
     SelfIntersectionResult r;
     std::size_t work = 0;
     struct Active {
@@ -605,10 +644,50 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
       std::uint32_t idx;
     };
     std::vector<Active> active;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending;  // (i, j), i < j, in the sweep's order
+    pending.reserve(std::min<std::size_t>(kBatch, live));
+    // Tests the pending pairs; true when maxContacts is reached (r is then final).
+    auto flush = [&]() -> bool {
+      if (pending.empty()) return false;
+      std::mutex mutex;
+      std::vector<std::pair<std::size_t, std::vector<Contact>>> parts;  // (first pair, its contacts)
+      geometry::parallelFor(pending.size(), 2048, [&](std::size_t b, std::size_t e) {
+        std::vector<Contact> found;
+        for (std::size_t k = b; k < e; ++k) {
+          const auto [i, j] = pending[k];
+          classifyPair(path, i, j, isForward(i, j), isWrap(i, j), tol, found);
+        }
+        const std::lock_guard<std::mutex> lock(mutex);
+        parts.emplace_back(b, std::move(found));
+      });
+      std::sort(parts.begin(), parts.end(), [](const auto& l, const auto& x) { return l.first < x.first; });
+      const std::size_t before = r.contacts.size();
+      for (auto& part : parts) r.contacts.insert(r.contacts.end(), part.second.begin(), part.second.end());
+      if (r.contacts.size() < options.maxContacts) {
+        r.candidatePairs += pending.size();
+        pending.clear();
+        return false;
+      }
+      // The pairs up to the one whose contact was the last kept: a pair's contacts are
+      // consecutive and name it. (With maxContacts 0 the first pair tested ends the sweep.)
+      std::size_t pair = 0;
+      for (std::size_t c = before; c < options.maxContacts; ++c)
+        while (pending[pair].first != r.contacts[c].first || pending[pair].second != r.contacts[c].second) ++pair;
+      r.candidatePairs += pair + 1;
+      r.truncated = true;
+      r.contacts.resize(options.maxContacts);
+      std::sort(r.contacts.begin(), r.contacts.end(), byPair);
+      return true;
+    };
     for (const auto& [minX, idx] : byMinX) {
       const LooseBox box = LooseBox::around(path[idx].bounds());
       work += active.size();
-      if (budget && work > budget) return std::nullopt;
+      if (budget && work > budget) {
+        // Pairs found before the budget ran out may already reach maxContacts: then the sweep
+        // did finish, as it would have testing them one by one.
+        if (flush()) return r;
+        return std::nullopt;
+      }
       std::size_t w = 0;
       for (std::size_t a = 0; a < active.size(); ++a) {
         const Active entry = active[a];
@@ -616,19 +695,13 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
         active[w++] = entry;
         if (!entry.box.overlaps(box, tol)) continue;
         const std::uint32_t other = entry.idx;
-        ++r.candidatePairs;
-        const std::size_t i = std::min(idx, other), j = std::max(idx, other);
-        classifyPair(path, i, j, isForward(i, j), isWrap(i, j), tol, r.contacts);
-        if (r.contacts.size() >= options.maxContacts) {
-          r.truncated = true;
-          r.contacts.resize(options.maxContacts);
-          std::sort(r.contacts.begin(), r.contacts.end(), byPair);
-          return r;
-        }
+        pending.emplace_back(std::min(idx, other), std::max(idx, other));
+        if (pending.size() == kBatch && flush()) return r;
       }
       active.resize(w);
       active.push_back({box, idx});
     }
+    if (flush()) return r;
     std::sort(r.contacts.begin(), r.contacts.end(), byPair);
     return r;
   };

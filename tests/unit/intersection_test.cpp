@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <random>
+#include <string>
 
 using namespace kerf::geometry;
 
@@ -377,4 +380,96 @@ TEST(self_intersection, a_star_of_long_spikes_is_decided_with_few_tests) {
   const auto a = findSelfIntersections(path, o);
   EXPECT_TRUE(a.contacts.empty());
   EXPECT_LT(a.candidatePairs, 4 * path.size());
+}
+
+namespace {
+
+/// A long line and a zigzag back over it: each of the zigzag's n pieces crosses the line once.
+std::vector<Segment> zigzagOverLine(int n) {
+  std::vector<Segment> path;
+  path.push_back(Segment::line({0, 0}, {n + 1.0, 0}));
+  Vec2 at(n + 1.0, 0);
+  for (int i = 0; i <= n; ++i) {
+    const Vec2 next(n - i + 0.5, i % 2 ? -1.0 : 1.0);
+    path.push_back(Segment::line(at, next));
+    at = next;
+  }
+  return path;
+}
+
+/// Runs f with KERF_THREADS set to threads (restored after).
+template <typename F>
+auto withThreads(const char* threads, F&& f) {
+  const char* before = std::getenv("KERF_THREADS");
+  const std::string saved = before ? before : "";
+  setenv("KERF_THREADS", threads, 1);
+  auto result = f();
+  if (before)
+    setenv("KERF_THREADS", saved.c_str(), 1);
+  else
+    unsetenv("KERF_THREADS");
+  return result;
+}
+
+bool sameContacts(const SelfIntersectionResult& a, const SelfIntersectionResult& b) {
+  if (a.contacts.size() != b.contacts.size() || a.candidatePairs != b.candidatePairs || a.truncated != b.truncated)
+    return false;
+  for (std::size_t k = 0; k < a.contacts.size(); ++k) {
+    const Contact &x = a.contacts[k], &y = b.contacts[k];
+    if (x.first != y.first || x.second != y.second || x.kind != y.kind || x.point != y.point) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST(self_intersection, the_box_sweep_tests_its_pairs_in_batches_on_every_core_with_one_answer) {
+  // 50,000 crossings: more pairs than one batch of the box sweep's exact tests.
+  const int n = 50000;
+  const std::vector<Segment> path = zigzagOverLine(n);
+  SelfIntersectionOptions o;
+  o.method = SweepMethod::Boxes;
+  o.maxContacts = 1000000;
+  const auto one = withThreads("1", [&] { return findSelfIntersections(path, o); });
+  const auto four = withThreads("4", [&] { return findSelfIntersections(path, o); });
+  ASSERT_EQ(one.contacts.size(), static_cast<std::size_t>(n));  // every zigzag piece but the first, which starts on it
+  EXPECT_FALSE(one.truncated);
+  EXPECT_TRUE(sameContacts(one, four));
+  for (const Contact& c : one.contacts) EXPECT_EQ(c.first, 0u);
+
+  // Stopped at maxContacts inside the second batch: the same contacts and pairs counted however
+  // many threads test them, each one among the full answer's, and fewer pairs than in full.
+  o.maxContacts = 40000;
+  const auto cut1 = withThreads("1", [&] { return findSelfIntersections(path, o); });
+  const auto cut4 = withThreads("4", [&] { return findSelfIntersections(path, o); });
+  EXPECT_TRUE(cut1.truncated);
+  ASSERT_EQ(cut1.contacts.size(), 40000u);
+  EXPECT_TRUE(sameContacts(cut1, cut4));
+  // The sweep meets the crossing pieces left to right, each testing the line and then its left
+  // neighbour: the m-th contact is found by the (2m - 2)-th pair, past the first batch of 32,768.
+  EXPECT_EQ(cut1.candidatePairs, 2u * 40000 - 2);
+  std::vector<std::size_t> full;
+  for (const Contact& c : one.contacts) full.push_back(c.second);
+  for (const Contact& c : cut1.contacts) EXPECT_TRUE(std::binary_search(full.begin(), full.end(), c.second));
+}
+
+TEST(closure, the_first_loop_is_the_same_on_every_core) {
+  // A path that comes back to an early vertex twice: the first return (k = 30,000, to v = 100) is
+  // the loop reported, not the second (k = 60,000, to v = 5), wherever the threads' stretches fall.
+  std::vector<Segment> path;
+  Vec2 at(0, 0);
+  auto go = [&](const Vec2& to) {
+    path.push_back(Segment::line(at, to));
+    at = to;
+  };
+  for (int k = 0; k < 30000; ++k) go({k + 1.0, (k % 2) * 0.5});
+  go(path[100].start);
+  for (int k = 0; k < 30000; ++k) go({-k - 1.0, 10 + (k % 2) * 0.5});
+  go(path[5].start);
+  for (const char* threads : {"1", "2", "3", "8"}) {
+    const ClosureReport r = withThreads(threads, [&] { return analyseClosure(path, 1e-6); });
+    ASSERT_TRUE(r.loopFrom.has_value()) << threads;
+    EXPECT_EQ(*r.loopFrom, 100u) << threads;
+    EXPECT_EQ(*r.loopTo, 30000u) << threads;
+  }
 }

@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <optional>
 #include <random>
+#include <string>
+#include <vector>
 
 using namespace kerf::converter;
 
@@ -45,6 +48,37 @@ TEST(parser, numbers_are_correctly_rounded) {
   EXPECT_EQ(p.words[3].value, 0.5);
   EXPECT_TRUE(p.words[4].hasPoint);
   EXPECT_EQ(p.words[4].value, 5.0);
+}
+
+TEST(parser, numbers_agree_with_strtod_up_to_15_significant_digits) {
+  // Random numbers in the forms the scanner treats apart: signs, leading zeros before and after
+  // the point, no integer part, no fraction, a bare point; strtod (correctly rounded) is the oracle.
+  std::mt19937 rng(20261124);
+  auto digits = [&](int n, bool firstNonZero) {
+    std::string t;
+    for (int k = 0; k < n; ++k) t += static_cast<char>('0' + (k == 0 && firstNonZero ? 1 + rng() % 9 : rng() % 10));
+    return t;
+  };
+  std::string text;
+  std::vector<std::string> written;
+  for (int trial = 0; trial < 4000; ++trial) {
+    std::string number = std::string(rng() % 3 == 0 ? "-" : rng() % 5 == 0 ? "+" : "") + std::string(rng() % 3, '0');
+    const int whole = static_cast<int>(rng() % 8), places = static_cast<int>(rng() % 8);
+    number += digits(whole, true);
+    if (rng() % 4 != 0) number += "." + std::string(rng() % 3, '0') + digits(places, false);
+    if (number.find_first_of("0123456789") == std::string::npos) number += "7";
+    written.push_back(number);
+    text += "X" + number + "\n";
+  }
+  SourceFile src("p.nc", text);
+  Diagnostics d;
+  const Program p = parse(src, d);
+  EXPECT_FALSE(d.hasErrors());
+  ASSERT_EQ(p.words.size(), written.size());
+  for (std::size_t k = 0; k < written.size(); ++k) {
+    EXPECT_EQ(p.words[k].value, std::strtod(written[k].c_str(), nullptr)) << written[k];
+    EXPECT_EQ(p.words[k].hasPoint, written[k].find('.') != std::string::npos) << written[k];
+  }
 }
 
 TEST(parser, settings_are_kept_verbatim) {

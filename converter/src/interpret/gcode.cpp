@@ -1,4 +1,5 @@
 #include "gcode.h"
+#include "kerf/converter/program.h"
 
 #include <algorithm>
 #include <array>
@@ -79,7 +80,7 @@ constexpr std::array<MCodeInfo, 12> kMCodes = {{
 }  // namespace
 
 bool splitGNumber(double value, int& number, int& fraction) {
-  const long tenths = std::lround(value * 10);
+  const long tenths = roundHalfAway(value * 10);
   if (value < 0 || std::abs(value * 10 - static_cast<double>(tenths)) > 1e-6) return false;
   number = static_cast<int>(tenths / 10);
   fraction = static_cast<int>(tenths % 10);

@@ -7,12 +7,26 @@
 #include "kerf/converter/diagnostics.h"
 #include "kerf/converter/source.h"
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace kerf::converter {
+
+/// std::lround without the library call (glibc's is a function of ~30 instructions, and the
+/// readers round every G and M word): the same value for every finite |v| < 2^62, else lround's.
+inline long roundHalfAway(double v) {
+  if (!(v < 4.6e18 && v > -4.6e18)) return std::lround(v);
+  long t = static_cast<long>(v);                // towards zero
+  const double f = v - static_cast<double>(t);  // exact: |v| < 2^52, or v is whole and f is 0
+  if (f >= 0.5)
+    ++t;
+  else if (f <= -0.5)
+    --t;
+  return t;
+}
 
 /// What stands after a word's letter.
 enum class WordValue : std::uint8_t {

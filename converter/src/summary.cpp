@@ -97,25 +97,54 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
   s.dialect = toolpath.dialect;
   s.blocks = toolpath.blocks;
   s.moves = toolpath.moves.size();
-  // The cut moves sampled where they lie, among the rapids: no copy of the path.
-  geometry::PathSampler sampler(sampling, nullptr);
+  // The cut moves sampled where they lie, among the rapids: no copy of the path. On every core, in
+  // stretches of a fixed length whose figures are added in order: the sums do not depend on the
+  // number of threads (a program of one stretch adds them move by move, as one thread would).
   s.taperProgram = toolpath.isTaper();
-  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
-    const Move& m = toolpath.moves[i];
-    if (!m.isCut()) {
-      ++s.rapidMoves;
-      s.rapidLength += m.lower.length();
-      continue;
+  struct Stretch {
+    explicit Stretch(const geometry::Sampling& sampling) : sampler(sampling, nullptr) {}
+    std::size_t cutMoves = 0, rapidMoves = 0, lines = 0, arcs = 0, upperLines = 0, upperArcs = 0;
+    double cutLength = 0.0, rapidLength = 0.0;
+    geometry::Box bounds;
+    geometry::PathSampler sampler;
+  };
+  constexpr std::size_t kStretch = 4096;
+  const std::size_t n = toolpath.moves.size();
+  std::vector<Stretch> stretches((n + kStretch - 1) / kStretch, Stretch(sampling));
+  geometry::parallelFor(stretches.size(), 4, [&](std::size_t sb, std::size_t se) {
+    for (std::size_t st = sb; st < se; ++st) {
+      Stretch& part = stretches[st];
+      for (std::size_t i = st * kStretch; i < std::min(n, (st + 1) * kStretch); ++i) {
+        const Move& m = toolpath.moves[i];
+        if (!m.isCut()) {
+          ++part.rapidMoves;
+          part.rapidLength += m.lower.length();
+          continue;
+        }
+        ++part.cutMoves;
+        if (m.kind == MoveKind::Arc)
+          ++part.arcs;
+        else
+          ++part.lines;
+        if (s.taperProgram) ++(toolpath.upper[i].isArc() ? part.upperArcs : part.upperLines);
+        part.cutLength += m.lower.length();
+        part.bounds.add(m.lower.bounds());
+        part.sampler.add(m.lower);
+      }
     }
-    ++s.cutMoves;
-    if (m.kind == MoveKind::Arc)
-      ++s.arcs;
-    else
-      ++s.lines;
-    if (s.taperProgram) ++(toolpath.upper[i].isArc() ? s.upperArcs : s.upperLines);
-    s.cutLength += m.lower.length();
-    s.bounds.add(m.lower.bounds());
-    sampler.add(m.lower);
+  });
+  geometry::PathSampler sampler(sampling, nullptr);
+  for (const Stretch& part : stretches) {
+    s.cutMoves += part.cutMoves;
+    s.rapidMoves += part.rapidMoves;
+    s.lines += part.lines;
+    s.arcs += part.arcs;
+    s.upperLines += part.upperLines;
+    s.upperArcs += part.upperArcs;
+    s.cutLength += part.cutLength;
+    s.rapidLength += part.rapidLength;
+    s.bounds.add(part.bounds);
+    sampler.append(part.sampler);
   }
   s.sampling = sampling;
   s.points = sampler.stats();

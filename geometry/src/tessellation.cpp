@@ -104,6 +104,7 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
 
 void PathSampler::add(const Segment& seg) {
   if (stats_.points == 0) {
+    first_ = seg.start;
     last_ = seg.start;
     stats_.points = 1;
     if (out_) out_->push_back(last_);
@@ -122,6 +123,22 @@ void PathSampler::add(const Segment& seg) {
     weighted_ += len * s.meanRelativeError;
   }
   last_ = seg.end;
+}
+
+void PathSampler::append(const PathSampler& later) {
+  if (later.stats_.points == 0) return;
+  if (stats_.points == 0) {
+    first_ = later.first_;
+    stats_.points = later.stats_.points;
+  } else {
+    // add() counts a start that is not the last end; later counted its first start regardless.
+    stats_.points += later.stats_.points - ((later.first_ - last_).norm() > 1e-9 ? 0 : 1);
+  }
+  stats_.arcs += later.stats_.arcs;
+  stats_.maxDeviation = std::max(stats_.maxDeviation, later.stats_.maxDeviation);
+  stats_.arcLength += later.stats_.arcLength;
+  weighted_ += later.weighted_;
+  last_ = later.last_;
 }
 
 PathSampleStats PathSampler::stats() const {

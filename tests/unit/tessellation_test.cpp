@@ -159,3 +159,36 @@ TEST(tessellation, fit_to_capacity_never_exceeds_and_is_the_finest) {
 }
 
 }  // namespace
+
+TEST(tessellation, samplers_of_consecutive_stretches_append_to_the_whole_paths_counts) {
+  // Lines and arcs with a jump now and then (a start that is not the last end counts a point):
+  // split anywhere, including at a jump, the appended samplers count what one sampler does.
+  std::mt19937 rng(7);
+  std::vector<Segment> path;
+  Vec2 at(0, 0);
+  for (int k = 0; k < 300; ++k) {
+    if (k % 37 == 5) at += Vec2(3, 0);  // a jump
+    const Vec2 to = at + Vec2(1 + rng() % 5, static_cast<double>(rng() % 7) - 3);
+    if (k % 2)
+      path.push_back(
+          Segment::arc(at, to, (at + to) / 2, k % 4 == 1 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise));
+    else
+      path.push_back(Segment::line(at, to));
+    at = to;
+  }
+  const Sampling sampling{SamplingMode::Step, 0.3};
+  const PathSampleStats whole = samplePath(path, sampling, nullptr);
+  for (std::size_t cut : {std::size_t{1}, std::size_t{5}, std::size_t{42}, std::size_t{190}, std::size_t{299}}) {
+    PathSampler first(sampling, nullptr), second(sampling, nullptr), joined(sampling, nullptr);
+    for (std::size_t k = 0; k < path.size(); ++k) (k < cut ? first : second).add(path[k]);
+    joined.append(first);
+    joined.append(second);
+    joined.append(PathSampler(sampling, nullptr));  // an empty stretch changes nothing
+    const PathSampleStats got = joined.stats();
+    EXPECT_EQ(got.points, whole.points) << cut;
+    EXPECT_EQ(got.arcs, whole.arcs) << cut;
+    EXPECT_EQ(got.maxDeviation, whole.maxDeviation) << cut;
+    EXPECT_NEAR(got.arcLength, whole.arcLength, 1e-9 * whole.arcLength) << cut;
+    EXPECT_NEAR(got.meanRelativeError, whole.meanRelativeError, 1e-12) << cut;
+  }
+}

@@ -66,12 +66,17 @@ class PathSampler {
  public:
   PathSampler(const Sampling& sampling, std::vector<Vec2>* out) : sampling_(sampling), out_(out) {}
   void add(const Segment& seg);
+  /// Takes in the counts of a sampler (without points) that sampled the segments that follow
+  /// these: the same counts as adding those segments here, but for the order of the sums. Its
+  /// first start point is not counted again where it is this one's last end.
+  void append(const PathSampler& later);
   [[nodiscard]] PathSampleStats stats() const;
 
  private:
   Sampling sampling_;
   std::vector<Vec2>* out_;
   PathSampleStats stats_;
+  Vec2 first_{0, 0};
   Vec2 last_{0, 0};
   double weighted_ = 0.0;
 };

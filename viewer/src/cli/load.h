@@ -45,7 +45,6 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
 /// For the commands that take one program: load() it and print its diagnostics, as check does.
 std::optional<Loaded> loadOne(const CommonOptions& options, LoadNeeds needs = {});
 
-
 /// What the terminal shows of `all`: errors only under --quiet, at most --max-diagnostics, every
 /// one still counted.
 converter::Diagnostics shownDiagnostics(const converter::Diagnostics& all, const CheckOptions& options);

@@ -80,15 +80,6 @@ std::vector<CodeInfo> readCodeTable() {
   return codes;
 }
 
-const char* sarifLevel(Severity s) {
-  switch (s) {
-    case Severity::Error: return "error";
-    case Severity::Warning: return "warning";
-    case Severity::Note: return "note";
-  }
-  return "none";
-}
-
 /// A file name as a URI reference (RFC 3986; RFC 8089 for an absolute path, file:///...):
 /// unreserved characters and '/' stay, others are percent-encoded, so names with spaces or
 /// non-ASCII bytes stay valid.
@@ -117,7 +108,7 @@ json sarifResult(const Diagnostic& d, const std::map<std::string, std::size_t>& 
   const std::string id = codeName(d.code);
   r["ruleId"] = id;
   if (const auto it = ruleIndex.find(id); it != ruleIndex.end()) r["ruleIndex"] = it->second;
-  r["level"] = sarifLevel(d.severity);
+  r["level"] = severityName(d.severity);  // SARIF's levels error, warning, note are the severities' names
   r["message"] = {{"text", d.help.empty() ? d.message : d.message + " (help: " + d.help + ")"}};
   if (d.source) {
     json physical;
@@ -184,7 +175,7 @@ std::string sarifLog(std::span<const CheckedFile> files, const std::string& vers
                      {"help",
                       {{"text", c.id + " (" + c.name + "), " + c.severityText + ": " + c.meaning +
                                     ". docs/diagnostics.md lists every code."}}},
-                     {"defaultConfiguration", {{"level", sarifLevel(c.severity)}}}});
+                     {"defaultConfiguration", {{"level", severityName(c.severity)}}}});
   }
   json results = json::array();
   json artifacts = json::array();

@@ -518,10 +518,9 @@ bool strictlyOneSide(const Segment& a, const Segment& b, double tol) {
 
 constexpr std::uint32_t kDead = std::numeric_limits<std::uint32_t>::max();  // a segment too short to test
 
-/// A box in floats, rounded outwards: half the memory of a Box, and a filter that never drops a
-/// pair whose boxes overlap (only lets a few more through, which the exact tests settle).
-/// The float next to f towards minus infinity (f finite and not the lowest): std::nextafter
-/// without the library call, by the bits (floats of one sign are ordered as their bits are).
+/// The float next to f towards minus infinity, as std::nextafter gives it, without the library
+/// call: by the bits, since floats of one sign are ordered as their bits are (+infinity gives the
+/// largest finite float; f is not -infinity or NaN).
 float nextDown(float f) {
   if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
   const auto bits = std::bit_cast<std::uint32_t>(f);
@@ -529,16 +528,19 @@ float nextDown(float f) {
 }
 float nextUp(float f) { return -nextDown(-f); }
 
+/// A box in floats, rounded outwards: half the memory of a Box, and a filter that never drops a
+/// pair whose boxes overlap (only lets a few more through, which the exact tests settle).
 struct LooseBox {
   float minX, minY, maxX, maxY;
-  // A double beyond the floats' range rounds to an infinity, which is already below or above it.
+  // A finite double past the floats' range rounds to an infinity; the next float inwards, the
+  // largest finite one, is then on the right side of it, as std::nextafter gives.
   static float below(double v) {
     const auto f = static_cast<float>(v);
-    return static_cast<double>(f) > v && f != -std::numeric_limits<float>::infinity() ? nextDown(f) : f;
+    return static_cast<double>(f) > v ? nextDown(f) : f;
   }
   static float above(double v) {
     const auto f = static_cast<float>(v);
-    return static_cast<double>(f) < v && f != std::numeric_limits<float>::infinity() ? nextUp(f) : f;
+    return static_cast<double>(f) < v ? nextUp(f) : f;
   }
   static LooseBox around(const Box& b) {
     return {below(b.min.x()), below(b.min.y()), above(b.max.x()), above(b.max.y())};

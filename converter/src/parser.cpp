@@ -5,6 +5,7 @@
 //           3. one block: settings, macro statements, comments, words
 //           4. the sides of a 4-axis block
 //           5. the whole text: byte-order mark, lines, '%' frame
+#include "kerf/converter/memory.h"
 #include "kerf/converter/program.h"
 
 #include "kerf/geometry/parallel.h"
@@ -15,11 +16,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#include <unistd.h>
-#endif
 
 namespace kerf::converter {
 namespace {
@@ -762,20 +758,6 @@ LinesRead parseLines(const SourceFile& source, Program& program, Diagnostics& di
   return read;
 }
 
-/// Gives the whole pages of [begin, end) back to the system; what they held reads as zeros after.
-void releasePages(const void* begin, const void* end) {
-#if defined(__linux__)
-  static const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-  const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) / page * page;
-  const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / page * page;
-  // Advice only: should the system refuse it, the memory simply stays.
-  if (to > from) (void)madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
-#else
-  (void)begin;
-  (void)end;
-#endif
-}
-
 /// Appends part to to, a slice at a time, giving each slice of part back to the system once it is
 /// copied: the two copies never stand whole side by side.
 template <typename T>
@@ -816,8 +798,8 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
   Program program;
   program.source = &source;
   const std::string_view text = source.text();
-  program.words.reserve(text.size() / 6);
-  program.blocks.reserve(text.size() / 24);
+  reserveLarge(program.words, text.size() / 6);
+  reserveLarge(program.blocks, text.size() / 24);
   // A NUL byte near the start means a binary file, not NC text: one diagnostic, not thousands.
   if (const std::size_t nul = text.substr(0, 4096).find('\0'); nul != std::string_view::npos) {
     diags.error(Code::UnexpectedCharacter, &source, {static_cast<std::uint32_t>(nul), 1},
@@ -850,8 +832,8 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
       into.source = &source;
       if (k > 0) {
         const std::size_t bytes = source.lineRange(firstLine[k + 1] - 1).second - source.lineRange(firstLine[k]).first;
-        into.words.reserve(bytes / 6);
-        into.blocks.reserve(bytes / 24);
+        reserveLarge(into.words, bytes / 6);
+        reserveLarge(into.blocks, bytes / 24);
       }
       read[k] = parseLines(source, into, k == 0 ? diags : laterDiags[k - 1], options, firstLine[k], firstLine[k + 1],
                            bom, k > 0);

@@ -3,6 +3,7 @@
 #include "interpreter_impl.h"
 
 #include "kerf/converter/dialect.h"
+#include "kerf/converter/memory.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +54,7 @@ Interpretation Interpreter::run() {
   for (const Block& b : program_.blocks) straight = straight && b.kind != BlockKind::MacroCall;
   if (machine_.legacyTaperCodes) findLegacyTaperCodes();
   // Most blocks of a wire program are moves: reserving avoids copying them while growing.
-  toolpath_.moves.reserve(std::min(program_.blocks.size(), options_.maxMoves));
+  reserveLarge(toolpath_.moves, std::min(program_.blocks.size(), options_.maxMoves));
   for (const Setting& s : program_.settings) toolpath_.settings.push_back(s);
   toolpath_.blocks = program_.blocks.size();
   warnIntegerUnit();

@@ -422,12 +422,23 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "wire programs usually thread the wire again (M-code) at a new start hole"));
   }
 
-  // Closure, with the caller's work beside it on another core.
+  // The closure, the caller's work and the lower contour's self-intersection at once (each on
+  // the cores it can use): the contour needs only whether the path ends at its start, which is
+  // known before the closure is analysed. Its diagnostics are kept apart and follow the closure's,
+  // in the order of one thread.
+  const bool endsAtStart = (path.segments.back().end - path.segments.front().start).norm() <= options.tolerance;
   geometry::ClosureReport closure;
-  geometry::parallelInvoke([&] { closure = geometry::analyseClosure(path.segments, options.tolerance); },
-                           [&] {
-                             if (beside) beside();
-                           });
+  MovePairs seen;
+  Diagnostics lowerDiags(diags.cap());
+  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
+  geometry::parallelInvoke(
+      [&] {
+        geometry::parallelInvoke([&] { closure = geometry::analyseClosure(path.segments, options.tolerance); },
+                                 [&] {
+                                   if (beside) beside();
+                                 });
+      },
+      [&] { checkContour(lower, endsAtStart, toolpath, src, options, lowerDiags, seen); });
   if (!closure.loopFrom) {
     const Move& last = moves[path.moveIndex.back()];
     diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(),
@@ -435,10 +446,7 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "the cut path never closes a loop: the part stays attached (the end is " +
                              formatFixed(closure.gap, 3) + " mm from the start)"));
   }
-
-  MovePairs seen;
-  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
-  checkContour(lower, closure.endsAtStart, toolpath, src, options, diags, seen);
+  diags.append(std::move(lowerDiags));
   if (!taper) return;
 
   Contour upper;

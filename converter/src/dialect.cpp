@@ -106,6 +106,7 @@ NumberEvidence compareNumbers(const Program& program) {
 DialectDetection detectDialect(const Program& program, const MachineProfile& machine) {
   Evidence colon, taperAngle, colonMode, uv, abs, rel, linuxcnc;
   for (const Block& b : program.blocks) {
+    if (b.plain) continue;  // no evidence in it
     if (b.colon) colon.set(onLine("':'", b.line), b.span());
     bool setPosition = false, hasUv = false, upperCentre = false, kl = false, g92ij = false;
     const auto words = program.wordsOf(b);

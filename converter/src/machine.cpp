@@ -403,6 +403,7 @@ MachineDetection detectMachine(const Program& program) {
           "axis", [&] { return onLine("an (AXIS,..._Z_POS,z) comment", h.line); }, h.span, 3);
   }
   for (const Block& b : program.blocks) {
+    if (b.plain) continue;  // no evidence in it
     if (b.kind == BlockKind::MacroCall) {
       const std::string_view call = program.textOf(b).substr(0, program.textOf(b).find('('));
       t["sodick"].add(

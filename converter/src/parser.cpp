@@ -31,6 +31,13 @@ bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' ||
 /// Letters that are words in ISO wire programs. B is not: it belongs to 3B code.
 bool isWordLetter(char u) { return u != 'B'; }
 
+/// A word Block::plain allows: X Y I J R F, or G00-G03 written as a whole number.
+bool isPlainWord(char letter, WordValue kind, double value) {
+  if (kind != WordValue::Number) return false;
+  if (letter == 'G') return value == 0 || value == 1 || value == 2 || value == 3;
+  return letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'F';
+}
+
 /// Letters whose numbers are lengths: they decide --integer-unit evidence.
 bool isLengthLetter(char u) { return u == 'X' || u == 'Y' || u == 'U' || u == 'V' || u == 'I' || u == 'J' || u == 'R'; }
 
@@ -320,6 +327,9 @@ class LineParser {
     if (block.kind == BlockKind::Words && block.upperFrom == 0 && block.wordCount > 0 && !hasUpper_)
       block.upperFrom = block.wordCount;
     hasUpper_ = false;
+    block.plain = block.kind == BlockKind::Words && block.wordCount > 0 && plainWords_ && !block.colon &&
+                  !block.twoMotions && !block.lowerCase && !block.unusualValues && block.upperFrom == block.wordCount;
+    plainWords_ = true;
     if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) program_.blocks.push_back(block);
   }
 
@@ -488,6 +498,7 @@ class LineParser {
   void push(Block& block, std::size_t start, std::size_t stop, char letter, WordValue kind, double value,
             bool hasPoint) {
     upperLetters_ |= letter == 'U' || letter == 'V' || letter == 'K' || letter == 'L';
+    plainWords_ = plainWords_ && isPlainWord(letter, kind, value);
     block.unusualValues |= kind != WordValue::Number;
     Word w;
     w.letter = letter;
@@ -693,6 +704,7 @@ class LineParser {
   std::vector<std::uint8_t> sides_;  ///< assignSides' side of each of the block's words
   std::vector<Word> scratch_;        ///< assignSides' copy of a block it reorders
   bool upperLetters_ = false;        ///< U V K L among the block's words
+  bool plainWords_ = true;           ///< every word of the block so far is plain (Block::plain)
   int splitAt_ = -1;                 ///< index in the block's words where a positional upper side starts
   bool colon_ = false;               ///< that split was a ':'
   bool sawCoordinate_ = false;       ///< X Y I J R U V seen in this block

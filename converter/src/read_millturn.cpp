@@ -89,18 +89,19 @@ bool harmlessG(const Word& w) {
 
 bool isMillTurnProgram(const Program& program) {
   // The ranges hold G12.1 and G112 with room to spare: most G words are out after two comparisons.
-  for (const Word& w : program.words)
-    if (w.letter == 'G' && ((w.value >= 12 && w.value < 12.2) || (w.value >= 111.9 && w.value < 112.1)) &&
-        (isG(w, 12, 1) || isG(w, 112)))
-      return true;
+  for (const Block& b : program.blocks) {
+    if (b.plain) continue;  // G00-G03 only
+    for (const Word& w : program.wordsOf(b))
+      if (w.letter == 'G' && ((w.value >= 12 && w.value < 12.2) || (w.value >= 111.9 && w.value < 112.1)) &&
+          (isG(w, 12, 1) || isG(w, 112)))
+        return true;
+  }
   return false;
 }
 
 bool hasRotaryMoves(const Program& program) {
-  // Nearly every wire program has no C word at all: one pass over the letters says so.
-  if (std::none_of(program.words.begin(), program.words.end(), [](const Word& w) { return w.letter == 'C'; }))
-    return false;
   for (const Block& b : program.blocks) {
+    if (b.plain) continue;  // no C word
     bool x = false, c = false, y = false, home = false;
     for (const Word& w : program.wordsOf(b)) {
       x |= w.letter == 'X';

@@ -330,3 +330,58 @@ TEST(machine_test, between_contours_the_iso_writer_cuts_and_threads_the_wire_as_
   ASSERT_TRUE(bare) << kerf::test::dump(d);
   EXPECT_EQ(written(*bare).find("M00"), std::string::npos);
 }
+
+namespace {
+
+/// Runs f with KERF_THREADS set to threads (restored after).
+template <typename F>
+auto withThreads(const char* threads, F&& f) {
+  const char* before = std::getenv("KERF_THREADS");
+  const std::string saved = before ? before : "";
+  setenv("KERF_THREADS", threads, 1);
+  auto result = f();
+  if (before)
+    setenv("KERF_THREADS", saved.c_str(), 1);
+  else
+    unsetenv("KERF_THREADS");
+  return result;
+}
+
+}  // namespace
+
+// The closure, the summary and the lower contour's self-intersection run at once (checks.cpp):
+// the diagnostics come in the order of one thread, the open path's warning before the crossings.
+TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_on_many) {
+  std::string text = "G92 X0 Y0\nG01 X1 Y0\nG00 X2 Y0\nG01 X2 Y1\n";
+  for (int k = 0; k < 20; ++k)  // a zigzag up, then one move down across it: crossings, never closed
+    text += "G01 X" + std::to_string(3 + k % 2 * 40) + " Y" + std::to_string(2 + k) + "\n";
+  text += "G01 X20 Y0\nM02\n";
+  auto listed = [&](const char* threads) {
+    return withThreads(threads, [&] {
+      const Pipeline p = read(text);
+      std::vector<std::string> out;
+      for (const Diagnostic& d : p.diags.all())
+        out.push_back(std::string(codeName(d.code)) + " @" + std::to_string(d.span.offset) + " " + d.message);
+      return out;
+    });
+  };
+  const std::vector<std::string> one = listed("1");
+  auto count = [&](Code c) {
+    return std::count_if(one.begin(), one.end(), [&](const std::string& s) { return s.starts_with(codeName(c)); });
+  };
+  EXPECT_EQ(count(Code::PathOpen), 1);
+  EXPECT_EQ(count(Code::RapidInsideCut), 1);
+  EXPECT_GT(count(Code::PathCrossesItself), 15);
+  // The crossings are all on the last move, where the closure's warning is too (a tie in
+  // position): that warning comes first, as one thread reports them.
+  const auto open = std::find_if(one.begin(), one.end(),
+                                 [](const std::string& s) { return s.starts_with(codeName(Code::PathOpen)); });
+  ASSERT_NE(open, one.end());
+  const std::string at = open->substr(open->find('@'), open->find(' ', open->find('@')) - open->find('@'));
+  const auto crossing = std::find_if(one.begin(), one.end(), [&](const std::string& s) {
+    return s.starts_with(codeName(Code::PathCrossesItself)) && s.find(at + " ") != std::string::npos;
+  });
+  ASSERT_NE(crossing, one.end());
+  EXPECT_LT(open, crossing);
+  for (const char* threads : {"2", "4"}) EXPECT_EQ(listed(threads), one) << threads << " threads";
+}

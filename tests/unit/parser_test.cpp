@@ -536,3 +536,39 @@ TEST(memory, advice_keeps_contents_and_released_pages_read_as_zeros) {
   EXPECT_EQ(v[900000], value(900000));
   EXPECT_EQ(v[2000000], value(2000000));
 }
+
+// The text's hash (source.cpp) reads it in four lanes of 8 bytes, then 8 bytes, then the tail: a
+// change of one byte in any of them, and only a change, is seen when the text is read again.
+TEST(source, a_change_of_one_byte_anywhere_in_a_long_text_is_seen) {
+  std::string text;
+  for (int k = 0; text.size() < 1000; ++k) text += "G1 X" + std::to_string(k) + ".5\n";
+  text += "M2\n";  // 1000 and more bytes: not a multiple of 32, nor of 8
+  ASSERT_NE(text.size() % 8, 0u);
+  auto seenChanged = [&](const std::string& onDisk) {
+    SourceFile src("p.nc", text);
+    src.releaseText([&onDisk]() -> std::optional<std::string> { return onDisk; });
+    (void)src.lineText(1);
+    return src.changedOnDisk();
+  };
+  EXPECT_FALSE(seenChanged(text));
+  for (std::size_t at = 0; at < text.size(); ++at) {
+    std::string changed = text;
+    changed[at] = changed[at] == 'X' ? 'Y' : 'X';
+    ASSERT_TRUE(seenChanged(changed)) << "byte " << at;
+  }
+}
+
+// Block::plain marks the blocks the whole-program scans may pass by: motion codes G00-G03 and X Y
+// I J R F only, numbers, upper case, one side.
+TEST(parser, plain_blocks_hold_only_motion_codes_and_coordinates) {
+  Diagnostics d;
+  const SourceFile src("p.nc",
+                       "G01 X1. Y2.\nG2 X3 Y4 I1 J0 F100\nX5 R2\nN10 G01 X1\ng01 x1\nG01 X1 : U1\nG92 X0 Y0\n"
+                       "G01 X#100\nG1.5 X1\nG04 X1\nM02\nG01 X1 V2\nG3 X1 Y1 I1 J1 G1 U1 V1\nT1 X1\n");
+  const Program p = parseProgram(src, d);
+  const std::vector<bool> expected = {true,  true,  true,  false, false, false, false,
+                                      false, false, false, false, false, false, false};
+  ASSERT_EQ(p.blocks.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k)
+    EXPECT_EQ(p.blocks[k].plain, expected[k]) << "line " << p.blocks[k].line;
+}

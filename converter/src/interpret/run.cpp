@@ -45,13 +45,16 @@ Interpretation Interpreter::run() {
   // A program that runs straight through (no subprogram call or return, no macro call) never
   // comes back to a block it has run: the parse tree behind it may give its memory back.
   bool straight = options_.releaseParsed;
-  for (const Word& w : program_.words) {
-    programHasV_ |= w.letter == 'V';
-    if (straight && w.letter == 'M' && w.isNumber())
-      if (const MCodeInfo* info = findMCode(w.value))
-        straight = info->code != MCode::CallSubprogram && info->code != MCode::ReturnFromSubprogram;
+  for (const Block& b : program_.blocks) {
+    if (b.plain) continue;  // no V, M or macro call
+    straight = straight && b.kind != BlockKind::MacroCall;
+    for (const Word& w : program_.wordsOf(b)) {
+      programHasV_ |= w.letter == 'V';
+      if (straight && w.letter == 'M' && w.isNumber())
+        if (const MCodeInfo* info = findMCode(w.value))
+          straight = info->code != MCode::CallSubprogram && info->code != MCode::ReturnFromSubprogram;
+    }
   }
-  for (const Block& b : program_.blocks) straight = straight && b.kind != BlockKind::MacroCall;
   if (machine_.legacyTaperCodes) findLegacyTaperCodes();
   // Most blocks of a wire program are moves: reserving avoids copying them while growing.
   reserveLarge(toolpath_.moves, std::min(program_.blocks.size(), options_.maxMoves));
@@ -129,6 +132,7 @@ void Interpreter::chooseDialect() {
 /// P and Q exists only in the earlier numbering.
 void Interpreter::findLegacyTaperCodes() {
   for (const Block& b : program_.blocks) {
+    if (b.plain) continue;  // no M, P or Q
     bool m106 = false, p = false, q = false;
     const Word* at = nullptr;
     for (const Word& w : program_.wordsOf(b)) {
@@ -152,6 +156,7 @@ void Interpreter::findLegacyTaperCodes() {
 void Interpreter::indexLabels() {
   // O numbers anywhere; N numbers count as labels too (Sodick puts `N0001 ... M99` after M02).
   for (std::size_t i = 0; i < program_.blocks.size(); ++i) {
+    if (program_.blocks[i].plain) continue;  // no O or N
     for (const Word& w : program_.wordsOf(program_.blocks[i])) {
       if ((w.letter != 'O' && w.letter != 'N') || !w.isNumber()) continue;
       const long key = std::lround(w.value);

@@ -89,6 +89,11 @@ struct Block {
   bool hasError : 1 = false;       ///< the parser reported an error in this block
   bool lowerCase : 1 = false;      ///< some word letter was written in lower case
   bool unusualValues : 1 = false;  ///< some word's value is not a number (WordValue other than Number)
+  /// Words only, every one X Y I J R F or a motion code G00-G03, all numbers, none written in
+  /// lower case, one side: nothing the whole-program scans look for (machine and dialect
+  /// evidence, labels, calls, polar and rotary words), so they pass such a block by. Most blocks
+  /// of a wire program are.
+  bool plain : 1 = false;
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
 };
 static_assert(sizeof(Block) == 24, "a Block is 24 bytes: a program holds one per line");

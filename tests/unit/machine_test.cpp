@@ -385,3 +385,27 @@ TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_o
   EXPECT_LT(open, crossing);
   for (const char* threads : {"2", "4"}) EXPECT_EQ(listed(threads), one) << threads << " threads";
 }
+
+// Plain blocks (X Y I J R F and G00-G03 only) take a short way through the interpreter
+// (run.cpp): what it cannot judge goes the general way and is said as before, and a profile that
+// gives G01 a meaning of its own closes the short way.
+TEST(machine_test, plain_blocks_say_what_every_block_says) {
+  EXPECT_TRUE(has(read("G92 X0 Y0\nG01 X1. X2.\nM02\n"), Code::RepeatedWord));
+  EXPECT_TRUE(has(read("G92 X0 Y0\nG01 G02 X1.\nM02\n"), Code::ModalGroupConflict));
+  EXPECT_TRUE(has(read("G92 X0 Y0\nG01 X1. F0\nM02\n"), Code::BadFeed));
+  EXPECT_TRUE(has(read("G92 X0 Y0\nX1. Y1.\nM02\n"), Code::NoMotionMode));
+  EXPECT_TRUE(has(read("G92 X0 Y0\nG01 X1. R2.\nM02\n"), Code::CentreOnStraightMove));
+  EXPECT_TRUE(has(read("G92 X0 Y0\nG02 X1. Y0 R0.1\nM02\n"), Code::RadiusTooSmall));
+  const Pipeline feeds = read("G92 X0 Y0\nG01 X1. F2.\nG01 X2. F3.\nX3. F2.\nM02\n");
+  ASSERT_EQ(feeds.toolpath.moves.size(), 3u);
+  auto feed = [&](std::size_t i) { return feeds.toolpath.feeds.at(feeds.toolpath.moves[i].feedIndex - 1); };
+  EXPECT_EQ(feed(0), 2.0);
+  EXPECT_EQ(feed(1), 3.0);
+  EXPECT_EQ(feed(2), 2.0);
+  PipelineOptions own;
+  own.read.machineFile = SourceText{"g1.profile", "name = g1\ncode G01 = rethread: cut and thread the wire\n"};
+  const Pipeline p = read("G92 X0 Y0\nG00 X1. Y0\nG01\nG00 X2. Y0\nM02\n", own);
+  EXPECT_EQ(first(p, Code::MachineCode).message, "G01: cut and thread the wire [g1 profile]");  // not a motion
+  EXPECT_TRUE(std::all_of(p.toolpath.moves.begin(), p.toolpath.moves.end(),
+                          [](const Move& m) { return m.kind == MoveKind::Rapid; }));
+}

@@ -148,6 +148,8 @@ class Interpreter {
   void findLegacyTaperCodes();
   void warnIntegerUnit();
   Flow executeBlock(std::size_t pc, std::size_t& next);
+  bool readPlainBlock(const Block& block, BlockWords& bw) const;
+  void executePlainBlock(const Block& block, const BlockWords& bw);
   // read_block.cpp (phase 1)
   bool readBlock(const Block& block, BlockWords& bw, BlockWords& ubw);
   void readWord(const Word& w, BlockWords& bw);
@@ -244,6 +246,7 @@ class Interpreter {
   };
   std::vector<OffsetRun> offsetRuns_;
   bool programHasV_ = false;  // some word is V (for the U Z diagnostic)
+  bool plainPath_ = false;    // the profile gives G00-G03 no meaning of its own: plain blocks go the short way
 
   // 4-axis state.
   Vec2 upperPosition_{0, 0};  // xyuv-abs, xyuv-linuxcnc, sodick-colon: where the upper contour is

@@ -56,6 +56,9 @@ Interpretation Interpreter::run() {
     }
   }
   if (machine_.legacyTaperCodes) findLegacyTaperCodes();
+  plainPath_ = true;
+  for (int g = 0; g <= 3; ++g)
+    if (const KnownCode* k = machine_.find('G', g, 0); k && k->number >= 0) plainPath_ = false;
   // Most blocks of a wire program are moves: reserving avoids copying them while growing.
   reserveLarge(toolpath_.moves, std::min(program_.blocks.size(), options_.maxMoves));
   for (const Setting& s : program_.settings) toolpath_.settings.push_back(s);
@@ -172,6 +175,50 @@ void Interpreter::indexLabels() {
   }
 }
 
+/// Phase 1 for a plain block: its letters and its motion code, as readWord files them (the profile
+/// names none of them: plainPath_). False when a letter or a motion code comes twice: the general
+/// path reports it.
+bool Interpreter::readPlainBlock(const Block& block, BlockWords& bw) const {
+  constexpr auto motion = static_cast<std::size_t>(ModalGroup::Motion);
+  for (const Word& w : program_.wordsOf(block)) {
+    if (w.letter == 'G') {
+      if (bw.g[motion]) return false;
+      bw.g[motion] = &w;
+      bw.gCode[motion] = static_cast<GCode>(static_cast<int>(w.value));  // G00-G03 are the first codes
+      continue;
+    }
+    const auto li = static_cast<std::size_t>(w.letter - 'A');
+    if (bw.letter[li]) return false;
+    bw.letter[li] = &w;
+  }
+  return true;
+}
+
+/// Phases 2 to 4 for a plain block: no group but the motion, no M or profile code, one side, every
+/// value a number. The plan keeps the modal state; nothing is ignored, refused or checked beyond
+/// the feed and the motion, which go the way of every block.
+void Interpreter::executePlainBlock(const Block& block, const BlockWords& bw) {
+  static const BlockWords kNoUpperSide{};
+  BlockPlan plan;
+  const Word* mw = bw.group(ModalGroup::Motion);
+  plan.motion = mw ? motionOf(bw.code(ModalGroup::Motion)) : motion_;
+  plan.motionWord = mw ? mw : motionWord_.get();
+  plan.incremental = incremental_;
+  plan.inch = inch_;
+  plan.lowerWords = bw.has('X') || bw.has('Y') || bw.has('I') || bw.has('J') || bw.has('R');
+  if (const Word* f = bw['F']) {
+    if (f->value <= 0)
+      diags_.warning(Code::BadFeed, src_, f->span(), "feed F must be positive");
+    else
+      feedIndex_ = toolpath_.feedIndexFor(f->value * (plan.inch ? 25.4 : 1.0));
+  }
+  if (mw) {
+    motion_ = plan.motion;
+    motionWord_.hold(mw);
+  }
+  (void)executeMotion(bw, kNoUpperSide, block, plan);
+}
+
 void Interpreter::warnIntegerUnit() {
   if (options_.integerUnit == IntegerUnit::Millimetre && !program_.anyDecimalPoint &&
       program_.largestInteger > machine_.integerThreshold && !program_.words.empty()) {
@@ -187,6 +234,15 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   const Block& block = program_.blocks[pc];
   if (block.kind == BlockKind::MacroB) return Flow::Continue;  // the parser said it once for the file
   if (block.kind == BlockKind::MacroCall) return executeMacroCall(block);
+  // A plain block (most of a program) with each letter once: what the phases below do with it
+  // comes down to its feed and its motion.
+  if (block.plain && plainPath_) {
+    BlockWords bw;
+    if (readPlainBlock(block, bw)) {
+      executePlainBlock(block, bw);
+      return Flow::Continue;
+    }
+  }
   // Phase 1: read.
   BlockWords bw, ubw;
   if (!readBlock(block, bw, ubw)) return Flow::Continue;

@@ -264,6 +264,44 @@ TEST(closure, the_first_loop_is_the_one_a_search_of_every_pair_finds) {
   EXPECT_GT(loops, 40);  // most walks do come back
 }
 
+TEST(closure, an_end_just_inside_or_outside_the_tolerance_of_a_start_anywhere_on_the_grid) {
+  // Ends put at 0.999 or 1.001 tolerances from an earlier start, in every direction, at every
+  // place relative to the table's cells (the points are spread over a few hundred cells): the
+  // table's answer must be what comparing every pair gives.
+  std::mt19937 rng(11);
+  const double tol = 1e-3;
+  std::uniform_real_distribution<double> where(-0.2, 0.2), turn(0, 2 * kPi), unit(0, 1);
+  int loops = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<Segment> p;
+    const int n = 40;
+    for (int k = 0; k < n; ++k) {
+      const Vec2 start(where(rng), where(rng));
+      Vec2 end(where(rng), where(rng));
+      if (k > 0 && unit(rng) < 0.15) {  // near an earlier start, just inside or just outside
+        std::uniform_int_distribution<int> pick(0, k - 1);
+        const double r = tol * (unit(rng) < 0.5 ? 0.999 : 1.001), a = turn(rng);
+        end = p[static_cast<std::size_t>(pick(rng))].start + r * Vec2(std::cos(a), std::sin(a));
+      }
+      p.push_back(Segment::line(start, end));
+    }
+    std::optional<std::size_t> from, to;
+    for (std::size_t k = 0; k < p.size() && !to; ++k)
+      for (std::size_t v = 0; v <= k; ++v)
+        if ((p[v].start - p[k].end).norm() <= tol && !(v == k && p[k].length() <= tol)) {
+          from = v;
+          to = k;
+          break;
+        }
+    const ClosureReport c = analyseClosure(p, tol);
+    EXPECT_EQ(c.loopFrom, from) << "trial " << trial;
+    EXPECT_EQ(c.loopTo, to) << "trial " << trial;
+    loops += from.has_value();
+  }
+  EXPECT_GT(loops, 80);
+  EXPECT_LT(loops, 200);
+}
+
 TEST(closure, full_circle_closes_itself) {
   std::vector<Segment> p = {Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::Clockwise)};
   EXPECT_TRUE(analyseClosure(p, 1e-6).loopFrom.has_value());

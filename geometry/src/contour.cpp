@@ -19,14 +19,16 @@ namespace {
 /// Open-addressing table of grid cells -> vertex index (a cell may hold several vertices: each
 /// is its own entry). A slot is 6 bytes in two arrays: a 16-bit tag of its cell's hash (0: the slot
 /// is empty), scanned alone, and the vertex, read only where the tag matches. Two cells may share
-/// a tag, so a match is a candidate only; the caller measures the distance anyway. There are 2
+/// a tag, so a match is a candidate only; the caller measures the distance anyway. There are 1.5
 /// slots a vertex (any count, not a power of two: the slot is the hash scaled to the table), so
-/// the table is 12 bytes a vertex, 2.4 MB at 200,000. At that load a probe scans about 2.5 tags
-/// (measured on a 200,000-vertex ring: 2.6 at 3 slots a vertex, 10 at 1.5, which took 40% longer);
-/// slots of 24 bytes (both cell coordinates and the vertex) at twice the vertices took 12.6 MB.
+/// the table is 9 bytes a vertex, 1.8 MB at 200,000; a probe then scans about 10 tags (measured on
+/// a 200,000-vertex ring). Twice the slots scan 2.5 and save a fifth of the closure's time, but the
+/// closure runs beside the self-intersection and its memory adds to the peak of kerf check (4.0
+/// bytes a byte of input instead of 3.9). Slots of 24 bytes (both cell coordinates and the
+/// vertex) at twice the vertices took 12.6 MB.
 class CellTable {
  public:
-  explicit CellTable(std::size_t expected) : size_(std::max<std::size_t>(16, 2 * expected)) {
+  explicit CellTable(std::size_t expected) : size_(std::max<std::size_t>(16, expected + expected / 2)) {
     tags_.assign(size_, kEmpty);
     vertices_.resize(size_);
   }

@@ -12,9 +12,11 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace kerf::converter {
@@ -61,11 +63,71 @@ struct NumberScan {
   double value = 0.0;
 };
 
+/// How many of the 8 characters in w (the first in its lowest byte) are digits before the first
+/// that is not: a byte is a digit when its high half is 3 and stays 3 with 6 added. A carry out
+/// of a byte of 0xFA and up only reaches the bytes after it, past the first non-digit.
+int leadingDigits(std::uint64_t w) {
+  constexpr std::uint64_t kHigh = 0xF0F0F0F0F0F0F0F0ULL, kThrees = 0x3030303030303030ULL;
+  const std::uint64_t notDigit = ((w & kHigh) ^ kThrees) | (((w + 0x0606060606060606ULL) & kHigh) ^ kThrees);
+  return notDigit == 0 ? 8 : std::countr_zero(notDigit) / 8;
+}
+
+/// The value of the first n (1 to 8) characters of w, all digits: shifted up so that zeros stand
+/// before them, then 8 digits joined in pairs, fours and eights (each step within its lane).
+std::uint64_t digitsValue(std::uint64_t w, int n) {
+  std::uint64_t d = (w - 0x3030303030303030ULL) << (8 * (8 - n));  // what follows the digits is gone
+  d = (d * 10 + (d >> 8)) & 0x00FF00FF00FF00FFULL;                 // 2 digits a 16-bit lane
+  d = (d * 100 + (d >> 16)) & 0x0000FFFF0000FFFFULL;               // 4 digits a 32-bit lane
+  return (d * 10000 + (d >> 32)) & 0xFFFFFFFFULL;
+}
+
+[[gnu::noinline]] NumberScan scanNumberByBytes(std::string_view text, std::size_t pos, std::size_t limit);
+
 /// [sign] digits [. digits] — no exponent, no spaces inside. The value is mantissa / 10^k with
 /// both exact doubles, so it is correctly rounded (the same as strtod) for up to 15 digits.
 /// Leading zeros are not digits (after the point they still count as places); past 18 digits an
 /// integer part is refused and a fraction's further digits are dropped.
+/// Most numbers have at most 7 digits each side of the point: those are read 8 characters at a
+/// time (leadingDigits, digitsValue), to the same mantissa and places as digit by digit.
 NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit) {
+  const char* const base = text.data();
+  const char* p = base + pos;
+  const char* const end = base + limit;
+  const char* const textEnd = base + text.size();
+  const bool negative = p < end && *p == '-';
+  if (p < end && (*p == '+' || *p == '-')) ++p;
+  if (textEnd - p < 17) return scanNumberByBytes(text, pos, limit);  // 8 + '.' + 8 readable
+  std::uint64_t w;
+  std::memcpy(&w, p, 8);
+  const int whole = static_cast<int>(std::min<std::ptrdiff_t>(leadingDigits(w), end - p));
+  if (whole == 8) return scanNumberByBytes(text, pos, limit);
+  std::uint64_t mantissa = whole > 0 ? digitsValue(w, whole) : 0;
+  bool anyDigit = whole > 0;
+  p += whole;
+  NumberScan s;
+  int places = 0;
+  if (p < end && *p == '.') {
+    s.hasPoint = true;
+    ++p;
+    std::memcpy(&w, p, 8);
+    places = static_cast<int>(std::min<std::ptrdiff_t>(leadingDigits(w), end - p));
+    if (places == 8) return scanNumberByBytes(text, pos, limit);
+    constexpr std::uint64_t kScale[8] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000};
+    if (places > 0) mantissa = mantissa * kScale[places] + digitsValue(w, places);
+    anyDigit |= places > 0;
+    p += places;
+  }
+  s.end = static_cast<std::size_t>(p - base);
+  if (!anyDigit) return s;  // Missing
+  s.status = NumberScan::Ok;
+  double v = static_cast<double>(mantissa);
+  if (places > 0) v /= kPowersOfTen[places];
+  s.value = negative ? -v : v;
+  return s;
+}
+
+/// scanNumber one character at a time: any length.
+NumberScan scanNumberByBytes(std::string_view text, std::size_t pos, std::size_t limit) {
   NumberScan s;
   const char* const base = text.data();
   const char* p = base + pos;
@@ -216,6 +278,7 @@ class LineParser {
   std::size_t parseBlock(std::size_t i, std::size_t end, std::uint32_t line) {
     while (i < end && isBlank(text_[i])) ++i;
     if (i >= end) return end;
+    if (options_.plainLines && tryPlainLine(i, end, line)) return end;
     if (trySetting(i, end, line)) return end;
 
     Block block;
@@ -366,24 +429,25 @@ class LineParser {
 
   /// Fanuc macro B: `#100 = ...`, `WHILE[...]DO1`, `END1`, `IF[...]GOTO10`, `GOTO10`, `DO1`.
   bool isMacroStatement(std::size_t i, std::size_t end) const {
-    switch (upper(text_[i])) {  // the common block starts with G, M, N, X ...: out at once
+    // One keyword at most starts with the block's first letter: the common block (G, M, N, X ...)
+    // is out after one comparison, a G block after one more.
+    auto numbered = [&](std::string_view kw) {  // END1, DO1
+      return startsWithKeyword(text_, i, end, kw) && i + kw.size() < end && isDigit(text_[i + kw.size()]);
+    };
+    switch (upper(text_[i])) {
       case '#': return true;
-      case 'W':
-      case 'G':
-      case 'I':
-      case 'E':
-      case 'D': break;
+      case 'W': return startsWithKeyword(text_, i, end, "WHILE");
+      case 'G': return i + 1 < end && upper(text_[i + 1]) == 'O' && startsWithKeyword(text_, i, end, "GOTO");
+      case 'E': return numbered("END");
+      case 'D': return numbered("DO");
+      case 'I': {
+        if (!startsWithKeyword(text_, i, end, "IF")) return false;
+        std::size_t k = i + 2;
+        while (k < end && isBlank(text_[k])) ++k;
+        return k < end && text_[k] == '[';
+      }
       default: return false;
     }
-    if (startsWithKeyword(text_, i, end, "WHILE") || startsWithKeyword(text_, i, end, "GOTO")) return true;
-    if (startsWithKeyword(text_, i, end, "IF")) {
-      std::size_t k = i + 2;
-      while (k < end && isBlank(text_[k])) ++k;
-      return k < end && text_[k] == '[';
-    }
-    for (std::string_view kw : {std::string_view("END"), std::string_view("DO")})
-      if (startsWithKeyword(text_, i, end, kw) && i + kw.size() < end && isDigit(text_[i + kw.size()])) return true;
-    return false;
   }
 
   void noteMacroStatement(std::size_t begin, std::size_t blockEnd, std::uint32_t line) {
@@ -463,6 +527,64 @@ class LineParser {
   }
 
   /// `H001 = +0.13`, `C000 = ...`, `E001= ...`: letter, digits, blanks, '='.
+  /// The rest of the line, from i, as one plain block (Block::plain) written the usual way: upper
+  /// case words X Y I J R F and G00-G03, each a number within range, one space between them,
+  /// nothing after but blanks; the motion codes as parseWord allows them, no letter but G twice.
+  /// Read here the way parseBlock reads it, word for word (push, finish); false, with nothing
+  /// read, for any other line.
+  bool tryPlainLine(std::size_t i, std::size_t end, std::uint32_t line) {
+    struct Pending {
+      std::size_t start, stop;
+      char letter;
+      double value;
+      bool hasPoint;
+    };
+    constexpr std::size_t kMost = 8;
+    std::array<Pending, kMost> words{};
+    std::size_t count = 0;
+    std::uint32_t letters = 0;
+    bool coordinate = false, motion = false;
+    while (true) {
+      const char c = text_[i];
+      if (!(c == 'G' || c == 'X' || c == 'Y' || c == 'I' || c == 'J' || c == 'R' || c == 'F') || count == kMost)
+        return false;
+      const NumberScan n = scanNumber(text_, i + 1, end);
+      if (n.status != NumberScan::Ok || std::abs(n.value) >= kLargestNumber) return false;
+      if (c == 'G') {
+        if (!(n.value == 0 || n.value == 1 || n.value == 2 || n.value == 3) || (coordinate && motion)) return false;
+        motion = true;
+      } else {
+        const std::uint32_t bit = 1u << (c - 'A');
+        if (letters & bit) return false;
+        letters |= bit;
+        coordinate = coordinate || c != 'F';
+      }
+      words[count++] = {i, n.end, c, n.value, n.hasPoint};
+      i = n.end;
+      if (i < end && text_[i] == ' ' && i + 1 < end && text_[i + 1] != ' ') {
+        ++i;
+        continue;
+      }
+      while (i < end && isBlank(text_[i])) ++i;
+      if (i < end) return false;
+      break;
+    }
+    Block block;
+    block.firstWord = static_cast<std::uint32_t>(program_.words.size());
+    block.offset = static_cast<std::uint32_t>(words[0].start);
+    block.line = line;
+    upperLetters_ = false;
+    splitAt_ = -1;
+    colon_ = false;
+    for (std::size_t k = 0; k < count; ++k)
+      push(block, words[k].start, words[k].stop, words[k].letter, WordValue::Number, words[k].value, words[k].hasPoint);
+    // What assignSides makes of one side without a letter twice: every word on it, in order.
+    block.upperFrom = static_cast<std::uint16_t>(count);
+    hasUpper_ = true;
+    finish(block, end);
+    return true;
+  }
+
   bool trySetting(std::size_t i, std::size_t end, std::uint32_t line) {
     const std::size_t start = i;
     if (!isLetter(text_[i])) return false;

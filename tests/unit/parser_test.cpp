@@ -572,3 +572,65 @@ TEST(parser, plain_blocks_hold_only_motion_codes_and_coordinates) {
   for (std::size_t k = 0; k < expected.size(); ++k)
     EXPECT_EQ(p.blocks[k].plain, expected[k]) << "line " << p.blocks[k].line;
 }
+
+// Lines of plain words are read a short way (parser.cpp, tryPlainLine): on lines near that form
+// and not quite in it, it must give what the general way gives — words, blocks, settings and
+// diagnostics alike.
+TEST(parser, plain_lines_read_the_short_way_give_what_the_general_way_gives) {
+  std::mt19937 rng(424242);
+  const std::vector<std::string> letters = {"G", "X", "Y", "I", "J", "R", "F", "x", "U", "N", "M", "T", "Z", "H"};
+  const std::vector<std::string> numbers = {
+      "0",          "1",          "2",   "3",     "01",         "4",  "28",       "12.5",
+      "-3.25",      "+7",         ".5",  "5.",    "0.0001",     "-0", "12345678", "1234567.1234567",
+      "1.12345678", "1e3",        "1,5", "1.2.3", "2000000000", "",   "#1",       "H1",
+      "3-4",        "999999999.9"};
+  const std::vector<std::string> gaps = {" ", " ", " ", "  ", "\t", "", " ; x", " (c)", " =", ": "};
+  std::string text;
+  for (int line = 0; line < 3000; ++line) {
+    const int words = 1 + static_cast<int>(rng() % 6);
+    if (rng() % 20 == 0) text += "/";
+    if (rng() % 25 == 0) text += "  ";
+    for (int k = 0; k < words; ++k) {
+      const bool plain = rng() % 4 != 0;
+      text += letters[plain ? rng() % 7 : rng() % letters.size()];
+      text += plain ? numbers[rng() % 14] : numbers[rng() % numbers.size()];
+      if (k + 1 < words) text += plain ? " " : gaps[rng() % gaps.size()];
+    }
+    if (rng() % 10 == 0) text += "  ";
+    text += rng() % 15 == 0 ? "\r\n" : "\n";
+  }
+  SourceFile src("p.nc", text);
+  Diagnostics fastDiags(1000000), slowDiags(1000000);
+  ParseOptions slowOptions;
+  slowOptions.plainLines = false;
+  const Program fast = parseProgram(src, fastDiags);
+  const Program slow = parseProgram(src, slowDiags, slowOptions);
+  ASSERT_EQ(fast.words.size(), slow.words.size());
+  for (std::size_t k = 0; k < fast.words.size(); ++k) {
+    const Word &a = fast.words[k], &b = slow.words[k];
+    ASSERT_TRUE(a.letter == b.letter && a.offset == b.offset && a.length == b.length && a.kind == b.kind &&
+                a.hasPoint == b.hasPoint && (a.value == b.value || (a.value != a.value && b.value != b.value)))
+        << "word " << k << " on line " << src.locate(a.offset).line;
+  }
+  ASSERT_EQ(fast.blocks.size(), slow.blocks.size());
+  std::size_t plain = 0;
+  for (std::size_t k = 0; k < fast.blocks.size(); ++k) {
+    const Block &a = fast.blocks[k], &b = slow.blocks[k];
+    ASSERT_TRUE(a.firstWord == b.firstWord && a.offset == b.offset && a.length == b.length && a.line == b.line &&
+                a.wordCount == b.wordCount && a.upperFrom == b.upperFrom && a.kind == b.kind && a.colon == b.colon &&
+                a.twoMotions == b.twoMotions && a.blockDelete == b.blockDelete && a.hasError == b.hasError &&
+                a.lowerCase == b.lowerCase && a.unusualValues == b.unusualValues && a.plain == b.plain)
+        << "block on line " << a.line;
+    plain += a.plain;
+  }
+  EXPECT_GT(plain, 500u);  // the short way was taken
+  EXPECT_LT(plain, fast.blocks.size() - 500);
+  EXPECT_EQ(fast.settings.size(), slow.settings.size());
+  EXPECT_EQ(fast.anyDecimalPoint, slow.anyDecimalPoint);
+  EXPECT_EQ(fast.integerLengthWords, slow.integerLengthWords);
+  EXPECT_EQ(fast.largestInteger, slow.largestInteger);
+  EXPECT_EQ(fast.largestIntegerWord, slow.largestIntegerWord);
+  ASSERT_EQ(fastDiags.all().size(), slowDiags.all().size());
+  for (std::size_t k = 0; k < fastDiags.all().size(); ++k)
+    EXPECT_EQ(formatDiagnostic(fastDiags.all()[k]), formatDiagnostic(slowDiags.all()[k]));
+}

@@ -115,6 +115,9 @@ struct ParseOptions {
   bool semicolonEndsBlock = false;
   /// The second plane's axes are named U Z: read Z as V (some hot-wire firmware).
   bool upperAxesUZ = false;
+  /// Lines of plain words only (Block::plain, written the usual way) are read by a short way
+  /// that gives the same words and block; false reads every line the general way (for tests).
+  bool plainLines = true;
 
   bool operator==(const ParseOptions&) const = default;
 };

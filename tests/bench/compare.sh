@@ -52,6 +52,17 @@ for n in ${KERF_COMPARE_STARS:-10000 100000 1000000}; do
     "$n" "$kmin" "$kmed" "$kmax" "$cmin" "$cmed" "$cmax" "$(awk -v a="$kmed" -v b="$cmed" 'BEGIN {print a / b}')"
 done
 
+# run OUT CMD...: appends "seconds KiB" of one run of CMD to OUT (stdout and stderr dropped): the
+# wall time to the millisecond from the clock around it (GNU time's own is in hundredths, a tenth
+# of a run of kerf check), the peak memory from GNU time.
+run() {
+  local out=$1 t0 t1
+  shift
+  t0=$(date +%s%N)
+  /usr/bin/time -f "%M" -o "$work/mem" "$@" > /dev/null 2>&1 || true
+  t1=$(date +%s%N)
+  echo "$(awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.3f", (b - a) / 1e9}') $(tail -1 "$work/mem")" >> "$out"
+}
 stats_pair() {  # label, file of "seconds KiB" lines -> "min / median / max s, median MiB"
   read -r a b c < <(cut -d' ' -f1 "$1" | stats)
   read -r _ m _ < <(cut -d' ' -f2 "$1" | stats)
@@ -82,9 +93,9 @@ if [[ "${KERF_COMPARE_READER:-1}" != 0 ]] && command -v rs274 > /dev/null; then
   bytes=$(stat -c %s "$work/program.ngc")
   : > "$work/kt" && : > "$work/km" && : > "$work/rt" && : > "$work/rm"
   for ((r = 0; r < runs; ++r)); do
-    /usr/bin/time -f "%e %M" -o "$work/t" "$build/viewer/kerf" check "$work/program.ngc" > /dev/null
+    : > "$work/t" && run "$work/t" "$build/viewer/kerf" check "$work/program.ngc"
     read -r t m < "$work/t" && echo "$t" >> "$work/kt" && echo "$m" >> "$work/km"
-    /usr/bin/time -f "%e %M" -o "$work/t" rs274 -g "$work/program.ngc" /dev/null > /dev/null 2>&1
+    : > "$work/t" && run "$work/t" rs274 -g "$work/program.ngc" /dev/null
     read -r t m < "$work/t" && echo "$t" >> "$work/rt" && echo "$m" >> "$work/rm"
   done
   read -r kmin kmed kmax < <(stats < "$work/kt")

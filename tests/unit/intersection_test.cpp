@@ -227,6 +227,16 @@ TEST(closure, open_path_has_no_loop) {
   EXPECT_NEAR(c.gap, std::sqrt(200.0), 1e-12);
 }
 
+/// The first segment k whose end meets the start of a segment v <= k, and the earliest such v,
+/// by comparing every pair: what analyseClosure must find.
+std::pair<std::optional<std::size_t>, std::optional<std::size_t>> firstLoopOfEveryPair(const std::vector<Segment>& p,
+                                                                                       double tol) {
+  for (std::size_t k = 0; k < p.size(); ++k)
+    for (std::size_t v = 0; v <= k; ++v)
+      if ((p[v].start - p[k].end).norm() <= tol && !(v == k && p[k].length() <= tol)) return {v, k};
+  return {};
+}
+
 TEST(closure, the_first_loop_is_the_one_a_search_of_every_pair_finds) {
   // Random walks on a coarse grid (so the walk comes back to where it was), jittered within the
   // tolerance, some of 20,000 steps: the table's answer (first end on an earlier start, earliest
@@ -248,14 +258,7 @@ TEST(closure, the_first_loop_is_the_one_a_search_of_every_pair_finds) {
       p.push_back(Segment::line(start, next));
       at = next;
     }
-    std::optional<std::size_t> from, to;
-    for (std::size_t k = 0; k < p.size() && !to; ++k)
-      for (std::size_t v = 0; v <= k; ++v)
-        if ((p[v].start - p[k].end).norm() <= tol && !(v == k && p[k].length() <= tol)) {
-          from = v;
-          to = k;
-          break;
-        }
+    const auto [from, to] = firstLoopOfEveryPair(p, tol);
     const ClosureReport c = analyseClosure(p, tol);
     EXPECT_EQ(c.loopFrom, from) << "trial " << trial;
     EXPECT_EQ(c.loopTo, to) << "trial " << trial;
@@ -285,14 +288,7 @@ TEST(closure, an_end_just_inside_or_outside_the_tolerance_of_a_start_anywhere_on
       }
       p.push_back(Segment::line(start, end));
     }
-    std::optional<std::size_t> from, to;
-    for (std::size_t k = 0; k < p.size() && !to; ++k)
-      for (std::size_t v = 0; v <= k; ++v)
-        if ((p[v].start - p[k].end).norm() <= tol && !(v == k && p[k].length() <= tol)) {
-          from = v;
-          to = k;
-          break;
-        }
+    const auto [from, to] = firstLoopOfEveryPair(p, tol);
     const ClosureReport c = analyseClosure(p, tol);
     EXPECT_EQ(c.loopFrom, from) << "trial " << trial;
     EXPECT_EQ(c.loopTo, to) << "trial " << trial;
@@ -438,15 +434,8 @@ std::vector<Segment> zigzagOverLine(int n) {
 /// Runs f with KERF_THREADS set to threads (restored after).
 template <typename F>
 auto withThreads(const char* threads, F&& f) {
-  const char* before = std::getenv("KERF_THREADS");
-  const std::string saved = before ? before : "";
-  setenv("KERF_THREADS", threads, 1);
-  auto result = f();
-  if (before)
-    setenv("KERF_THREADS", saved.c_str(), 1);
-  else
-    unsetenv("KERF_THREADS");
-  return result;
+  const kerf::test::ScopedThreads scoped(threads);
+  return f();
 }
 
 bool sameContacts(const SelfIntersectionResult& a, const SelfIntersectionResult& b) {

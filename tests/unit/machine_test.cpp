@@ -6,6 +6,7 @@
 #include "kerf/converter/report.h"
 
 #include "converter_support.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -331,24 +332,6 @@ TEST(machine_test, between_contours_the_iso_writer_cuts_and_threads_the_wire_as_
   EXPECT_EQ(written(*bare).find("M00"), std::string::npos);
 }
 
-namespace {
-
-/// Runs f with KERF_THREADS set to threads (restored after).
-template <typename F>
-auto withThreads(const char* threads, F&& f) {
-  const char* before = std::getenv("KERF_THREADS");
-  const std::string saved = before ? before : "";
-  setenv("KERF_THREADS", threads, 1);
-  auto result = f();
-  if (before)
-    setenv("KERF_THREADS", saved.c_str(), 1);
-  else
-    unsetenv("KERF_THREADS");
-  return result;
-}
-
-}  // namespace
-
 // The closure, the summary and the lower contour's self-intersection run at once (checks.cpp):
 // the diagnostics come in the order of one thread, the open path's warning before the crossings.
 TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_on_many) {
@@ -357,13 +340,12 @@ TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_o
     text += "G01 X" + std::to_string(3 + k % 2 * 40) + " Y" + std::to_string(2 + k) + "\n";
   text += "G01 X20 Y0\nM02\n";
   auto listed = [&](const char* threads) {
-    return withThreads(threads, [&] {
-      const Pipeline p = read(text);
-      std::vector<std::string> out;
-      for (const Diagnostic& d : p.diags.all())
-        out.push_back(std::string(codeName(d.code)) + " @" + std::to_string(d.span.offset) + " " + d.message);
-      return out;
-    });
+    const kerf::test::ScopedThreads scoped(threads);
+    const Pipeline p = read(text);
+    std::vector<std::string> out;
+    for (const Diagnostic& d : p.diags.all())
+      out.push_back(std::string(codeName(d.code)) + " @" + std::to_string(d.span.offset) + " " + d.message);
+    return out;
   };
   const std::vector<std::string> one = listed("1");
   auto count = [&](Code c) {

@@ -422,20 +422,13 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "wire programs usually thread the wire again (M-code) at a new start hole"));
   }
 
-  // The lower contour's self-intersection with the caller's work beside it, then the closure
-  // (each on the cores it can use). The contour needs only whether the path ends at its start,
-  // known before the closure is analysed; its diagnostics are kept apart and follow the closure's,
-  // in the order of one thread. The closure's table is made only once the contour's sweep has
-  // given its memory back: the two at once took 6 bytes a move more at the peak.
-  const bool endsAtStart = (path.segments.back().end - path.segments.front().start).norm() <= options.tolerance;
-  MovePairs seen;
-  Diagnostics lowerDiags(diags.cap());
-  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
-  geometry::parallelInvoke([&] { checkContour(lower, endsAtStart, toolpath, src, options, lowerDiags, seen); },
+  // Closure, with the caller's work beside it on another core. The closure's table is then the
+  // only large memory: beside the self-intersection test it took 6 bytes a move more at the peak.
+  geometry::ClosureReport closure;
+  geometry::parallelInvoke([&] { closure = geometry::analyseClosure(path.segments, options.tolerance); },
                            [&] {
                              if (beside) beside();
                            });
-  const geometry::ClosureReport closure = geometry::analyseClosure(path.segments, options.tolerance);
   if (!closure.loopFrom) {
     const Move& last = moves[path.moveIndex.back()];
     diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(),
@@ -443,7 +436,10 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "the cut path never closes a loop: the part stays attached (the end is " +
                              formatFixed(closure.gap, 3) + " mm from the start)"));
   }
-  diags.append(std::move(lowerDiags));
+
+  MovePairs seen;
+  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
+  checkContour(lower, closure.endsAtStart, toolpath, src, options, diags, seen);
   if (!taper) return;
 
   Contour upper;

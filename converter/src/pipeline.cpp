@@ -72,8 +72,8 @@ void summarizeInto(Pipeline& out, const PipelineOptions& options) {
 }
 
 /// The checks, with the machine's limits unless the user gave others; the summary is made on
-/// another core while the lower contour is tested (it reads the toolpath and the measures, which
-/// the checks do not write).
+/// another core while the closure is analysed (it reads the toolpath and the measures, which the
+/// checks do not write).
 void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;

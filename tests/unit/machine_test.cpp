@@ -332,8 +332,9 @@ TEST(machine_test, between_contours_the_iso_writer_cuts_and_threads_the_wire_as_
   EXPECT_EQ(written(*bare).find("M00"), std::string::npos);
 }
 
-// The closure, the summary and the lower contour's self-intersection run at once (checks.cpp):
-// the diagnostics come in the order of one thread, the open path's warning before the crossings.
+// The checks run on several cores (the closure beside the summary, the sweep's pair tests in
+// batches): what they say, and its order, is what one thread says, the open path's warning before
+// the crossings on the same move included.
 TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_on_many) {
   std::string text = "G92 X0 Y0\nG01 X1 Y0\nG00 X2 Y0\nG01 X2 Y1\n";
   for (int k = 0; k < 20; ++k)  // a zigzag up, then one move down across it: crossings, never closed
@@ -355,7 +356,7 @@ TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_o
   EXPECT_EQ(count(Code::RapidInsideCut), 1);
   EXPECT_GT(count(Code::PathCrossesItself), 15);
   // The crossings are all on the last move, where the closure's warning is too (a tie in
-  // position): that warning comes first, as one thread reports them.
+  // position): that warning comes first, as the checks report them.
   const auto open = std::find_if(one.begin(), one.end(),
                                  [](const std::string& s) { return s.starts_with(codeName(Code::PathOpen)); });
   ASSERT_NE(open, one.end());

@@ -39,9 +39,9 @@ struct SurfaceMeasures;
 ///    neighbouring patches cross, K0654 neighbouring patches fold over each other: found on
 ///    surfaceLevels - 1 horizontal sections, each tested exactly (docs/taper.md).
 /// measures, when given, are measureSurface(toolpath) (so `kerf check` computes them once).
-/// beside, when given, runs once, on another core while the lower contour's self-intersection is
-/// tested (its memory is small: the closure's table comes after, once the sweep's is given back):
-/// `kerf check` makes its summary there. It must not write what the checks read.
+/// beside, when given, runs once, on another core while the closure is analysed (the closure's
+/// table is the only large memory then, unlike during the self-intersection test): `kerf check`
+/// makes its summary there. It must not write what the checks read.
 void checkToolpath(const Toolpath& toolpath, const SourceFile* source, const CheckOptions& options, Diagnostics& diags,
                    const SurfaceMeasures* measures = nullptr, const std::function<void()>& beside = {});
 

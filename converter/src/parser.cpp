@@ -526,7 +526,6 @@ class LineParser {
                  std::move(help));
   }
 
-  /// `H001 = +0.13`, `C000 = ...`, `E001= ...`: letter, digits, blanks, '='.
   /// The rest of the line, from i, as one plain block (Block::plain) written the usual way: upper
   /// case words X Y I J R F and G00-G03, each a number within range, one space between them,
   /// nothing after but blanks; the motion codes as parseWord allows them, no letter but G twice.
@@ -545,13 +544,14 @@ class LineParser {
     std::uint32_t letters = 0;
     bool coordinate = false, motion = false;
     while (true) {
+      if (count == kMost) return false;
       const char c = text_[i];
-      if (!(c == 'G' || c == 'X' || c == 'Y' || c == 'I' || c == 'J' || c == 'R' || c == 'F') || count == kMost)
-        return false;
       const NumberScan n = scanNumber(text_, i + 1, end);
-      if (n.status != NumberScan::Ok || std::abs(n.value) >= kLargestNumber) return false;
+      if (n.status != NumberScan::Ok || std::abs(n.value) >= kLargestNumber ||
+          !isPlainWord(c, WordValue::Number, n.value))
+        return false;
       if (c == 'G') {
-        if (!(n.value == 0 || n.value == 1 || n.value == 2 || n.value == 3) || (coordinate && motion)) return false;
+        if (coordinate && motion) return false;  // a second motion word opens the upper side
         motion = true;
       } else {
         const std::uint32_t bit = 1u << (c - 'A');
@@ -585,6 +585,7 @@ class LineParser {
     return true;
   }
 
+  /// `H001 = +0.13`, `C000 = ...`, `E001= ...`: letter, digits, blanks, '='.
   bool trySetting(std::size_t i, std::size_t end, std::uint32_t line) {
     const std::size_t start = i;
     if (!isLetter(text_[i])) return false;

@@ -22,10 +22,9 @@ namespace {
 /// a tag, so a match is a candidate only; the caller measures the distance anyway. There are 1.5
 /// slots a vertex (any count, not a power of two: the slot is the hash scaled to the table), so
 /// the table is 9 bytes a vertex, 1.8 MB at 200,000; a probe then scans about 10 tags (measured on
-/// a 200,000-vertex ring). Twice the slots scan 2.5 and save a fifth of the closure's time, but the
-/// closure runs beside the self-intersection and its memory adds to the peak of kerf check (4.0
-/// bytes a byte of input instead of 3.9). Slots of 24 bytes (both cell coordinates and the
-/// vertex) at twice the vertices took 12.6 MB.
+/// a 200,000-vertex ring). Twice the slots scan 2.5 and save a fifth of the closure's time for 3
+/// bytes a vertex more; not kept, as `kerf check`'s time did not move measurably. Slots of 24
+/// bytes (both cell coordinates and the vertex) at twice the vertices took 12.6 MB.
 class CellTable {
  public:
   explicit CellTable(std::size_t expected) : size_(std::max<std::size_t>(16, expected + expected / 2)) {

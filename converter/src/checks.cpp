@@ -120,15 +120,37 @@ struct Contour {
   bool seamAllowed = false;  ///< a taper program: contacts at the taper's seam are notes
 };
 
-/// Self-intersection of one contour, exact on lines and arcs. The pairs found go to seen.
-void checkContour(const Contour& c, bool closed, const Toolpath& toolpath, const SourceFile* src,
-                  const CheckOptions& options, Diagnostics& diags, MovePairs& seen) {
-  const auto& moves = toolpath.moves;
+/// A contour's self-intersections, exact on lines and arcs, and its closure: the first loop
+/// comes from the same sweep when it met every pair, else from the closure's own search.
+struct ContourTest {
+  geometry::SelfIntersectionResult result;
+  geometry::ClosureReport closure;
+};
+
+ContourTest testContour(const Contour& c, const CheckOptions& options) {
+  ContourTest t;
+  const geometry::SegmentView& s = c.segments;
+  t.closure.gap = (s.back().end - s.front().start).norm();
+  t.closure.endsAtStart = t.closure.gap <= options.tolerance;
   geometry::SelfIntersectionOptions so;
   so.tolerance = options.tolerance;
-  so.closed = closed;
+  so.closed = t.closure.endsAtStart;
   so.maxContacts = options.maxContacts;
-  const geometry::SelfIntersectionResult result = geometry::findSelfIntersections(c.segments, so);
+  so.findLoop = true;
+  t.result = geometry::findSelfIntersections(s, so);
+  if (t.result.loopKnown) {
+    t.closure.loopFrom = t.result.loopFrom;
+    t.closure.loopTo = t.result.loopTo;
+  } else {
+    t.closure = geometry::analyseClosure(s, options.tolerance);
+  }
+  return t;
+}
+
+/// Reports the self-intersections of one contour. The pairs found go to seen.
+void checkContour(const Contour& c, const geometry::SelfIntersectionResult& result, const Toolpath& toolpath,
+                  const SourceFile* src, const CheckOptions& options, Diagnostics& diags, MovePairs& seen) {
+  const auto& moves = toolpath.moves;
   const std::string name = c.name;
   for (const geometry::Contact& x : result.contacts) {
     const std::size_t mi = c.moveIndex[x.first], mj = c.moveIndex[x.second];
@@ -422,13 +444,12 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "wire programs usually thread the wire again (M-code) at a new start hole"));
   }
 
-  // Closure, with the caller's work beside it on another core. The closure's table is then the
-  // only large memory: beside the self-intersection test it took 6 bytes a move more at the peak.
-  geometry::ClosureReport closure;
-  geometry::parallelInvoke([&] { closure = geometry::analyseClosure(path.segments, options.tolerance); },
-                           [&] {
-                             if (beside) beside();
-                           });
+  // The lower contour's self-intersections and closure, then the caller's work (each on every
+  // core).
+  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
+  ContourTest lowerTest = testContour(lower, options);
+  if (beside) beside();
+  const geometry::ClosureReport& closure = lowerTest.closure;
   if (!closure.loopFrom) {
     const Move& last = moves[path.moveIndex.back()];
     diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(),
@@ -438,8 +459,8 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   }
 
   MovePairs seen;
-  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
-  checkContour(lower, closure.endsAtStart, toolpath, src, options, diags, seen);
+  checkContour(lower, lowerTest.result, toolpath, src, options, diags, seen);
+  lowerTest.result = {};
   if (!taper) return;
 
   Contour upper;
@@ -458,7 +479,8 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
     for (std::size_t i : path.moveIndex) upperSegments.push_back(toolpath.upper[i]);
     upper.segments = upperSegments;
   }
-  const geometry::ClosureReport upperClosure = geometry::analyseClosure(upper.segments, options.tolerance);
+  ContourTest upperTest = testContour(upper, options);
+  const geometry::ClosureReport& upperClosure = upperTest.closure;
   if (closure.loopFrom.has_value() != upperClosure.loopFrom.has_value()) {
     const std::size_t i = path.moveIndex.back();
     const bool lowerClosed = closure.loopFrom.has_value();
@@ -470,7 +492,8 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                     formatFixed(lowerClosed ? upperClosure.gap : closure.gap, 3) +
                     " mm from its start): the wire cannot release the part on both planes"));
   }
-  checkContour(upper, upperClosure.endsAtStart, toolpath, src, options, diags, seen);
+  checkContour(upper, upperTest.result, toolpath, src, options, diags, seen);
+  upperTest.result = {};
   if (!toolpath.heights.known) return;
   const SurfaceMeasures own =
       measures && measures->patches.size() == moves.size() ? SurfaceMeasures{} : measureSurface(toolpath);

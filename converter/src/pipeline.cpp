@@ -71,9 +71,9 @@ void summarizeInto(Pipeline& out, const PipelineOptions& options) {
   if (options.summarize) out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
 }
 
-/// The checks, with the machine's limits unless the user gave others; the summary is made on
-/// another core while the closure is analysed (it reads the toolpath and the measures, which the
-/// checks do not write).
+/// The checks, with the machine's limits unless the user gave others; the summary is made once
+/// the lower contour's self-intersection test is done (it reads the toolpath and the measures,
+/// which the checks do not write).
 void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;

@@ -500,3 +500,84 @@ TEST(closure, the_first_loop_is_the_same_on_every_core) {
     EXPECT_EQ(*r.loopTo, 30000u) << threads;
   }
 }
+
+TEST(closure, the_sweep_finds_the_first_loop_the_closure_finds) {
+  // Random walks of lines and arcs on a coarse grid (they come back to earlier vertices), ends
+  // jittered within or just past the tolerance, some with a full circle or a zero-length move:
+  // findLoop gives analyseClosure's answer (and comparing every pair's) whenever it says it knows
+  // it. The box sweep knows it unless a segment is zero-length or it stopped at maxContacts; the
+  // automatic method may also decide by the other sweep, which does not meet every pair.
+  std::mt19937 rng(23);
+  const double tol = 1e-3;
+  std::uniform_int_distribution<int> step(-1, 1), kind(0, 9);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int known = 0, loops = 0, unknownZero = 0, unknownCut = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    const int n = 20 + trial * 7;
+    std::vector<Segment> p;
+    Vec2 at(0, 0);
+    bool zero = false;
+    for (int k = 0; k < n; ++k) {
+      Vec2 next = at + Vec2(step(rng) * (1 + trial % 3), step(rng) * (1 + k % 3));
+      if (next == at) next.x() += 1;
+      // Some ends fall near an earlier start: 0.999 or 1.001 tolerances from it.
+      if (k > 2 && unit(rng) < 0.05) {
+        std::uniform_int_distribution<int> pick(0, k - 1);
+        const double r = tol * (unit(rng) < 0.5 ? 0.999 : 1.001), a = unit(rng) * 2 * kPi;
+        next = p[static_cast<std::size_t>(pick(rng))].start + r * Vec2(std::cos(a), std::sin(a));
+      }
+      const int what = kind(rng);
+      if (what == 0 && trial % 4 == 1) {  // a full circle through where it stands
+        p.push_back(Segment::arc(at, at, at + Vec2(0.5, 0), ArcDirection::CounterClockwise));
+        continue;
+      }
+      if (what == 1 && trial % 5 == 2) {  // a zero-length move
+        p.push_back(Segment::line(at, at));
+        zero = true;
+        continue;
+      }
+      if (what < 5 && (next - at).norm() > 0.1) {  // a half circle over the chord
+        p.push_back(Segment::arc(at, next, (at + next) / 2,
+                                 what % 2 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise));
+      } else {
+        p.push_back(Segment::line(at, next));
+      }
+      at = next;
+    }
+    // A jittered end may also fall within the tolerance of its own start.
+    zero = zero || std::any_of(p.begin(), p.end(), [&](const Segment& s) { return s.length() <= tol; });
+    SelfIntersectionOptions o;
+    o.tolerance = tol;
+    o.findLoop = true;
+    o.maxContacts = trial % 6 == 5 ? 3 : 1000000;
+    o.method = trial % 2 ? SweepMethod::Boxes : SweepMethod::Auto;
+    const SelfIntersectionResult r = findSelfIntersections(p, o);
+    const auto [from, to] = firstLoopOfEveryPair(p, tol);
+    const ClosureReport c = analyseClosure(p, tol);
+    ASSERT_EQ(c.loopFrom, from) << "trial " << trial;
+    if (!r.loopKnown) {
+      EXPECT_TRUE(zero || r.truncated || o.method == SweepMethod::Auto) << "trial " << trial;
+      unknownZero += zero;
+      unknownCut += !zero && r.truncated;
+      continue;
+    }
+    ++known;
+    EXPECT_FALSE(zero || r.truncated) << "trial " << trial;
+    EXPECT_EQ(r.loopFrom, from) << "trial " << trial;
+    EXPECT_EQ(r.loopTo, to) << "trial " << trial;
+    loops += from.has_value();
+  }
+  EXPECT_GT(known, 60);
+  EXPECT_GT(loops, 40);
+  EXPECT_GT(unknownZero, 5);
+  EXPECT_GT(unknownCut, 5);
+  // Without findLoop nothing is said.
+  const std::vector<Segment> square = polyline({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}});
+  EXPECT_FALSE(findSelfIntersections(square).loopKnown);
+  SelfIntersectionOptions o;
+  o.findLoop = true;
+  const SelfIntersectionResult r = findSelfIntersections(square, o);
+  ASSERT_TRUE(r.loopKnown);
+  EXPECT_EQ(r.loopFrom, std::optional<std::size_t>(0));
+  EXPECT_EQ(r.loopTo, std::optional<std::size_t>(3));
+}

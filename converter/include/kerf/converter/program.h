@@ -42,9 +42,14 @@ struct Word {
   // One byte for both, so that a word stays 16 bytes (a program holds millions of them).
   bool hasPoint : 1 = false;               ///< the number was written with a decimal point
   WordValue kind : 3 = WordValue::Number;  ///< what the value is
-  std::uint16_t length = 0;                ///< bytes of the whole word in the source (letter + value)
-  std::uint32_t offset = 0;                ///< byte offset of the letter
-  double value = 0.0;                      ///< as written (no unit conversion); 0 unless a Number
+  /// The byte's other bits, unused. Named so that copying a word writes whole bytes: with the bits
+  /// unnamed GCC reads the byte first to keep them, and on a fresh page that read maps the zero
+  /// page, so the write after it faults a second time and makes the kernel flush the other cores'
+  /// TLBs (a third of a parse on two cores went there).
+  std::uint8_t unusedBits : 4 = 0;
+  std::uint16_t length = 0;  ///< bytes of the whole word in the source (letter + value)
+  std::uint32_t offset = 0;  ///< byte offset of the letter
+  double value = 0.0;        ///< as written (no unit conversion); 0 unless a Number
 
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
   [[nodiscard]] bool isNumber() const { return kind == WordValue::Number; }
@@ -94,6 +99,7 @@ struct Block {
   /// evidence, labels, calls, polar and rotary words), so they pass such a block by. Most blocks
   /// of a wire program are.
   bool plain : 1 = false;
+  std::uint8_t unusedBit : 1 = 0;  ///< named so that copying a block writes whole bytes (see Word)
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
 };
 static_assert(sizeof(Block) == 24, "a Block is 24 bytes: a program holds one per line");

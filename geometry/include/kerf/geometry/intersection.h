@@ -7,6 +7,7 @@
 #include "kerf/geometry/segment.h"
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -48,12 +49,22 @@ struct SelfIntersectionOptions {
   bool closed = false;            ///< the last segment is a neighbour of the first
   std::size_t maxContacts = 256;  ///< stop collecting after this many
   SweepMethod method = SweepMethod::Auto;
+  /// Also the first loop the path closes, as analyseClosure finds it (contour.h), from the pairs
+  /// the box sweep meets: an end that comes back within the tolerance to an earlier start makes
+  /// their boxes overlap.
+  bool findLoop = false;
 };
 
 struct SelfIntersectionResult {
   std::vector<Contact> contacts;   ///< sorted by (first, second)
   std::size_t candidatePairs = 0;  ///< pairs whose boxes overlapped (tested exactly)
   bool truncated = false;          ///< maxContacts was reached
+  /// With findLoop: true when the box sweep met every pair of segments (it went through, none was
+  /// cut short at maxContacts and no segment was skipped as zero-length), and then the first loop:
+  /// analyseClosure's loopFrom and loopTo, unset when the path closes none. False: the caller asks
+  /// analyseClosure.
+  bool loopKnown = false;
+  std::optional<std::size_t> loopFrom, loopTo;
 };
 
 /// Every place where the path meets itself other than at shared vertices: two segments that meet

@@ -1,6 +1,7 @@
 #include "kerf/converter/source.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 namespace kerf::converter {
@@ -45,8 +46,32 @@ SourceFile::SourceFile(std::string name, std::string text)
   const char* data = text_.data();
   const std::size_t size = text_.size();
   if (std::memchr(data, '\r', size) == nullptr) {  // LF only: the fast way
-    for (const char* p = data; (p = static_cast<const char*>(std::memchr(p, '\n', size - (p - data)))); ++p)
-      lineStarts_.push_back(static_cast<std::uint32_t>(p - data + 1));
+    // Eight bytes at a time: a word's line feeds are its zero bytes after an exclusive or with
+    // "\n" in every byte (the exact test: no false hits from a borrow, as the classic one has).
+    // The starts are counted first, so the list is made at its size once.
+    constexpr std::uint64_t kLow7 = 0x7F7F7F7F7F7F7F7FULL, kFeeds = 0x0A0A0A0A0A0A0A0AULL;
+    auto feedBits = [](std::uint64_t w) {
+      const std::uint64_t x = w ^ kFeeds;
+      return ~(((x & kLow7) + kLow7) | x | kLow7);  // the top bit of each zero byte
+    };
+    const std::size_t words = size / 8;
+    auto load = [&](std::size_t k) {
+      std::uint64_t w;
+      std::memcpy(&w, data + 8 * k, 8);
+      return w;
+    };
+    std::size_t count = 0;
+    // The feeds of a word, one bit in the top of each byte, added up by a multiplication
+    // (std::popcount is a library call on the baseline x86-64).
+    for (std::size_t k = 0; k < words; ++k)
+      count += static_cast<std::size_t>(((feedBits(load(k)) >> 7) * 0x0101010101010101ULL) >> 56);
+    lineStarts_.reserve(count + 1 + (size - 8 * words));
+    for (std::size_t k = 0; k < words; ++k)
+      for (std::uint64_t bits = feedBits(load(k)); bits != 0; bits &= bits - 1)
+        lineStarts_.push_back(
+            static_cast<std::uint32_t>(8 * k + static_cast<std::size_t>(std::countr_zero(bits)) / 8 + 1));
+    for (std::size_t i = 8 * words; i < size; ++i)
+      if (data[i] == '\n') lineStarts_.push_back(static_cast<std::uint32_t>(i + 1));
     return;
   }
   for (std::size_t i = 0; i < size; ++i) {

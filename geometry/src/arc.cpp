@@ -13,7 +13,7 @@ ArcTolerance ArcTolerance::forInch() {
 }
 
 ArcBuild arcFromRadius(const Vec2& start, const Vec2& end, double signedRadius, ArcDirection dir,
-                       const ArcTolerance& tol) {
+                       const ArcTolerance& tol, bool withAngles) {
   ArcBuild out;
   const Vec2 chord = end - start;
   const double chordLength = chord.norm();
@@ -41,7 +41,7 @@ ArcBuild arcFromRadius(const Vec2& start, const Vec2& end, double signedRadius, 
   double side = dir == ArcDirection::CounterClockwise ? 1.0 : -1.0;
   if (signedRadius < 0) side = -side;
   const Vec2 centre = mid + side * h * left;
-  out.arc = Segment::arc(start, end, centre, dir);
+  out.arc = withAngles ? Segment::arc(start, end, centre, dir) : Segment::arcWithoutAngles(start, end, centre, dir);
   return out;
 }
 
@@ -81,7 +81,7 @@ Vec2 seedCentreFromRadiusSigned(const Vec2& start, const Vec2& end, double signe
 }
 
 ArcBuild arcFromCentre(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir,
-                       const ArcTolerance& tol) {
+                       const ArcTolerance& tol, bool withAngles) {
   ArcBuild out;
   const double r0 = (start - centre).norm();
   const double r1 = (end - centre).norm();
@@ -99,7 +99,7 @@ ArcBuild arcFromCentre(const Vec2& start, const Vec2& end, const Vec2& centre, A
     out.status = ArcStatus::EndOffCircle;
     return out;
   }
-  out.arc = Segment::arc(start, end, centre, dir);
+  out.arc = withAngles ? Segment::arc(start, end, centre, dir) : Segment::arcWithoutAngles(start, end, centre, dir);
   return out;
 }
 

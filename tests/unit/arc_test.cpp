@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <random>
 
 using namespace kerf::geometry;
@@ -173,6 +175,29 @@ TEST(segment, point_at_and_length_of_an_arc) {
   const Segment cw = Segment::arc({10, 0}, {-10, 0}, {0, 0}, ArcDirection::Clockwise);
   EXPECT_NEAR((cw.pointAt(0.5) - Vec2(0, -10)).norm(), 0, kEps);
   EXPECT_NEAR((cw.tangentAt(0.0) - Vec2(0, -1)).norm(), 0, kEps);
+}
+
+TEST(segment, angles_completed_later_are_the_angles_made_at_once) {
+  // Arcs of every size, direction and place, full circles and ends just off the circle among
+  // them: an arc made without its angles and completed later is the arc made at once, bit for bit.
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> coord(-1e4, 1e4), unit(0, 1);
+  for (int k = 0; k < 20000; ++k) {
+    const Vec2 centre(coord(rng), coord(rng));
+    const double r = std::pow(10.0, -3 + 7 * unit(rng));
+    const double a0 = unit(rng) * 7 - 0.5, a1 = k % 10 == 0 ? a0 : unit(rng) * 7 - 0.5;
+    const Vec2 start = centre + r * Vec2(std::cos(a0), std::sin(a0));
+    const Vec2 end = k % 10 == 0 ? start : centre + (r + (k % 3) * 1e-9 * r) * Vec2(std::cos(a1), std::sin(a1));
+    const ArcDirection dir = k % 2 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise;
+    const Segment now = Segment::arc(start, end, centre, dir);
+    Segment later = Segment::arcWithoutAngles(start, end, centre, dir);
+    ASSERT_TRUE(later.anglesPending());
+    EXPECT_EQ(later.direction(), dir);
+    later.completeAngles();
+    ASSERT_FALSE(later.anglesPending());
+    ASSERT_EQ(std::memcmp(&now, &later, offsetof(Segment, kind) + 1), 0) << "arc " << k;
+  }
+  EXPECT_FALSE(Segment::line({0, 0}, {1, 0}).anglesPending());
 }
 
 TEST(segment, bounds_include_axis_extremes) {

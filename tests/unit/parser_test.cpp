@@ -558,6 +558,26 @@ TEST(source, a_change_of_one_byte_anywhere_in_a_long_text_is_seen) {
   }
 }
 
+TEST(source, lines_start_after_every_line_feed_wherever_it_falls_in_a_word) {
+  // Texts of random lengths (not multiples of 8), line feeds anywhere (first byte, last byte,
+  // runs of them), bytes around the line feed's (0x0A) and with the top bit set: the line starts
+  // are exactly the bytes after each line feed.
+  std::mt19937 rng(7);
+  const char alphabet[] = {'\n', '\n', 'G', '1', ' ', '\x0B', '\x09', '\x8A', '\x0A', '\xFF', '\x00', 'X'};
+  std::uniform_int_distribution<int> pick(0, sizeof alphabet - 1), length(0, 300);
+  for (int trial = 0; trial < 400; ++trial) {
+    std::string text(static_cast<std::size_t>(length(rng)), ' ');
+    for (char& c : text) c = alphabet[pick(rng)];
+    std::vector<std::uint32_t> starts{0};
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') starts.push_back(static_cast<std::uint32_t>(i + 1));
+    const SourceFile src("t.nc", text);
+    ASSERT_EQ(src.lineCount(), starts.size()) << "trial " << trial;
+    for (std::uint32_t line = 1; line <= starts.size(); ++line)
+      ASSERT_EQ(src.lineRange(line).first, starts[line - 1]) << "trial " << trial << " line " << line;
+  }
+}
+
 // Block::plain marks the blocks the whole-program scans may pass by: motion codes G00-G03 and X Y
 // I J R F only, numbers, upper case, one side.
 TEST(parser, plain_blocks_hold_only_motion_codes_and_coordinates) {

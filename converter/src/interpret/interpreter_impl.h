@@ -221,6 +221,9 @@ class Interpreter {
 
   // Modal state (the interpreter's "settings").
   Dialect dialect_ = Dialect::Plain;
+  // The plain dialect's arcs get their angles after the run, on every core: nothing reads them
+  // before (the 4-axis dialects build the upper side from the lower one as they go).
+  bool deferAngles_ = false;
   Vec2 position_{0, 0};  // in the toolpath frame
   Vec2 shift_{0, 0};     // program coordinates = toolpath coordinates + shift (G92)
   Motion motion_ = Motion::None;

@@ -50,7 +50,7 @@ void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2&
   ++tally_.arcs;
   const Vec2 centres[3] = {start + ij, start - ij, ij - shift};
   for (int k = 0; k < 3; ++k)
-    if (geometry::arcFromCentre(start, end, centres[k], dir, tolerance_).status == geometry::ArcStatus::Ok)
+    if (geometry::arcFromCentre(start, end, centres[k], dir, tolerance_, false).status == geometry::ArcStatus::Ok)
       ++tally_.closes[k];
   if (!closedAsUsed && tally_.firstFailLine == 0) tally_.firstFailLine = line;
 }
@@ -93,7 +93,7 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
       record->centreForm = CentreForm::Radius;
       moveCentreWords_ = Vec2(r, 0);
     }
-    build = geometry::arcFromRadius(start, end, r, dir, tolerance_);
+    build = geometry::arcFromRadius(start, end, r, dir, tolerance_, !deferAngles_);
   } else {
     Vec2 ij(0, 0);
     if (const Word* i = w['I']) ij.x() = length(*i);
@@ -115,7 +115,7 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
       moveCentreWords_ = ij;
       record->centreForm = form;
     }
-    build = geometry::arcFromCentre(start, end, centre, dir, tolerance_);
+    build = geometry::arcFromCentre(start, end, centre, dir, tolerance_, !deferAngles_);
     if (record) tallyArcCentre(start, end, ij, shift, dir, build.status == geometry::ArcStatus::Ok, block.line);
   }
   if (build.status != geometry::ArcStatus::Ok) {

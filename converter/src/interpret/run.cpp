@@ -2,6 +2,8 @@
 // run, and what is settled after the last block (heights, taper contours).
 #include "interpreter_impl.h"
 
+#include "kerf/geometry/parallel.h"
+
 #include "kerf/converter/dialect.h"
 #include "kerf/converter/memory.h"
 
@@ -41,6 +43,7 @@ Interpretation Interpreter::run() {
   toolpath_.reading.integerUnit = options_.integerUnit;
   toolpath_.reading.arcCentre = options_.arcCentre;
   chooseDialect();
+  deferAngles_ = dialect_ == Dialect::Plain;
   indexLabels();
   // A program that runs straight through (no subprogram call or return, no macro call) never
   // comes back to a block it has run: the parse tree behind it may give its memory back.
@@ -99,6 +102,13 @@ Interpretation Interpreter::run() {
   flushUnknown(nullptr);
   if (!toolpath_.endedProperly && !diags_.hasErrors() && n > 0)
     diags_.warning(Code::MissingProgramEnd, src_, program_.blocks.back().span(), "program ends without M02 or M30");
+  if (deferAngles_) {  // each arc's own: on every core
+    std::vector<Move>& moves = toolpath_.moves;
+    geometry::parallelFor(moves.size(), 8192, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        if (moves[i].lower.anglesPending()) moves[i].lower.completeAngles();
+    });
+  }
   resolveHeights();
   if (dialect_ == Dialect::XyuvRel) resolveRel();
   if (dialect_ == Dialect::TaperAngle) resolveTaperAngle();

@@ -41,8 +41,9 @@ struct ArcBuild {
 
 /// R form. Positive R takes the arc of at most 180 degrees, negative R the longer one.
 /// When |R| is short of half the chord by no more than tol.radius, the arc is the half circle.
+/// withAngles false: the arc's angles are left to Segment::completeAngles.
 ArcBuild arcFromRadius(const Vec2& start, const Vec2& end, double signedRadius, ArcDirection dir,
-                       const ArcTolerance& tol = {});
+                       const ArcTolerance& tol = {}, bool withAngles = true);
 
 /// The seed paper's formulas (1) and (2) for the centre of an R arc, written as printed, with its
 /// sign factor zn (G2: zn = +1 for R > 0, -1 for R < 0; G3: the opposite). Kept for teaching and
@@ -63,6 +64,6 @@ int seedSignFactor(ArcDirection dir, double signedRadius);
 /// Centre form: the centre is given (already resolved from I J by the caller's convention).
 /// end == start gives a full circle.
 ArcBuild arcFromCentre(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir,
-                       const ArcTolerance& tol = {});
+                       const ArcTolerance& tol = {}, bool withAngles = true);
 
 }  // namespace kerf::geometry

@@ -579,7 +579,7 @@ std::uint32_t orderKey(float f) {
 /// Sorts (x, segment) pairs that come in the order of their segments by x, then segment: the
 /// order std::sort with std::less gives them. A least-significant-digit radix sort of the keys in
 /// three passes of 11 bits, each stable, so pairs of one x keep their segments' order: O(n), a
-/// tenth of std::sort's time at 200,000 pairs (that sort was a tenth of kerf check's time). A pass
+/// sixth of std::sort's time at 200,000 pairs (that sort was a tenth of kerf check's time). A pass
 /// whose digit is the same in every key is skipped.
 void sortByX(std::vector<std::pair<float, std::uint32_t>>& pairs) {
   constexpr int kBits = 11, kPasses = 3;

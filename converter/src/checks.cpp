@@ -405,10 +405,9 @@ void checkSurface(const Toolpath& toolpath, const CutView& path, bool closed, co
 }  // namespace
 
 void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options, Diagnostics& diags,
-                   const SurfaceMeasures* measures, const std::function<void()>& beside) {
+                   const SurfaceMeasures* measures) {
   const CutView path = cutView(toolpath);
   if (path.segments.empty()) {
-    if (beside) beside();
     // With errors, those say why; alone, this says the program is empty of cuts. It points at
     // the first move (a rapid), or where the program starts when nothing moves.
     if (!diags.hasErrors())
@@ -444,11 +443,9 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "wire programs usually thread the wire again (M-code) at a new start hole"));
   }
 
-  // The lower contour's self-intersections and closure, then the caller's work (each on every
-  // core).
+  // The lower contour's self-intersections and closure.
   Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
   ContourTest lowerTest = testContour(lower, options);
-  if (beside) beside();
   const geometry::ClosureReport& closure = lowerTest.closure;
   if (!closure.loopFrom) {
     const Move& last = moves[path.moveIndex.back()];

@@ -71,9 +71,8 @@ void summarizeInto(Pipeline& out, const PipelineOptions& options) {
   if (options.summarize) out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
 }
 
-/// The checks, with the machine's limits unless the user gave others; the summary is made once
-/// the lower contour's self-intersection test is done (it reads the toolpath and the measures,
-/// which the checks do not write).
+/// The checks, with the machine's limits unless the user gave others, then the summary (it reads
+/// the measures the checks computed).
 void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
@@ -81,11 +80,9 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   releaseSource(out, options);  // the checks and what follows them only quote the text
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
-    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures,
-                  [&] { summarizeInto(out, options); });
-  } else {
-    summarizeInto(out, options);
+    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
   }
+  summarizeInto(out, options);
   out.diags.sortByPosition();
 }
 

@@ -25,6 +25,8 @@ namespace {
 
 // ---- 1. primitive intersections -------------------------------------------------------------
 
+bool near(const Vec2& p, const Vec2& q, double tol) { return (p - q).norm() <= tol; }
+
 void addPoint(SegmentIntersection& r, const Vec2& p, double tol) {
   for (int i = 0; i < r.count; ++i)
     if ((r.points[i] - p).norm() <= tol) return;
@@ -84,8 +86,7 @@ SegmentIntersection lineArc(const Segment& line, const Segment& arc, double tol)
     const Vec2 pt = line.start + std::clamp(ts[i], 0.0, 1.0) * d;
     // Within tol of one of the arc's ends is on the arc, as onArc says (but for its own rounding at
     // exactly tol), without the angle: neighbours meet at such a point, every pair of them.
-    if ((pt - arc.start).norm() <= tol || (pt - arc.end).norm() <= tol || detail::onArc(arc, pt, tol))
-      addPoint(r, pt, tol);
+    if (near(pt, arc.start, tol) || near(pt, arc.end, tol) || detail::onArc(arc, pt, tol)) addPoint(r, pt, tol);
   }
   return r;
 }
@@ -158,7 +159,6 @@ namespace {
 
 // ---- 2. classification ----------------------------------------------------------------------
 
-bool near(const Vec2& p, const Vec2& q, double tol) { return (p - q).norm() <= tol; }
 bool atEnd(const Segment& s, const Vec2& p, double tol) { return near(s.start, p, tol) || near(s.end, p, tol); }
 
 /// Do a and b run the same way along their shared stretch?

@@ -332,9 +332,9 @@ TEST(machine_test, between_contours_the_iso_writer_cuts_and_threads_the_wire_as_
   EXPECT_EQ(written(*bare).find("M00"), std::string::npos);
 }
 
-// The checks run on several cores (the closure beside the summary, the sweep's pair tests in
-// batches): what they say, and its order, is what one thread says, the open path's warning before
-// the crossings on the same move included.
+// The checks run on several cores (the sweep's boxes and pair tests in batches, the closure's
+// probes when it needs its table): what they say, and its order, is what one thread says, the open path's warning
+// before the crossings on the same move included.
 TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_on_many) {
   std::string text = "G92 X0 Y0\nG01 X1 Y0\nG00 X2 Y0\nG01 X2 Y1\n";
   for (int k = 0; k < 20; ++k)  // a zigzag up, then one move down across it: crossings, never closed

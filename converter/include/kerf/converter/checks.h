@@ -4,8 +4,6 @@
 #include "kerf/converter/diagnostics.h"
 #include "kerf/converter/toolpath.h"
 
-#include <functional>
-
 #include <optional>
 
 namespace kerf::converter {
@@ -39,10 +37,7 @@ struct SurfaceMeasures;
 ///    neighbouring patches cross, K0654 neighbouring patches fold over each other: found on
 ///    surfaceLevels - 1 horizontal sections, each tested exactly (docs/taper.md).
 /// measures, when given, are measureSurface(toolpath) (so `kerf check` computes them once).
-/// beside, when given, runs once, on another core while the closure is analysed (the closure's
-/// table is the only large memory then, unlike during the self-intersection test): `kerf check`
-/// makes its summary there. It must not write what the checks read.
 void checkToolpath(const Toolpath& toolpath, const SourceFile* source, const CheckOptions& options, Diagnostics& diags,
-                   const SurfaceMeasures* measures = nullptr, const std::function<void()>& beside = {});
+                   const SurfaceMeasures* measures = nullptr);
 
 }  // namespace kerf::converter

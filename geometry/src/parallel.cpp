@@ -1,6 +1,9 @@
 #include "kerf/geometry/parallel.h"
 
 #include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
 #include <cstdlib>
 #include <exception>
 #include <mutex>
@@ -8,6 +11,93 @@
 #include <vector>
 
 namespace kerf::geometry {
+namespace {
+
+/// Threads kept for parallelFor: a check calls it a score of times, and a thread made and ended
+/// for each call cost more than some of the calls' work (and moved the caller between cores).
+/// One call at a time uses them; a call made while they are busy (from inside a body) makes
+/// threads of its own.
+class Helpers {
+ public:
+  explicit Helpers(std::size_t count) {
+    threads_.reserve(count);
+    try {
+      for (std::size_t i = 1; i <= count; ++i) threads_.emplace_back([this, i] { serve(i); });
+    } catch (...) {  // fewer threads than asked: calls that need more make their own
+    }
+  }
+  Helpers(const Helpers&) = delete;
+  Helpers& operator=(const Helpers&) = delete;
+  ~Helpers() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+      ++generation_;
+    }
+    wake_.notify_all();
+    for (std::thread& t : threads_) t.join();
+  }
+
+  /// Runs task(0) here and task(1) .. task(workers - 1) on the kept threads; false (nothing run)
+  /// when they are busy or too few.
+  bool run(std::size_t workers, const std::function<void(std::size_t)>& task) {
+    if (workers - 1 > threads_.size()) return false;
+    bool idle = false;
+    if (!busy_.compare_exchange_strong(idle, true)) return false;  // a call from inside a body
+    struct Release {
+      std::atomic<bool>& flag;
+      ~Release() { flag.store(false); }
+    } release{busy_};
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      task_ = &task;
+      active_ = workers - 1;
+      pending_ = workers - 1;
+      ++generation_;
+    }
+    wake_.notify_all();
+    task(0);
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return pending_ == 0; });
+    task_ = nullptr;
+    return true;
+  }
+
+ private:
+  void serve(std::size_t index) {
+    std::uint64_t seen = 0;
+    for (;;) {
+      const std::function<void(std::size_t)>* task = nullptr;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        if (stop_) return;
+        seen = generation_;
+        if (index > active_) continue;
+        task = task_;
+      }
+      (*task)(index);
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (--pending_ == 0) done_.notify_one();
+    }
+  }
+
+  std::vector<std::thread> threads_;
+  std::atomic<bool> busy_{false};  // one call at a time
+  std::mutex mutex_;  // what follows
+  std::condition_variable wake_, done_;
+  const std::function<void(std::size_t)>* task_ = nullptr;
+  std::size_t active_ = 0, pending_ = 0;
+  std::uint64_t generation_ = 0;
+  bool stop_ = false;
+};
+
+Helpers& helpers() {
+  static Helpers kept(workerCount() - 1);
+  return kept;
+}
+
+}  // namespace
 
 unsigned workerCount() {
   if (const char* env = std::getenv("KERF_THREADS")) {
@@ -37,6 +127,10 @@ void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(s
       if (!failure) failure = std::current_exception();
     }
   };
+  if (helpers().run(workers, run)) {
+    if (failure) std::rethrow_exception(failure);
+    return;
+  }
   std::vector<std::thread> threads;
   threads.reserve(workers - 1);
   try {

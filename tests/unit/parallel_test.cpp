@@ -133,3 +133,31 @@ TEST(Parallel, InvokeRunsBothOnceAndTogetherWhenThereAreTwoWorkers) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Parallel, CallsFromInsideABodyAndManyInARowEachGiveEveryIndexOnce) {
+  // The kept threads serve one call at a time: a call from inside a body (on the calling thread
+  // or on a kept one) makes threads of its own, and thousands of calls in a row reuse them.
+  const Threads t("3");
+  constexpr std::size_t kOuter = 6, kInner = 50;
+  std::vector<std::atomic<int>> seen(kOuter * kInner);
+  parallelFor(kOuter, 1, [&](std::size_t b, std::size_t e) {
+    for (std::size_t o = b; o < e; ++o)
+      parallelFor(kInner, 1, [&](std::size_t ib, std::size_t ie) {
+        for (std::size_t i = ib; i < ie; ++i) ++seen[o * kInner + i];
+      });
+  });
+  for (std::size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i].load(), 1) << i;
+  std::vector<std::size_t> sums(3000);
+  for (std::size_t call = 0; call < sums.size(); ++call) {
+    std::vector<std::size_t> part(3, 0);
+    parallelFor(3, 1, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) part[i] = call + i;
+    });
+    sums[call] = part[0] + part[1] + part[2];
+  }
+  for (std::size_t call = 0; call < sums.size(); ++call) ASSERT_EQ(sums[call], 3 * call + 3) << call;
+}
+
+}  // namespace

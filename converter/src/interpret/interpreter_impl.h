@@ -1,6 +1,7 @@
 // The interpreter's state and its phases (interpreter.h gives the order). One class, its member
 // functions defined by phase in the files of this folder:
 //   run.cpp            the block loop, limits, labels; the end of the program
+//   simple_runs.cpp    long runs of simple blocks, on every core
 //   read_block.cpp     phase 1: words -> BlockWords
 //   fill_in.cpp        phase 2: BlockWords + modal state -> BlockPlan
 //   check_block.cpp    phase 3: what cannot mean anything
@@ -136,6 +137,15 @@ class HeldWord {
   bool held_ = false;
 };
 
+/// What one stretch of a window of simple blocks ends with (simple_runs.cpp).
+struct SimpleStretch {
+  bool ok = false;
+  Vec2 position{0, 0};
+  Motion motion = Motion::None;
+  const Word* motionWord = nullptr;  ///< the stretch's last motion code
+  ArcCentreTally tally;
+};
+
 class Interpreter {
  public:
   Interpreter(const Program& program, const InterpreterOptions& options, Diagnostics& diags);
@@ -150,6 +160,14 @@ class Interpreter {
   Flow executeBlock(std::size_t pc, std::size_t& next);
   bool readPlainBlock(const Block& block, BlockWords& bw) const;
   void executePlainBlock(const Block& block, const BlockWords& bw);
+  // simple_runs.cpp
+  bool simpleBlock(const Block& b) const;
+  bool parallelRunAllowed(bool straight) const;
+  Vec2 simpleEnd(const Word* x, const Word* y, const Vec2& start) const;
+  bool runSimpleStretch(std::size_t runStart, std::size_t begin, std::size_t end, Move* out, Vec2* centreWords,
+                        std::uint8_t* made, SimpleStretch& result) const;
+  /// Blocks [begin, end), all simple, on every core; false (nothing changed) gives them back.
+  bool runSimpleWindow(std::size_t begin, std::size_t end);
   // read_block.cpp (phase 1)
   bool readBlock(const Block& block, BlockWords& bw, BlockWords& ubw);
   void readWord(const Word& w, BlockWords& bw);
@@ -174,6 +192,9 @@ class Interpreter {
                       bool closedAsUsed, std::uint32_t line);
   void reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block, const std::string& side);
   void push(Move&& m, const Segment& upper);
+  /// The run of moves under one G41/G42 that the move at `index` (about to be, or just, stored)
+  /// starts or extends.
+  void noteOffsetRun(const Move& m, std::size_t index);
   // upper_side.cpp
   bool buildUpper(const BlockWords& bw, const BlockWords& ubw, const Block& block, Move& move, Segment& upper);
   // wire_offset.cpp
@@ -218,14 +239,16 @@ class Interpreter {
   Toolpath toolpath_;
   ArcCentreTally tally_;
   bool released_ = false;  // releaseParsedBefore was called
+  std::size_t blocksInWindows_ = 0;
 
   // Modal state (the interpreter's "settings").
   Dialect dialect_ = Dialect::Plain;
   // The plain dialect's arcs get their angles after the run, on every core: nothing reads them
   // before (the 4-axis dialects build the upper side from the lower one as they go).
   bool deferAngles_ = false;
-  Vec2 position_{0, 0};  // in the toolpath frame
-  Vec2 shift_{0, 0};     // program coordinates = toolpath coordinates + shift (G92)
+  bool anglesDeferred_ = false;  // some arc waits for its angles
+  Vec2 position_{0, 0};          // in the toolpath frame
+  Vec2 shift_{0, 0};             // program coordinates = toolpath coordinates + shift (G92)
   Motion motion_ = Motion::None;
   HeldWord motionWord_;
   bool incremental_ = false;

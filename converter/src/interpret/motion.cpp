@@ -123,6 +123,7 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
     return false;
   }
   out = build.arc;
+  anglesDeferred_ = anglesDeferred_ || deferAngles_;
   return true;
 }
 
@@ -209,20 +210,23 @@ bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, con
 
 void Interpreter::push(Move&& m, const Segment& upper) {
   if (toolpath_.moves.empty()) toolpath_.start = position_;  // the move starts here (in the toolpath frame)
-  // Runs of moves under one G41/G42 (wire_offset.cpp applies them at the end).
-  if (m.wireOffset != WireOffset::Off) {
-    const bool extends = !offsetRuns_.empty() && offsetRuns_.back().end == toolpath_.moves.size() &&
-                         offsetRuns_.back().side == m.wireOffset && offsetRuns_.back().value == offsetValue_ &&
-                         m.kind != MoveKind::Rapid;
-    if (extends)
-      ++offsetRuns_.back().end;
-    else
-      offsetRuns_.push_back({toolpath_.moves.size(), toolpath_.moves.size() + 1, m.wireOffset, offsetValue_, nullptr});
-  }
+  noteOffsetRun(m, toolpath_.moves.size());
   toolpath_.moves.push_back(std::move(m));
   if (dialect_ != Dialect::Plain) toolpath_.upper.push_back(upper);
   if (dialect_ == Dialect::TaperAngle) toolpath_.taperDegrees.push_back(moveTaper_);
   if (options_.recordCentreWords) toolpath_.centreWords.push_back(moveCentreWords_);
+}
+
+void Interpreter::noteOffsetRun(const Move& m, std::size_t index) {
+  // Runs of moves under one G41/G42 (wire_offset.cpp applies them at the end).
+  if (m.wireOffset == WireOffset::Off) return;
+  const bool extends = !offsetRuns_.empty() && offsetRuns_.back().end == index &&
+                       offsetRuns_.back().side == m.wireOffset && offsetRuns_.back().value == offsetValue_ &&
+                       m.kind != MoveKind::Rapid;
+  if (extends)
+    ++offsetRuns_.back().end;
+  else
+    offsetRuns_.push_back({index, index + 1, m.wireOffset, offsetValue_, nullptr});
 }
 
 }  // namespace kerf::converter::interp

@@ -47,7 +47,7 @@ Interpretation Interpreter::run() {
   indexLabels();
   // A program that runs straight through (no subprogram call or return, no macro call) never
   // comes back to a block it has run: the parse tree behind it may give its memory back.
-  bool straight = options_.releaseParsed;
+  bool straight = true;
   for (const Block& b : program_.blocks) {
     if (b.plain) continue;  // no V, M or macro call
     straight = straight && b.kind != BlockKind::MacroCall;
@@ -67,16 +67,38 @@ Interpretation Interpreter::run() {
   for (const Setting& s : program_.settings) toolpath_.settings.push_back(s);
   toolpath_.blocks = program_.blocks.size();
   warnIntegerUnit();
+  const bool release = straight && options_.releaseParsed;
   std::size_t pc = 0;
   const std::size_t n = program_.blocks.size();
+  // Long runs of simple blocks go on every core (simple_runs.cpp): each block is looked at once
+  // to find where its run ends.
+  const std::size_t window = std::max<std::size_t>(options_.parallelRun, options_.parallelWindow);
+  std::size_t runEnd = 0, noWindowBefore = 0;
   while (pc < n) {
+    if (options_.parallelRun > 0 && pc >= noWindowBefore && parallelRunAllowed(straight)) {
+      if (pc >= runEnd)
+        for (runEnd = pc; runEnd < n && simpleBlock(program_.blocks[runEnd]);) ++runEnd;
+      const std::size_t end = std::min(runEnd, pc + window);
+      if (end - pc >= options_.parallelRun && executed_ + (end - pc) <= options_.maxExecutedBlocks &&
+          toolpath_.moves.size() + (end - pc) <= options_.maxMoves) {
+        if (runSimpleWindow(pc, end)) {
+          pc = end;
+          if (release) {
+            releaseParsedBefore(program_, pc);
+            released_ = true;
+          }
+          continue;
+        }
+        noWindowBefore = end;  // the block loop says what the window would not
+      }
+    }
     if (++executed_ > options_.maxExecutedBlocks) {
       diags_.error(Code::ExecutionLimit, src_, program_.blocks[pc].span(),
                    "stopped after " + std::to_string(options_.maxExecutedBlocks) +
                        " executed blocks: the subprogram calls repeat without end or far too often");
       break;
     }
-    if (straight && pc > 0 && pc % 8192 == 0) {
+    if (release && pc > 0 && pc % 8192 == 0) {
       releaseParsedBefore(program_, pc);
       released_ = true;
     }
@@ -102,7 +124,7 @@ Interpretation Interpreter::run() {
   flushUnknown(nullptr);
   if (!toolpath_.endedProperly && !diags_.hasErrors() && n > 0)
     diags_.warning(Code::MissingProgramEnd, src_, program_.blocks.back().span(), "program ends without M02 or M30");
-  if (deferAngles_) {  // each arc's own: on every core
+  if (anglesDeferred_) {  // each arc's own: on every core
     std::vector<Move>& moves = toolpath_.moves;
     geometry::parallelFor(moves.size(), 8192, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
@@ -113,7 +135,7 @@ Interpretation Interpreter::run() {
   if (dialect_ == Dialect::XyuvRel) resolveRel();
   if (dialect_ == Dialect::TaperAngle) resolveTaperAngle();
   resolveWireOffsets();
-  return {std::move(toolpath_), tally_, released_};
+  return {std::move(toolpath_), tally_, released_, blocksInWindows_};
 }
 
 void Interpreter::chooseDialect() {

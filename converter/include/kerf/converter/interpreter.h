@@ -57,6 +57,13 @@ struct InterpreterOptions {
   /// Keep how each arc's centre was written (Toolpath::centreWords, 16 bytes a move): `kerf
   /// explain` shows it; a check does not need it.
   bool recordCentreWords = true;
+  /// Runs of at least this many simple blocks (plain, 2-axis, straight through) are interpreted
+  /// on every core, with the block loop's results (docs/interpreter.md); 0: never.
+  std::size_t parallelRun = 16384;
+  /// Blocks of such a run taken at a time (a window), each cut into stretches, one per worker.
+  std::size_t parallelWindow = std::size_t{1} << 17;
+  /// Stretches a window is cut into; 0: one per worker (geometry::workerCount()).
+  std::size_t parallelStretches = 0;
 };
 
 /// How the arcs given by I J close under each convention (for detecting the convention).
@@ -70,7 +77,8 @@ struct ArcCentreTally {
 struct Interpretation {
   Toolpath toolpath;
   ArcCentreTally arcs;
-  bool parseReleased = false;  ///< part of the parse tree went back (releaseParsed): parse again to rerun
+  bool parseReleased = false;       ///< part of the parse tree went back (releaseParsed): parse again to rerun
+  std::size_t blocksInWindows = 0;  ///< blocks interpreted on every core (InterpreterOptions::parallelRun)
 };
 
 Interpretation interpretProgram(const Program& program, const InterpreterOptions& options, Diagnostics& diags);

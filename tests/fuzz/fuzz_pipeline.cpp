@@ -11,9 +11,37 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <vector>
+
+namespace {
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// The same moves, bit for bit, and the same diagnostics.
+bool sameReading(const kerf::converter::Pipeline& a, const kerf::converter::Pipeline& b) {
+  const auto& x = a.toolpath.moves;
+  const auto& y = b.toolpath.moves;
+  if (x.size() != y.size() || a.diags.all().size() != b.diags.all().size()) return false;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const kerf::geometry::Segment &s = x[i].lower, &t = y[i].lower;
+    if (s.kind != t.kind || !sameBits(s.start.x(), t.start.x()) || !sameBits(s.start.y(), t.start.y()) ||
+        !sameBits(s.end.x(), t.end.x()) || !sameBits(s.end.y(), t.end.y()) || !sameBits(s.centre.x(), t.centre.x()) ||
+        !sameBits(s.centre.y(), t.centre.y()) || !sameBits(s.radius, t.radius) ||
+        !sameBits(s.startAngle, t.startAngle) || !sameBits(s.sweep, t.sweep) || x[i].kind != y[i].kind ||
+        x[i].line != y[i].line || x[i].feedIndex != y[i].feedIndex || x[i].centreForm != y[i].centreForm ||
+        x[i].wireOffset != y[i].wireOffset)
+      return false;
+  }
+  for (std::size_t i = 0; i < a.diags.all().size(); ++i)
+    if (kerf::converter::formatDiagnostic(a.diags.all()[i]) != kerf::converter::formatDiagnostic(b.diags.all()[i]))
+      return false;
+  return true;
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace kerf::converter;
@@ -28,7 +56,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Half the inputs run as kerf check does: the text given back once parsed and read again for
   // the quotes (and for explain, below), here from memory.
   if (size > 0 && (data[0] & 1)) options.rereadSource = [text]() -> std::optional<std::string> { return text; };
+  // Runs of simple blocks go in windows of a few blocks (simple_runs.cpp); for a quarter of the
+  // inputs the block loop alone reads the program again, and the two must agree bit for bit.
+  options.read.parallelRun = 2;
+  options.read.parallelWindow = 16;
   const Pipeline p = runPipeline({"fuzz.nc", text}, options);
+  if (size > 0 && (data[0] & 6) == 6) {
+    PipelineOptions serial = options;
+    serial.read.parallelRun = 0;
+    const Pipeline q = runPipeline({"fuzz.nc", text}, serial);
+    if (!sameReading(p, q)) __builtin_trap();
+  }
   struct {
     const Toolpath& toolpath;
   } a{p.toolpath};

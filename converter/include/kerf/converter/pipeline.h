@@ -58,6 +58,8 @@ struct ReadOptions {
   double curveTolerance = 0.001;               ///< drawing curves (SPLINE, ELLIPSE) as biarcs within this, mm
   std::size_t maxExecutedBlocks = 20'000'000;  ///< the interpreter's limits (InterpreterOptions)
   std::size_t maxMoves = 10'000'000;
+  std::size_t parallelRun = InterpreterOptions{}.parallelRun;  ///< InterpreterOptions (the fuzz target lowers them)
+  std::size_t parallelWindow = InterpreterOptions{}.parallelWindow;
 };
 
 /// The checks' settings; nothing: the machine profile's value.

@@ -1,6 +1,8 @@
 // Sections: 1. the machine profile  2. the conventions from the evidence  3. the pipeline
 #include "kerf/converter/pipeline.h"
 
+#include "kerf/geometry/parallel.h"
+
 #include "kerf/converter/analysis.h"
 #include "kerf/converter/curve.h"
 #include "kerf/converter/points.h"
@@ -227,6 +229,7 @@ void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::opti
 }  // namespace
 
 Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::optional<SourceText> upper) {
+  const geometry::ParallelScope threads;  // parallelFor keeps its threads for the whole reading
   Pipeline out;
   out.source = std::make_unique<SourceFile>(std::move(input.name), std::move(input.text));
   const ReadOptions& ro = options.read;
@@ -287,6 +290,8 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   io.wireOffset = ro.wireOffset;
   io.maxExecutedBlocks = ro.maxExecutedBlocks;
   io.maxMoves = ro.maxMoves;
+  io.parallelRun = ro.parallelRun;
+  io.parallelWindow = ro.parallelWindow;
   io.recordCentreWords = options.centreWords;
   std::vector<std::string> evidence;
   if (ro.integerUnit) {

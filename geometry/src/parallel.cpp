@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -13,10 +14,10 @@
 namespace kerf::geometry {
 namespace {
 
-/// Threads kept for parallelFor: a check calls it a score of times, and a thread made and ended
-/// for each call cost more than some of the calls' work (and moved the caller between cores).
-/// One call at a time uses them; a call made while they are busy (from inside a body) makes
-/// threads of its own.
+/// Threads kept for parallelFor while a ParallelScope lives: a check calls it a score of times,
+/// and a thread made and ended for each call cost more than some of the calls' work (and moved the
+/// caller between cores). One call at a time uses them; a call made while they are busy (from
+/// inside a body, or from another thread) makes threads of its own.
 class Helpers {
  public:
   explicit Helpers(std::size_t count) {
@@ -84,7 +85,7 @@ class Helpers {
 
   std::vector<std::thread> threads_;
   std::atomic<bool> busy_{false};  // one call at a time
-  std::mutex mutex_;  // what follows
+  std::mutex mutex_;               // what follows
   std::condition_variable wake_, done_;
   const std::function<void(std::size_t)>* task_ = nullptr;
   std::size_t active_ = 0, pending_ = 0;
@@ -92,9 +93,13 @@ class Helpers {
   bool stop_ = false;
 };
 
-Helpers& helpers() {
-  static Helpers kept(workerCount() - 1);
-  return kept;
+// The scope's threads; calls take a share of them for as long as they use them.
+std::mutex scopeMutex;
+std::shared_ptr<Helpers> scopeHelpers;  // guarded by scopeMutex
+
+std::shared_ptr<Helpers> currentHelpers() {
+  const std::lock_guard<std::mutex> lock(scopeMutex);
+  return scopeHelpers;
 }
 
 }  // namespace
@@ -127,7 +132,7 @@ void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(s
       if (!failure) failure = std::current_exception();
     }
   };
-  if (helpers().run(workers, run)) {
+  if (const std::shared_ptr<Helpers> kept = currentHelpers(); kept && kept->run(workers, run)) {
     if (failure) std::rethrow_exception(failure);
     return;
   }
@@ -141,6 +146,26 @@ void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(s
   run(0);
   for (std::thread& t : threads) t.join();
   if (failure) std::rethrow_exception(failure);
+}
+
+ParallelScope::ParallelScope() {
+  const std::lock_guard<std::mutex> lock(scopeMutex);
+  if (scopeHelpers || workerCount() < 2) return;  // an outer scope keeps them, or none are needed
+  try {
+    scopeHelpers = std::make_shared<Helpers>(workerCount() - 1);
+    owner_ = true;
+  } catch (...) {  // no threads to keep: the calls make their own
+  }
+}
+
+ParallelScope::~ParallelScope() {
+  std::shared_ptr<Helpers> last;
+  {
+    const std::lock_guard<std::mutex> lock(scopeMutex);
+    if (!owner_) return;
+    last.swap(scopeHelpers);
+  }
+  // The threads end here, or when the last call using them returns.
 }
 
 void parallelInvoke(const std::function<void()>& first, const std::function<void()>& second) {

@@ -13,8 +13,9 @@ attempt=1
 while :; do
   "$@" >"$out" 2>"$err"
   rc=$?
-  if [ "$rc" -ne 0 ] && [ "$attempt" -lt 3 ] && grep -q "^Tracer caught signal" "$err" &&
-     grep -q "LeakSanitizer has encountered a fatal error" "$err"; then
+  # Both streams are searched: a CI run once showed the tracer's message and was not retried.
+  if [ "$rc" -ne 0 ] && [ "$attempt" -lt 3 ] && cat "$out" "$err" | grep -q "^Tracer caught signal" &&
+     cat "$out" "$err" | grep -q "LeakSanitizer has encountered a fatal error"; then
     if [ -n "${KERF_LSAN_RETRY_LOG:-}" ]; then
       echo "attempt $attempt of: $*" >>"$KERF_LSAN_RETRY_LOG"
     fi

@@ -137,8 +137,8 @@ TEST(Parallel, InvokeRunsBothOnceAndTogetherWhenThereAreTwoWorkers) {
 namespace {
 
 TEST(Parallel, CallsFromInsideABodyAndManyInARowEachGiveEveryIndexOnce) {
-  // The kept threads serve one call at a time: a call from inside a body (on the calling thread
-  // or on a kept one) makes threads of its own, and thousands of calls in a row reuse them.
+  // A call from inside a body (on the calling thread or on another) runs its own chunks, and
+  // thousands of calls in a row each give every index once.
   const Threads t("3");
   constexpr std::size_t kOuter = 6, kInner = 50;
   std::vector<std::atomic<int>> seen(kOuter * kInner);
@@ -158,6 +158,41 @@ TEST(Parallel, CallsFromInsideABodyAndManyInARowEachGiveEveryIndexOnce) {
     sums[call] = part[0] + part[1] + part[2];
   }
   for (std::size_t call = 0; call < sums.size(); ++call) ASSERT_EQ(sums[call], 3 * call + 3) << call;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Parallel, AScopeKeepsThreadsForItsCallsAndScopesNest) {
+  // Inside a scope the calls run on kept threads (the same ones, call after call); calls after
+  // the scope, and calls from inside a body, still give every index once.
+  const Threads t("3");
+  const std::thread::id caller = std::this_thread::get_id();
+  auto idsOfOneCall = [&] {
+    std::vector<std::thread::id> ids(3);
+    parallelFor(3, 1, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) ids[i] = std::this_thread::get_id();
+    });
+    return ids;
+  };
+  {
+    const kerf::geometry::ParallelScope outer;
+    const kerf::geometry::ParallelScope inner;  // nested: the outer one keeps the threads
+    const auto first = idsOfOneCall();
+    EXPECT_EQ(first[0], caller);
+    EXPECT_NE(first[1], caller);
+    EXPECT_NE(first[2], caller);
+    std::size_t same = 0;
+    for (int call = 0; call < 20; ++call) {
+      const auto again = idsOfOneCall();
+      same += again[1] == first[1] && again[2] == first[2];
+    }
+    EXPECT_EQ(same, 20u);  // kept, not made again
+  }
+  const auto after = idsOfOneCall();  // the scope's threads are gone; the call makes its own
+  EXPECT_EQ(after[0], caller);
+  EXPECT_NE(after[1], caller);
 }
 
 }  // namespace

@@ -576,6 +576,21 @@ TEST(source, lines_start_after_every_line_feed_wherever_it_falls_in_a_word) {
     for (std::uint32_t line = 1; line <= starts.size(); ++line)
       ASSERT_EQ(src.lineRange(line).first, starts[line - 1]) << "trial " << trial << " line " << line;
   }
+  // Texts of several MiB: runs of feeds, a tail after the last whole word, a feed at the end.
+  for (const std::size_t size : {std::size_t{3} << 20, (std::size_t{5} << 20) + 7}) {
+    std::string text(size, 'X');
+    std::uniform_int_distribution<std::size_t> at(0, size - 1);
+    for (int k = 0; k < 20000; ++k) text[at(rng)] = '\n';
+    for (std::size_t run : {size / 3, 2 * size / 3}) text.replace(run - 4, 9, 9, '\n');
+    text[size - 1] = '\n';
+    std::vector<std::uint32_t> starts{0};
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') starts.push_back(static_cast<std::uint32_t>(i + 1));
+    const SourceFile src("big.nc", text);
+    ASSERT_EQ(src.lineCount(), starts.size()) << size;
+    for (std::uint32_t line = 1; line <= starts.size(); ++line)
+      ASSERT_EQ(src.lineRange(line).first, starts[line - 1]) << size << " line " << line;
+  }
 }
 
 // Block::plain marks the blocks the whole-program scans may pass by: motion codes G00-G03 and X Y

@@ -19,6 +19,21 @@ unsigned workerCount();
 /// every thread has finished.
 void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(std::size_t, std::size_t)>& body);
 
+/// While one lives, parallelFor keeps its threads between calls instead of making and ending
+/// them for each (a check makes a score of calls). The commands open one around a program's
+/// pipeline; the threads end with it, long before the process does (LeakSanitizer's tracer
+/// crashed on threads kept to the end of a process). Scopes nest: the outermost keeps the threads.
+class ParallelScope {
+ public:
+  ParallelScope();
+  ~ParallelScope();
+  ParallelScope(const ParallelScope&) = delete;
+  ParallelScope& operator=(const ParallelScope&) = delete;
+
+ private:
+  bool owner_ = false;
+};
+
 /// Runs first and second at once, second on another thread, when there are two workers or more;
 /// otherwise first, then second. The two must not write what the other reads. An exception from
 /// either is rethrown here once both have finished (one of them, when both throw).

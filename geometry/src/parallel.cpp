@@ -93,12 +93,21 @@ class Helpers {
   bool stop_ = false;
 };
 
-// The scope's threads; calls take a share of them for as long as they use them.
+// The scope's threads, made at the first call that needs them (a short program needs none); calls
+// take a share of them for as long as they use them.
 std::mutex scopeMutex;
+bool scopeOpen = false;                 // guarded by scopeMutex
 std::shared_ptr<Helpers> scopeHelpers;  // guarded by scopeMutex
 
 std::shared_ptr<Helpers> currentHelpers() {
   const std::lock_guard<std::mutex> lock(scopeMutex);
+  if (scopeOpen && !scopeHelpers) {
+    try {
+      scopeHelpers = std::make_shared<Helpers>(workerCount() - 1);
+    } catch (...) {  // no threads to keep: the calls make their own
+      scopeOpen = false;
+    }
+  }
   return scopeHelpers;
 }
 
@@ -150,12 +159,9 @@ void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(s
 
 ParallelScope::ParallelScope() {
   const std::lock_guard<std::mutex> lock(scopeMutex);
-  if (scopeHelpers || workerCount() < 2) return;  // an outer scope keeps them, or none are needed
-  try {
-    scopeHelpers = std::make_shared<Helpers>(workerCount() - 1);
-    owner_ = true;
-  } catch (...) {  // no threads to keep: the calls make their own
-  }
+  if (scopeOpen || scopeHelpers || workerCount() < 2) return;  // an outer scope, or no threads needed
+  scopeOpen = true;
+  owner_ = true;
 }
 
 ParallelScope::~ParallelScope() {
@@ -163,6 +169,7 @@ ParallelScope::~ParallelScope() {
   {
     const std::lock_guard<std::mutex> lock(scopeMutex);
     if (!owner_) return;
+    scopeOpen = false;
     last.swap(scopeHelpers);
   }
   // The threads end here, or when the last call using them returns.

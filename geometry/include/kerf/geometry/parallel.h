@@ -20,7 +20,8 @@ unsigned workerCount();
 void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(std::size_t, std::size_t)>& body);
 
 /// While one lives, parallelFor keeps its threads between calls instead of making and ending
-/// them for each (a check makes a score of calls). The commands open one around a program's
+/// them for each (a check makes a score of calls); they are made at the first call that needs
+/// them, so a short program makes none. The commands open one around a program's
 /// pipeline; the threads end with it, long before the process does (LeakSanitizer's tracer
 /// crashed on threads kept to the end of a process). Scopes nest: the outermost keeps the threads.
 class ParallelScope {

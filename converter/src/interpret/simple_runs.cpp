@@ -111,7 +111,6 @@ bool Interpreter::runSimpleStretch(std::size_t runStart, std::size_t begin, std:
       motion = motionOf(static_cast<GCode>(static_cast<int>(s.g->value)));
       result.motionWord = s.g;
     }
-    made[b - begin] = 0;
     if (!s.lowerWords()) continue;  // the motion or the feed alone
     if (motion == Motion::None) return false;
     const Vec2 start = position;

@@ -89,7 +89,7 @@ std::uint64_t digitsValue(std::uint64_t w, int n) {
 /// integer part is refused and a fraction's further digits are dropped.
 /// Most numbers have at most 7 digits each side of the point: those are read 8 characters at a
 /// time (leadingDigits, digitsValue), to the same mantissa and places as digit by digit.
-NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit) {
+[[gnu::always_inline]] inline NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit) {
   const char* const base = text.data();
   const char* p = base + pos;
   const char* const end = base + limit;
@@ -112,7 +112,7 @@ NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit)
     std::memcpy(&w, p, 8);
     places = static_cast<int>(std::min<std::ptrdiff_t>(leadingDigits(w), end - p));
     if (places == 8) return scanNumberByBytes(text, pos, limit);
-    constexpr std::uint64_t kScale[8] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000};
+    static constexpr std::uint64_t kScale[8] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000};
     if (places > 0) mantissa = mantissa * kScale[places] + digitsValue(w, places);
     anyDigit |= places > 0;
     p += places;
@@ -532,54 +532,78 @@ class LineParser {
   /// Read here the way parseBlock reads it, word for word (push, finish); false, with nothing
   /// read, for any other line.
   bool tryPlainLine(std::size_t i, std::size_t end, std::uint32_t line) {
-    struct Pending {
-      std::size_t start, stop;
-      char letter;
-      double value;
-      bool hasPoint;
-    };
+    // The words go straight to the program (what push keeps, for words known to be plain); a line
+    // that turns out not to be plain takes them back, and the integer-unit figures are kept only
+    // for a line that is.
     constexpr std::size_t kMost = 8;
-    std::array<Pending, kMost> words{};
-    std::size_t count = 0;
+    std::vector<Word>& out = program_.words;
+    const std::size_t first = out.size();
+    auto fail = [&] {
+      out.resize(first);
+      return false;
+    };
     std::uint32_t letters = 0;
     bool coordinate = false, motion = false;
+    bool anyPoint = false;
+    std::uint32_t integers = 0;
+    double largest = program_.largestInteger;
+    std::uint32_t largestWord = program_.largestIntegerWord;
     while (true) {
-      if (count == kMost) return false;
+      if (out.size() - first == kMost) return fail();
       const char c = text_[i];
       const NumberScan n = scanNumber(text_, i + 1, end);
       if (n.status != NumberScan::Ok || std::abs(n.value) >= kLargestNumber ||
           !isPlainWord(c, WordValue::Number, n.value))
-        return false;
+        return fail();
       if (c == 'G') {
-        if (coordinate && motion) return false;  // a second motion word opens the upper side
+        if (coordinate && motion) return fail();  // a second motion word opens the upper side
         motion = true;
       } else {
         const std::uint32_t bit = 1u << (c - 'A');
-        if (letters & bit) return false;
+        if (letters & bit) return fail();
         letters |= bit;
         coordinate = coordinate || c != 'F';
       }
-      words[count++] = {i, n.end, c, n.value, n.hasPoint};
+      Word w;
+      w.letter = c;
+      w.hasPoint = n.hasPoint;
+      w.offset = static_cast<std::uint32_t>(i);
+      w.length = static_cast<std::uint16_t>(std::min<std::size_t>(n.end - i, 0xFFFF));
+      w.value = n.value;
+      if (isLengthLetter(c)) {
+        if (n.hasPoint) {
+          anyPoint = true;
+        } else {
+          ++integers;
+          if (std::abs(n.value) > largest) {
+            largest = std::abs(n.value);
+            largestWord = static_cast<std::uint32_t>(out.size());
+          }
+        }
+      }
+      out.push_back(w);
       i = n.end;
       if (i < end && text_[i] == ' ' && i + 1 < end && text_[i + 1] != ' ') {
         ++i;
         continue;
       }
       while (i < end && isBlank(text_[i])) ++i;
-      if (i < end) return false;
+      if (i < end) return fail();
       break;
     }
+    program_.anyDecimalPoint = program_.anyDecimalPoint || anyPoint;
+    program_.integerLengthWords += integers;
+    program_.largestInteger = largest;
+    program_.largestIntegerWord = largestWord;
     Block block;
-    block.firstWord = static_cast<std::uint32_t>(program_.words.size());
-    block.offset = static_cast<std::uint32_t>(words[0].start);
+    block.firstWord = static_cast<std::uint32_t>(first);
+    block.offset = static_cast<std::uint32_t>(out[first].offset);
     block.line = line;
     upperLetters_ = false;
     splitAt_ = -1;
     colon_ = false;
-    for (std::size_t k = 0; k < count; ++k)
-      push(block, words[k].start, words[k].stop, words[k].letter, WordValue::Number, words[k].value, words[k].hasPoint);
     // What assignSides makes of one side without a letter twice: every word on it, in order.
-    block.upperFrom = static_cast<std::uint16_t>(count);
+    block.upperFrom = static_cast<std::uint16_t>(out.size() - first);
     hasUpper_ = true;
     finish(block, end);
     return true;

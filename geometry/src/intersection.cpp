@@ -171,6 +171,33 @@ bool sameDirection(const Segment& a, const Segment& b, const Vec2& at) {
   return tangentNear(a, at).dot(tangentNear(b, at)) > 0;
 }
 
+/// A line and an arc that follow each other end to end at v (the line's other end lineEnd): true
+/// when lineArc, within tol, finds them meeting at v alone, which classifyPair passes over as the
+/// shared vertex, shown without it. Along the line from v, v + s (lineEnd - v), the carrier meets
+/// the circle where W2 s^2 + 2 p s - e = 0 (g = v - centre, p = g.w, W2 = |w|^2, e = r^2 - |g|^2:
+/// about 0, as v lies on the circle but for the arc's closing tolerance, which can be far more
+/// than tol). With p > 0 the line leaves the circle's side of v: the far root, and the foot of the
+/// perpendicular that lineArc takes for a tangent, lie behind v (s < 0), where lineArc skips them
+/// or clamps them onto v itself. The near root lies behind v too when v is outside the circle
+/// (e <= 0), else ahead of it by at most |e| |w| / p, which must stay within tol. Room for lineArc's
+/// rounding (`slack`): a few units of rounding of the coordinates' size, magnified by up to
+/// sqrt(r / tol) where the carrier is near tangent (the square root of r^2 - dist^2 > 2 r tol),
+/// times 16, and a sixteenth of tol more. Neighbours like these are nearly all the pairs the box
+/// sweep tests: a few products instead of lineArc.
+bool meetOnlyAtVertex(const Segment& arc, const Vec2& v, const Vec2& lineEnd, double tol) {
+  const Vec2 g = v - arc.centre, w = lineEnd - v;
+  const double r = arc.radius;
+  const double size = std::abs(v.x()) + std::abs(v.y()) + std::abs(arc.centre.x()) + std::abs(arc.centre.y()) +
+                      std::abs(w.x()) + std::abs(w.y()) + r;
+  if (!(tol > 0) || !(r > 0)) return false;
+  const double slack = tol / 16 + 16 * std::numeric_limits<double>::epsilon() * size * (2 + std::sqrt(r / tol));
+  if (!(slack < tol / 2)) return false;  // also a NaN
+  const double p = g.dot(w), w2 = w.squaredNorm(), e = r * r - g.squaredNorm();
+  if (!(p > 0) || !(w2 > 0)) return false;
+  const double inner = tol - slack;
+  return e <= 0 || e * e * w2 < inner * inner * p * p;
+}
+
 /// Appends the contacts of the pair (i, j), i < j.
 void classifyPair(SegmentView path, std::size_t i, std::size_t j, bool adjacentForward, bool adjacentWrap, double tol,
                   std::vector<Contact>& out) {
@@ -183,6 +210,9 @@ void classifyPair(SegmentView path, std::size_t i, std::size_t j, bool adjacentF
     const Vec2 ra = a.end - a.start, sb = b.end - b.start;
     if (std::abs(cross(ra, sb)) > 1e-3 * ra.norm() * sb.norm()) return;
   }
+  if (adjacentForward && !adjacentWrap && a.isArc() != b.isArc() && a.end == b.start &&
+      (a.isArc() ? meetOnlyAtVertex(a, a.end, b.end, tol) : meetOnlyAtVertex(b, a.end, a.start, tol)))
+    return;
   const SegmentIntersection x = intersect(a, b, tol);
   if (x.count == 0) return;
   const bool adjacent = adjacentForward || adjacentWrap;

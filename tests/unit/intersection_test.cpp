@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <random>
 #include <string>
@@ -209,6 +210,79 @@ TEST(self_intersection, sweep_matches_all_pairs_on_random_paths) {
       if (!c.adjacent) ++sweepNonAdjacent;
     EXPECT_EQ(sweepNonAdjacent, brute) << "trial " << trial;
   }
+}
+
+// Neighbours that are a line and an arc end to end at one point are most of the pairs a program's
+// check tests, and classifyPair settles many of them without lineArc (meetOnlyAtVertex). Its answer
+// must be lineArc's: random pairs, both orders, near tangent (down to 1e-10 rad off it) and far from
+// the origin, arcs that end off their circle, at two tolerances, against intersect() classified as
+// the sweep does.
+TEST(self_intersection, a_line_and_an_arc_end_to_end_meet_where_intersect_says) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(0, 1);
+  auto logUniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, unit(rng)); };
+  auto dir = [](double a) { return Vec2(std::cos(a), std::sin(a)); };
+  int withContacts = 0, checked = 0;
+  for (const double tol : {1e-6, 1e-3}) {
+    for (int trial = 0; trial < 4000; ++trial) {
+      const Vec2 centre = unit(rng) < 0.5 ? Vec2(0, 0) : Vec2(logUniform(1, 1e4), -logUniform(1, 1e4));
+      const double r = logUniform(1e-2, 1e3);
+      const double at = 2 * kPi * unit(rng);
+      const Vec2 v = centre + r * dir(at);
+      const double sweep = (unit(rng) < 0.5 ? -1 : 1) * logUniform(1e-2, 2 * kPi - 1e-2);
+      const ArcDirection arcDir = sweep < 0 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise;
+      // The line leaves v along the tangent turned by `off`: near 0 or pi it grazes the circle.
+      const double off = (unit(rng) < 0.5 ? logUniform(1e-10, 1.0) : kPi * unit(rng)) * (unit(rng) < 0.5 ? -1 : 1) +
+                         (unit(rng) < 0.5 ? 0.0 : kPi);
+      const Vec2 other = v + logUniform(1e-2, 1e3) * dir(at + kPi / 2 + off);
+      const bool lineFirst = trial % 2 == 0;
+      std::vector<Segment> path;
+      if (lineFirst) {
+        path = {Segment::line(other, v), Segment::arc(v, centre + r * dir(at + sweep), centre, arcDir)};
+      } else {
+        // An arc may end off its circle (by its closing tolerance): then the line from its end
+        // can meet it again just before, inside the circle or out.
+        // Or it ends where the line, leaving outwards, meets the circle again about tol ahead:
+        // the edge of what meetOnlyAtVertex settles.
+        const double how = unit(rng);
+        const Vec2 way = (other - v).normalized();
+        Vec2 end = v;
+        if (how < 0.3)
+          end = v + logUniform(1e-9, 1e-2) * dir(2 * kPi * unit(rng));
+        else if (how < 0.6 && way.dot(v - centre) > 0)
+          end = v - tol * logUniform(0.5, 2.0) * way;
+        path = {Segment::arc(centre + r * dir(at - sweep), end, centre, arcDir), Segment::line(end, other + (end - v))};
+      }
+      if (path[0].length() <= 10 * tol || path[1].length() <= 10 * tol) continue;
+      SelfIntersectionOptions o;
+      o.tolerance = tol;
+      o.maxContacts = 100;
+      const SelfIntersectionResult got = findSelfIntersections(path, o);
+      // What classifyPair makes of intersect(): an overlap, or each point but the shared vertex
+      // and ends that meet ends.
+      const SegmentIntersection x = intersect(path[0], path[1], tol);
+      std::vector<Vec2> expected;
+      auto near = [&](const Vec2& p, const Vec2& q) { return (p - q).norm() <= tol; };
+      if (x.overlap) {
+        expected.push_back((x.points[0] + x.points[1]) / 2);
+      } else {
+        for (int k = 0; k < x.count; ++k) {
+          const Vec2& p = x.points[k];
+          if (near(p, path[0].end)) continue;
+          const bool endA = near(p, path[0].start) || near(p, path[0].end);
+          const bool endB = near(p, path[1].start) || near(p, path[1].end);
+          if (!(endA && endB)) expected.push_back(p);
+        }
+      }
+      ++checked;
+      withContacts += !expected.empty();
+      ASSERT_EQ(got.contacts.size(), expected.size()) << "tol " << tol << " trial " << trial;
+      for (std::size_t k = 0; k < expected.size(); ++k)
+        EXPECT_EQ(got.contacts[k].point, expected[k]) << "tol " << tol << " trial " << trial;
+    }
+  }
+  EXPECT_GT(checked, 7000);
+  EXPECT_GT(withContacts, 200);  // pairs that do meet elsewhere, near tangent among them
 }
 
 TEST(closure, loop_after_lead_in) {

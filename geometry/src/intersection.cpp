@@ -591,10 +591,21 @@ struct LooseBox {
   static LooseBox around(const Box& b) {
     return {nextDown(below(b.min.x())), nextDown(below(b.min.y())), nextUp(above(b.max.x())), nextUp(above(b.max.y()))};
   }
-  [[nodiscard]] bool overlaps(const LooseBox& b, double tol) const {
-    auto d = [](float v) { return static_cast<double>(v); };
-    return d(minX) <= d(b.maxX) + tol && d(b.minX) <= d(maxX) + tol && d(minY) <= d(b.maxY) + tol &&
-           d(b.minY) <= d(maxY) + tol;
+};
+
+/// A LooseBox as the box sweep keeps it: its far sides moved out by the tolerance once, in doubles,
+/// and rounded up to floats (reach >= d(max) + tol), so that whether two boxes come within tol of
+/// each other is four comparisons of floats: every pair with d(a.min) <= d(b.max) + tol on both
+/// axes both ways passes (a min is a float, so min <= reach follows), and a box leaves the active
+/// list only when reach < the entering box's min, which d(max) < d(min) - tol implies.
+struct SweepBox {
+  float minX, minY, reachX, reachY;
+  static SweepBox of(const LooseBox& b, double tol) {
+    return {b.minX, b.minY, LooseBox::above(static_cast<double>(b.maxX) + tol),
+            LooseBox::above(static_cast<double>(b.maxY) + tol)};
+  }
+  [[nodiscard]] bool meets(const SweepBox& b) const {
+    return minX <= b.reachX && b.minX <= reachX && minY <= b.reachY && b.minY <= reachY;
   }
 };
 
@@ -744,7 +755,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     SelfIntersectionResult r;
     std::size_t work = 0;
     struct Active {
-      LooseBox box;
+      SweepBox box;
       std::uint32_t idx;
     };
     std::vector<Active> active;
@@ -792,7 +803,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     // reads them in turn (it took a third of its time to fetch the segments one by one out of
     // order): 1 MB however long the path.
     constexpr std::size_t kBoxBlock = std::size_t{1} << 16;
-    std::vector<LooseBox> boxes(std::min(byMinX.size(), kBoxBlock));
+    std::vector<SweepBox> boxes(std::min(byMinX.size(), kBoxBlock));
     for (std::size_t k = 0; k < byMinX.size(); ++k) {
       if (k % kBoxBlock == 0) {
         const std::size_t base = k, count = std::min(kBoxBlock, byMinX.size() - k);
@@ -800,12 +811,12 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
           constexpr std::size_t kAhead = 8;
           for (std::size_t q = b; q < e; ++q) {
             if (q + kAhead < e) __builtin_prefetch(&path[byMinX[base + q + kAhead].second]);
-            boxes[q] = LooseBox::around(path[byMinX[base + q].second].bounds());
+            boxes[q] = SweepBox::of(LooseBox::around(path[byMinX[base + q].second].bounds()), tol);
           }
         });
       }
       const std::uint32_t idx = byMinX[k].second;
-      const LooseBox box = boxes[k % kBoxBlock];
+      const SweepBox box = boxes[k % kBoxBlock];
       work += active.size();
       if (budget && work > budget) {
         // Pairs found before the budget ran out may already reach maxContacts: then the sweep
@@ -816,9 +827,9 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
       std::size_t w = 0;
       for (std::size_t a = 0; a < active.size(); ++a) {
         const Active entry = active[a];
-        if (static_cast<double>(entry.box.maxX) < static_cast<double>(box.minX) - tol) continue;  // leaves the sweep
+        if (entry.box.reachX < box.minX) continue;  // leaves the sweep
         active[w++] = entry;
-        if (!entry.box.overlaps(box, tol)) continue;
+        if (!entry.box.meets(box)) continue;
         const std::uint32_t other = entry.idx;
         pending.emplace_back(std::min(idx, other), std::max(idx, other));
         if (pending.size() == kBatch && flush()) return r;

@@ -19,7 +19,7 @@ CutPath cutPath(const Toolpath& toolpath) {
 
 CutView cutView(const Toolpath& toolpath) {
   CutView view;
-  const std::vector<Move>& moves = toolpath.moves;
+  const MoveList& moves = toolpath.moves;
   std::size_t first = 0, last = moves.size();
   while (first < last && !moves[first].isCut()) ++first;
   while (last > first && !moves[last - 1].isCut()) --last;

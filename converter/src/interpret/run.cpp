@@ -125,7 +125,7 @@ Interpretation Interpreter::run() {
   if (!toolpath_.endedProperly && !diags_.hasErrors() && n > 0)
     diags_.warning(Code::MissingProgramEnd, src_, program_.blocks.back().span(), "program ends without M02 or M30");
   if (anglesDeferred_) {  // each arc's own: on every core
-    std::vector<Move>& moves = toolpath_.moves;
+    MoveList& moves = toolpath_.moves;
     geometry::parallelFor(moves.size(), 8192, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
         if (moves[i].lower.anglesPending()) moves[i].lower.completeAngles();

@@ -56,14 +56,14 @@ void Interpreter::resolveWireOffsets() {
   for (const OffsetRun& r : offsetRuns_)
     if (r.value && *r.value > 0) runs.push_back(r);
   if (runs.empty()) return;
-  std::vector<Move>& moves = toolpath_.moves;
+  MoveList& moves = toolpath_.moves;
   if (toolpath_.isTaper()) {
     diags_.warning(Code::WireOffsetNotApplied, src_, moves[runs.front().first].span,
                    "the wire offset is read but not applied to a 4-axis program: geometry and pictures show the "
                    "programmed contours");
     return;
   }
-  std::vector<Move> out;
+  MoveList out;
   std::vector<OffsetRole> role;
   std::vector<Segment> programmed;
   // The centres as written stay with the moves they came from (when they are kept).

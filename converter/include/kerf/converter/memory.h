@@ -18,8 +18,8 @@ void adviseHugePages(const void* begin, std::size_t bytes);
 void releasePages(const void* begin, const void* end);
 
 /// Reserves n elements in v and advises huge pages for them (adviseHugePages).
-template <typename T>
-void reserveLarge(std::vector<T>& v, std::size_t n) {
+template <typename T, typename A>
+void reserveLarge(std::vector<T, A>& v, std::size_t n) {
   v.reserve(n);
   adviseHugePages(v.data(), v.capacity() * sizeof(T));
 }

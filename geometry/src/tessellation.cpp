@@ -21,8 +21,6 @@ double toleranceAngle(double tol, double r) {
   return 2 * std::acos(1 - tol / r);
 }
 
-double sagitta(double r, double span) { return r * (1 - std::cos(span / 2)); }
-
 /// How the arc is cut into chords: `full` chords of angle `span` and, in step mode, one last
 /// chord of angle `rest` (0 when the sweep is a whole number of steps).
 struct ChordPlan {
@@ -54,14 +52,35 @@ ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
 
 }  // namespace
 
-double chordMeanRelativeError(double span) {
+namespace {
+
+/// chordMeanRelativeError with the cosine and sine of span / 2 given: the sagitta needs the
+/// cosine too, and the two come from one call. ln tan(pi/4 + span/4) is taken as
+/// ln((1 + sin(span/2)) / cos(span/2)) (tan(pi/4 + x) = (1 + sin 2x) / cos 2x), a sine that comes
+/// with the cosine instead of a tangent: a third of the summary's time on a program of arcs.
+double meanRelativeError(double span, double cosHalf, double sinHalf) {
   if (span <= 0) return 0.0;
   // Average over phi in [-span/2, span/2] of 1 - cos(span/2) / cos(phi). For small spans the
   // closed form cancels catastrophically (it went negative at 1e-11 rad); there the series
   // span^2/12 + span^6/20160 (from cos and ln tan expanded to 6th order) is exact to 1e-18.
   if (span < 1e-2) return span * span / 12 + std::pow(span, 6) / 20160;
-  return 1 - std::cos(span / 2) * (2 / span) * std::log(std::tan(kPi / 4 + span / 4));
+  return 1 - cosHalf * (2 / span) * std::log((1 + sinHalf) / cosHalf);
 }
+
+/// A chord of angle span on a circle of radius r: its sagitta r (1 - cos(span/2)), the deviation
+/// at its middle, and its mean relative error.
+struct ChordError {
+  double sagitta = 0.0;
+  double meanRelative = 0.0;
+};
+ChordError chordError(double r, double span) {
+  const double cosHalf = std::cos(span / 2), sinHalf = std::sin(span / 2);
+  return {r * (1 - cosHalf), meanRelativeError(span, cosHalf, sinHalf)};
+}
+
+}  // namespace
+
+double chordMeanRelativeError(double span) { return meanRelativeError(span, std::cos(span / 2), std::sin(span / 2)); }
 
 std::size_t sampleCount(const Segment& seg, const Sampling& sampling) {
   if (!seg.isArc()) return 1;
@@ -91,12 +110,14 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
   const double sweep = std::abs(seg.sweep);
   double weighted = 0.0;
   if (plan.full > 0) {
-    stats.maxDeviation = sagitta(seg.radius, plan.span);
-    weighted += static_cast<double>(plan.full) * plan.span * chordMeanRelativeError(plan.span);
+    const ChordError e = chordError(seg.radius, plan.span);
+    stats.maxDeviation = e.sagitta;
+    weighted += static_cast<double>(plan.full) * plan.span * e.meanRelative;
   }
   if (plan.rest > 0) {
-    stats.maxDeviation = std::max(stats.maxDeviation, sagitta(seg.radius, plan.rest));
-    weighted += plan.rest * chordMeanRelativeError(plan.rest);
+    const ChordError e = chordError(seg.radius, plan.rest);
+    stats.maxDeviation = std::max(stats.maxDeviation, e.sagitta);
+    weighted += plan.rest * e.meanRelative;
   }
   stats.meanRelativeError = sweep > 0 ? weighted / sweep : 0.0;
   return stats;

@@ -105,8 +105,8 @@ NumberEvidence compareNumbers(const Program& program) {
 
 DialectDetection detectDialect(const Program& program, const MachineProfile& machine) {
   Evidence colon, taperAngle, colonMode, uv, abs, rel, linuxcnc;
-  for (const Block& b : program.blocks) {
-    if (b.plain) continue;  // no evidence in it
+  for (const std::uint32_t index : program.notPlain) {  // a plain block holds no evidence
+    const Block& b = program.blocks[index];
     if (b.colon) colon.set(onLine("':'", b.line), b.span());
     bool setPosition = false, hasUv = false, upperCentre = false, kl = false, g92ij = false;
     const auto words = program.wordsOf(b);

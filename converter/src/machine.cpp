@@ -402,8 +402,8 @@ MachineDetection detectMachine(const Program& program) {
       t["linuxcnc"].add(
           "axis", [&] { return onLine("an (AXIS,..._Z_POS,z) comment", h.line); }, h.span, 3);
   }
-  for (const Block& b : program.blocks) {
-    if (b.plain) continue;  // no evidence in it
+  for (const std::uint32_t k : program.notPlain) {  // a plain block holds no evidence
+    const Block& b = program.blocks[k];
     if (b.kind == BlockKind::MacroCall) {
       const std::string_view call = program.textOf(b).substr(0, program.textOf(b).find('('));
       t["sodick"].add(

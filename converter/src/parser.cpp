@@ -393,7 +393,10 @@ class LineParser {
     block.plain = block.kind == BlockKind::Words && block.wordCount > 0 && plainWords_ && !block.colon &&
                   !block.twoMotions && !block.lowerCase && !block.unusualValues && block.upperFrom == block.wordCount;
     plainWords_ = true;
-    if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) program_.blocks.push_back(block);
+    if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) {
+      if (!block.plain) program_.notPlain.push_back(static_cast<std::uint32_t>(program_.blocks.size()));
+      program_.blocks.push_back(block);
+    }
   }
 
   /// Does a block start after a ';' that ends blocks? Only words, a comment or '/' do; other text
@@ -934,9 +937,14 @@ void appendReleasing(std::vector<T>& to, std::vector<T>& part) {
 /// Appends the blocks of the lines after to's, read on their own (their word indices start at 0).
 void appendPart(Program& to, Program&& part) {
   const auto base = static_cast<std::uint32_t>(to.words.size());
-  appendReleasing(to.words, part.words);
-  for (Block& b : part.blocks) b.firstWord += base;
-  appendReleasing(to.blocks, part.blocks);
+  const auto blockBase = static_cast<std::uint32_t>(to.blocks.size());
+  for (const std::uint32_t k : part.notPlain) to.notPlain.push_back(blockBase + k);
+  // The words and the blocks are copied at once, on two cores (7 MB for a 6 MB program).
+  geometry::parallelInvoke([&] { appendReleasing(to.words, part.words); },
+                           [&] {
+                             for (Block& b : part.blocks) b.firstWord += base;
+                             appendReleasing(to.blocks, part.blocks);
+                           });
   for (Setting& s : part.settings) to.settings.push_back(std::move(s));
   to.heights.insert(to.heights.end(), part.heights.begin(), part.heights.end());
   to.anyDecimalPoint = to.anyDecimalPoint || part.anyDecimalPoint;

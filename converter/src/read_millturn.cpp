@@ -89,8 +89,8 @@ bool harmlessG(const Word& w) {
 
 bool isMillTurnProgram(const Program& program) {
   // The ranges hold G12.1 and G112 with room to spare: most G words are out after two comparisons.
-  for (const Block& b : program.blocks) {
-    if (b.plain) continue;  // G00-G03 only
+  for (const std::uint32_t k : program.notPlain) {  // a plain block's G words are G00-G03
+    const Block& b = program.blocks[k];
     for (const Word& w : program.wordsOf(b))
       if (w.letter == 'G' && ((w.value >= 12 && w.value < 12.2) || (w.value >= 111.9 && w.value < 112.1)) &&
           (isG(w, 12, 1) || isG(w, 112)))
@@ -100,8 +100,8 @@ bool isMillTurnProgram(const Program& program) {
 }
 
 bool hasRotaryMoves(const Program& program) {
-  for (const Block& b : program.blocks) {
-    if (b.plain) continue;  // no C word
+  for (const std::uint32_t k : program.notPlain) {  // a plain block has no C word
+    const Block& b = program.blocks[k];
     bool x = false, c = false, y = false, home = false;
     for (const Word& w : program.wordsOf(b)) {
       x |= w.letter == 'X';

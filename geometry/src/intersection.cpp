@@ -824,15 +824,11 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
         if (flush()) return r;
         return std::nullopt;
       }
-      // The list through a pointer and a count of its own (a flush leaves it alone), which the
-      // compiler keeps in registers rather than reading the vector again after every pair.
       std::size_t w = 0;
-      Active* const list = active.data();
-      const std::size_t listed = active.size();
-      for (std::size_t a = 0; a < listed; ++a) {
-        const Active entry = list[a];
+      for (std::size_t a = 0; a < active.size(); ++a) {
+        const Active entry = active[a];
         if (entry.box.reachX < box.minX) continue;  // leaves the sweep
-        list[w++] = entry;
+        active[w++] = entry;
         if (!entry.box.meets(box)) continue;
         const std::uint32_t other = entry.idx;
         pending.emplace_back(std::min(idx, other), std::max(idx, other));

@@ -665,7 +665,36 @@ TEST(parser, plain_lines_read_the_short_way_give_what_the_general_way_gives) {
   EXPECT_EQ(fast.integerLengthWords, slow.integerLengthWords);
   EXPECT_EQ(fast.largestInteger, slow.largestInteger);
   EXPECT_EQ(fast.largestIntegerWord, slow.largestIntegerWord);
+  EXPECT_EQ(fast.notPlain, slow.notPlain);
   ASSERT_EQ(fastDiags.all().size(), slowDiags.all().size());
   for (std::size_t k = 0; k < fastDiags.all().size(); ++k)
     EXPECT_EQ(formatDiagnostic(fastDiags.all()[k]), formatDiagnostic(slowDiags.all()[k]));
+}
+
+// Program::notPlain lists the blocks that are not plain, in order, which the scans for evidence,
+// labels and calls go through instead of every block: on a text long enough to be parsed in parts
+// on every core, whatever the parts, and with no block left out where two parts join.
+TEST(parser, the_blocks_that_are_not_plain_are_listed_in_order_across_the_parts) {
+  std::mt19937 rng(99);
+  std::string text = "%\nO1 (long)\nG90 G21\n";
+  for (int line = 0; line < 40000; ++line) {
+    switch (rng() % 9) {
+      case 0: text += "G92 X0 Y0\n"; break;
+      case 1: text += "N" + std::to_string(line) + " G01 X1\n"; break;
+      case 2: text += "M00\n"; break;
+      case 3: text += "(comment only)\n"; break;
+      default: text += "G01 X" + std::to_string(rng() % 1000) + ".5 Y-" + std::to_string(rng() % 1000) + ".25\n";
+    }
+  }
+  text += "M02\n%\n";
+  ASSERT_GT(text.size(), std::size_t{400} << 10);
+  Diagnostics d;
+  const SourceFile src("long.nc", text);
+  const Program p = parseProgram(src, d);
+  std::vector<std::uint32_t> expected;
+  for (std::size_t k = 0; k < p.blocks.size(); ++k)
+    if (!p.blocks[k].plain) expected.push_back(static_cast<std::uint32_t>(k));
+  EXPECT_GT(expected.size(), 10000u);
+  EXPECT_LT(expected.size(), p.blocks.size() - 10000);
+  EXPECT_EQ(p.notPlain, expected);
 }

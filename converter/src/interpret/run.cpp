@@ -48,8 +48,8 @@ Interpretation Interpreter::run() {
   // A program that runs straight through (no subprogram call or return, no macro call) never
   // comes back to a block it has run: the parse tree behind it may give its memory back.
   bool straight = true;
-  for (const Block& b : program_.blocks) {
-    if (b.plain) continue;  // no V, M or macro call
+  for (const std::uint32_t k : program_.notPlain) {  // a plain block has no V, M or macro call
+    const Block& b = program_.blocks[k];
     straight = straight && b.kind != BlockKind::MacroCall;
     for (const Word& w : program_.wordsOf(b)) {
       programHasV_ |= w.letter == 'V';
@@ -166,8 +166,8 @@ void Interpreter::chooseDialect() {
 /// current editor writes M100 P Q and M101 P and uses M106/M107 for the generator. M106 with both
 /// P and Q exists only in the earlier numbering.
 void Interpreter::findLegacyTaperCodes() {
-  for (const Block& b : program_.blocks) {
-    if (b.plain) continue;  // no M, P or Q
+  for (const std::uint32_t k : program_.notPlain) {  // a plain block has no M, P or Q
+    const Block& b = program_.blocks[k];
     bool m106 = false, p = false, q = false;
     const Word* at = nullptr;
     for (const Word& w : program_.wordsOf(b)) {
@@ -190,8 +190,7 @@ void Interpreter::findLegacyTaperCodes() {
 
 void Interpreter::indexLabels() {
   // O numbers anywhere; N numbers count as labels too (Sodick puts `N0001 ... M99` after M02).
-  for (std::size_t i = 0; i < program_.blocks.size(); ++i) {
-    if (program_.blocks[i].plain) continue;  // no O or N
+  for (const std::uint32_t i : program_.notPlain) {  // a plain block has no O or N
     for (const Word& w : program_.wordsOf(program_.blocks[i])) {
       if ((w.letter != 'O' && w.letter != 'N') || !w.isNumber()) continue;
       const long key = std::lround(w.value);

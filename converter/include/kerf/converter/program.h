@@ -138,6 +138,10 @@ struct Program {
   double largestInteger = 0.0;           ///< largest |value| of a length word written without a point
   std::uint32_t largestIntegerWord = 0;  ///< index of that word in words
   std::uint32_t integerLengthWords = 0;  ///< length words written without a decimal point
+  /// The blocks that are not plain (Block::plain), in order. A plain block holds no evidence of a
+  /// dialect or a machine, no subprogram call, label or mill-turn code: the scans for those go
+  /// through these alone (a long program's thousands of moves are plain). parseProgram fills it.
+  std::vector<std::uint32_t> notPlain;
 
   [[nodiscard]] std::span<const Word> wordsOf(const Block& b) const {
     return {words.data() + b.firstWord, b.wordCount};

@@ -656,25 +656,20 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   if (n >= kDead) throw std::length_error("findSelfIntersections: more than 2^32 - 2 segments");
   // Neighbours skip over zero-length segments (reported elsewhere): they share a vertex just the
   // same. A segment's rank is its place among the live segments, kDead for the others; the ranks
-  // are kept only when some segment is dead (else rank i is i: 4 bytes a segment saved).
-  std::uint32_t live = 0;
-  for (std::size_t i = 0; i < n; ++i) live += path[i].length() > tol;
+  // are kept only when some segment is dead (else rank i is i: 4 bytes a segment saved). Which
+  // are dead the extent's pass finds, on every core.
   std::vector<std::uint32_t> ranks;
-  if (live < n) {
-    ranks.assign(n, kDead);
-    std::uint32_t r = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (path[i].length() > tol) ranks[i] = r++;
-  }
   auto rank = [&](std::size_t i) { return ranks.empty() ? static_cast<std::uint32_t>(i) : ranks[i]; };
   auto isLive = [&](std::size_t i) { return ranks.empty() || ranks[i] != kDead; };
+  auto alive = [&](std::size_t i) { return path[i].length() > tol; };
   // Sorting (min x, index) pairs directly is much faster than sorting indices through boxes. Only
-  // the box sweep needs them; they are made with the extent's figures, from one box each. The
-  // boxes themselves are not kept (16 bytes a segment): a segment's box is made again when it
-  // enters the sweep and lives in the active list while it is there.
+  // the box sweep needs them; they are made with the extent's figures, from one box each, in the
+  // order of the segments (the dead ones' places closed up after). The boxes themselves are not
+  // kept (16 bytes a segment): a segment's box is made again when it enters the sweep and lives in
+  // the active list while it is there.
   std::vector<std::pair<float, std::uint32_t>> byMinX;
   const bool boxesFirst = options.method != SweepMethod::Decision;
-  if (boxesFirst) byMinX.resize(live);
+  if (boxesFirst) byMinX.resize(n);
   // On every core, in stretches of a fixed length whose sums are added in order: the figures do
   // not depend on the number of threads.
   constexpr std::size_t kStretch = 4096;
@@ -683,32 +678,48 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     double lowX = std::numeric_limits<double>::infinity(), highX = -std::numeric_limits<double>::infinity();
     double widths = 0.0;
     std::size_t selfLoop = SIZE_MAX;  // the first segment that ends on its own start (a full circle)
+    std::size_t dead = 0;
   };
   std::vector<Extent> extents(stretches);
   geometry::parallelFor(stretches, 8, [&](std::size_t sb, std::size_t se) {
     for (std::size_t st = sb; st < se; ++st) {
       Extent e;
       for (std::size_t i = st * kStretch; i < std::min(n, (st + 1) * kStretch); ++i) {
-        if (!isLive(i)) continue;
+        if (!alive(i)) {
+          ++e.dead;
+          if (boxesFirst) byMinX[i].second = kDead;
+          continue;
+        }
         const Box b = path[i].bounds();
         e.lowX = std::min(e.lowX, b.min.x());
         e.highX = std::max(e.highX, b.max.x());
         e.widths += b.max.x() - b.min.x() + 2 * tol;
-        if (boxesFirst) byMinX[rank(i)] = {LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i)};
+        if (boxesFirst) byMinX[i] = {LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i)};
         if (options.findLoop && e.selfLoop == SIZE_MAX && near(path[i].end, path[i].start, tol)) e.selfLoop = i;
       }
       extents[st] = e;
     }
   });
   double lowX = std::numeric_limits<double>::infinity(), highX = -lowX, widths = 0.0;
-  std::size_t selfLoop = SIZE_MAX;
+  std::size_t selfLoop = SIZE_MAX, dead = 0;
   for (const Extent& e : extents) {
     lowX = std::min(lowX, e.lowX);
     highX = std::max(highX, e.highX);
     widths += e.widths;
     selfLoop = std::min(selfLoop, e.selfLoop);
+    dead += e.dead;
   }
   std::vector<Extent>().swap(extents);
+  const auto live = static_cast<std::uint32_t>(n - dead);
+  if (dead > 0) {
+    ranks.assign(n, kDead);
+    std::uint32_t r = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (alive(i)) ranks[i] = r++;
+    if (boxesFirst)
+      byMinX.erase(std::remove_if(byMinX.begin(), byMinX.end(), [](const auto& p) { return p.second == kDead; }),
+                   byMinX.end());
+  }
   bool sorted = false;
   auto sortByMinX = [&] {
     if (byMinX.empty()) {  // not made yet, or given back for the decision sweep

@@ -532,8 +532,8 @@ class LineParser {
   /// The rest of the line, from i, as one plain block (Block::plain) written the usual way: upper
   /// case words X Y I J R F and G00-G03, each a number within range, one space between them,
   /// nothing after but blanks; the motion codes as parseWord allows them, no letter but G twice.
-  /// Read here the way parseBlock reads it, word for word (push, finish); false, with nothing
-  /// read, for any other line.
+  /// Read here to what parseBlock makes of it, word for word (the words push keeps, then finish);
+  /// false, with nothing kept, for any other line.
   bool tryPlainLine(std::size_t i, std::size_t end, std::uint32_t line) {
     // The words go straight to the program (what push keeps, for words known to be plain); a line
     // that turns out not to be plain takes them back, and the integer-unit figures are kept only

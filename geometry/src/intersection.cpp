@@ -597,7 +597,9 @@ struct LooseBox {
 /// and rounded up to floats (reach >= d(max) + tol), so that whether two boxes come within tol of
 /// each other is four comparisons of floats: every pair with d(a.min) <= d(b.max) + tol on both
 /// axes both ways passes (a min is a float, so min <= reach follows), and a box leaves the active
-/// list only when reach < the entering box's min, which d(max) < d(min) - tol implies.
+/// list only when reach < the entering box's min, which implies d(max) < d(min) - tol (two floats
+/// lie a float step apart, far more than the rounding of doubles): none leaves that the double
+/// test kept.
 struct SweepBox {
   float minX, minY, reachX, reachY;
   static SweepBox of(const LooseBox& b, double tol) {

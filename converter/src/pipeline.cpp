@@ -82,9 +82,14 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   releaseSource(out, options);  // the checks and what follows them only quote the text
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
-    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
+    // The summary reads what the checks read and writes only out.summary: it runs beside them, on
+    // the core the self-intersection sweep (serial) leaves idle.
+    geometry::runBeside(
+        [&] { checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures); },
+        [&] { summarizeInto(out, options); });
+  } else {
+    summarizeInto(out, options);
   }
-  summarizeInto(out, options);
   out.diags.sortByPosition();
 }
 

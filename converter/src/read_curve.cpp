@@ -1,17 +1,23 @@
 // Curves as drawings (curve.h). Expressions are parsed and evaluated by muparser (Debian's
 // libmuparser-dev, https://beltoforion.de/en/muparser/): bytecode, so the thousands of evaluations
-// a biarc fit makes cost little.
+// a biarc fit makes cost little. The library is loaded when a curve is first read, through its C
+// interface (muParserDLL.h): linked, it and the OpenMP runtime it needs were loaded by every run of
+// kerf, 0.7 ms before any work.
 #include "kerf/converter/curve.h"
 
 #include "kerf/converter/points.h"
 #include "kerf/geometry/biarc.h"
 
-#include <muParser.h>
+#include <muParserDLL.h>
+
+#include <dlfcn.h>
 
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -58,9 +64,64 @@ std::string nameOf(std::string_view s, std::size_t& equals) {
   return name;
 }
 
+/// muparser's C interface, loaded once (KERF_MUPARSER_SONAME, from its CMake package).
+struct MuParser {
+  decltype(&mupCreate) create = nullptr;
+  decltype(&mupRelease) release = nullptr;
+  decltype(&mupDefineVar) defineVar = nullptr;
+  decltype(&mupDefineConst) defineConst = nullptr;
+  decltype(&mupSetExpr) setExpr = nullptr;
+  decltype(&mupEval) evaluate = nullptr;
+  decltype(&mupError) error = nullptr;  // true once after a call failed (and clears it)
+  decltype(&mupGetErrorMsg) message = nullptr;
+  decltype(&mupGetErrorPos) position = nullptr;
+  std::string why;  ///< when it could not be loaded
+};
+
+template <typename F>
+bool symbol(void* library, const char* name, F& f) {
+  const void* address = ::dlsym(library, name);
+  static_assert(sizeof f == sizeof address);
+  std::memcpy(&f, &address, sizeof f);  // POSIX: dlsym's object pointer is the function's address
+  return f != nullptr;
+}
+
+MuParser loadMuParser() {
+  MuParser mu;
+  void* library = ::dlopen(KERF_MUPARSER_SONAME, RTLD_NOW | RTLD_LOCAL);
+  if (!library) {
+    const char* why = ::dlerror();
+    mu.why = std::string("cannot load muparser (" KERF_MUPARSER_SONAME "): ") + (why ? why : "unknown reason");
+    return mu;
+  }
+  if (!symbol(library, "mupCreate", mu.create) || !symbol(library, "mupRelease", mu.release) ||
+      !symbol(library, "mupDefineVar", mu.defineVar) || !symbol(library, "mupDefineConst", mu.defineConst) ||
+      !symbol(library, "mupSetExpr", mu.setExpr) || !symbol(library, "mupEval", mu.evaluate) ||
+      !symbol(library, "mupError", mu.error) || !symbol(library, "mupGetErrorMsg", mu.message) ||
+      !symbol(library, "mupGetErrorPos", mu.position)) {
+    mu = MuParser{};
+    mu.why = "the muparser library " KERF_MUPARSER_SONAME " lacks its C interface";
+  }
+  return mu;  // kept loaded until the program ends
+}
+
+const MuParser& muParser() {
+  static const MuParser mu = loadMuParser();
+  return mu;
+}
+
+/// The longest expression muparser is given (its error messages must fit its buffer).
+constexpr std::size_t kLongestExpression = 1000;
+
 /// An expression of t, compiled once.
 struct Expression {
-  mu::Parser parser;
+  Expression() = default;
+  Expression(const Expression&) = delete;
+  Expression& operator=(const Expression&) = delete;
+  ~Expression() {
+    if (handle) muParser().release(handle);
+  }
+  muParserHandle_t handle = nullptr;
   std::uint32_t offset = 0;  ///< in the source
   std::uint32_t length = 0;
 };
@@ -70,22 +131,54 @@ struct CurveState {
   Expression x, y;
 };
 
-/// Sets up the parser; false with a diagnostic when the expression does not parse or evaluate.
+/// Sets up the parser; false with a diagnostic when the expression does not parse or evaluate (or
+/// muparser cannot be loaded).
 bool compile(Expression& e, std::string_view text, std::uint32_t offset, double* t, const SourceFile& src,
              Diagnostics& diags, const char* what) {
   e.offset = offset;
   e.length = static_cast<std::uint32_t>(text.size());
-  try {
-    if (t) e.parser.DefineVar("t", t);
-    e.parser.DefineConst("pi", std::numbers::pi);
-    e.parser.SetExpr(std::string(text));
-    (void)e.parser.Eval();  // muparser finds most errors when it first evaluates
-  } catch (const mu::Parser::exception_type& error) {
-    const int pos = error.GetPos();
+  const MuParser& mu = muParser();
+  if (!mu.create) {
+    diags.error(Code::CurveSyntax, &src, {offset, e.length}, std::string(what) + ": " + mu.why,
+                "the curve reader needs Debian's libmuparser2v5");
+    return false;
+  }
+  // muparser's C interface copies an error's message, which quotes the token, into one static
+  // buffer of 2,048 characters: a longer expression is refused here, and the copy is made under a
+  // lock (files are checked on several threads).
+  if (text.size() > kLongestExpression) {
+    diags.error(
+        Code::CurveSyntax, &src, {offset, e.length},
+        std::string(what) + ": an expression of more than " + std::to_string(kLongestExpression) + " characters");
+    return false;
+  }
+  if (!e.handle) e.handle = mu.create(muBASETYPE_FLOAT);
+  if (!e.handle) {
+    diags.error(Code::CurveSyntax, &src, {offset, e.length}, std::string(what) + ": muparser could not start");
+    return false;
+  }
+  if (t) mu.defineVar(e.handle, "t", t);
+  mu.defineConst(e.handle, "pi", std::numbers::pi);
+  const std::string expression(text);
+  mu.setExpr(e.handle, expression.c_str());
+  bool failed = mu.error(e.handle);
+  if (!failed) {
+    (void)mu.evaluate(e.handle);  // muparser finds most errors when it first evaluates
+    failed = mu.error(e.handle);
+  }
+  if (failed) {
+    const auto pos = mu.position(e.handle);
+    std::string message;
+    {
+      static std::mutex lock;
+      const std::lock_guard<std::mutex> hold(lock);
+      const char* m = mu.message(e.handle);
+      message = m ? m : "not an expression";
+    }
     const std::uint32_t at = pos >= 0 && static_cast<std::size_t>(pos) < text.size()
                                  ? offset + static_cast<std::uint32_t>(pos)
                                  : offset + static_cast<std::uint32_t>(text.size() ? text.size() - 1 : 0);
-    diags.error(Code::CurveSyntax, &src, {at, 1}, std::string(what) + ": " + error.GetMsg(),
+    diags.error(Code::CurveSyntax, &src, {at, 1}, std::string(what) + ": " + message,
                 "muparser's syntax: + - * / ^, sin cos tan asin acos atan exp ln log10 sqrt abs ..., pi; "
                 "the parameter is t");
     return false;
@@ -94,11 +187,9 @@ bool compile(Expression& e, std::string_view text, std::uint32_t offset, double*
 }
 
 double eval(Expression& e) {
-  try {
-    return e.parser.Eval();
-  } catch (const mu::Parser::exception_type&) {
-    return std::nan("");
-  }
+  const MuParser& mu = muParser();
+  const double v = mu.evaluate(e.handle);
+  return mu.error(e.handle) ? std::nan("") : v;
 }
 
 bool parseNumber(std::string_view s, double& v) {

@@ -40,6 +40,13 @@ class ParallelScope {
 /// either is rethrown here once both have finished (one of them, when both throw).
 void parallelInvoke(const std::function<void()>& first, const std::function<void()>& second);
 
+/// Runs main in the calling thread and beside at once on a thread made for it (not one of the
+/// scope's kept threads, so main's own parallelFor calls still have them): work that needs a core
+/// for a while beside a stage that leaves one idle. With one worker, or no thread to be had, main
+/// then beside. The two must not write what the other reads. An exception from either is rethrown
+/// here once both have finished (main's, when both throw).
+void runBeside(const std::function<void()>& main, const std::function<void()>& beside);
+
 /// Sorts [first, last) by less: one chunk per worker sorted at once, then merged pairwise (in
 /// place; std::inplace_merge takes a buffer when it can). Below minSize elements, or with one
 /// worker, std::sort alone. Not stable, as std::sort is not: equal elements may come in any order.

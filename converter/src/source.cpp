@@ -1,11 +1,8 @@
 #include "kerf/converter/source.h"
 
-#include "kerf/geometry/parallel.h"
-
 #include <algorithm>
 #include <bit>
 #include <cstring>
-#include <vector>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -112,9 +109,6 @@ void forEachFeed(const char* data, std::size_t size, F&& f) {
 }
 #endif
 
-/// Texts from this size on have their line starts found on every core, a part each.
-constexpr std::size_t kPartBytes = 1 << 20;
-
 }  // namespace
 
 SourceFile::SourceFile(std::string name, std::string text)
@@ -122,30 +116,12 @@ SourceFile::SourceFile(std::string name, std::string text)
   lineStarts_.push_back(0);
   const char* data = text_.data();
   const std::size_t size = text_.size();
-  // LF only (no CR anywhere), the fast way: the feeds are counted first, so the list is made at its
-  // size once, then written. A long text is cut into one part per core, each counted and written
-  // on its own core, at its place in the list (the counts of the parts before it).
-  const std::size_t parts = size < kPartBytes ? 1 : std::min<std::size_t>(geometry::workerCount(), size / kPartBytes);
-  std::vector<std::size_t> counts(parts + 1, 0);
-  std::vector<char> withCr(parts, 0);
-  auto from = [&](std::size_t k) { return size * k / parts; };
-  geometry::parallelFor(parts, 1, [&](std::size_t b, std::size_t e) {
-    for (std::size_t k = b; k < e; ++k) {
-      withCr[k] = std::memchr(data + from(k), '\r', from(k + 1) - from(k)) != nullptr;
-      if (!withCr[k]) counts[k + 1] = countFeeds(data + from(k), from(k + 1) - from(k));
-    }
-  });
-  if (std::find(withCr.begin(), withCr.end(), 1) == withCr.end()) {
-    for (std::size_t k = 0; k < parts; ++k) counts[k + 1] += counts[k];
-    lineStarts_.resize(counts[parts] + 1);
-    geometry::parallelFor(parts, 1, [&](std::size_t b, std::size_t e) {
-      for (std::size_t k = b; k < e; ++k) {
-        std::uint32_t* out = lineStarts_.data() + 1 + counts[k];
-        const std::size_t at = from(k);
-        forEachFeed(data + at, from(k + 1) - at,
-                    [&](std::size_t i) { *out++ = static_cast<std::uint32_t>(at + i + 1); });
-      }
-    });
+  if (std::memchr(data, '\r', size) == nullptr) {  // LF only: the fast way
+    // The starts are counted first, so the list is made at its size once, then written.
+    const std::size_t count = countFeeds(data, size);
+    lineStarts_.resize(count + 1);
+    std::uint32_t* out = lineStarts_.data() + 1;
+    forEachFeed(data, size, [&](std::size_t at) { *out++ = static_cast<std::uint32_t>(at + 1); });
     return;
   }
   for (std::size_t i = 0; i < size; ++i) {

@@ -591,30 +591,6 @@ TEST(source, lines_start_after_every_line_feed_wherever_it_falls_in_a_word) {
     for (std::uint32_t line = 1; line <= starts.size(); ++line)
       ASSERT_EQ(src.lineRange(line).first, starts[line - 1]) << size << " line " << line;
   }
-  // A long text is read in parts, one per core: feeds on either side of every part's edge, with 1
-  // to 4 cores; and a CR in the last part only (a CR anywhere: every line end is looked at alone).
-  for (const char* threads : {"1", "2", "3", "4"}) {
-    const kerf::test::ScopedThreads t(threads);
-    const std::size_t size = (std::size_t{6} << 20) + 5, parts = std::stoul(threads);
-    for (const bool cr : {false, true}) {
-      std::string text(size, 'X');
-      for (std::size_t k = 1; k < 4 * 3 * 5; ++k) {  // the edges of 2, 3, 4 and 5 parts, and around them
-        const std::size_t edge = size * k / (4 * 3 * 5);
-        text[edge - 1] = '\n';
-        text[edge] = '\n';
-        text[edge + 2] = '\n';
-      }
-      if (cr) text[size - 10] = '\r';
-      std::vector<std::uint32_t> starts{0};
-      for (std::size_t i = 0; i < text.size(); ++i)
-        if (text[i] == '\n' || (text[i] == '\r' && text[i + 1] != '\n'))
-          starts.push_back(static_cast<std::uint32_t>(i + 1));
-      const SourceFile src("parts.nc", text);
-      ASSERT_EQ(src.lineCount(), starts.size()) << parts << " cr " << cr;
-      for (std::uint32_t line = 1; line <= starts.size(); ++line)
-        ASSERT_EQ(src.lineRange(line).first, starts[line - 1]) << parts << " cr " << cr << " line " << line;
-    }
-  }
 }
 
 // Block::plain marks the blocks the whole-program scans may pass by: motion codes G00-G03 and X Y

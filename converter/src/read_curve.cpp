@@ -152,6 +152,12 @@ bool compile(Expression& e, std::string_view text, std::uint32_t offset, double*
         std::string(what) + ": an expression of more than " + std::to_string(kLongestExpression) + " characters");
     return false;
   }
+  // muparser reads an expression up to a NUL byte: the rest would be dropped without a word.
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    diags.error(Code::CurveSyntax, &src, {offset + static_cast<std::uint32_t>(nul), 1},
+                std::string(what) + ": a NUL byte in the expression");
+    return false;
+  }
   if (!e.handle) e.handle = mu.create(muBASETYPE_FLOAT);
   if (!e.handle) {
     diags.error(Code::CurveSyntax, &src, {offset, e.length}, std::string(what) + ": muparser could not start");

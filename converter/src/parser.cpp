@@ -5,7 +5,7 @@
 //           3. one block: settings, macro statements, comments, words
 //           4. the sides of a 4-axis block
 //           5. the whole text: byte-order mark, lines, '%' frame
-#include "kerf/converter/memory.h"
+#include "kerf/geometry/memory.h"
 #include "kerf/converter/program.h"
 
 #include "kerf/geometry/parallel.h"
@@ -539,7 +539,7 @@ class LineParser {
     // that turns out not to be plain takes them back, and the integer-unit figures are kept only
     // for a line that is.
     constexpr std::size_t kMost = 8;
-    std::vector<Word>& out = program_.words;
+    geometry::LargeVector<Word>& out = program_.words;
     const std::size_t first = out.size();
     auto fail = [&] {
       out.resize(first);
@@ -923,15 +923,15 @@ LinesRead parseLines(const SourceFile& source, Program& program, Diagnostics& di
 /// Appends part to to, a slice at a time, giving each slice of part back to the system once it is
 /// copied: the two copies never stand whole side by side.
 template <typename T>
-void appendReleasing(std::vector<T>& to, std::vector<T>& part) {
+void appendReleasing(geometry::LargeVector<T>& to, geometry::LargeVector<T>& part) {
   constexpr std::size_t kSlice = (1 << 20) / sizeof(T);  // about 1 MB
   to.reserve(to.size() + part.size());
   for (std::size_t k = 0; k < part.size(); k += kSlice) {
     const std::size_t end = std::min(part.size(), k + kSlice);
     to.insert(to.end(), part.begin() + static_cast<std::ptrdiff_t>(k), part.begin() + static_cast<std::ptrdiff_t>(end));
-    releasePages(part.data() + k, part.data() + end);
+    geometry::releasePages(part.data() + k, part.data() + end);
   }
-  std::vector<T>().swap(part);
+  geometry::LargeVector<T>().swap(part);
 }
 
 /// Appends the blocks of the lines after to's, read on their own (their word indices start at 0).
@@ -965,8 +965,8 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
   Program program;
   program.source = &source;
   const std::string_view text = source.text();
-  reserveLarge(program.words, text.size() / 6);
-  reserveLarge(program.blocks, text.size() / 24);
+  program.words.reserve(text.size() / 6);
+  program.blocks.reserve(text.size() / 24);
   // A NUL byte near the start means a binary file, not NC text: one diagnostic, not thousands.
   if (const std::size_t nul = text.substr(0, 4096).find('\0'); nul != std::string_view::npos) {
     diags.error(Code::UnexpectedCharacter, &source, {static_cast<std::uint32_t>(nul), 1},
@@ -999,8 +999,8 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
       into.source = &source;
       if (k > 0) {
         const std::size_t bytes = source.lineRange(firstLine[k + 1] - 1).second - source.lineRange(firstLine[k]).first;
-        reserveLarge(into.words, bytes / 6);
-        reserveLarge(into.blocks, bytes / 24);
+        into.words.reserve(bytes / 6);
+        into.blocks.reserve(bytes / 24);
       }
       read[k] = parseLines(source, into, k == 0 ? diags : laterDiags[k - 1], options, firstLine[k], firstLine[k + 1],
                            bom, k > 0);
@@ -1028,8 +1028,8 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
 void releaseParsedBefore(const Program& program, std::size_t block) {
   if (block < 2 || block >= program.blocks.size()) return;
   // The first block stays (what is said of the whole program points at it).
-  releasePages(program.blocks.data() + 1, program.blocks.data() + block);
-  releasePages(program.words.data(), program.words.data() + program.blocks[block].firstWord);
+  geometry::releasePages(program.blocks.data() + 1, program.blocks.data() + block);
+  geometry::releasePages(program.words.data(), program.words.data() + program.blocks[block].firstWord);
 }
 
 }  // namespace kerf::converter

@@ -5,6 +5,7 @@
 #include "kerf/geometry/intersection.h"
 
 #include "angles.h"
+#include "kerf/geometry/memory.h"
 #include "kerf/geometry/parallel.h"
 
 #include <algorithm>
@@ -619,32 +620,41 @@ std::uint32_t orderKey(float f) {
   return (bits & 0x80000000U) != 0 ? ~bits : bits | 0x80000000U;
 }
 
-/// Sorts (x, segment) pairs that come in the order of their segments by x, then segment: the
-/// order std::sort with std::less gives them. A least-significant-digit radix sort of the keys in
+/// A segment's place in the box sweep: the least x of its box (rounded down to a float), then its
+/// index. Made in place by the extents pass (FillLaterAllocator: resize leaves them unwritten).
+struct XKey {
+  float x;
+  std::uint32_t seg;
+  friend bool operator<(const XKey& a, const XKey& b) { return a.x != b.x ? a.x < b.x : a.seg < b.seg; }
+};
+using XKeys = std::vector<XKey, FillLaterAllocator<XKey>>;
+
+/// Sorts (x, segment) keys that come in the order of their segments by x, then segment: the
+/// order std::sort gives them. A least-significant-digit radix sort of the keys in
 /// three passes of 11 bits, each stable, so pairs of one x keep their segments' order: O(n), a
 /// sixth of std::sort's time at 200,000 pairs (that sort was a tenth of kerf check's time). A pass
 /// whose digit is the same in every key is skipped.
-void sortByX(std::vector<std::pair<float, std::uint32_t>>& pairs) {
+void sortByX(XKeys& pairs) {
   constexpr int kBits = 11, kPasses = 3;
   constexpr std::size_t kBuckets = std::size_t{1} << kBits;
   const std::size_t n = pairs.size();
   if (n < 64) {
-    std::sort(pairs.begin(), pairs.end(), std::less<>{});
+    std::sort(pairs.begin(), pairs.end());
     return;
   }
   std::vector<std::array<std::uint32_t, kBuckets>> counts(kPasses);
   for (auto& c : counts) c.fill(0);
-  for (const auto& [x, seg] : pairs) {
-    const std::uint32_t key = orderKey(x);
+  for (const XKey& p : pairs) {
+    const std::uint32_t key = orderKey(p.x);
     for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(key >> (pass * kBits)) & (kBuckets - 1)];
   }
-  std::vector<std::pair<float, std::uint32_t>> other(n);
+  XKeys other(n);
   for (int pass = 0; pass < kPasses; ++pass) {
     auto& c = counts[static_cast<std::size_t>(pass)];
     if (std::find(c.begin(), c.end(), n) != c.end()) continue;  // one digit in every key
     std::uint32_t at = 0;
     for (std::uint32_t& bucket : c) at += std::exchange(bucket, at);
-    for (const auto& p : pairs) other[c[(orderKey(p.first) >> (pass * kBits)) & (kBuckets - 1)]++] = p;
+    for (const auto& p : pairs) other[c[(orderKey(p.x) >> (pass * kBits)) & (kBuckets - 1)]++] = p;
     pairs.swap(other);
   }
 }
@@ -669,7 +679,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   // order of the segments (the dead ones' places closed up after). The boxes themselves are not
   // kept (16 bytes a segment): a segment's box is made again when it enters the sweep and lives in
   // the active list while it is there.
-  std::vector<std::pair<float, std::uint32_t>> byMinX;
+  XKeys byMinX;
   const bool boxesFirst = options.method != SweepMethod::Decision;
   if (boxesFirst) byMinX.resize(n);
   // On every core, in stretches of a fixed length whose sums are added in order: the figures do
@@ -689,7 +699,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
       for (std::size_t i = st * kStretch; i < std::min(n, (st + 1) * kStretch); ++i) {
         if (!alive(i)) {
           ++e.dead;
-          if (boxesFirst) byMinX[i].second = kDead;
+          if (boxesFirst) byMinX[i] = {0.0f, kDead};
           continue;
         }
         const Box b = path[i].bounds();
@@ -719,7 +729,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     for (std::size_t i = 0; i < n; ++i)
       if (alive(i)) ranks[i] = r++;
     if (boxesFirst)
-      byMinX.erase(std::remove_if(byMinX.begin(), byMinX.end(), [](const auto& p) { return p.second == kDead; }),
+      byMinX.erase(std::remove_if(byMinX.begin(), byMinX.end(), [](const XKey& p) { return p.seg == kDead; }),
                    byMinX.end());
   }
   bool sorted = false;
@@ -727,7 +737,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     if (byMinX.empty()) {  // not made yet, or given back for the decision sweep
       byMinX.reserve(live);
       for (std::size_t i = 0; i < n; ++i)
-        if (isLive(i)) byMinX.emplace_back(LooseBox::below(path[i].bounds().min.x()), static_cast<std::uint32_t>(i));
+        if (isLive(i)) byMinX.push_back({LooseBox::below(path[i].bounds().min.x()), static_cast<std::uint32_t>(i)});
     }
     if (!sorted) sortByX(byMinX);  // byMinX comes in the order of the segments
     sorted = true;
@@ -816,19 +826,19 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     // reads them in turn (it took a third of its time to fetch the segments one by one out of
     // order): 1 MB however long the path.
     constexpr std::size_t kBoxBlock = std::size_t{1} << 16;
-    std::vector<SweepBox> boxes(std::min(byMinX.size(), kBoxBlock));
+    std::vector<SweepBox, FillLaterAllocator<SweepBox>> boxes(std::min(byMinX.size(), kBoxBlock));
     for (std::size_t k = 0; k < byMinX.size(); ++k) {
       if (k % kBoxBlock == 0) {
         const std::size_t base = k, count = std::min(kBoxBlock, byMinX.size() - k);
         geometry::parallelFor(count, 4096, [&](std::size_t b, std::size_t e) {
           constexpr std::size_t kAhead = 8;
           for (std::size_t q = b; q < e; ++q) {
-            if (q + kAhead < e) __builtin_prefetch(&path[byMinX[base + q + kAhead].second]);
-            boxes[q] = SweepBox::of(LooseBox::around(path[byMinX[base + q].second].bounds()), tol);
+            if (q + kAhead < e) __builtin_prefetch(&path[byMinX[base + q + kAhead].seg]);
+            boxes[q] = SweepBox::of(LooseBox::around(path[byMinX[base + q].seg].bounds()), tol);
           }
         });
       }
-      const std::uint32_t idx = byMinX[k].second;
+      const std::uint32_t idx = byMinX[k].seg;
       const SweepBox box = boxes[k % kBoxBlock];
       work += active.size();
       if (budget && work > budget) {
@@ -875,7 +885,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   }
   // The decision sweep does not need the boxes' order: its memory goes back first (8 bytes a
   // segment: 80 MB at 1e7), and the box sweep after it, if any, sorts again.
-  std::vector<std::pair<float, std::uint32_t>>().swap(byMinX);
+  XKeys().swap(byMinX);
   sorted = false;
   std::vector<Contact> scratch;
   auto touches = [&](std::size_t a, std::size_t b) {

@@ -1,4 +1,3 @@
-#include "kerf/converter/memory.h"
 #include "kerf/converter/program.h"
 
 #include "converter_support.h"
@@ -519,23 +518,6 @@ TEST(parser, parts_parsed_on_several_cores_give_what_one_pass_gives) {
 }
 
 }  // namespace
-
-// The memory advice (memory.h) changes no contents: an array reserved large holds what is
-// written to it, and pages given back read as zeros only where they lie wholly inside the range.
-TEST(memory, advice_keeps_contents_and_released_pages_read_as_zeros) {
-  auto value = [](std::uint64_t k) { return k * 2654435761ULL; };
-  std::vector<std::uint64_t> v;
-  reserveLarge(v, 3u << 20);  // 24 MiB: whole huge pages inside
-  ASSERT_GE(v.capacity(), std::size_t{3} << 20);
-  for (std::uint64_t k = 0; k < (3u << 20); ++k) v.push_back(value(k));
-  for (std::uint64_t k = 0; k < v.size(); k += 4099) ASSERT_EQ(v[k], value(k));
-  // Released: [1000, 900000) — elements on pages wholly inside read 0, those outside keep theirs.
-  releasePages(v.data() + 1000, v.data() + 900000);
-  EXPECT_EQ(v[999], value(999));
-  EXPECT_EQ(v[500000], 0u);
-  EXPECT_EQ(v[900000], value(900000));
-  EXPECT_EQ(v[2000000], value(2000000));
-}
 
 // The text's hash (source.cpp) reads it in four lanes of 8 bytes, then 8 bytes, then the tail: a
 // change of one byte in any of them, and only a change, is seen when the text is read again.

@@ -5,7 +5,7 @@
 #include "kerf/geometry/parallel.h"
 
 #include "kerf/converter/dialect.h"
-#include "kerf/converter/memory.h"
+#include "kerf/geometry/memory.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,7 +63,7 @@ Interpretation Interpreter::run() {
   for (int g = 0; g <= 3; ++g)
     if (const KnownCode* k = machine_.find('G', g, 0); k && k->number >= 0) plainPath_ = false;
   // Most blocks of a wire program are moves: reserving avoids copying them while growing.
-  reserveLarge(toolpath_.moves, std::min(program_.blocks.size(), options_.maxMoves));
+  toolpath_.moves.reserve(std::min(program_.blocks.size(), options_.maxMoves));
   for (const Setting& s : program_.settings) toolpath_.settings.push_back(s);
   toolpath_.blocks = program_.blocks.size();
   warnIntegerUnit();

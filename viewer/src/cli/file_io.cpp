@@ -1,6 +1,6 @@
 #include "file_io.h"
 
-#include "kerf/converter/memory.h"
+#include "kerf/geometry/memory.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -113,7 +113,7 @@ std::optional<std::string> readTextFile(const std::string& path, std::size_t max
     const std::uintmax_t size = fs::file_size(path, ec);
     if (!ec) {
       text.reserve(static_cast<std::size_t>(std::min<std::uintmax_t>(size, maxBytes)) + 1);
-      converter::adviseHugePages(text.data(), text.capacity());
+      geometry::adviseHugePages(text.data(), text.capacity());
     }
   }
   while (in.read(buf, sizeof buf) || in.gcount() > 0) {

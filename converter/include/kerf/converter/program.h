@@ -6,6 +6,7 @@
 
 #include "kerf/converter/diagnostics.h"
 #include "kerf/converter/source.h"
+#include "kerf/geometry/memory.h"
 
 #include <cmath>
 #include <cstdint>
@@ -130,8 +131,8 @@ struct ParseOptions {
 
 struct Program {
   const SourceFile* source = nullptr;
-  std::vector<Word> words;
-  std::vector<Block> blocks;  ///< only blocks with at least one word, a macro statement or an error
+  geometry::LargeVector<Word> words;
+  geometry::LargeVector<Block> blocks;  ///< only blocks with at least one word, a macro statement or an error
   std::vector<Setting> settings;
   std::vector<HeightWord> heights;
   bool anyDecimalPoint = false;          ///< some length word was written with a decimal point

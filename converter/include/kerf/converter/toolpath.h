@@ -2,6 +2,7 @@
 #pragma once
 
 #include "kerf/converter/program.h"
+#include "kerf/geometry/memory.h"
 #include "kerf/geometry/ruled_surface.h"
 #include "kerf/geometry/segment.h"
 
@@ -59,34 +60,13 @@ struct Move {
 };
 static_assert(sizeof(Move) <= 96, "a move is stored for every block: keep it small");
 
-/// The allocator of Toolpath::moves. A move made without a value (vector::resize) is left for its
-/// maker to write, so the interpreter's windows (interpret/simple_runs.cpp) write each move once,
-/// on the core that computes it, instead of the main thread clearing a window's moves first (a
-/// sixth of the interpreter's time on a long program, with the other cores idle). A Move is an
-/// aggregate with a trivial destructor, an implicit-lifetime type: its storage holds one without a
-/// constructor running (C++20, [intro.object]), and the window assigns it whole before anything
-/// reads it. Moves made from values (push_back, emplace_back, copies) are constructed as usual.
-template <typename T>
-struct MoveAllocator : std::allocator<T> {
-  template <typename U>
-  struct rebind {
-    using other = MoveAllocator<U>;
-  };
-  MoveAllocator() = default;
-  template <typename U>
-  MoveAllocator(const MoveAllocator<U>& /*other*/) noexcept {}  // NOLINT: converting, as allocators are
-  template <typename U>
-  void construct(U* /*at*/) noexcept {
-    static_assert(std::is_aggregate_v<U> && std::is_trivially_destructible_v<U>, "an implicit-lifetime type");
-  }
-  template <typename U, typename... Args>
-  void construct(U* at, Args&&... args) {
-    std::construct_at(at, std::forward<Args>(args)...);
-  }
-};
-
-/// The moves of a toolpath (see MoveAllocator).
-using MoveList = std::vector<Move, MoveAllocator<Move>>;
+/// The moves of a toolpath. A move made without a value (vector::resize) is left for its maker to
+/// write (geometry::FillLaterAllocator), so the interpreter's windows (interpret/simple_runs.cpp)
+/// write each move once, on the core that computes it, instead of the main thread clearing a
+/// window's moves first (a sixth of the interpreter's time on a long program, with the other cores
+/// idle). A Move is an aggregate with a trivial destructor (an implicit-lifetime type), and the
+/// window assigns it whole before anything reads it. Its storage is in whole 2 MiB pages once large.
+using MoveList = std::vector<Move, geometry::FillLaterAllocator<Move>>;
 
 enum class LengthUnit : std::uint8_t { Millimetre, Inch };
 

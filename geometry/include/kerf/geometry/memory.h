@@ -1,0 +1,96 @@
+// Memory for the few large arrays a long program fills once (its text, the parse tree, the moves,
+// the sweep's order): Linux mmap and madvise, advice only — on other systems, or when the system
+// declines, nothing changes but the time and the memory it takes.
+//
+// Why: a page the process touches first costs a fault, and on the virtual machines Kerf is built
+// and tested on a fault costs about 1.8 µs per 4 KiB page (32 MiB touched: 14-17 ms) against
+// about 0.1 ms per MiB in 2 MiB pages. With transparent huge pages in mode "madvise" (Debian's
+// default) only advised ranges get them, and only their whole 2 MiB pages: an array from malloc
+// starts and ends anywhere, so up to 2 MiB at each end still faults page by page (a third of the
+// faults of kerf check on a 6 MB program).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace kerf::geometry {
+
+/// Asks the system to back the whole 2 MiB pages inside [begin, begin + bytes) with huge pages.
+/// Below 4 MiB nothing is asked.
+void adviseHugePages(const void* begin, std::size_t bytes);
+
+/// Gives the whole pages of [begin, end) back to the system; what they held reads as zeros after.
+void releasePages(const void* begin, const void* end);
+
+/// From this size on LargeAllocator maps whole 2 MiB pages of its own (smaller blocks come from
+/// operator new). A block is rounded up to whole 2 MiB pages: at most 2 MiB more, only in address
+/// space until touched, and one huge page costs less than the 256 small ones it replaces.
+inline constexpr std::size_t kLargeBlock = std::size_t{1} << 20;
+
+/// bytes from fresh 2 MiB-aligned pages advised huge (at least kLargeBlock), else operator new;
+/// throws std::bad_alloc when the system has no memory for it.
+void* allocateLarge(std::size_t bytes);
+/// Frees what allocateLarge(bytes) gave, with the same bytes.
+void freeLarge(void* p, std::size_t bytes) noexcept;
+/// Whether allocateLarge maps pages of its own here (Linux, not under AddressSanitizer).
+[[nodiscard]] bool largePagesOwned() noexcept;
+
+/// A standard allocator over allocateLarge: for the arrays that may grow to megabytes. Builds with
+/// AddressSanitizer use operator new throughout, so that overruns are still seen.
+template <typename T>
+struct LargeAllocator {
+  using value_type = T;
+  static_assert(alignof(T) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__, "aligned as operator new aligns");
+  LargeAllocator() = default;
+  template <typename U>
+  LargeAllocator(const LargeAllocator<U>& /*other*/) noexcept {}  // NOLINT: converting, as allocators are
+  [[nodiscard]] T* allocate(std::size_t n) {
+    if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
+    return static_cast<T*>(allocateLarge(n * sizeof(T)));
+  }
+  void deallocate(T* p, std::size_t n) noexcept { freeLarge(p, n * sizeof(T)); }
+  friend bool operator==(const LargeAllocator& /*a*/, const LargeAllocator& /*b*/) noexcept { return true; }
+};
+
+/// A LargeAllocator whose value-initialisation does nothing: vector::resize leaves the new elements
+/// for their maker to write (on the cores that compute them, not the thread that resizes, and
+/// without clearing pages that are written over next). Only for implicit-lifetime types (an
+/// aggregate with a trivial destructor: its storage holds one without a constructor running,
+/// C++20 [intro.object]) whose every element is assigned before it is read. Elements made from
+/// values (push_back, emplace_back, copies) are constructed as usual.
+template <typename T>
+struct FillLaterAllocator : LargeAllocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = FillLaterAllocator<U>;
+  };
+  FillLaterAllocator() = default;
+  template <typename U>
+  FillLaterAllocator(const FillLaterAllocator<U>& /*other*/) noexcept {}  // NOLINT: converting, as allocators are
+  template <typename U>
+  void construct(U* /*at*/) noexcept {
+    static_assert(std::is_aggregate_v<U> && std::is_trivially_destructible_v<U>, "an implicit-lifetime type");
+  }
+  template <typename U, typename... Args>
+  void construct(U* at, Args&&... args) {
+    std::construct_at(at, std::forward<Args>(args)...);
+  }
+};
+
+/// A vector whose storage comes from LargeAllocator.
+template <typename T>
+using LargeVector = std::vector<T, LargeAllocator<T>>;
+
+/// Reserves n elements in v and advises huge pages for them (adviseHugePages): for vectors whose
+/// storage is not a LargeAllocator's (which is advised already).
+template <typename T, typename A>
+void reserveLarge(std::vector<T, A>& v, std::size_t n) {
+  v.reserve(n);
+  adviseHugePages(v.data(), v.capacity() * sizeof(T));
+}
+
+}  // namespace kerf::geometry

@@ -111,7 +111,26 @@ void forEachFeed(const char* data, std::size_t size, F&& f) {
 
 }  // namespace
 
-SourceFile::SourceFile(std::string name, std::string text)
+TextBytes::TextBytes(std::string_view text) {
+  bytes_.reserve(text.size() + 1);
+  bytes_.insert(bytes_.end(), text.begin(), text.end());
+  bytes_.push_back('\0');
+}
+
+TextBytes TextBytes::ofSize(std::size_t n) {
+  TextBytes t;
+  t.bytes_.resize(n + 1);  // left for the caller (FillLaterAllocator), but for the NUL after them
+  t.bytes_[n] = '\0';
+  return t;
+}
+
+void TextBytes::shrink(std::size_t n) {
+  if (n >= size()) return;
+  bytes_.resize(n + 1);
+  bytes_[n] = '\0';
+}
+
+SourceFile::SourceFile(std::string name, TextBytes text)
     : name_(std::move(name)), text_(std::move(text)), size_(text_.size()) {
   lineStarts_.push_back(0);
   const char* data = text_.data();
@@ -139,8 +158,8 @@ SourceLocation SourceFile::locate(std::uint32_t offset) const {
 void SourceFile::releaseText(TextSource readAgain) {
   if (released_ || !readAgain) return;
   readAgain_ = std::move(readAgain);
-  hash_ = hashOf(text_);
-  std::string().swap(text_);
+  hash_ = hashOf(text_.view());
+  text_ = TextBytes();
   released_ = true;
 }
 
@@ -153,7 +172,7 @@ void SourceFile::reload() const {
     again.emplace(size_, ' ');
     for (std::size_t k = 1; k < lineStarts_.size(); ++k) (*again)[lineStarts_[k] - 1] = '\n';
   }
-  text_ = std::move(*again);
+  text_ = TextBytes(*again);
 }
 
 std::pair<std::uint32_t, std::uint32_t> SourceFile::lineRange(std::uint32_t line) const {
@@ -162,8 +181,8 @@ std::pair<std::uint32_t, std::uint32_t> SourceFile::lineRange(std::uint32_t line
   const std::uint32_t begin = lineStarts_[line - 1];
   std::uint32_t end = line < lineStarts_.size() ? lineStarts_[line] : static_cast<std::uint32_t>(text_.size());
   // Drop the line break: LF, CR LF or CR.
-  if (end > begin && text_[end - 1] == '\n') --end;
-  if (end > begin && text_[end - 1] == '\r') --end;
+  if (end > begin && text_.data()[end - 1] == '\n') --end;
+  if (end > begin && text_.data()[end - 1] == '\r') --end;
   return {begin, end};
 }
 

@@ -357,6 +357,13 @@ elseif(CASE STREQUAL "outputs_are_safe")
   file(STRINGS "${WORK}/from-pipe" piped)
   list(LENGTH piped npiped)
   expect("the FIFO's reader got the 640 points (got ${npiped})" npiped EQUAL 640)
+  # A FIFO as the input: read once. A finding's line is quoted from what was read, not by opening
+  # the FIFO again (which waited for a second writer for ever).
+  execute_process(COMMAND mkfifo "${WORK}/in-pipe")
+  execute_process(COMMAND sh -c "printf 'G1 X1 Y1\\nM2\\n' > '${WORK}/in-pipe' & '${KERF}' check '${WORK}/in-pipe'; s=$?; wait; exit $s"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 20)
+  expect("check of a FIFO ends (rc ${rc})" rc EQUAL 0)
+  expect("a FIFO's finding quotes its line" err MATCHES "in-pipe:1:1: warning: the cut path never closes a loop.*\n +G1 X1 Y1")
   # A link to a regular file (even one not there yet): its target is written, the link stays.
   execute_process(COMMAND ln -s target.txt "${WORK}/link.txt")
   run("${KERF}" convert "${part}" --to bp95d -o "${WORK}/link.txt")

@@ -519,6 +519,27 @@ TEST(parser, parts_parsed_on_several_cores_give_what_one_pass_gives) {
 
 }  // namespace
 
+// The bytes a SourceFile keeps: a copy of a string, or written in place by a reader; either way a
+// NUL follows the last byte, as in a std::string, and a SourceFile reads them the same.
+TEST(source, text_bytes_written_in_place_read_as_the_same_text) {
+  const std::string text = "G1 X1.\nG2 X2. Y0 R1.\r\nM2";
+  const TextBytes copied(text);
+  EXPECT_EQ(copied.view(), text);
+  EXPECT_EQ(copied.data()[copied.size()], '\0');
+  TextBytes written = TextBytes::ofSize(text.size() + 5);
+  std::copy(text.begin(), text.end(), written.data());
+  written.shrink(text.size());  // the file was shorter than its size said
+  EXPECT_EQ(written.view(), text);
+  EXPECT_EQ(written.data()[written.size()], '\0');
+  const SourceFile a("a.nc", copied), b("b.nc", std::move(written));
+  ASSERT_EQ(a.lineCount(), 3u);
+  ASSERT_EQ(b.lineCount(), 3u);
+  for (std::uint32_t line = 1; line <= 3; ++line) EXPECT_EQ(a.lineText(line), b.lineText(line));
+  EXPECT_EQ(b.lineText(2), "G2 X2. Y0 R1.");
+  EXPECT_EQ(TextBytes().size(), 0u);
+  EXPECT_EQ(TextBytes().data()[0], '\0');
+}
+
 // The text's hash (source.cpp) reads it in four lanes of 8 bytes, then 8 bytes, then the tail: a
 // change of one byte in any of them, and only a change, is seen when the text is read again.
 TEST(source, a_change_of_one_byte_anywhere_in_a_long_text_is_seen) {

@@ -73,6 +73,57 @@ std::optional<std::string> makeTemporary(const fs::path& dir, const fs::path& ta
 
 }  // namespace
 
+std::optional<converter::TextBytes> readProgramFile(const std::string& path, std::size_t maxBytes, std::string& error) {
+  auto throughText = [&]() -> std::optional<converter::TextBytes> {
+    std::optional<std::string> text = readTextFile(path, maxBytes, error);
+    if (!text) return std::nullopt;
+    return converter::TextBytes(*text);
+  };
+  // Only a regular file is opened here (a FIFO opened twice would lose its writer), and without
+  // waiting, in case the path became something else since.
+  struct stat st {};
+  if (path == "-" || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return throughText();
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) return throughText();  // its messages: missing, not readable
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    return throughText();
+  }
+  const auto size = static_cast<std::uintmax_t>(st.st_size);
+  if (size > maxBytes) {
+    ::close(fd);
+    error = "'" + path + "' is larger than " + std::to_string(maxBytes) + " bytes";
+    return std::nullopt;
+  }
+  converter::TextBytes text = converter::TextBytes::ofSize(static_cast<std::size_t>(size));
+  std::size_t got = 0;
+  bool failed = false;
+  while (got < text.size()) {
+    const ssize_t n = ::read(fd, text.data() + got, text.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      failed = n < 0;
+      break;
+    }
+    got += static_cast<std::size_t>(n);
+  }
+  char more = 0;
+  ssize_t extra = 0;
+  if (!failed && got == text.size()) {
+    do extra = ::read(fd, &more, 1);
+    while (extra < 0 && errno == EINTR);
+    failed = extra < 0;
+  }
+  ::close(fd);
+  if (failed) {
+    error = "error reading '" + path + "'";
+    return std::nullopt;
+  }
+  if (extra > 0) return throughText();  // it grew while read: read whole, up to the limit
+  text.shrink(got);                     // it shrank: what it held
+  return text;
+}
+
 std::string displayName(const std::string& path) { return path == "-" ? "<stdin>" : path; }
 
 std::optional<std::string> readTextFile(const std::string& path, std::size_t maxBytes, std::string& error) {

@@ -11,6 +11,8 @@
 //     permissions of the file it replaces.
 #pragma once
 
+#include "kerf/converter/source.h"
+
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -22,6 +24,11 @@ namespace kerf::cli {
 /// The whole file ("-": standard input), or nothing with a message in error (missing, unreadable,
 /// a folder, too big).
 std::optional<std::string> readTextFile(const std::string& path, std::size_t maxBytes, std::string& error);
+
+/// readTextFile for a program: a regular file is read straight into the bytes a SourceFile keeps
+/// (converter::TextBytes: one copy from the system, on huge pages once long); anything else
+/// (standard input, a pipe, a device) goes through readTextFile.
+std::optional<converter::TextBytes> readProgramFile(const std::string& path, std::size_t maxBytes, std::string& error);
 
 /// The name a file is shown under: "<stdin>" for "-".
 std::string displayName(const std::string& path);

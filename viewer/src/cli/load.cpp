@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <string_view>
 
@@ -71,14 +72,16 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
   const bool curve = options.input.curve && file == kCurveInput;
   if (needs.summary) po.summarize = options.sampling.sampling();
   po.centreWords = needs.centreWords;
-  if (needs.quoteOnly && !curve && file != "-") {
+  // Only a regular file can be read again: a FIFO would wait for a second writer for ever.
+  std::error_code ec;
+  if (needs.quoteOnly && !curve && file != "-" && std::filesystem::is_regular_file(file, ec)) {
     po.rereadSource = [file]() -> std::optional<std::string> {
       std::string why;
       return readTextFile(file, converter::SourceFile::kMaxSize, why);
     };
   }
-  std::optional<std::string> text = curve ? std::optional<std::string>(curveText(options.input))
-                                          : readTextFile(file, converter::SourceFile::kMaxSize, failure);
+  std::optional<converter::TextBytes> text = curve ? std::optional<converter::TextBytes>(curveText(options.input))
+                                                   : readProgramFile(file, converter::SourceFile::kMaxSize, failure);
   if (!text) return std::nullopt;
   std::optional<converter::SourceText> upper;
   if (options.input.upper) {

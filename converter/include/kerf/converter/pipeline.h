@@ -33,7 +33,7 @@ namespace kerf::converter {
 /// A named text: a program, a machine profile.
 struct SourceText {
   std::string name;
-  std::string text;
+  TextBytes text;
 };
 
 /// What the program means. Every field is an override: nothing means "as the machine profile

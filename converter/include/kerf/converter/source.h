@@ -5,6 +5,9 @@
 // or at a lone CR (old Mac and some controllers' files), so every reader counts lines alike.
 #pragma once
 
+#include "kerf/geometry/memory.h"
+
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -29,18 +32,41 @@ struct SourceLocation {
   std::uint32_t column = 0;  ///< 1-based, in bytes
 };
 
+/// A text's bytes as a SourceFile keeps them. A long one lies on whole 2 MiB pages of its own
+/// (geometry::LargeAllocator), and a reader can fill it where it lies (ofSize, data) instead of
+/// through a string: one copy from the system, no bytes cleared first. A NUL byte follows the last,
+/// as in a std::string. Made implicitly from a string, which it copies.
+class TextBytes {
+ public:
+  TextBytes() : bytes_(1, '\0') {}
+  TextBytes(std::string_view text);  // NOLINT: implicit, as a string converts to a view
+  TextBytes(const std::string& text) : TextBytes(std::string_view(text)) {}  // NOLINT
+  TextBytes(const char* text) : TextBytes(std::string_view(text)) {}         // NOLINT
+  /// n bytes for the caller to write through data() before any is read.
+  static TextBytes ofSize(std::size_t n);
+  [[nodiscard]] char* data() { return bytes_.data(); }
+  [[nodiscard]] const char* data() const { return bytes_.data(); }
+  [[nodiscard]] std::size_t size() const { return bytes_.size() - 1; }
+  [[nodiscard]] std::string_view view() const { return {bytes_.data(), size()}; }
+  /// Keeps the first n bytes (n <= size()).
+  void shrink(std::size_t n);
+
+ private:
+  std::vector<char, geometry::FillLaterAllocator<char>> bytes_;
+};
+
 class SourceFile {
  public:
   /// Largest text accepted (offsets are 32-bit).
   static constexpr std::size_t kMaxSize = 1u << 31;
 
-  SourceFile(std::string name, std::string text);
+  SourceFile(std::string name, TextBytes text);
 
   [[nodiscard]] const std::string& name() const { return name_; }
   /// The text. After releaseText() the first call reads the file again (see there).
   [[nodiscard]] std::string_view text() const {
     if (released_) reload();
-    return text_;
+    return text_.view();
   }
   [[nodiscard]] SourceLocation locate(std::uint32_t offset) const;
   /// The text of a 1-based line, without its line break.
@@ -65,7 +91,7 @@ class SourceFile {
   std::string name_;
   void reload() const;
 
-  mutable std::string text_;
+  mutable TextBytes text_;
   std::vector<std::uint32_t> lineStarts_;
   std::size_t size_ = 0;
   // After releaseText(): how to read the text again, and what it must be.

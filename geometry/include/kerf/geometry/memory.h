@@ -58,8 +58,8 @@ struct LargeAllocator {
 
 /// A LargeAllocator whose value-initialisation does nothing: vector::resize leaves the new elements
 /// for their maker to write (on the cores that compute them, not the thread that resizes, and
-/// without clearing pages that are written over next). Only for implicit-lifetime types (an
-/// aggregate with a trivial destructor: its storage holds one without a constructor running,
+/// without clearing pages that are written over next). Only for implicit-lifetime types (a scalar,
+/// or an aggregate with a trivial destructor: its storage holds one without a constructor running,
 /// C++20 [intro.object]) whose every element is assigned before it is read. Elements made from
 /// values (push_back, emplace_back, copies) are constructed as usual.
 template <typename T>
@@ -73,7 +73,8 @@ struct FillLaterAllocator : LargeAllocator<T> {
   FillLaterAllocator(const FillLaterAllocator<U>& /*other*/) noexcept {}  // NOLINT: converting, as allocators are
   template <typename U>
   void construct(U* /*at*/) noexcept {
-    static_assert(std::is_aggregate_v<U> && std::is_trivially_destructible_v<U>, "an implicit-lifetime type");
+    static_assert(std::is_scalar_v<U> || (std::is_aggregate_v<U> && std::is_trivially_destructible_v<U>),
+                  "an implicit-lifetime type");
   }
   template <typename U, typename... Args>
   void construct(U* at, Args&&... args) {

@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
       if (m == 0) contacts = result.contacts.size();
     }
   }
-  std::printf("self-intersection:  %8.3f s  %zu segments, %zu pairs tested, %zu contacts (auto)\n", best[0],
+  std::printf("self-intersection:  %11.6f s  %zu segments, %zu pairs tested, %zu contacts (auto)\n", best[0],
               path.segments.size(), pairs[0], contacts);
   if (best[1] < 1e30)
     std::printf("  boxes alone:      %8.3f s  %zu pairs\n", best[1], pairs[1]);

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   const auto t0 = std::chrono::steady_clock::now();
   const bool simple = CGAL::is_simple_2(pts.begin(), pts.end(), K());
   const auto t1 = std::chrono::steady_clock::now();
-  std::printf("cgal is_simple_2: %.3f s  %ld vertices  %s\n", std::chrono::duration<double>(t1 - t0).count(), n,
+  std::printf("cgal is_simple_2: %.6f s  %ld vertices  %s\n", std::chrono::duration<double>(t1 - t0).count(), n,
               simple ? "simple" : "not simple");
   return simple ? 0 : 1;
 }

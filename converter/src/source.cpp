@@ -165,14 +165,15 @@ void SourceFile::releaseText(TextSource readAgain) {
 
 void SourceFile::reload() const {
   released_ = false;
-  std::optional<std::string> again = readAgain_();
-  if (!again || again->size() != size_ || hashOf(*again) != hash_) {
+  std::optional<TextBytes> again = readAgain_();
+  if (!again || again->size() != size_ || hashOf(again->view()) != hash_) {
     // Changed: blank lines of the old lengths keep every position valid.
     changed_ = true;
-    again.emplace(size_, ' ');
-    for (std::size_t k = 1; k < lineStarts_.size(); ++k) (*again)[lineStarts_[k] - 1] = '\n';
+    again = TextBytes::ofSize(size_);
+    std::fill_n(again->data(), size_, ' ');
+    for (std::size_t k = 1; k < lineStarts_.size(); ++k) again->data()[lineStarts_[k] - 1] = '\n';
   }
-  text_ = TextBytes(*again);
+  text_ = std::move(*again);  // not a copy: the text may be as long as the file may be
 }
 
 std::pair<std::uint32_t, std::uint32_t> SourceFile::lineRange(std::uint32_t line) const {

@@ -75,9 +75,9 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
   // Only a regular file can be read again: a FIFO would wait for a second writer for ever.
   std::error_code ec;
   if (needs.quoteOnly && !curve && file != "-" && std::filesystem::is_regular_file(file, ec)) {
-    po.rereadSource = [file]() -> std::optional<std::string> {
+    po.rereadSource = [file]() -> std::optional<converter::TextBytes> {
       std::string why;
-      return readTextFile(file, converter::SourceFile::kMaxSize, why);
+      return readProgramFile(file, converter::SourceFile::kMaxSize, why);
     };
   }
   std::optional<converter::TextBytes> text = curve ? std::optional<converter::TextBytes>(curveText(options.input))

@@ -76,7 +76,7 @@ class SourceFile {
   [[nodiscard]] std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
 
   /// Reads the text again: what the file holds now, or nothing when it cannot be read.
-  using TextSource = std::function<std::optional<std::string>()>;
+  using TextSource = std::function<std::optional<TextBytes>()>;
   /// Gives the text's memory back while positions (locate, lineCount) stay known: for a long
   /// program whose text is needed again only to quote a diagnostic's line. The first later use of
   /// the text calls `readAgain`; text that is not the same bytes (size or a 64-bit hash differ)

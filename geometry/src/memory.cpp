@@ -12,8 +12,18 @@ namespace {
 
 constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
 
+// AddressSanitizer sees overruns only in what operator new gives. GCC says it is on with
+// __SANITIZE_ADDRESS__, Clang (14) only through __has_feature.
 #if defined(__SANITIZE_ADDRESS__)
-constexpr bool kOwnPages = false;  // AddressSanitizer sees overruns only in what operator new gives
+#define KERF_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define KERF_ADDRESS_SANITIZER 1
+#endif
+#endif
+
+#if defined(KERF_ADDRESS_SANITIZER)
+constexpr bool kOwnPages = false;
 #elif defined(__linux__) && defined(MADV_HUGEPAGE)
 constexpr bool kOwnPages = true;
 #else

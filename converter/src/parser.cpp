@@ -5,8 +5,8 @@
 //           3. one block: settings, macro statements, comments, words
 //           4. the sides of a 4-axis block
 //           5. the whole text: byte-order mark, lines, '%' frame
-#include "kerf/geometry/memory.h"
 #include "kerf/converter/program.h"
+#include "kerf/geometry/memory.h"
 
 #include "kerf/geometry/parallel.h"
 

@@ -36,18 +36,6 @@ std::size_t wholeHugePages(std::size_t bytes) { return (bytes + kHuge - 1) & ~(k
 
 }  // namespace
 
-void adviseHugePages(const void* begin, std::size_t bytes) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  if (bytes < 2 * kHuge) return;
-  const auto at = reinterpret_cast<std::uintptr_t>(begin);
-  const std::uintptr_t from = (at + kHuge - 1) & ~(kHuge - 1), to = (at + bytes) & ~(kHuge - 1);
-  if (to > from) (void)madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
-#else
-  (void)begin;
-  (void)bytes;
-#endif
-}
-
 void releasePages(const void* begin, const void* end) {
 #if defined(__linux__)
   static const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));

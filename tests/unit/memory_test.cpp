@@ -57,19 +57,6 @@ TEST(memory, fill_later_resize_keeps_the_elements_before_and_push_back_construct
   EXPECT_EQ(v[12345].a, 12345.0);
 }
 
-// The advice for an array that is not a LargeAllocator's changes no contents either.
-TEST(memory, advice_keeps_contents_and_released_pages_read_as_zeros) {
-  std::vector<std::uint64_t> v;
-  reserveLarge(v, 3u << 20);  // 24 MiB: whole huge pages inside
-  ASSERT_GE(v.capacity(), std::size_t{3} << 20);
-  for (std::uint64_t k = 0; k < (3u << 20); ++k) v.push_back(value(k));
-  for (std::uint64_t k = 0; k < v.size(); k += 4099) ASSERT_EQ(v[k], value(k));
-  releasePages(v.data() + 1000, v.data() + 900000);
-  EXPECT_EQ(v[999], value(999));
-  EXPECT_EQ(v[500000], 0u);
-  EXPECT_EQ(v[900000], value(900000));
-}
-
 // Pages given back inside a large block read as zeros; those outside the range keep their values.
 TEST(memory, released_pages_of_a_large_block_read_as_zeros) {
   LargeVector<std::uint64_t> v(3u << 20);

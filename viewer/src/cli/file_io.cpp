@@ -1,7 +1,5 @@
 #include "file_io.h"
 
-#include "kerf/geometry/memory.h"
-
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -162,10 +160,7 @@ std::optional<std::string> readTextFile(const std::string& path, std::size_t max
   // (a file that grows while read is still read whole, up to the limit).
   if (fs::is_regular_file(st)) {
     const std::uintmax_t size = fs::file_size(path, ec);
-    if (!ec) {
-      text.reserve(static_cast<std::size_t>(std::min<std::uintmax_t>(size, maxBytes)) + 1);
-      geometry::adviseHugePages(text.data(), text.capacity());
-    }
+    if (!ec) text.reserve(static_cast<std::size_t>(std::min<std::uintmax_t>(size, maxBytes)) + 1);
   }
   while (in.read(buf, sizeof buf) || in.gcount() > 0) {
     text.append(buf, static_cast<std::size_t>(in.gcount()));

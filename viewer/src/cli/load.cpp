@@ -85,7 +85,8 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
   if (!text) return std::nullopt;
   std::optional<converter::SourceText> upper;
   if (options.input.upper) {
-    std::optional<std::string> upperText = readTextFile(*options.input.upper, converter::SourceFile::kMaxSize, failure);
+    std::optional<converter::TextBytes> upperText =
+        readProgramFile(*options.input.upper, converter::SourceFile::kMaxSize, failure);
     if (!upperText) return std::nullopt;
     upper = converter::SourceText{*options.input.upper, std::move(*upperText)};
   }

@@ -1,6 +1,7 @@
 // Memory for the few large arrays a long program fills once (its text, the parse tree, the moves,
-// the sweep's order): Linux mmap and madvise, advice only — on other systems, or when the system
-// declines, nothing changes but the time and the memory it takes.
+// the sweep's order): mappings of their own on Linux (mmap, madvise); elsewhere, under
+// AddressSanitizer, or when the system declines the advice, nothing changes but the time and the
+// memory it takes.
 //
 // Why: a page the process touches first costs a fault, and on the virtual machines Kerf is built
 // and tested on a fault costs about 1.8 µs per 4 KiB page (32 MiB touched: 14-17 ms) against
@@ -18,10 +19,6 @@
 #include <vector>
 
 namespace kerf::geometry {
-
-/// Asks the system to back the whole 2 MiB pages inside [begin, begin + bytes) with huge pages.
-/// Below 4 MiB nothing is asked.
-void adviseHugePages(const void* begin, std::size_t bytes);
 
 /// Gives the whole pages of [begin, end) back to the system; what they held reads as zeros after.
 void releasePages(const void* begin, const void* end);
@@ -85,13 +82,5 @@ struct FillLaterAllocator : LargeAllocator<T> {
 /// A vector whose storage comes from LargeAllocator.
 template <typename T>
 using LargeVector = std::vector<T, LargeAllocator<T>>;
-
-/// Reserves n elements in v and advises huge pages for them (adviseHugePages): for vectors whose
-/// storage is not a LargeAllocator's (which is advised already).
-template <typename T, typename A>
-void reserveLarge(std::vector<T, A>& v, std::size_t n) {
-  v.reserve(n);
-  adviseHugePages(v.data(), v.capacity() * sizeof(T));
-}
 
 }  // namespace kerf::geometry

@@ -5,6 +5,7 @@
 #include "kerf/geometry/intersection.h"
 
 #include "angles.h"
+#include "kerf/geometry/float_steps.h"
 #include "kerf/geometry/memory.h"
 #include "kerf/geometry/parallel.h"
 
@@ -561,15 +562,9 @@ bool strictlyOneSide(const Segment& a, const Segment& b, double tol) {
 
 constexpr std::uint32_t kDead = std::numeric_limits<std::uint32_t>::max();  // a segment too short to test
 
-/// The float next to f towards minus infinity, as std::nextafter gives it, without the library
-/// call: by the bits, since floats of one sign are ordered as their bits are (+infinity gives the
-/// largest finite float; f is not -infinity or NaN).
-float nextDown(float f) {
-  if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return std::bit_cast<float>(f > 0 ? bits - 1 : bits + 1);
-}
-float nextUp(float f) { return -nextDown(-f); }
+/// One float down or up (kerf/geometry/float_steps.h).
+float nextDown(float f) { return floatStepDownIf(f, 1); }
+float nextUp(float f) { return floatStepUpIf(f, 1); }
 
 /// A box in floats, rounded outwards: half the memory of a Box, and a filter that never drops a
 /// pair whose boxes overlap (only lets a few more through, which the exact tests settle).
@@ -577,14 +572,8 @@ struct LooseBox {
   float minX, minY, maxX, maxY;
   // A finite double past the floats' range rounds to an infinity; the next float inwards, the
   // largest finite one, is then on the right side of it, as std::nextafter gives.
-  static float below(double v) {
-    const auto f = static_cast<float>(v);
-    return static_cast<double>(f) > v ? nextDown(f) : f;
-  }
-  static float above(double v) {
-    const auto f = static_cast<float>(v);
-    return static_cast<double>(f) < v ? nextUp(f) : f;
-  }
+  static float below(double v) { return floatBelow(v); }
+  static float above(double v) { return floatAbove(v); }
   /// One float further out than the rounding needs: then two points within the tolerance of each
   /// other, as (p - q).norm() <= tol computes it, lie in boxes that overlap by this test, whatever
   /// the rounding of that norm and of the test's own sums (a float step is 2^29 times the double

@@ -24,6 +24,11 @@
 # KERF_COMPARE_STARS (a list of sizes, " " for none), KERF_COMPARE_RENDER=0, KERF_COMPARE_READER=0,
 # KERF_COMPARE_SPIRAL=0 and KERF_COMPARE_BATCH=0 leave pairs out.
 set -euo pipefail
+export LC_ALL=C  # $EPOCHREALTIME and awk with a decimal point, whatever the locale
+if ((BASH_VERSINFO[0] < 5)); then
+  echo "compare.sh: needs bash 5 or later (\$EPOCHREALTIME)" >&2
+  exit 2
+fi
 build=${1:?usage: compare.sh BUILD_DIR [R]}
 runs=${2:-5}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -54,15 +59,16 @@ for n in ${KERF_COMPARE_STARS:-10000 100000 1000000}; do
 done
 
 # run OUT CMD...: appends "seconds KiB" of one run of CMD to OUT (stdout and stderr dropped): the
-# wall time to the millisecond from the clock around it (GNU time's own is in hundredths, a tenth
-# of a run of kerf check), the peak memory from GNU time.
+# wall time to the microsecond from bash's own clock ($EPOCHREALTIME, no process: the clock read by
+# starting `date` put that program's start-up, about 2.5 ms, inside every figure, a twentieth of a
+# run of kerf check), the peak memory from GNU time (its own figure for the time is in hundredths).
 run() {
   local out=$1 t0 t1
   shift
-  t0=$(date +%s%N)
+  t0=$EPOCHREALTIME
   /usr/bin/time -f "%M" -o "$work/mem" "$@" > /dev/null 2>&1 || true
-  t1=$(date +%s%N)
-  echo "$(awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.3f", (b - a) / 1e9}') $(tail -1 "$work/mem")" >> "$out"
+  t1=$EPOCHREALTIME
+  echo "$(awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.4f", b - a}') $(tail -1 "$work/mem")" >> "$out"
 }
 stats_pair() {  # label, file of "seconds KiB" lines -> "min / median / max s, median MiB"
   read -r a b c < <(cut -d' ' -f1 "$1" | stats)
@@ -99,8 +105,8 @@ if [[ "${KERF_COMPARE_READER:-1}" != 0 ]] && command -v rs274 > /dev/null; then
     : > "$work/t" && run "$work/t" rs274 -g "$work/program.ngc" /dev/null
     read -r t m < "$work/t" && echo "$t" >> "$work/rt" && echo "$m" >> "$work/rm"
   done
-  read -r kmin kmed kmax < <(stats < "$work/kt")
-  read -r rmin rmed rmax < <(stats < "$work/rt")
+  read -r kmin kmed kmax < <(stats 4 < "$work/kt")
+  read -r rmin rmed rmax < <(stats 4 < "$work/rt")
   read -r _ kmem _ < <(stats < "$work/km")
   read -r _ rmem _ < <(stats < "$work/rm")
   printf "check %d bytes: kerf %s / %s / %s s, %.0f MiB   rs274 -g %s / %s / %s s, %.0f MiB   rs274/kerf %.1f   kerf bytes of memory per input byte %.1f\n" \
@@ -148,9 +154,9 @@ if [[ "${KERF_COMPARE_BATCH:-1}" != 0 && -d "$realworld" ]]; then
     # status 1" before the figure, so the last line is the figure.
     /usr/bin/time -f "%e" -o "$work/t" "$build/viewer/kerf" check "$work/batch" --quiet > /dev/null 2>&1 || true
     tail -n 1 "$work/t" >> "$work/bt"
-    start=$(date +%s.%N)
+    start=$EPOCHREALTIME
     for f in "$work/batch"/*; do "$build/viewer/kerf" check "$f" --quiet > /dev/null 2>&1 || true; done
-    awk -v a="$(date +%s.%N)" -v b="$start" 'BEGIN {printf "%.3f\n", a - b}' >> "$work/st"
+    awk -v a="$EPOCHREALTIME" -v b="$start" 'BEGIN {printf "%.3f\n", a - b}' >> "$work/st"
   done
   printf "batch of 1000 files: one call %s   1000 calls %s   one/many %.2f\n" "$(stats < "$work/bt" | tr ' ' '/')" \
     "$(stats < "$work/st" | tr ' ' '/')" \

@@ -421,9 +421,11 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
   const double zLower = taper ? toolpath.heights.planes.lower : 0.0;
 
   // Rapids between the first and the last cut: a warning, unless the wire may be cut and threaded
-  // again between the cuts on either side (M00, M01 or the profile's rethread codes).
+  // again between the cuts on either side (M00, M01 or the profile's rethread codes). A view
+  // without a table saw only cuts there (cutView): then there is none, and no pass to make.
   std::size_t previousCut = path.moveIndex.front();
-  for (std::size_t i = path.moveIndex.front(); i < path.moveIndex.back(); ++i) {
+  const std::size_t rapidsTo = path.table.empty() ? previousCut : path.moveIndex.back();
+  for (std::size_t i = path.moveIndex.front(); i < rapidsTo; ++i) {
     if (moves[i].isCut()) {
       previousCut = i;
       continue;

@@ -594,6 +594,20 @@ TEST(source, lines_start_after_every_line_feed_wherever_it_falls_in_a_word) {
     for (std::uint32_t line = 1; line <= starts.size(); ++line)
       ASSERT_EQ(src.lineRange(line).first, starts[line - 1]) << size << " line " << line;
   }
+  // A carriage return in a later MiB (the starts are found a MiB at a time): CR LF ends one line,
+  // a lone CR one too.
+  std::string text(std::size_t{3} << 20, 'X');
+  for (std::size_t at = 1000; at < text.size(); at += 997) text[at] = '\n';
+  text.replace(std::size_t{5} << 19, 2, "\r\n");
+  text[(std::size_t{11} << 18) + 1] = '\r';
+  std::vector<std::uint32_t> starts{0};
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n' || (text[i] == '\r' && text[i + 1] != '\n'))
+      starts.push_back(static_cast<std::uint32_t>(i + 1));
+  const SourceFile src("crlf.nc", text);
+  ASSERT_EQ(src.lineCount(), starts.size());
+  for (std::uint32_t line = 1; line <= starts.size(); ++line)
+    ASSERT_EQ(src.lineRange(line).first, starts[line - 1]) << "line " << line;
 }
 
 // Block::plain marks the blocks the whole-program scans may pass by: motion codes G00-G03 and X Y

@@ -225,7 +225,11 @@ bool Interpreter::runSimpleWindow(std::size_t begin, std::size_t end) {
   }
   position_ = results.back().position;
   motion_ = results.back().motion;
-  for (std::size_t i = base; i < kept; ++i) noteOffsetRun(toolpath_.moves[i], i);
+  // Every move of the window has the offset in force (runSimpleStretch): with none, no move
+  // starts or extends a run, and the pass over them (a serial millisecond on a long program) is
+  // not made.
+  if (wireOffset_ != WireOffset::Off)
+    for (std::size_t i = base; i < kept; ++i) noteOffsetRun(toolpath_.moves[i], i);
   executed_ += n;
   blocksInWindows_ += n;
   return true;

@@ -111,7 +111,7 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
   constexpr std::size_t kStretch = 4096;
   const std::size_t n = toolpath.moves.size();
   std::vector<Stretch> stretches((n + kStretch - 1) / kStretch, Stretch(sampling));
-  geometry::parallelFor(stretches.size(), 4, [&](std::size_t sb, std::size_t se) {
+  geometry::parallelForBalanced(stretches.size(), 1, [&](std::size_t sb, std::size_t se) {
     for (std::size_t st = sb; st < se; ++st) {
       Stretch& part = stretches[st];
       for (std::size_t i = st * kStretch; i < std::min(n, (st + 1) * kStretch); ++i) {

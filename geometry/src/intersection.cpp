@@ -682,7 +682,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     std::size_t dead = 0;
   };
   std::vector<Extent> extents(stretches);
-  geometry::parallelFor(stretches, 8, [&](std::size_t sb, std::size_t se) {
+  geometry::parallelForBalanced(stretches, 2, [&](std::size_t sb, std::size_t se) {
     for (std::size_t st = sb; st < se; ++st) {
       Extent e;
       for (std::size_t i = st * kStretch; i < std::min(n, (st + 1) * kStretch); ++i) {
@@ -779,7 +779,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
       if (pending.empty()) return false;
       std::mutex mutex;
       std::vector<std::pair<std::size_t, std::vector<Contact>>> parts;  // (first pair, its contacts)
-      geometry::parallelFor(pending.size(), 2048, [&](std::size_t b, std::size_t e) {
+      geometry::parallelForBalanced(pending.size(), 2048, [&](std::size_t b, std::size_t e) {
         std::vector<Contact> found;
         std::uint64_t first = UINT64_MAX;
         for (std::size_t k = b; k < e; ++k) {
@@ -819,7 +819,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     for (std::size_t k = 0; k < byMinX.size(); ++k) {
       if (k % kBoxBlock == 0) {
         const std::size_t base = k, count = std::min(kBoxBlock, byMinX.size() - k);
-        geometry::parallelFor(count, 4096, [&](std::size_t b, std::size_t e) {
+        geometry::parallelForBalanced(count, 4096, [&](std::size_t b, std::size_t e) {
           constexpr std::size_t kAhead = 8;
           for (std::size_t q = b; q < e; ++q) {
             if (q + kAhead < e) __builtin_prefetch(&path[byMinX[base + q + kAhead].seg]);

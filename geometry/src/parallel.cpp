@@ -157,6 +157,34 @@ void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(s
   if (failure) std::rethrow_exception(failure);
 }
 
+void parallelForBalanced(std::size_t n, std::size_t minChunk,
+                         const std::function<void(std::size_t, std::size_t)>& body) {
+  const std::size_t chunk = std::max<std::size_t>(minChunk, 1);
+  const std::size_t workers = std::min<std::size_t>(workerCount(), n / chunk);
+  if (workers <= 1) {
+    if (n > 0) body(0, n);
+    return;
+  }
+  constexpr std::size_t kPiecesPerWorker = 4;
+  const std::size_t pieces = std::min(n / chunk, workers * kPiecesPerWorker);
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  // One call of parallelFor's body a worker; each takes pieces until none is left. After a
+  // piece throws, the others take no more (parallelFor rethrows the first).
+  parallelFor(workers, 1, [&](std::size_t, std::size_t) {
+    while (!failed.load(std::memory_order_relaxed)) {
+      const std::size_t piece = next.fetch_add(1, std::memory_order_relaxed);
+      if (piece >= pieces) return;
+      try {
+        body(n * piece / pieces, n * (piece + 1) / pieces);
+      } catch (...) {
+        failed.store(true, std::memory_order_relaxed);
+        throw;
+      }
+    }
+  });
+}
+
 ParallelScope::ParallelScope() {
   const std::lock_guard<std::mutex> lock(scopeMutex);
   if (scopeOpen || scopeHelpers || workerCount() < 2) return;  // an outer scope, or no threads needed

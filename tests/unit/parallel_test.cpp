@@ -43,6 +43,44 @@ TEST(Parallel, EveryIndexOnceWhateverTheSplit) {
   }
 }
 
+TEST(Parallel, BalancedEveryIndexOnceInPiecesOfAtLeastAChunkUpToFourAWorker) {
+  for (const char* threads : {"1", "2", "4"}) {
+    const Threads t(threads);
+    const std::size_t workers = workerCount();
+    for (const std::size_t n : {0u, 1u, 7u, 100u, 4097u, 100000u}) {
+      for (const std::size_t chunk : {1u, 16u, 2048u}) {
+        std::vector<std::atomic<int>> seen(n);
+        std::atomic<std::size_t> pieces{0};
+        kerf::geometry::parallelForBalanced(n, chunk, [&](std::size_t b, std::size_t e) {
+          ASSERT_LT(b, e);
+          ++pieces;
+          // Every piece is a chunk or more, unless one call takes everything.
+          if (e - b < n) {
+            ASSERT_GE(e - b, chunk);
+          }
+          for (std::size_t i = b; i < e; ++i) ++seen[i];
+        });
+        for (std::size_t i = 0; i < n; ++i)
+          ASSERT_EQ(seen[i].load(), 1) << "n " << n << " chunk " << chunk << " i " << i;
+        EXPECT_LE(pieces.load(), std::max<std::size_t>(1, 4 * workers)) << threads;
+        if (workers > 1 && n / chunk >= 4 * workers) {
+          EXPECT_EQ(pieces.load(), 4 * workers) << threads << " n " << n;
+        }
+      }
+    }
+  }
+  // A piece that throws: the call rethrows it once every worker has stopped.
+  const Threads t("2");
+  std::atomic<int> ran{0};
+  EXPECT_THROW(kerf::geometry::parallelForBalanced(1000, 10,
+                                                   [&](std::size_t b, std::size_t) {
+                                                     ++ran;
+                                                     if (b == 0) throw std::runtime_error("piece");
+                                                   }),
+               std::runtime_error);
+  EXPECT_GE(ran.load(), 1);
+}
+
 TEST(Parallel, UsesOtherThreadsAndKerfThreadsOneIsSerial) {
   const std::thread::id caller = std::this_thread::get_id();
   auto threadsUsed = [&] {

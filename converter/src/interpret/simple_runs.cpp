@@ -184,8 +184,11 @@ bool Interpreter::runSimpleStretch(std::size_t runStart, std::size_t begin, std:
 bool Interpreter::runSimpleWindow(std::size_t begin, std::size_t end) {
   const std::size_t n = end - begin;
   const std::size_t base = toolpath_.moves.size();
+  // Four stretches a core, taken by whichever core is free (parallelForBalanced): a core shared
+  // with other work no longer holds the window up with a fixed half of it.
   const std::size_t stretches = std::max<std::size_t>(
-      1, std::min<std::size_t>(options_.parallelStretches ? options_.parallelStretches : geometry::workerCount(), n));
+      1,
+      std::min<std::size_t>(options_.parallelStretches ? options_.parallelStretches : 4 * geometry::workerCount(), n));
   std::vector<SimpleStretch> results(stretches);
   std::vector<std::uint8_t> made(n, 0);
   toolpath_.moves.resize(base + n);
@@ -194,7 +197,7 @@ bool Interpreter::runSimpleWindow(std::size_t begin, std::size_t end) {
   const bool record = options_.recordCentreWords;
   if (record) words.resize(base + n);
   auto bound = [&](std::size_t k) { return begin + n * k / stretches; };
-  geometry::parallelFor(stretches, 1, [&](std::size_t kb, std::size_t ke) {
+  geometry::parallelForBalanced(stretches, 1, [&](std::size_t kb, std::size_t ke) {
     for (std::size_t k = kb; k < ke; ++k) {
       const std::size_t at = bound(k) - begin;
       results[k].ok = runSimpleStretch(begin, bound(k), bound(k + 1), out + at,

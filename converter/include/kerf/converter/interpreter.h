@@ -60,9 +60,10 @@ struct InterpreterOptions {
   /// Runs of at least this many simple blocks (plain, 2-axis, straight through) are interpreted
   /// on every core, with the block loop's results (docs/interpreter.md); 0: never.
   std::size_t parallelRun = 16384;
-  /// Blocks of such a run taken at a time (a window), each cut into stretches, one per worker.
+  /// Blocks of such a run taken at a time (a window), each cut into stretches, four per worker.
   std::size_t parallelWindow = std::size_t{1} << 17;
-  /// Stretches a window is cut into; 0: one per worker (geometry::workerCount()).
+  /// Stretches a window is cut into; 0: four per worker (geometry::workerCount()), each taken by
+  /// the first worker free.
   std::size_t parallelStretches = 0;
 };
 

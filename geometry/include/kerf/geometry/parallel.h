@@ -19,6 +19,14 @@ unsigned workerCount();
 /// every thread has finished.
 void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(std::size_t, std::size_t)>& body);
 
+/// parallelFor in pieces of at least minChunk indices, up to four a worker, each taken by the
+/// first worker free: for work split finely enough, a worker whose core is shared (runBeside's
+/// work beside it, another program on a shared machine) takes fewer pieces, and the call no longer
+/// waits for the slower of fixed halves. Pieces run in no fixed order and on no fixed thread, so
+/// body must write only what belongs to its own indices (as for parallelFor).
+void parallelForBalanced(std::size_t n, std::size_t minChunk,
+                         const std::function<void(std::size_t, std::size_t)>& body);
+
 /// While one lives, parallelFor keeps its threads between calls instead of making and ending
 /// them for each (a check makes a score of calls); they are made at the first call that needs
 /// them, so a short program makes none. The commands open one around a program's

@@ -58,17 +58,26 @@ for n in ${KERF_COMPARE_STARS:-10000 100000 1000000}; do
     "$n" "$kmin" "$kmed" "$kmax" "$cmin" "$cmed" "$cmax" "$(awk -v a="$kmed" -v b="$cmed" 'BEGIN {print a / b}')"
 done
 
-# run OUT CMD...: appends "seconds KiB" of one run of CMD to OUT (stdout and stderr dropped): the
-# wall time to the microsecond from bash's own clock ($EPOCHREALTIME, no process: the clock read by
-# starting `date` put that program's start-up, about 2.5 ms, inside every figure, a twentieth of a
-# run of kerf check), the peak memory from GNU time (its own figure for the time is in hundredths).
-run() {
+# clock OUT CMD...: appends the wall seconds of one run of CMD to OUT (stdout and stderr dropped),
+# to the microsecond from bash's own clock ($EPOCHREALTIME) around the command alone. The clock
+# read by starting `date`, and GNU time around the command, put those programs' start-up inside
+# every figure (about 2.5 and 2 ms, a twentieth of a run of kerf check each, the same for both
+# tools, so the ratio came out smaller than it is).
+clock() {
   local out=$1 t0 t1
   shift
   t0=$EPOCHREALTIME
-  /usr/bin/time -f "%M" -o "$work/mem" "$@" > /dev/null 2>&1 || true
+  "$@" > /dev/null 2>&1 || true
   t1=$EPOCHREALTIME
-  echo "$(awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.4f", b - a}') $(tail -1 "$work/mem")" >> "$out"
+  awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.4f\n", b - a}' >> "$out"
+}
+# peak OUT CMD...: appends the peak memory (KiB, GNU time) of one run of CMD to OUT: runs of their
+# own, interleaved with the timed ones.
+peak() {
+  local out=$1
+  shift
+  /usr/bin/time -f "%M" -o "$work/mem" "$@" > /dev/null 2>&1 || true
+  tail -1 "$work/mem" >> "$out"
 }
 stats_pair() {  # label, file of "seconds KiB" lines -> "min / median / max s, median MiB"
   read -r a b c < <(cut -d' ' -f1 "$1" | stats)
@@ -100,10 +109,10 @@ if [[ "${KERF_COMPARE_READER:-1}" != 0 ]] && command -v rs274 > /dev/null; then
   bytes=$(stat -c %s "$work/program.ngc")
   : > "$work/kt" && : > "$work/km" && : > "$work/rt" && : > "$work/rm"
   for ((r = 0; r < runs; ++r)); do
-    : > "$work/t" && run "$work/t" "$build/viewer/kerf" check "$work/program.ngc"
-    read -r t m < "$work/t" && echo "$t" >> "$work/kt" && echo "$m" >> "$work/km"
-    : > "$work/t" && run "$work/t" rs274 -g "$work/program.ngc" /dev/null
-    read -r t m < "$work/t" && echo "$t" >> "$work/rt" && echo "$m" >> "$work/rm"
+    clock "$work/kt" "$build/viewer/kerf" check "$work/program.ngc"
+    clock "$work/rt" rs274 -g "$work/program.ngc" /dev/null
+    peak "$work/km" "$build/viewer/kerf" check "$work/program.ngc"
+    peak "$work/rm" rs274 -g "$work/program.ngc" /dev/null
   done
   read -r kmin kmed kmax < <(stats 4 < "$work/kt")
   read -r rmin rmed rmax < <(stats 4 < "$work/rt")

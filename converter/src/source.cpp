@@ -1,9 +1,6 @@
 #include "kerf/converter/source.h"
 
-#include "kerf/geometry/parallel.h"
-
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cstring>
 
@@ -138,34 +135,12 @@ SourceFile::SourceFile(std::string name, TextBytes text)
   lineStarts_.push_back(0);
   const char* data = text_.data();
   const std::size_t size = text_.size();
-  // LF only, the fast way: the starts are counted first, so the list is made at its size once,
-  // then written. In stretches of a fixed length on every core (a 6 MB program's starts took a
-  // millisecond on one, with the other idle), each stretch's count giving where its starts go.
-  constexpr std::size_t kStretch = std::size_t{1} << 20;
-  const std::size_t stretches = (size + kStretch - 1) / kStretch;
-  auto stretch = [&](std::size_t k) {
-    return std::string_view(data + k * kStretch, std::min(kStretch, size - k * kStretch));
-  };
-  std::vector<std::size_t> before(stretches + 1, 0);  // feeds before each stretch, once summed
-  std::atomic<bool> returns{false};
-  geometry::parallelFor(stretches, 1, [&](std::size_t b, std::size_t e) {
-    for (std::size_t k = b; k < e; ++k) {
-      const std::string_view t = stretch(k);
-      if (std::memchr(t.data(), '\r', t.size()) != nullptr) returns.store(true, std::memory_order_relaxed);
-      before[k + 1] = countFeeds(t.data(), t.size());
-    }
-  });
-  if (!returns.load()) {
-    for (std::size_t k = 0; k < stretches; ++k) before[k + 1] += before[k];
-    lineStarts_.resize(before[stretches] + 1);
-    geometry::parallelFor(stretches, 1, [&](std::size_t b, std::size_t e) {
-      for (std::size_t k = b; k < e; ++k) {
-        std::uint32_t* out = lineStarts_.data() + 1 + before[k];
-        const std::string_view t = stretch(k);
-        const std::size_t at0 = k * kStretch + 1;
-        forEachFeed(t.data(), t.size(), [&](std::size_t at) { *out++ = static_cast<std::uint32_t>(at0 + at); });
-      }
-    });
+  if (std::memchr(data, '\r', size) == nullptr) {  // LF only: the fast way
+    // The starts are counted first, so the list is made at its size once, then written.
+    const std::size_t count = countFeeds(data, size);
+    lineStarts_.resize(count + 1);
+    std::uint32_t* out = lineStarts_.data() + 1;
+    forEachFeed(data, size, [&](std::size_t at) { *out++ = static_cast<std::uint32_t>(at + 1); });
     return;
   }
   for (std::size_t i = 0; i < size; ++i) {

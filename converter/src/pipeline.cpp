@@ -79,6 +79,7 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.maxTaperDegrees = options.check.maxTaperDegrees.value_or(out.machine.maxTaperDegrees);
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
   if (options.check.sectionBudget) out.checkOptions.sectionBudget = *options.check.sectionBudget;
+  if (options.check.surfaceLevels) out.checkOptions.surfaceLevels = *options.check.surfaceLevels;
   releaseSource(out, options);  // the checks and what follows them only quote the text
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);

@@ -48,9 +48,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   PipelineOptions options;
   options.read.maxExecutedBlocks = 200000;  // keep each input fast; the limits themselves are tested
   options.read.maxMoves = 100000;
-  // Sections past a tenth of the default budget are coarsened (K0657): sorting 15 sections of
-  // 100,000 pieces under coverage instrumentation took 28 s, past libFuzzer's 10 s timeout.
-  options.check.sectionBudget = 10000;
+  // The surface's sections are the checks' costliest part, bounded by levels x budget pieces
+  // (1.5 M by default: 0.3 s in Release). Under the sanitizers and coverage a pair test costs about
+  // 40 times more: 15 sections of 100,000 pieces took 28 s, and 15 of 10,000 still took 5-9 s on a
+  // taper program with 15,552 km of lower contour (tests/fuzz/corpus/sections-15552km.nc), past
+  // libFuzzer's 10 s under load. Three sections of at most 2,500 pieces (K0657 past that) take the
+  // same code paths.
+  options.check.sectionBudget = 2500;
+  options.check.surfaceLevels = 4;
   options.centreWords = true;  // explain shows them, below
   std::string text(reinterpret_cast<const char*>(data), size);
   // Half the inputs run as kerf check does: the text given back once parsed and read again for

@@ -42,6 +42,7 @@ enum class SweepMethod : std::uint8_t {
   Auto,      ///< the box sweep within a linear budget of work, then the decision sweep
   Boxes,     ///< the box sweep alone, however long it takes
   Decision,  ///< the decision sweep first (the tests compare it with Boxes)
+  Dropping,  ///< the decision sweep, then the dropping sweeps on any path that meets itself (tests)
 };
 
 struct SelfIntersectionOptions {
@@ -75,8 +76,9 @@ struct SelfIntersectionResult {
 /// O(n log n + c) for c overlapping pairs, the fastest on the shapes wire programs have — within a
 /// budget of work linear in n. Past it (long spikes, whose boxes all overlap), Shamos and Hoey's
 /// sweep over x-monotone pieces decides whether any pair meets, testing only neighbours along the
-/// sweep line: O(n log n) on any shape. Only a path that meets itself is then swept by boxes in
-/// full to list its contacts (docs/geometry.md).
+/// sweep line: O(n log n) on any shape. A path that meets itself then has its contacts listed by
+/// sweeps that drop, at each contact found, one of its two segments (listing that one's contacts
+/// by a pass over every box): O(maxContacts n log n) at worst (docs/geometry.md).
 SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfIntersectionOptions& options = {});
 
 }  // namespace kerf::geometry

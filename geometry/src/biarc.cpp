@@ -68,6 +68,29 @@ class Fitter {
     return worst;
   }
 
+  /// Whether span(a, b, out) <= e, the same answer with fewer points of the curve: the samples in an
+  /// order that spreads them over the span from the first (the middle, the quarters, the eighths:
+  /// k in bit-reversed order), and none more once one lies farther than e. Most trials of the walk's
+  /// bisection fail, and most of those on one of the first few samples: a curve given as
+  /// expressions (--curve) costs a muparser evaluation a point, most of kerf cam's time.
+  bool fits(double a, double b, double e, std::vector<Segment>& out) const {
+    // Every trial of one step of the walk starts at the same node: its point and tangent once.
+    if (!(startT_ == a)) {
+      startT_ = a;
+      startP_ = c_.point(a);
+      startU_ = tangent(a);
+    }
+    out = biarc(startP_, startU_, c_.point(b), tangent(b));
+    if (out.empty()) return false;
+    for (const int k : sampleOrder()) {
+      const Vec2 p = c_.point(a + (b - a) * k / (o_.samples + 1));
+      double best = INFINITY;
+      for (const Segment& s : out) best = std::min(best, s.distanceTo(p));
+      if (!(best <= e) || !(best <= 1e300)) return false;
+    }
+    return true;
+  }
+
   /// The greedy walk with target error e: the nodes, or empty when over budget.
   std::vector<double> walk(double e, bool& ok) const {
     std::vector<double> nodes{c_.t0};
@@ -76,14 +99,14 @@ class Fitter {
     double t = c_.t0;
     while (t < c_.t1) {
       if (nodes.size() > o_.maxSpans) return {};
-      if (span(t, c_.t1, scratch) <= e) {
+      if (fits(t, c_.t1, e, scratch)) {
         nodes.push_back(c_.t1);
         break;
       }
       double lo = t, hi = c_.t1;  // span(t, lo) fits (or lo = t), span(t, hi) does not
       for (int i = 0; i < 60 && hi - lo > o_.minSpan; ++i) {
         const double mid = 0.5 * (lo + hi);
-        if (span(t, mid, scratch) <= e)
+        if (fits(t, mid, e, scratch))
           lo = mid;
         else
           hi = mid;
@@ -99,8 +122,26 @@ class Fitter {
   }
 
  private:
+  /// 1 .. samples, each once, in the order of their bits reversed (for 63: 32, 16, 48, 8, ...).
+  const std::vector<int>& sampleOrder() const {
+    if (order_.empty()) {
+      const int n = std::max(0, o_.samples);
+      int bits = 0;
+      while ((1 << bits) <= n) ++bits;
+      for (int r = 0; r < (1 << bits); ++r) {
+        int k = 0;
+        for (int b = 0; b < bits; ++b) k |= ((r >> b) & 1) << (bits - 1 - b);
+        if (k >= 1 && k <= n) order_.push_back(k);
+      }
+    }
+    return order_;
+  }
+
   const ParametricCurve& c_;
   const BiarcOptions& o_;
+  mutable std::vector<int> order_;
+  mutable double startT_ = NAN;  // fits: the node its cached point and tangent are at
+  mutable Vec2 startP_ = Vec2::Zero(), startU_ = Vec2::Zero();
 };
 
 }  // namespace

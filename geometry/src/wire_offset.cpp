@@ -86,9 +86,13 @@ Segment subSegment(const Segment& s, double t0, double t1) {
   return a;
 }
 
-int windingNumber(std::span<const Segment> path, const Vec2& p) {
+namespace {
+
+/// What one segment adds to the winding number of p: its crossings of the ray from p towards +x.
+/// Only a segment whose box meets that ray adds anything.
+int windingOf(const Segment& s, const Vec2& p) {
   int w = 0;
-  for (const Segment& s : path) {
+  {
     if (!s.isArc()) {
       // Half-open in y so that a vertex on the ray counts once.
       const Vec2& a = s.start;
@@ -98,10 +102,10 @@ int windingNumber(std::span<const Segment> path, const Vec2& p) {
       } else if (a.y() > p.y() && b.y() <= p.y()) {
         if (cross(b - a, p - a) < 0) --w;
       }
-      continue;
+      return w;
     }
     const double dy = p.y() - s.centre.y();
-    if (std::abs(dy) >= s.radius) continue;
+    if (std::abs(dy) >= s.radius) return w;
     const double h = std::sqrt(s.radius * s.radius - dy * dy);
     for (const double x : {s.centre.x() - h, s.centre.x() + h}) {
       if (x <= p.x()) continue;
@@ -120,6 +124,14 @@ int windingNumber(std::span<const Segment> path, const Vec2& p) {
       w += up > 0 ? 1 : up < 0 ? -1 : 0;
     }
   }
+  return w;
+}
+
+}  // namespace
+
+int windingNumber(std::span<const Segment> path, const Vec2& p) {
+  int w = 0;
+  for (const Segment& s : path) w += windingOf(s, p);
   return w;
 }
 
@@ -229,7 +241,17 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
   const double area = options.closed ? signedArea(contour) : 0.0;
   const int sideWinding = d > 0 ? (area > 0 ? 1 : 0) : (area > 0 ? 0 : -1);
   auto valid = [&](const Vec2& p) {
-    if (options.closed && windingNumber(contour, p) != sideWinding) return false;
+    if (options.closed) {
+      // windingNumber(contour, p), from the elements whose boxes meet the ray from p (within the
+      // tolerance, so that rounding cannot leave one out): the same sum, not a pass over the whole
+      // contour for every piece (80,000 vertices: 26.9 s of kerf cam, 89% of it here).
+      Box ray;
+      ray.min = p;
+      ray.max = Vec2(std::numeric_limits<double>::infinity(), p.y());
+      int w = 0;
+      elements.visitOverlapping(ray, tol, [&](std::size_t e) { w += windingOf(contour[e], p); });
+      if (w != sideWinding) return false;
+    }
     bool ok = true;
     Box b;
     b.add(p);

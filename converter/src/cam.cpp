@@ -89,6 +89,7 @@ ContourWire offsetContour(std::span<const Segment> contour, double radius, WireS
   w.loops = r.paths;
   w.lost = r.lost;
   w.refused = r.refused;
+  if (r.tooMuchWork) w.tooMuchWork = r.tests - 1;
   return w;
 }
 
@@ -107,7 +108,11 @@ void reportContourWire(const ContourWire& wire, std::size_t number, const Drawin
   }
   if (wire.refused) {
     diags.error(Code::WireOffsetRefused, source, spanOf(0),
-                "the wire offset of " + name + " needs more pieces than the budget allows: not computed");
+                wire.tooMuchWork
+                    ? "the wire offset of " + name + " needs more than " + std::to_string(wire.tooMuchWork) +
+                          " exact tests of pieces whose boxes overlap (long elements side by side, as in a star of "
+                          "thin spikes): refused, not computed"
+                    : "the wire offset of " + name + " needs more pieces than the budget allows: not computed");
     return;
   }
   for (const geometry::LostRun& run : wire.lost) {

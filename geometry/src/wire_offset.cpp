@@ -205,6 +205,14 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
   }
   result.rawPieces = raw.size();
 
+  // Exact tests, counted against the budget: past it the offset is refused, after bounded work.
+  const std::size_t maxTests = options.maxTests ? options.maxTests : 8 * raw.size() + 20'000'000;
+  auto overBudget = [&] {
+    if (++result.tests <= maxTests) return false;
+    result.refused = result.tooMuchWork = true;
+    return true;
+  };
+
   // 3: split where the raw path meets itself.
   std::vector<Box> boxes(raw.size());
   for (std::size_t i = 0; i < raw.size(); ++i) boxes[i] = raw[i].seg.bounds();
@@ -214,7 +222,7 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
   std::size_t splitCount = 0;
   for (std::size_t i = 0; i < m && !result.refused; ++i) {
     pieces.visitOverlapping(boxes[i], tol, [&](std::size_t j) {
-      if (j <= i || result.refused) return;
+      if (j <= i || result.refused || overBudget()) return;
       const SegmentIntersection x = intersect(raw[i].seg, raw[j].seg, tol);
       const bool neighbours = j == i + 1 || (options.closed && i == 0 && j == m - 1);
       for (int c = 0; c < x.count; ++c) {
@@ -256,7 +264,8 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
     Box b;
     b.add(p);
     elements.visitOverlapping(b, dist, [&](std::size_t e) {
-      if (ok && contour[e].length() > tol && contour[e].distanceTo(p) < dist - tol) ok = false;
+      if (ok && !result.refused && !overBudget() && contour[e].length() > tol && contour[e].distanceTo(p) < dist - tol)
+        ok = false;
     });
     return ok;
   };
@@ -283,6 +292,7 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
       subs.push_back({piece, i, at[s].first, at[s + 1].first});
       if (!raw[i].corner) alive[raw[i].element] = true;
     }
+    if (result.refused) return result;
   }
 
   // Link the kept pieces head to tail (they run in the raw path's order except across a split).
@@ -367,12 +377,27 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
   std::vector<Segment> cut;
   for (const auto& path : result.paths)
     for (const WirePiece& p : path) cut.push_back(p.segment);
+  std::vector<Box> cutBoxes(cut.size());
+  for (std::size_t i = 0; i < cut.size(); ++i) cutBoxes[i] = cut[i].bounds();
+  const detail::BoxTree cutTree(std::move(cutBoxes));
+  // The least distance from p to what the wire cuts: the pieces whose boxes come within r of p,
+  // r doubled until one of them lies within r (then no piece farther out can be nearer). The same
+  // minimum as over every piece, without a pass over all of them for each point of a lost element.
+  auto nearestCut = [&](const Vec2& p) {
+    double nearest = std::numeric_limits<double>::infinity();
+    if (cut.empty()) return nearest;
+    Box at;
+    at.add(p);
+    for (double r = std::max(dist, 1e-3);; r *= 2) {
+      cutTree.visitOverlapping(at, r, [&](std::size_t c) { nearest = std::min(nearest, cut[c].distanceTo(p)); });
+      if (nearest <= r || !std::isfinite(r)) return nearest;
+    }
+  };
   auto farthest = [&](std::size_t element, Vec2& where) {
     double worst = -1;
     for (int s = 0; s <= 8; ++s) {
       const Vec2 p = contour[element].pointAt(s / 8.0);
-      double nearest = std::numeric_limits<double>::infinity();
-      for (const Segment& c : cut) nearest = std::min(nearest, c.distanceTo(p));
+      const double nearest = nearestCut(p);
       if (nearest > worst) worst = nearest, where = p;
     }
     return worst;

@@ -249,4 +249,33 @@ TEST(WireOffset, TooManyPiecesIsRefusedBeforeWork) {
   EXPECT_TRUE(wireOffset(square, 1.0, o).refused);
 }
 
+TEST(WireOffset, PastTheBudgetOfExactTestsTheOffsetIsRefusedAfterBoundedWork) {
+  // A star of 2,000 thin spikes (radii 100 and 40): nearly every spike's box overlaps most others,
+  // so the box tree's candidate pairs grow as the square of the spikes.
+  std::vector<Vec2> pts;
+  const int n = 2000;
+  for (int i = 0; i < 2 * n; ++i) {
+    const double a = std::numbers::pi * i / n, r = i % 2 ? 40.0 : 100.0;
+    pts.emplace_back(r * std::cos(a), r * std::sin(a));
+  }
+  const auto star = polygon(pts);
+  const auto full = wireOffset(star, -0.001);
+  ASSERT_FALSE(full.refused);
+  EXPECT_FALSE(full.tooMuchWork);
+  ASSERT_EQ(full.paths.size(), 1u);
+  EXPECT_GT(full.tests, 500'000u);  // quadratic: 4,000 pieces, more than half a million tests
+  WireOffsetOptions o;
+  o.maxTests = full.tests / 2;
+  const auto cut = wireOffset(star, -0.001, o);
+  EXPECT_TRUE(cut.refused);
+  EXPECT_TRUE(cut.tooMuchWork);
+  EXPECT_TRUE(cut.paths.empty());
+  EXPECT_EQ(cut.tests, o.maxTests + 1);  // it stopped at the first test past the budget
+  o.maxTests = full.tests;               // exactly enough
+  const auto enough = wireOffset(star, -0.001, o);
+  EXPECT_FALSE(enough.refused);
+  EXPECT_EQ(enough.paths.size(), 1u);
+  EXPECT_EQ(enough.tests, full.tests);
+}
+
 }  // namespace

@@ -97,10 +97,14 @@ void Interpreter::resolveWireOffsets() {
     const geometry::WireOffsetResult r = geometry::wireOffset(chain, d, wo);
     if (r.refused || r.paths.size() != 1) {
       diags_.error(Code::WirePathSplits, src_, moves[run.first].span,
-                   r.refused ? std::string("the wire offset of this run of moves needs more pieces than the budget")
-                             : "at an offset of " + fmt3(*run.value) + " mm the wire path of these " +
-                                   std::to_string(chain.size()) + " moves breaks into " +
-                                   std::to_string(r.paths.size()) + " pieces: the wire cannot follow them",
+                   r.tooMuchWork
+                       ? "the wire offset of this run of moves needs more than " + std::to_string(r.tests - 1) +
+                             " exact tests of pieces whose boxes overlap (long moves side by side, as in a "
+                             "star of thin spikes): refused"
+                   : r.refused ? std::string("the wire offset of this run of moves needs more pieces than the budget")
+                               : "at an offset of " + fmt3(*run.value) + " mm the wire path of these " +
+                                     std::to_string(chain.size()) + " moves breaks into " +
+                                     std::to_string(r.paths.size()) + " pieces: the wire cannot follow them",
                    "the moves keep their programmed geometry");
       continue;
     }

@@ -30,8 +30,9 @@ struct ContourWire {
   double distance = 0.0;  ///< the signed offset along the contour's direction (> 0: left of travel)
   std::vector<std::vector<geometry::WirePiece>> loops;
   std::vector<geometry::LostRun> lost;
-  bool refused = false;     ///< over the piece budget: nothing computed
-  bool degenerate = false;  ///< the contour encloses no area (it runs back over itself): no wire path
+  bool refused = false;         ///< over the piece budget: nothing computed
+  std::size_t tooMuchWork = 0;  ///< refused over the budget of exact tests: the budget (else 0)
+  bool degenerate = false;      ///< the contour encloses no area (it runs back over itself): no wire path
 };
 
 /// For every contour, how many closed contours enclose it (0 for open ones and outermost ones).

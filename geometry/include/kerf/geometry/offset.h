@@ -92,6 +92,11 @@ struct WireOffsetOptions {
   bool closed = true;                 ///< the contour is a loop
   double tolerance = 1e-6;            ///< mm: ends closer than this meet; distances within it count as equal
   std::size_t maxPieces = 4'000'000;  ///< raw pieces plus split points; above it the offset is refused
+  /// Exact tests (a pair of raw pieces whose boxes overlap, a distance from a piece's middle to an
+  /// element near it) past which the offset is refused (tooMuchWork); 0: 8 per raw piece plus
+  /// 20 million (one to two seconds). Long pieces side by side whose boxes all overlap (a star of thin
+  /// spikes) make the box tree's candidates grow as the square of their number.
+  std::size_t maxTests = 0;
 };
 
 struct WireOffsetResult {
@@ -103,6 +108,8 @@ struct WireOffsetResult {
   std::size_t rawPieces = 0;    ///< offsets and joins before interference removal
   std::size_t splitPoints = 0;  ///< where the raw path met itself
   bool refused = false;         ///< maxPieces exceeded: nothing was computed
+  bool tooMuchWork = false;     ///< maxTests exceeded: nothing was computed (refused is set too)
+  std::size_t tests = 0;        ///< exact tests made (WireOffsetOptions::maxTests)
 };
 
 /// The wire-centre path at distance |d| from contour (d > 0: left of travel). The contour must be

@@ -270,6 +270,20 @@ TEST_F(Headless, same_scene_same_pixels) {
   EXPECT_GT(drawnPixels(a), 160u * 120u / 10u);
 }
 
+TEST_F(Headless, drawn_in_pieces_the_picture_is_the_same) {
+  // The walls and lines drawn a few primitives at a time (RenderOptions::drawChunk), each piece's
+  // first index and count from the last: the same pixels as in one call.
+  const Part p = analyse(kFrustum);
+  const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
+  ASSERT_GT(s.surfaceIndices.size(), 3u * 20);
+  render::RenderOptions whole, pieces;
+  whole.colourBySlope = pieces.colourBySlope = true;
+  pieces.drawChunk = 7;
+  const auto a = drawTop(s, 160, 120, whole), b = drawTop(s, 160, 120, pieces);
+  EXPECT_GT(drawnPixels(a), 160u * 120u / 10u);
+  EXPECT_EQ(a, b);
+}
+
 TEST_F(Headless, colour_by_slope_follows_the_ramp) {
   // The frustum's wire leans 11.3 degrees mid-side (2 mm over 10) and 15.8 at the corners (2.83
   // mm): coloured by slope, its walls run from the ramp's blue (mid-sides) to its red (corners);

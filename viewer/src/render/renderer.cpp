@@ -9,6 +9,7 @@
 #include <cstddef>
 
 namespace kerf::render {
+
 namespace {
 
 // ---- shader programs ----------------------------------------------------------------------
@@ -332,11 +333,15 @@ void Renderer::drawLines(const Buffer& b, std::size_t first, std::size_t count, 
   else
     g.Uniform4f(uniform(lineProgram_, "uColourOverride"), 0, 0, 0, 0);
   g.BindVertexArray(b.vao);
-  g.DrawArrays(GL_LINES, static_cast<GLint>(first), static_cast<GLsizei>(count));
+  for (std::size_t at = 0; at < count; at += drawChunk_ * 2) {
+    if (at > 0) g.Finish();
+    g.DrawArrays(GL_LINES, static_cast<GLint>(first + at), static_cast<GLsizei>(std::min(count - at, drawChunk_ * 2)));
+  }
 }
 
 void Renderer::render(const Camera& camera, const RenderOptions& options, int width, int height) {
   const GlApi& g = gl();
+  drawChunk_ = std::max<std::size_t>(1, options.drawChunk);
   g.Viewport(0, 0, width, height);
   const std::uint32_t bg = options.background;
   g.ClearColor(static_cast<float>(bg & 0xFF) / 255.0f, static_cast<float>((bg >> 8) & 0xFF) / 255.0f,
@@ -362,7 +367,11 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
     g.Uniform2f(uniform(surfaceProgram_, "uSlopeRange"), static_cast<float>(slopeMin_), static_cast<float>(slopeMax_));
     g.Uniform1i(uniform(surfaceProgram_, "uHighlight"), options.highlightFindings ? 1 : 0);
     g.BindVertexArray(surface_.vao);
-    g.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(surface_.count), GL_UNSIGNED_INT, nullptr);
+    for (std::size_t at = 0; at < surface_.count; at += drawChunk_ * 3) {
+      if (at > 0) g.Finish();
+      g.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(std::min<std::size_t>(surface_.count - at, drawChunk_ * 3)),
+                     GL_UNSIGNED_INT, reinterpret_cast<const void*>(at * sizeof(std::uint32_t)));
+    }
     g.Disable(GL_POLYGON_OFFSET_FILL);
   }
 

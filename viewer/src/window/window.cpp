@@ -307,7 +307,8 @@ bool runWindow(const WindowRequest& request, std::string& error) {
       bool coarse = false;
       bool valid = false;
     } shown;
-    static_assert(sizeof(render::RenderOptions) == 40, "a new RenderOptions field must join Drawn and switchesOf");
+    // (drawChunk is not among them: it changes how the picture is drawn, not the picture.)
+    static_assert(sizeof(render::RenderOptions) == 48, "a new RenderOptions field must join Drawn and switchesOf");
     auto switchesOf = [](const render::RenderOptions& o) {
       return std::array<bool, 9>{o.surface, o.contours, o.generators,    o.rapids,           o.reference,
                                  o.markers, o.triad,    o.colourBySlope, o.highlightFindings};

@@ -64,12 +64,18 @@ Vec2 rightNormal(const Vec2& t) { return {t.y(), -t.x()}; }
 
 std::vector<int> nestingDepths(std::span<const geometry::Chain> contours) {
   std::vector<int> depth(contours.size(), 0);
+  std::vector<std::span<const Segment>> loops;
+  std::vector<Vec2> probes;
+  std::vector<std::size_t> self, of;  // of: the contour each closed loop is
   for (std::size_t c = 0; c < contours.size(); ++c) {
     if (!contours[c].closed) continue;
-    const Vec2 probe = contours[c].path.front().pointAt(0.5);
-    for (std::size_t o = 0; o < contours.size(); ++o)
-      if (o != c && contours[o].closed && geometry::windingNumber(contours[o].path, probe) != 0) ++depth[c];
+    self.push_back(loops.size());
+    of.push_back(c);
+    loops.emplace_back(contours[c].path);
+    probes.push_back(contours[c].path.front().pointAt(0.5));
   }
+  const std::vector<int> around = geometry::loopsAround(loops, probes, self);
+  for (std::size_t k = 0; k < of.size(); ++k) depth[of[k]] = around[k];
   return depth;
 }
 

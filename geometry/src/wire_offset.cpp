@@ -135,6 +135,26 @@ int windingNumber(std::span<const Segment> path, const Vec2& p) {
   return w;
 }
 
+std::vector<int> loopsAround(std::span<const std::span<const Segment>> loops, std::span<const Vec2> probes,
+                             std::span<const std::size_t> self) {
+  std::vector<Box> boxes(loops.size());
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (const Segment& s : loops[l]) boxes[l].add(s.bounds());
+  const detail::BoxTree tree(std::move(boxes));
+  std::vector<int> count(probes.size(), 0);
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    // A loop whose box the ray from the probe misses (within 1e-6 mm, so that rounding cannot
+    // leave one out) has no segment that crosses the ray: its winding number is 0.
+    Box ray;
+    ray.min = probes[i];
+    ray.max = Vec2(std::numeric_limits<double>::infinity(), probes[i].y());
+    tree.visitOverlapping(ray, 1e-6, [&](std::size_t l) {
+      if (l != self[i] && windingNumber(loops[l], probes[i]) != 0) ++count[i];
+    });
+  }
+  return count;
+}
+
 WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const WireOffsetOptions& options) {
   WireOffsetResult result;
   const double tol = options.tolerance;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace {
@@ -240,6 +241,47 @@ TEST(WireOffset, RandomStarsStayExactlyAtTheDistance) {
       for (const auto& p : r.paths) expectExactDistance(star, p, d);
     }
   }
+}
+
+TEST(WireOffset, LoopsAroundCountsWhatAskingEveryLoopCounts) {
+  // Random squares, circles (two arcs) and rotated triangles, many nested: for each loop's probe,
+  // the loops round it from the box tree against windingNumber over every loop.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::vector<Segment>> shapes;
+  for (int k = 0; k < 300; ++k) {
+    const Vec2 c(100 * u(rng), 100 * u(rng));
+    const double r = 0.5 + 30 * u(rng) * u(rng);
+    if (k % 3 == 0) {
+      shapes.push_back(polygon({c + Vec2(-r, -r), c + Vec2(r, -r), c + Vec2(r, r), c + Vec2(-r, r)}));
+    } else if (k % 3 == 1) {
+      const Vec2 a = c + Vec2(r, 0), b = c - Vec2(r, 0);
+      shapes.push_back({Segment::arc(a, b, c, ArcDirection::CounterClockwise),
+                        Segment::arc(b, a, c, ArcDirection::CounterClockwise)});
+    } else {
+      const double t = 6.28 * u(rng);
+      shapes.push_back(
+          polygon({c + r * Vec2(std::cos(t), std::sin(t)), c + r * Vec2(std::cos(t + 2.1), std::sin(t + 2.1)),
+                   c + r * Vec2(std::cos(t + 4.2), std::sin(t + 4.2))}));
+    }
+  }
+  std::vector<std::span<const Segment>> loops(shapes.begin(), shapes.end());
+  std::vector<Vec2> probes;
+  std::vector<std::size_t> self;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    probes.push_back(loops[l].front().pointAt(0.5));
+    self.push_back(l);
+  }
+  const std::vector<int> fast = kerf::geometry::loopsAround(loops, probes, self);
+  int nested = 0;
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    int all = 0;
+    for (std::size_t l = 0; l < loops.size(); ++l)
+      all += l != self[i] && kerf::geometry::windingNumber(loops[l], probes[i]) != 0;
+    EXPECT_EQ(fast[i], all) << "probe " << i;
+    nested += all > 0;
+  }
+  EXPECT_GT(nested, 50);  // many probes lie inside other loops, so the counts mean something
 }
 
 TEST(WireOffset, TooManyPiecesIsRefusedBeforeWork) {

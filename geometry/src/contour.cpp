@@ -16,26 +16,38 @@ namespace kerf::geometry {
 
 namespace {
 
-/// Open-addressing table of grid cells -> vertex index (a cell may hold several vertices: each
-/// is its own entry). A slot is 6 bytes in two arrays: a 16-bit tag of its cell's hash (0: the slot
-/// is empty), scanned alone, and the vertex, read only where the tag matches. Two cells may share
-/// a tag, so a match is a candidate only; the caller measures the distance anyway. There are 1.5
-/// slots a vertex (any count, not a power of two: the slot is the hash scaled to the table), so
-/// the table is 9 bytes a vertex, 1.8 MB at 200,000; a probe then scans about 10 tags (measured on
-/// a 200,000-vertex ring). Twice the slots scan 2.5 and save a fifth of the closure's time for 3
-/// bytes a vertex more; not kept, as `kerf check`'s time did not move measurably. Slots of 24
-/// bytes (both cell coordinates and the vertex) at twice the vertices took 12.6 MB.
+/// Open-addressing table of grid cells -> the vertices in them. A slot is 6 bytes in two arrays: a
+/// 16-bit tag of its cell's hash (0: the slot is empty), scanned alone, and the first vertex of its
+/// chain, read only where the tag matches; each vertex names the next of its chain (4 bytes a
+/// vertex). A vertex joins the chain of the first slot with its tag on its cell's probe sequence,
+/// so the vertices of one cell share one slot: a program of 40,000 moves inside one cell (a fuzz
+/// input, tests/fuzz/corpus/closure-one-cell.nc) made a run of 40,000 slots with a vertex each,
+/// and inserting took 0.8 s, growing as the square of the moves. Two cells may share a tag, and
+/// then a chain: a match is a candidate only; the caller measures the distance anyway. There are
+/// 1.5 slots a vertex (any count, not a power of two: the slot is the hash scaled to the table), so
+/// the table is 13 bytes a vertex, 2.6 MB at 200,000; a probe then scans about 10 tags (measured on
+/// a 200,000-vertex ring, before the chains). Slots of 24 bytes (both cell coordinates and the
+/// vertex) at twice the vertices took 12.6 MB.
 class CellTable {
  public:
   explicit CellTable(std::size_t expected) : size_(std::max<std::size_t>(16, expected + expected / 2)) {
     tags_.assign(size_, kEmpty);
     vertices_.resize(size_);
+    next_.resize(expected);
   }
+  /// value < expected, each once.
   void insert(std::int64_t gx, std::int64_t gy, std::uint32_t value) {
     const std::uint64_t h = hash(gx, gy);
+    const std::uint16_t t = tag(h);
     for (std::size_t slot = slotOf(h);; slot = next(slot)) {
       if (tags_[slot] == kEmpty) {
-        tags_[slot] = tag(h);
+        tags_[slot] = t;
+        vertices_[slot] = value;
+        next_[value] = kEnd;
+        return;
+      }
+      if (tags_[slot] == t) {  // its cell's chain (or one with the same tag): at its head
+        next_[value] = vertices_[slot];
         vertices_[slot] = value;
         return;
       }
@@ -47,11 +59,13 @@ class CellTable {
     const std::uint64_t h = hash(gx, gy);
     const std::uint16_t t = tag(h);
     for (std::size_t slot = slotOf(h); tags_[slot] != kEmpty; slot = next(slot))
-      if (tags_[slot] == t) f(std::size_t{vertices_[slot]});
+      if (tags_[slot] == t)
+        for (std::uint32_t v = vertices_[slot]; v != kEnd; v = next_[v]) f(std::size_t{v});
   }
 
  private:
   static constexpr std::uint16_t kEmpty = 0;
+  static constexpr std::uint32_t kEnd = std::numeric_limits<std::uint32_t>::max();
   static std::uint64_t hash(std::int64_t gx, std::int64_t gy) {
     // Both coordinates through a full 64-bit finaliser (MurmurHash3's fmix64 constants), so that
     // the low bits (the slot) and the high bits (the tag) are each well mixed.
@@ -77,6 +91,7 @@ class CellTable {
   std::size_t size_;
   std::vector<std::uint16_t> tags_;
   std::vector<std::uint32_t> vertices_;
+  std::vector<std::uint32_t> next_;
 };
 
 /// floor(f) as an integer, inline (std::floor is a call on the baseline x86-64); beyond 2^62

@@ -699,6 +699,9 @@ void sortByX(XKeys& pairs) {
 
 namespace {
 
+/// The order of a result's contacts: by (first, second).
+bool byPair(const Contact& l, const Contact& r) { return l.first != r.first ? l.first < r.first : l.second < r.second; }
+
 /// The contacts of a path that meets itself where the box sweep would test too many pairs (a star
 /// of long spikes with a few crossings: 61.6 M pairs at 1e5 spikes). A decision sweep that drops,
 /// at each pair that touches, the longer of the two segments — listing its contacts with every
@@ -768,9 +771,7 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
     r.candidatePairs += swept;
     if (drop.full() || (clean && drop.dropsNow == 0)) break;
   }
-  std::stable_sort(r.contacts.begin(), r.contacts.end(), [](const Contact& l, const Contact& x) {
-    return l.first != x.first ? l.first < x.first : l.second < x.second;
-  });
+  std::stable_sort(r.contacts.begin(), r.contacts.end(), byPair);
   if (drop.full()) {  // as the box sweep has it: maxContacts reached, more may lie beyond
     r.truncated = true;
     r.contacts.resize(options.maxContacts);
@@ -868,9 +869,6 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     return options.closed && live > 2 && rank(i) == 0 && rank(j) == live - 1 && near(path[j].end, path[i].start, tol);
   };
 
-  auto byPair = [](const Contact& l, const Contact& r) {
-    return l.first != r.first ? l.first < r.first : l.second < r.second;
-  };
   // The first loop (findLoop): the least (k, v), v < k, whose end of k lies within tol of the start
   // of v, as k << 32 | v, among the pairs the box sweep tested; with the first segment that closes
   // on its own start, when every pair was met, it is analyseClosure's answer.

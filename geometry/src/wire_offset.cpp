@@ -127,6 +127,14 @@ int windingOf(const Segment& s, const Vec2& p) {
   return w;
 }
 
+/// The ray from p towards +x as a box: a segment whose box it misses adds nothing to p's winding.
+Box rayFrom(const Vec2& p) {
+  Box ray;
+  ray.min = p;
+  ray.max = Vec2(std::numeric_limits<double>::infinity(), p.y());
+  return ray;
+}
+
 }  // namespace
 
 int windingNumber(std::span<const Segment> path, const Vec2& p) {
@@ -145,10 +153,7 @@ std::vector<int> loopsAround(std::span<const std::span<const Segment>> loops, st
   for (std::size_t i = 0; i < probes.size(); ++i) {
     // A loop whose box the ray from the probe misses (within 1e-6 mm, so that rounding cannot
     // leave one out) has no segment that crosses the ray: its winding number is 0.
-    Box ray;
-    ray.min = probes[i];
-    ray.max = Vec2(std::numeric_limits<double>::infinity(), probes[i].y());
-    tree.visitOverlapping(ray, 1e-6, [&](std::size_t l) {
+    tree.visitOverlapping(rayFrom(probes[i]), 1e-6, [&](std::size_t l) {
       if (l != self[i] && windingNumber(loops[l], probes[i]) != 0) ++count[i];
     });
   }
@@ -273,11 +278,8 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
       // windingNumber(contour, p), from the elements whose boxes meet the ray from p (within the
       // tolerance, so that rounding cannot leave one out): the same sum, not a pass over the whole
       // contour for every piece (80,000 vertices: 26.9 s of kerf cam, 89% of it here).
-      Box ray;
-      ray.min = p;
-      ray.max = Vec2(std::numeric_limits<double>::infinity(), p.y());
       int w = 0;
-      elements.visitOverlapping(ray, tol, [&](std::size_t e) { w += windingOf(contour[e], p); });
+      elements.visitOverlapping(rayFrom(p), tol, [&](std::size_t e) { w += windingOf(contour[e], p); });
       if (w != sideWinding) return false;
     }
     bool ok = true;

@@ -547,23 +547,33 @@ std::vector<Segment> starWithCrossings(int n, const std::vector<int>& crossAt) {
   return path;
 }
 
+/// The path's contacts by the box sweep (the reference) and by `method`, up to maxContacts.
+std::pair<SelfIntersectionResult, SelfIntersectionResult> boxesAnd(const std::vector<Segment>& path, SweepMethod method,
+                                                                   std::size_t maxContacts) {
+  SelfIntersectionOptions o;
+  o.closed = true;
+  o.maxContacts = maxContacts;
+  o.method = SweepMethod::Boxes;
+  SelfIntersectionResult boxes = findSelfIntersections(path, o);
+  o.method = method;
+  return {std::move(boxes), findSelfIntersections(path, o)};
+}
+
 }  // namespace
 
 TEST(self_intersection, a_star_with_a_few_crossings_lists_them_without_testing_every_box_pair) {
   // 10,000 spikes, crossing at five places far apart: the box sweep tests millions of pairs; the
   // decision sweep finds a contact, then drops the segments that touch and sweeps again.
   const std::vector<Segment> path = starWithCrossings(10000, {5, 2000, 4500, 7500, 9990});
+  const auto [boxes, automatic] = boxesAnd(path, SweepMethod::Auto, 1000);
+  ASSERT_GE(boxes.contacts.size(), 5u);
+  EXPECT_FALSE(boxes.truncated);
   SelfIntersectionOptions o;
   o.closed = true;
   o.maxContacts = 1000;
-  o.method = SweepMethod::Boxes;
-  const auto boxes = findSelfIntersections(path, o);
-  ASSERT_GE(boxes.contacts.size(), 5u);
-  EXPECT_FALSE(boxes.truncated);
-  for (const SweepMethod m : {SweepMethod::Auto, SweepMethod::Decision}) {
-    o.method = m;
-    const auto r = findSelfIntersections(path, o);
-    EXPECT_TRUE(samePairsAndPoints(r, boxes)) << "method " << static_cast<int>(m);
+  o.method = SweepMethod::Decision;
+  for (const SelfIntersectionResult& r : {automatic, findSelfIntersections(path, o)}) {
+    EXPECT_TRUE(samePairsAndPoints(r, boxes));
     EXPECT_FALSE(r.truncated);
     EXPECT_FALSE(r.loopKnown);  // the closure is then analysed apart
     EXPECT_LT(r.candidatePairs * 20, boxes.candidatePairs);
@@ -577,14 +587,8 @@ TEST(self_intersection, a_chord_across_a_star_is_dropped_once_with_all_its_cross
   const Vec2 tip = path[0].start, quarter = path[2000].start;
   path.insert(path.begin() + 2000, Segment::line(quarter, tip));
   path.insert(path.begin() + 2001, Segment::line(tip, quarter));
-  SelfIntersectionOptions o;
-  o.closed = true;
-  o.maxContacts = 100000;
-  o.method = SweepMethod::Boxes;
-  const auto boxes = findSelfIntersections(path, o);
+  const auto [boxes, r] = boxesAnd(path, SweepMethod::Auto, 100000);
   ASSERT_GT(boxes.contacts.size(), 1000u);
-  o.method = SweepMethod::Auto;
-  const auto r = findSelfIntersections(path, o);
   EXPECT_TRUE(samePairsAndPoints(r, boxes));
   EXPECT_FALSE(r.truncated);
 }
@@ -593,15 +597,11 @@ TEST(self_intersection, past_max_contacts_the_dropping_sweep_stops_with_contacts
   std::vector<int> at;
   for (int k = 10; k < 10000; k += 200) at.push_back(k);  // 50 crossings
   const std::vector<Segment> path = starWithCrossings(10000, at);
+  const auto [full, all] = boxesAnd(path, SweepMethod::Auto, 100000);
+  ASSERT_GE(full.contacts.size(), 50u);
+  EXPECT_TRUE(samePairsAndPoints(all, full));
   SelfIntersectionOptions o;
   o.closed = true;
-  o.maxContacts = 100000;
-  o.method = SweepMethod::Boxes;
-  const auto full = findSelfIntersections(path, o);
-  ASSERT_GE(full.contacts.size(), 50u);
-  o.method = SweepMethod::Auto;
-  const auto all = findSelfIntersections(path, o);
-  EXPECT_TRUE(samePairsAndPoints(all, full));
   o.maxContacts = 12;
   const auto cut = findSelfIntersections(path, o);
   EXPECT_TRUE(cut.truncated);

@@ -928,8 +928,13 @@ void appendReleasing(geometry::LargeVector<T>& to, geometry::LargeVector<T>& par
   to.reserve(to.size() + part.size());
   for (std::size_t k = 0; k < part.size(); k += kSlice) {
     const std::size_t end = std::min(part.size(), k + kSlice);
+    // The rest of to is reserved and written by the inserts: the pages part gave back take the
+    // place of fresh ones. The release runs from part's start, so that each whole 2 MiB page is
+    // given back in one piece (a slice is half of one).
+    T* const at = to.data() + to.size();
+    geometry::adoptPages(at, at + (part.size() - k));
     to.insert(to.end(), part.begin() + static_cast<std::ptrdiff_t>(k), part.begin() + static_cast<std::ptrdiff_t>(end));
-    geometry::releasePages(part.data() + k, part.data() + end);
+    geometry::releasePages(part.data(), part.data() + end);
   }
   geometry::LargeVector<T>().swap(part);
 }

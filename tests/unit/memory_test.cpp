@@ -5,7 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 namespace kerf::geometry {
 namespace {
@@ -67,6 +74,98 @@ TEST(memory, released_pages_of_a_large_block_read_as_zeros) {
   EXPECT_EQ(v[900000], value(900000));
   EXPECT_EQ(v[2000000], value(2000000));
 }
+
+#if defined(__linux__)
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+
+/// How many of the small pages of the 2 MiB page at p are in memory.
+std::size_t residentIn(const void* p) {
+  const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  std::vector<unsigned char> state(kHugePage / page);
+  if (mincore(const_cast<void*>(p), kHugePage, state.data()) != 0) return 0;
+  std::size_t n = 0;
+  for (const unsigned char s : state) n += s & 1u;
+  return n;
+}
+
+/// Holds what the pool has parked (earlier tests leave pages there) in a block of its own, so
+/// that a test counts only its own pages.
+struct Drained {
+  Drained() : bytes((parkedPages() + 1) * kHugePage), block(allocateLarge(bytes)) {}
+  Drained(const Drained&) = delete;
+  Drained& operator=(const Drained&) = delete;
+  ~Drained() { freeLarge(block, bytes); }
+  std::size_t bytes;
+  void* block;
+};
+
+bool poolOn() {
+  const char* env = std::getenv("KERF_PAGE_POOL");
+  return largePagesOwned() && !(env && std::strcmp(env, "0") == 0);
+}
+
+// A freed block's pages, written in full, are moved into the next block instead of fresh ones:
+// the new block's first page is in memory before anything writes it, and holds what it is given.
+TEST(memory, a_freed_block_s_written_pages_go_to_the_next_block) {
+  if (!poolOn()) GTEST_SKIP() << "the pages are not Kerf's own here (AddressSanitizer, or KERF_PAGE_POOL=0)";
+  const Drained drained;
+  ASSERT_EQ(parkedPages(), 0u);
+  constexpr std::size_t kBytes = 4 * kHugePage;
+  auto* a = static_cast<std::uint64_t*>(allocateLarge(kBytes));
+  for (std::size_t k = 0; k < kBytes / 8; ++k) a[k] = value(k);
+  const std::size_t before = parkedPages();
+  freeLarge(a, kBytes);
+  ASSERT_EQ(parkedPages(), before + 4);
+  auto* b = static_cast<std::uint64_t*>(allocateLarge(kBytes + kHugePage));
+  EXPECT_EQ(parkedPages(), before);  // all four taken
+  EXPECT_EQ(residentIn(b), kHugePage / static_cast<std::size_t>(sysconf(_SC_PAGESIZE)));
+  EXPECT_EQ(residentIn(reinterpret_cast<char*>(b) + 4 * kHugePage), 0u);  // the fifth is fresh
+  for (std::size_t k = 0; k < (kBytes + kHugePage) / 8; ++k) b[k] = ~value(k);
+  for (std::size_t k = 0; k < (kBytes + kHugePage) / 8; k += 4099) ASSERT_EQ(b[k], ~value(k));
+  freeLarge(b, kBytes + kHugePage);
+}
+
+// Pages given back inside a block in use read as zeros, and are adopted where a block says it
+// writes next; a page only partly written is not parked (it would bring stale bytes with it, and
+// gives little), and nothing is adopted outside Kerf's blocks or onto pages already written.
+TEST(memory, given_back_pages_read_as_zeros_and_are_adopted_where_a_block_writes_next) {
+  if (!poolOn()) GTEST_SKIP() << "the pages are not Kerf's own here (AddressSanitizer, or KERF_PAGE_POOL=0)";
+  const Drained drained;
+  ASSERT_EQ(parkedPages(), 0u);
+  const auto words = kHugePage / 8;
+  LargeVector<std::uint64_t> v(5 * words);
+  for (std::size_t k = 0; k < v.size(); ++k) v[k] = value(k);
+  const std::size_t before = parkedPages();
+  releasePages(v.data() + 10, v.data() + 3 * words + 10);  // pages 1 and 2 whole
+  EXPECT_EQ(parkedPages(), before + 2);
+  EXPECT_EQ(v[words], 0u);
+  EXPECT_EQ(v[3 * words - 1], 0u);
+  EXPECT_EQ(v[3 * words + 10], value(3 * words + 10));
+  EXPECT_EQ(v[9], value(9));
+  v[words + 5] = 77;  // the hole is ordinary memory
+  EXPECT_EQ(v[words + 5], 77u);
+
+  std::vector<std::uint64_t, FillLaterAllocator<std::uint64_t>> w;
+  w.reserve(4 * words);
+  const std::size_t taken0 = parkedPages();
+  EXPECT_EQ(taken0, 0u) << "the new block took the two pages when it was made";
+  w.resize(words / 2);
+  for (std::size_t k = 0; k < w.size(); ++k) w[k] = k;
+  freeLarge(allocateLarge(kHugePage), kHugePage);  // an untouched block: nothing to park
+  EXPECT_EQ(parkedPages(), 0u);
+  // The first page of w is written: adopting over it is refused, whatever the pool holds.
+  LargeVector<std::uint64_t> x(words);
+  for (std::size_t k = 0; k < x.size(); ++k) x[k] = k;
+  x = LargeVector<std::uint64_t>();
+  EXPECT_EQ(parkedPages(), 1u);
+  EXPECT_EQ(adoptPages(w.data(), w.data() + words), 0u);
+  std::vector<std::uint64_t> ordinary(3 * words);
+  EXPECT_EQ(adoptPages(ordinary.data(), ordinary.data() + ordinary.size()), 0u);
+  w.resize(4 * words);
+  for (std::size_t k = words / 2; k < w.size(); ++k) w[k] = k;
+  for (std::size_t k = 0; k < w.size(); k += 1021) ASSERT_EQ(w[k], k);
+}
+#endif
 
 }  // namespace
 }  // namespace kerf::geometry

@@ -17,6 +17,7 @@
 // then the block loop's, bit for bit (tests/converter/interpreter_parallel_test.cpp compares them).
 #include "interpreter_impl.h"
 
+#include "kerf/geometry/memory.h"
 #include "kerf/geometry/parallel.h"
 
 namespace kerf::converter::interp {
@@ -193,6 +194,10 @@ bool Interpreter::runSimpleWindow(std::size_t begin, std::size_t end) {
   std::vector<std::uint8_t> made(n, 0);
   toolpath_.moves.resize(base + n);
   Move* out = toolpath_.moves.data() + base;
+  // The moves from here to the end of the reserve are written before they are read: pages the
+  // parse gave back (releaseParsedBefore) take the place of fresh ones, from here on, so that the
+  // page a window ends in is one too (geometry/memory.h).
+  geometry::adoptPages(out, toolpath_.moves.data() + toolpath_.moves.capacity());
   std::vector<Vec2>& words = toolpath_.centreWords;
   const bool record = options_.recordCentreWords;
   if (record) words.resize(base + n);

@@ -224,7 +224,10 @@ void classifyPair(SegmentView path, std::size_t i, std::size_t j, bool adjacentF
   c.adjacent = adjacent;
   if (x.overlap) {
     c.kind = ContactKind::Overlap;
-    c.point = (x.points[0] + x.points[1]) / 2;
+    // The middle of the shared stretch's ends; a stretch that is a whole circle has one end (the
+    // second point was read uninitialised here: a stack's leftovers, a different "near" point
+    // from run to run; found by the fuzz target's two readings disagreeing).
+    c.point = x.count == 2 ? Vec2((x.points[0] + x.points[1]) / 2) : x.points[0];
     c.opposite = !sameDirection(a, b, c.point);
     out.push_back(c);
     return;

@@ -109,6 +109,28 @@ TEST(intersect, arcs_on_the_same_circle_overlap) {
   EXPECT_EQ(touch.count, 1);
 }
 
+// Two full circles on one circle share all of it: the stretch closes on itself and has one end.
+// Its overlap contact lies on the circle; the second point, never set, was read uninitialised (a
+// different "near" point from run to run: the fuzz target's two readings of one program disagreed).
+TEST(intersect, two_full_circles_on_one_circle_overlap_with_one_end_on_the_circle) {
+  const Segment a = Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::CounterClockwise);
+  const Segment b = Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::Clockwise);
+  const SegmentIntersection x = intersect(a, b, 1e-6);
+  EXPECT_TRUE(x.overlap);
+  ASSERT_EQ(x.count, 1);
+  EXPECT_NEAR(x.points[0].norm(), 5.0, 1e-9);
+  EXPECT_EQ(x.points[1], Vec2(0, 0));  // the point not set reads as zero
+  // Through the checks' path: the circle cut twice, and the contact between the two turns.
+  SelfIntersectionOptions o;
+  o.closed = false;
+  const auto r = findSelfIntersections(std::vector<Segment>{a, a}, o);
+  ASSERT_FALSE(r.contacts.empty());
+  for (const Contact& c : r.contacts) {
+    EXPECT_EQ(c.kind, ContactKind::Overlap);
+    EXPECT_NEAR(c.point.norm(), 5.0, 1e-9) << c.point.transpose();
+  }
+}
+
 TEST(intersect, tangent_circles_touch_once) {
   const Segment a = Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::CounterClockwise);
   const Segment b = Segment::arc({15, 0}, {15, 0}, {10, 0}, ArcDirection::CounterClockwise);

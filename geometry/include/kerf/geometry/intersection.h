@@ -14,9 +14,11 @@
 namespace kerf::geometry {
 
 struct SegmentIntersection {
-  int count = 0;         ///< 0, 1 or 2 points (an overlap reports its two ends)
+  int count = 0;         ///< 0, 1 or 2 points (an overlap reports its two ends, one where they coincide)
   bool overlap = false;  ///< the segments share a stretch longer than the tolerance
-  Vec2 points[2];
+  /// The first count are the points; the others are zero. Two arcs of one circle that share the
+  /// whole of it have one end: the stretch closes on itself.
+  Vec2 points[2] = {Vec2::Zero(), Vec2::Zero()};
 };
 
 /// Intersection of two segments within tol (mm).

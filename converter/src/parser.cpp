@@ -929,12 +929,13 @@ void appendReleasing(geometry::LargeVector<T>& to, geometry::LargeVector<T>& par
   for (std::size_t k = 0; k < part.size(); k += kSlice) {
     const std::size_t end = std::min(part.size(), k + kSlice);
     // The rest of to is reserved and written by the inserts: the pages part gave back take the
-    // place of fresh ones. The release runs from part's start, so that each whole 2 MiB page is
-    // given back in one piece (a slice is half of one).
+    // place of fresh ones. The release reaches 2 MiB back before the slice, so that the 2 MiB
+    // page a slice ends in (a slice is half of one) is given back whole by the next.
     T* const at = to.data() + to.size();
     geometry::adoptPages(at, at + (part.size() - k));
     to.insert(to.end(), part.begin() + static_cast<std::ptrdiff_t>(k), part.begin() + static_cast<std::ptrdiff_t>(end));
-    geometry::releasePages(part.data(), part.data() + end);
+    constexpr std::size_t kBack = (std::size_t{2} << 20) / sizeof(T) + 1;
+    geometry::releasePages(part.data() + (k > kBack ? k - kBack : 0), part.data() + end);
   }
   geometry::LargeVector<T>().swap(part);
 }

@@ -1,5 +1,6 @@
 #include "kerf/geometry/memory.h"
 
+#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -39,12 +40,27 @@ bool ownPages(std::size_t bytes) { return kOwnPages && bytes >= kLargeBlock; }
 
 std::size_t wholeHugePages(std::size_t bytes) { return (bytes + kHuge - 1) & ~(kHuge - 1); }
 
-#if defined(__linux__) && defined(MREMAP_FIXED) && defined(MREMAP_DONTUNMAP)
-constexpr bool kPoolBuilt = kOwnPages;
-#else
-constexpr bool kPoolBuilt = false;
+#if defined(__linux__) && !defined(KERF_ADDRESS_SANITIZER) && defined(MADV_HUGEPAGE) && defined(MREMAP_FIXED) && \
+    defined(MREMAP_DONTUNMAP)
+#define KERF_PAGE_POOL 1
 #endif
 
+#if defined(__linux__)
+/// A fresh mapping of size bytes (whole 2 MiB pages) at a 2 MiB-aligned address: mapped 2 MiB too
+/// long, then trimmed at both ends. 0 when the system has no room for it.
+std::uintptr_t mapAligned(std::size_t size, int prot, int flags) {
+  void* map = mmap(nullptr, size + kHuge, prot, flags, -1, 0);
+  if (map == MAP_FAILED) return 0;
+  const auto at = reinterpret_cast<std::uintptr_t>(map);
+  const std::uintptr_t from = (at + kHuge - 1) & ~(kHuge - 1);
+  if (from > at) (void)munmap(map, from - at);
+  if (const std::uintptr_t tail = at + size + kHuge - (from + size); tail > 0)
+    (void)munmap(reinterpret_cast<void*>(from + size), tail);
+  return from;
+}
+#endif
+
+#if defined(KERF_PAGE_POOL)
 /// Whole 2 MiB pages this process wrote and no longer needs (freeLarge, releasePages), moved to
 /// addresses of their own (mremap moves the page table entries, not the bytes) and moved again
 /// into the next large block in place of pages not yet touched.
@@ -52,18 +68,17 @@ constexpr bool kPoolBuilt = false;
 /// Why: a page touched for the first time is not only zeroed. On the virtual machines Kerf is
 /// built and tested on (a balloon that reports free memory to the host, CONFIG_PAGE_REPORTING),
 /// free 2 MiB blocks are handed back to the host about 2 s after they are freed, and the first
-/// write to such a block faults on the host 512 times: 40 MiB in huge pages took 3.5-4 ms when
+/// write to such a block faults on the host as well: 40 MiB in huge pages took 3.5-4 ms when
 /// the blocks were still backed and 64-88 ms after a pause of 3 s (about 1.7 ms per MiB; small
 /// pages 0.4 ms per MiB either way). kerf check of a 6 MB program touched 30 huge pages, while the
 /// text, the parse and the moves are each done with before the next array fills.
 class PagePool {
  public:
-  static PagePool& instance() {
+  /// The pool, or null where it is off (KERF_PAGE_POOL=0, or a page size it cannot use).
+  static PagePool* get() {
     static PagePool pool;
-    return pool;
+    return pool.enabled_ ? &pool : nullptr;
   }
-
-  [[nodiscard]] bool enabled() const { return enabled_; }
 
   void addRegion(std::uintptr_t from, std::uintptr_t to) {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -123,11 +138,16 @@ class PagePool {
   /// a time).
   static constexpr std::size_t kMostParked = 16;
 
+  // Nothing the pool does after this allocates: freeLarge, which parks, is noexcept.
+  static constexpr std::size_t kMostSmallPages = 512;
+
   PagePool() {
     const char* env = std::getenv("KERF_PAGE_POOL");
-    enabled_ = kPoolBuilt && !(env && std::strcmp(env, "0") == 0);
-    page_ = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-    if (page_ == 0 || kHuge % page_ != 0) enabled_ = false;
+    const long page = sysconf(_SC_PAGESIZE);
+    page_ = page > 0 ? static_cast<std::uintptr_t>(page) : 0;
+    enabled_ =
+        !(env && std::strcmp(env, "0") == 0) && page_ > 0 && kHuge % page_ == 0 && kHuge / page_ <= kMostSmallPages;
+    parked_.reserve(kMostParked);
   }
 
   bool inRegion(std::uintptr_t from, std::uintptr_t to) const {
@@ -139,10 +159,10 @@ class PagePool {
 
   /// How many small pages of the huge page at p are in memory.
   std::size_t residentPages(std::uintptr_t p) {
-    state_.resize(kHuge / page_);
-    if (mincore(reinterpret_cast<void*>(p), kHuge, state_.data()) != 0) return state_.size();
+    const std::size_t small = kHuge / page_;
+    if (mincore(reinterpret_cast<void*>(p), kHuge, state_.data()) != 0) return small;
     std::size_t n = 0;
-    for (const unsigned char s : state_) n += s & 1u;
+    for (std::size_t k = 0; k < small; ++k) n += state_[k] & 1u;
     return n;
   }
 
@@ -151,13 +171,8 @@ class PagePool {
   /// in use or about to be freed. False, nothing changed, where that cannot be done.
   bool park(std::uintptr_t p) {
     if (parked_.size() >= kMostParked || residentPages(p) != kHuge / page_) return false;
-    // A 2 MiB-aligned address of its own: 4 MiB reserved, trimmed to the aligned 2 MiB in it.
-    void* map = mmap(nullptr, 2 * kHuge, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
-    if (map == MAP_FAILED) return false;
-    const auto at = reinterpret_cast<std::uintptr_t>(map);
-    const std::uintptr_t slot = (at + kHuge - 1) & ~(kHuge - 1);
-    if (slot > at) (void)munmap(map, slot - at);
-    if (at + 2 * kHuge > slot + kHuge) (void)munmap(reinterpret_cast<void*>(slot + kHuge), at + kHuge - slot);
+    const std::uintptr_t slot = mapAligned(kHuge, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE);
+    if (slot == 0) return false;
     if (mremap(reinterpret_cast<void*>(p), kHuge, kHuge, MREMAP_MAYMOVE | MREMAP_FIXED | MREMAP_DONTUNMAP,
                reinterpret_cast<void*>(slot)) == MAP_FAILED) {
       (void)munmap(reinterpret_cast<void*>(slot), kHuge);
@@ -169,20 +184,22 @@ class PagePool {
 
   bool enabled_ = false;
   std::uintptr_t page_ = 4096;
-  std::mutex mutex_;                                  // what follows
-  std::map<std::uintptr_t, std::uintptr_t> regions_;  // the blocks allocateLarge mapped: start -> end
-  std::vector<std::uintptr_t> parked_;                // addresses of parked pages
-  std::vector<unsigned char> state_;                  // mincore's answer
+  std::mutex mutex_;                                    // what follows
+  std::map<std::uintptr_t, std::uintptr_t> regions_;    // the blocks allocateLarge mapped: start -> end
+  std::vector<std::uintptr_t> parked_;                  // addresses of parked pages (reserved whole)
+  std::array<unsigned char, kMostSmallPages> state_{};  // mincore's answer
 };
+#endif
 
 }  // namespace
 
 void releasePages(const void* begin, const void* end) {
 #if defined(__linux__)
-  if constexpr (kPoolBuilt)
-    if (PagePool& pool = PagePool::instance();
-        pool.enabled() && pool.give(reinterpret_cast<std::uintptr_t>(begin), reinterpret_cast<std::uintptr_t>(end)))
-      return;
+#if defined(KERF_PAGE_POOL)
+  if (PagePool* pool = PagePool::get();
+      pool && pool->give(reinterpret_cast<std::uintptr_t>(begin), reinterpret_cast<std::uintptr_t>(end)))
+    return;
+#endif
   static const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
   const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) / page * page;
   const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / page * page;
@@ -196,39 +213,41 @@ void releasePages(const void* begin, const void* end) {
 bool largePagesOwned() noexcept { return kOwnPages; }
 
 std::size_t adoptPages(void* begin, void* end) {
-  if constexpr (kPoolBuilt)
-    if (PagePool& pool = PagePool::instance(); pool.enabled())
-      return pool.take(reinterpret_cast<std::uintptr_t>(begin), reinterpret_cast<std::uintptr_t>(end));
+#if defined(KERF_PAGE_POOL)
+  if (PagePool* pool = PagePool::get())
+    return pool->take(reinterpret_cast<std::uintptr_t>(begin), reinterpret_cast<std::uintptr_t>(end));
+#endif
   (void)begin;
   (void)end;
   return 0;
 }
 
 std::size_t parkedPages() {
-  if constexpr (kPoolBuilt)
-    if (PagePool& pool = PagePool::instance(); pool.enabled()) return pool.parked();
+#if defined(KERF_PAGE_POOL)
+  if (PagePool* pool = PagePool::get()) return pool->parked();
+#endif
   return 0;
 }
 
 void* allocateLarge(std::size_t bytes) {
   if (!ownPages(bytes)) return ::operator new(bytes);
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  // Mapped 2 MiB too long, then trimmed at both ends to whole aligned 2 MiB pages.
   const std::size_t size = wholeHugePages(bytes);
   if (size < bytes || size + kHuge < size) throw std::bad_alloc();
-  void* map = mmap(nullptr, size + kHuge, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (map == MAP_FAILED) throw std::bad_alloc();
-  const auto at = reinterpret_cast<std::uintptr_t>(map);
-  const std::uintptr_t from = (at + kHuge - 1) & ~(kHuge - 1);
-  if (from > at) (void)munmap(map, from - at);
-  if (const std::uintptr_t tail = at + size + kHuge - (from + size); tail > 0)
-    (void)munmap(reinterpret_cast<void*>(from + size), tail);
+  const std::uintptr_t from = mapAligned(size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS);
+  if (from == 0) throw std::bad_alloc();
   (void)madvise(reinterpret_cast<void*>(from), size, MADV_HUGEPAGE);
-  if constexpr (kPoolBuilt)
-    if (PagePool& pool = PagePool::instance(); pool.enabled()) {
-      pool.addRegion(from, from + size);
-      (void)pool.take(from, from + size);
+#if defined(KERF_PAGE_POOL)
+  if (PagePool* pool = PagePool::get()) {
+    try {
+      pool->addRegion(from, from + size);
+    } catch (...) {  // no memory for the region's entry: the block goes back, the caller is told
+      (void)munmap(reinterpret_cast<void*>(from), size);
+      throw;
     }
+    (void)pool->take(from, from + size);
+  }
+#endif
   return reinterpret_cast<void*>(from);
 #else
   return ::operator new(bytes);
@@ -242,11 +261,12 @@ void freeLarge(void* p, std::size_t bytes) noexcept {
     return;
   }
 #if defined(__linux__)
-  if constexpr (kPoolBuilt)
-    if (PagePool& pool = PagePool::instance(); pool.enabled()) {
-      const auto at = reinterpret_cast<std::uintptr_t>(p);
-      pool.removeRegion(at, at + wholeHugePages(bytes));
-    }
+#if defined(KERF_PAGE_POOL)
+  if (PagePool* pool = PagePool::get()) {
+    const auto at = reinterpret_cast<std::uintptr_t>(p);
+    pool->removeRegion(at, at + wholeHugePages(bytes));
+  }
+#endif
   (void)munmap(p, wholeHugePages(bytes));
 #endif
 }

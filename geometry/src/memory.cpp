@@ -127,6 +127,19 @@ class PagePool {
     return moved;
   }
 
+  /// Moves the whole pages of [from, from + size) onto [to, to + size) (see movePages).
+  bool move(std::uintptr_t to, std::uintptr_t from, std::size_t size) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (size == 0 || to % kHuge != 0 || from % kHuge != 0 || size % kHuge != 0 || !inRegion(to, to + size) ||
+        !inRegion(from, from + size) || (to < from + size && from < to + size))
+      return false;
+    // Pages already at to (adopted when the block was made) are kept, not dropped by the move.
+    for (std::uintptr_t p = to; p < to + size; p += kHuge)
+      if (residentPages(p) != 0 && !park(p)) (void)madvise(reinterpret_cast<void*>(p), kHuge, MADV_DONTNEED);
+    return mremap(reinterpret_cast<void*>(from), size, size, MREMAP_MAYMOVE | MREMAP_FIXED | MREMAP_DONTUNMAP,
+                  reinterpret_cast<void*>(to)) != MAP_FAILED;
+  }
+
   [[nodiscard]] std::size_t parked() {
     const std::lock_guard<std::mutex> lock(mutex_);
     return parked_.size();
@@ -220,6 +233,18 @@ std::size_t adoptPages(void* begin, void* end) {
   (void)begin;
   (void)end;
   return 0;
+}
+
+bool movePages(void* to, void* from, std::size_t bytes) {
+#if defined(KERF_PAGE_POOL)
+  if (PagePool* pool = PagePool::get())
+    return pool->move(reinterpret_cast<std::uintptr_t>(to), reinterpret_cast<std::uintptr_t>(from),
+                      wholeHugePages(bytes));
+#endif
+  (void)to;
+  (void)from;
+  (void)bytes;
+  return false;
 }
 
 std::size_t parkedPages() {

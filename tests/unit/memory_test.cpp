@@ -165,6 +165,39 @@ TEST(memory, given_back_pages_read_as_zeros_and_are_adopted_where_a_block_writes
   for (std::size_t k = words / 2; k < w.size(); ++k) w[k] = k;
   for (std::size_t k = 0; k < w.size(); k += 1021) ASSERT_EQ(w[k], k);
 }
+
+// movePages moves whole pages between Kerf's blocks without copying: the bytes arrive, the place
+// they left reads as zeros, and a page already at the target is parked rather than lost. It
+// refuses (nothing moved) what it cannot do: unaligned places, overlapping ranges, memory that is
+// not Kerf's own.
+TEST(memory, pages_move_between_blocks_whole_and_the_place_they_left_reads_as_zeros) {
+  if (!poolOn()) GTEST_SKIP() << "the pages are not Kerf's own here (AddressSanitizer, or KERF_PAGE_POOL=0)";
+  const Drained drained;
+  const auto words = kHugePage / 8;
+  LargeVector<std::uint64_t> from(2 * words + 100);
+  for (std::size_t k = 0; k < from.size(); ++k) from[k] = value(k);
+  std::vector<std::uint64_t, FillLaterAllocator<std::uint64_t>> to;
+  to.reserve(6 * words);
+  to.resize(words / 2);
+  for (std::size_t k = 0; k < to.size(); ++k) to[k] = ~value(k);
+  to.data()[3 * words] = 5;  // a page at the target already written: parked, not dropped
+  const std::size_t parked = parkedPages();
+  ASSERT_TRUE(movePages(to.data() + 2 * words, from.data(), from.size() * 8));
+  EXPECT_EQ(parkedPages(), parked + 1);
+  to.resize(2 * words + from.size());
+  for (std::size_t k = 0; k < from.size(); ++k) ASSERT_EQ(to[2 * words + k], value(k)) << k;
+  for (std::size_t k = 0; k < words / 2; ++k) ASSERT_EQ(to[k], ~value(k)) << k;
+  for (std::size_t k = 0; k < from.size(); k += 997) ASSERT_EQ(from[k], 0u) << k;
+  from[7] = 9;  // what is left is ordinary memory
+  EXPECT_EQ(from[7], 9u);
+
+  EXPECT_FALSE(movePages(to.data() + 1, from.data(), 8)) << "not on a 2 MiB boundary";
+  EXPECT_FALSE(movePages(to.data() + words, to.data(), 2 * words * 8)) << "overlapping";
+  EXPECT_FALSE(movePages(to.data() + 5 * words, from.data(), 3 * words * 8)) << "past the end of the target block";
+  std::vector<std::uint64_t> ordinary(3 * words);
+  EXPECT_FALSE(movePages(ordinary.data(), from.data(), 8)) << "not Kerf's own";
+  EXPECT_EQ(from[7], 9u);
+}
 #endif
 
 }  // namespace

@@ -129,9 +129,16 @@ struct ParseOptions {
   bool operator==(const ParseOptions&) const = default;
 };
 
+/// The words of a program: storage in whole 2 MiB pages once large, elements made without a value
+/// left unwritten (geometry::FillLaterAllocator), so that the parser can move pages into place.
+using WordList = std::vector<Word, geometry::FillLaterAllocator<Word>>;
+
 struct Program {
   const SourceFile* source = nullptr;
-  geometry::LargeVector<Word> words;
+  /// The words of the blocks, in order. Indices no block names may lie between the words of one
+  /// part of a long text and the next (the parser moves a part's pages into place instead of
+  /// copying them: parseProgram); they hold empty words.
+  WordList words;
   geometry::LargeVector<Block> blocks;  ///< only blocks with at least one word, a macro statement or an error
   std::vector<Setting> settings;
   std::vector<HeightWord> heights;

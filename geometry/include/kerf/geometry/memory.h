@@ -37,6 +37,13 @@ void releasePages(const void* begin, const void* end);
 /// allocateLarge does it for every new block; callers that fill a reserved block part by part
 /// (the interpreter's windows, the parser's join) do it for the part they write next.
 std::size_t adoptPages(void* begin, void* end);
+/// Moves the whole 2 MiB pages that hold [from, from + bytes) onto those that start at to, without
+/// copying a byte (mremap moves the page table entries): from and to 2 MiB-aligned, each range
+/// inside a block of its own from allocateLarge. What to held there goes (its pages written in
+/// full are kept for adoptPages), and [from, ...) reads as zeros after. False, nothing done, where
+/// it cannot be done (not Kerf's own pages, KERF_PAGE_POOL=0, not Linux): the caller copies. The
+/// parser joins the words its parts read this way.
+bool movePages(void* to, void* from, std::size_t bytes);
 /// How many pages are waiting to be adopted (for tests).
 [[nodiscard]] std::size_t parkedPages();
 

@@ -121,7 +121,10 @@ class SourceFile {
   void reload() const;
 
   mutable TextBytes text_;
-  std::vector<std::uint32_t> lineStarts_;
+  // Written in full where made (FillLaterAllocator: the resize clears nothing before; its pages are
+  // small ones from malloc below 1 MiB: a fresh 2 MiB page can cost more than 200 small ones, see
+  // geometry/memory.h).
+  std::vector<std::uint32_t, geometry::FillLaterAllocator<std::uint32_t>> lineStarts_;
   std::size_t size_ = 0;
   // After releaseText(): how to read the text again, and what it must be.
   TextSource readAgain_;

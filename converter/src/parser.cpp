@@ -19,6 +19,7 @@
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace kerf::converter {
@@ -275,6 +276,15 @@ class LineParser {
   /// The macro B statements of the lines parsed.
   [[nodiscard]] const MacroTally& macros() const { return macros_; }
 
+  /// The blocks go to [out, out + capacity), not to the program's list: the parts of a long text
+  /// write theirs in place (parseProgram). A block past the capacity is counted, not written.
+  void writeBlocksTo(Block* out, std::size_t capacity) {
+    blockOut_ = out;
+    blockRoom_ = capacity;
+  }
+  /// Blocks made so far.
+  [[nodiscard]] std::size_t blockCount() const { return blockOut_ ? blocksMade_ : program_.blocks.size(); }
+
  private:
   /// Parses one block from i; returns where the next block on this line starts (or end).
   std::size_t parseBlock(std::size_t i, std::size_t end, std::uint32_t line) {
@@ -396,8 +406,13 @@ class LineParser {
                   !block.twoMotions && !block.lowerCase && !block.unusualValues && block.upperFrom == block.wordCount;
     plainWords_ = true;
     if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) {
-      if (!block.plain) program_.notPlain.push_back(static_cast<std::uint32_t>(program_.blocks.size()));
-      program_.blocks.push_back(block);
+      if (!block.plain) program_.notPlain.push_back(static_cast<std::uint32_t>(blockCount()));
+      if (blockOut_ == nullptr) {
+        program_.blocks.push_back(block);
+      } else {
+        if (blocksMade_ < blockRoom_) blockOut_[blocksMade_] = block;
+        ++blocksMade_;
+      }
     }
   }
 
@@ -864,6 +879,9 @@ class LineParser {
   bool homing_ = false;              ///< G28 or G30 seen in this block: bare axis letters allowed
   bool hasUpper_ = false;            ///< assignSides set upperFrom for this block
   MacroTally macros_;
+  Block* blockOut_ = nullptr;  // writeBlocksTo
+  std::size_t blockRoom_ = 0;
+  std::size_t blocksMade_ = 0;
 };
 
 }  // namespace
@@ -892,14 +910,19 @@ struct LinesRead {
   bool sawContent = false;  ///< a block or a setting was read (so a later '%' closes the program)
   bool closed = false;      ///< a '%' after content closed the program: nothing after it is read
   MacroTally macros;
+  std::size_t blocks = 0;  ///< blocks made (written in place: parseLines' blockOut)
 };
 
 /// Parses lines [first, last) into program. sawContent: whether the lines before held a block or a
 /// setting, which makes a '%' line a closing one.
+///
+/// With blockOut the blocks go to [blockOut, blockOut + blockRoom) instead of program.blocks.
 LinesRead parseLines(const SourceFile& source, Program& program, Diagnostics& diags, const ParseOptions& options,
-                     std::uint32_t first, std::uint32_t last, std::size_t bom, bool sawContent) {
+                     std::uint32_t first, std::uint32_t last, std::size_t bom, bool sawContent,
+                     Block* blockOut = nullptr, std::size_t blockRoom = 0) {
   const std::string_view text = source.text();
   LineParser parser(source, program, diags, options);
+  if (blockOut != nullptr) parser.writeBlocksTo(blockOut, blockRoom);
   LinesRead read;
   for (std::uint32_t line = first; line < last; ++line) {
     auto [begin, end] = source.lineRange(line);
@@ -914,11 +937,12 @@ LinesRead parseLines(const SourceFile& source, Program& program, Diagnostics& di
       }
       continue;
     }
-    const std::size_t before = program.blocks.size() + program.settings.size();
+    const std::size_t before = parser.blockCount() + program.settings.size();
     parser.parseLine(begin, end, line);
-    if (program.blocks.size() + program.settings.size() != before) sawContent = read.sawContent = true;
+    if (parser.blockCount() + program.settings.size() != before) sawContent = read.sawContent = true;
   }
   read.macros = parser.macros();
+  read.blocks = parser.blockCount();
   return read;
 }
 
@@ -963,15 +987,32 @@ std::optional<std::size_t> moveWords(WordList& to, WordList& part) {
   return base;
 }
 
-/// Appends the blocks of the lines after to's, read on their own (their word indices start at 0).
-void appendPart(Program& to, Program&& part) {
-  const auto blockBase = static_cast<std::uint32_t>(to.blocks.size());
-  for (const std::uint32_t k : part.notPlain) to.notPlain.push_back(blockBase + k);
+/// Where a part wrote its blocks in place: `count` of them from `at` in the program's list.
+struct PlacedBlocks {
+  std::size_t at = 0;
+  std::size_t count = 0;
+};
+
+/// Appends the blocks of the lines after to's, read on their own (their word indices start at 0),
+/// as to's blocks from blockBase on. Without `placed` they are part's; with it they lie in to's
+/// list already, from placed->at >= blockBase, and are moved down to blockBase.
+void appendPart(Program& to, Program&& part, const PlacedBlocks* placed, std::size_t blockBase) {
+  for (const std::uint32_t k : part.notPlain) to.notPlain.push_back(static_cast<std::uint32_t>(blockBase + k));
   // The words' pages are moved into place (a long text's parts: 4.7 MB of the 7 MB of a 6 MB
   // program), then the blocks copied; where the words cannot be moved, both are copied at once,
   // on two cores.
   std::uint32_t base = 0;
-  if (const std::optional<std::size_t> moved = moveWords(to.words, part.words)) {
+  if (placed != nullptr) {  // the blocks are in place: only their words move
+    const std::optional<std::size_t> moved = moveWords(to.words, part.words);
+    base = static_cast<std::uint32_t>(moved ? *moved : to.words.size());
+    if (!moved) appendReleasing(to.words, part.words);
+    Block* const blocks = to.blocks.data();
+    for (std::size_t k = 0; k < placed->count; ++k) {  // down, in order: the places never overlap wrongly
+      Block b = blocks[placed->at + k];
+      b.firstWord += base;
+      blocks[blockBase + k] = b;
+    }
+  } else if (const std::optional<std::size_t> moved = moveWords(to.words, part.words)) {
     base = static_cast<std::uint32_t>(*moved);
     for (Block& b : part.blocks) b.firstWord += base;
     appendReleasing(to.blocks, part.blocks);
@@ -1004,7 +1045,6 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
   program.source = &source;
   const std::string_view text = source.text();
   program.words.reserve(text.size() / 6);
-  program.blocks.reserve(text.size() / 24);
   // A NUL byte near the start means a binary file, not NC text: one diagnostic, not thousands.
   if (const std::size_t nul = text.substr(0, 4096).find('\0'); nul != std::string_view::npos) {
     diags.error(Code::UnexpectedCharacter, &source, {static_cast<std::uint32_t>(nul), 1},
@@ -1026,6 +1066,18 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
   }
   firstLine.push_back(lines + 1);
   const std::size_t n = firstLine.size() - 1;
+  // The parts write their blocks in place, each part in the slots of its lines: a line holds one
+  // block at most unless ';' ends blocks. The join then moves each part's blocks down to follow
+  // the ones before (a few blocks' shift: the pages they lie on already) instead of copying them
+  // from arrays of the part's own (2.4 MB and about two fresh 2 MiB pages for a 6 MB program).
+  const bool inPlace = n > 1 && !options.semicolonEndsBlock;
+  if (inPlace) {
+    program.blocks.resize(lines);  // FillLaterAllocator: nothing written here
+  } else {
+    program.blocks.reserve(text.size() / 24);
+  }
+  auto slotOf = [&](std::size_t k) { return program.blocks.data() + (firstLine[k] - 1); };
+  auto roomOf = [&](std::size_t k) { return std::size_t{firstLine[k + 1] - firstLine[k]}; };
   // Every part but the first is read as if content came before it (so a '%' there closes); the
   // join reads it again in the rare case that nothing did.
   std::vector<Program> later(n - 1);
@@ -1038,27 +1090,35 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
       if (k > 0) {
         const std::size_t bytes = source.lineRange(firstLine[k + 1] - 1).second - source.lineRange(firstLine[k]).first;
         into.words.reserve(bytes / 6);
-        into.blocks.reserve(bytes / 24);
+        if (!inPlace) into.blocks.reserve(bytes / 24);
       }
       read[k] = parseLines(source, into, k == 0 ? diags : laterDiags[k - 1], options, firstLine[k], firstLine[k + 1],
-                           bom, k > 0);
+                           bom, k > 0, inPlace ? slotOf(k) : nullptr, roomOf(k));
     }
   });
+  if (inPlace)
+    for (std::size_t k = 0; k < n; ++k)
+      if (read[k].blocks > roomOf(k))  // not written past its slots (LineParser::finish), but lost
+        throw std::logic_error("parseProgram: more blocks than lines in a part");
   LinesRead whole = read[0];
+  std::size_t blocks = inPlace ? read[0].blocks : program.blocks.size();
   for (std::size_t k = 1; k < n && !whole.closed; ++k) {
     if (!whole.sawContent) {  // nothing before this part: its first '%' opens the program
       later[k - 1] = Program{};
       later[k - 1].source = &source;
       laterDiags[k - 1] = Diagnostics(diags.cap());
-      read[k] =
-          parseLines(source, later[k - 1], laterDiags[k - 1], options, firstLine[k], firstLine[k + 1], bom, false);
+      read[k] = parseLines(source, later[k - 1], laterDiags[k - 1], options, firstLine[k], firstLine[k + 1], bom, false,
+                           inPlace ? slotOf(k) : nullptr, roomOf(k));
     }
-    appendPart(program, std::move(later[k - 1]));
+    const PlacedBlocks placed{firstLine[k] - std::size_t{1}, read[k].blocks};
+    appendPart(program, std::move(later[k - 1]), inPlace ? &placed : nullptr, blocks);
+    blocks = inPlace ? blocks + read[k].blocks : program.blocks.size();
     diags.append(std::move(laterDiags[k - 1]));
     whole.sawContent = whole.sawContent || read[k].sawContent;
     whole.closed = read[k].closed;
     whole.macros.add(read[k].macros);
   }
+  if (inPlace) program.blocks.resize(blocks);  // the parts' slots past the last block go
   reportMacroStatements(whole.macros, source, diags);
   return program;
 }

@@ -511,22 +511,28 @@ TEST(parser, parts_parsed_on_several_cores_give_what_one_pass_gives) {
   for (const auto& [what, text] : texts) {
     ASSERT_GT(text.size(), 256u * 1024u) << what << ": long enough to be parsed in parts";
     const SourceFile src("p.nc", text);
-    for (const std::size_t cap : {std::size_t{5}, std::size_t{100000}}) {
-      Program serial;
-      Diagnostics serialDiags(cap);
-      {
-        const kerf::test::ScopedThreads one("1");
-        serial = parseProgram(src, serialDiags);
+    // The parts write their blocks in place unless ';' ends blocks (a line may then hold several):
+    // both ways.
+    for (const bool semicolonEndsBlock : {false, true})
+      for (const std::size_t cap : {std::size_t{5}, std::size_t{100000}}) {
+        ParseOptions options;
+        options.semicolonEndsBlock = semicolonEndsBlock;
+        Program serial;
+        Diagnostics serialDiags(cap);
+        {
+          const kerf::test::ScopedThreads one("1");
+          serial = parseProgram(src, serialDiags, options);
+        }
+        for (const char* threads : {"2", "3", "8"}) {
+          const kerf::test::ScopedThreads t(threads);
+          Diagnostics d(cap);
+          const Program parts = parseProgram(src, d, options);
+          const std::string label = what + ", " + threads + " threads, cap " + std::to_string(cap) +
+                                    (semicolonEndsBlock ? ", ';' ends blocks" : "");
+          expectSameProgram(serial, parts, label);
+          expectSameDiagnostics(serialDiags, d, label);
+        }
       }
-      for (const char* threads : {"2", "3", "8"}) {
-        const kerf::test::ScopedThreads t(threads);
-        Diagnostics d(cap);
-        const Program parts = parseProgram(src, d);
-        const std::string label = what + ", " + threads + " threads, cap " + std::to_string(cap);
-        expectSameProgram(serial, parts, label);
-        expectSameDiagnostics(serialDiags, d, label);
-      }
-    }
     if (what == "closed by % in a later part") {  // the blocks after the closing % are not read
       Diagnostics d;
       const Program p = parseProgram(src, d);

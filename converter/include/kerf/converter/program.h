@@ -133,13 +133,19 @@ struct ParseOptions {
 /// left unwritten (geometry::FillLaterAllocator), so that the parser can move pages into place.
 using WordList = std::vector<Word, geometry::FillLaterAllocator<Word>>;
 
+/// The blocks of a program (Program::blocks).
+using BlockList = std::vector<Block, geometry::FillLaterAllocator<Block>>;
+
 struct Program {
   const SourceFile* source = nullptr;
   /// The words of the blocks, in order. Indices no block names may lie between the words of one
   /// part of a long text and the next (the parser moves a part's pages into place instead of
   /// copying them: parseProgram); they hold empty words.
   WordList words;
-  geometry::LargeVector<Block> blocks;  ///< only blocks with at least one word, a macro statement or an error
+  /// Only blocks with at least one word, a macro statement or an error. The parts of a long text
+  /// write their blocks in place (parseProgram), so the list leaves elements made without a value
+  /// unwritten (geometry::FillLaterAllocator).
+  BlockList blocks;
   std::vector<Setting> settings;
   std::vector<HeightWord> heights;
   bool anyDecimalPoint = false;          ///< some length word was written with a decimal point

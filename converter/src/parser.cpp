@@ -999,8 +999,8 @@ struct PlacedBlocks {
 void appendPart(Program& to, Program&& part, const PlacedBlocks* placed, std::size_t blockBase) {
   for (const std::uint32_t k : part.notPlain) to.notPlain.push_back(static_cast<std::uint32_t>(blockBase + k));
   // The words' pages are moved into place (a long text's parts: 4.7 MB of the 7 MB of a 6 MB
-  // program), then the blocks copied; where the words cannot be moved, both are copied at once,
-  // on two cores.
+  // program); the blocks are moved down where the part wrote them in place, else copied. Where
+  // the words cannot be moved, they are copied, beside the blocks' copy on another core.
   std::uint32_t base = 0;
   if (placed != nullptr) {  // the blocks are in place: only their words move
     const std::optional<std::size_t> moved = moveWords(to.words, part.words);
@@ -1096,10 +1096,12 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
                            bom, k > 0, inPlace ? slotOf(k) : nullptr, roomOf(k));
     }
   });
-  if (inPlace)
-    for (std::size_t k = 0; k < n; ++k)
-      if (read[k].blocks > roomOf(k))  // not written past its slots (LineParser::finish), but lost
-        throw std::logic_error("parseProgram: more blocks than lines in a part");
+  // A part never has more blocks than lines here; were it to, its blocks past its slots were not
+  // written (LineParser::finish), and the parse fails rather than lose them.
+  auto checkRoom = [&](std::size_t k) {
+    if (inPlace && read[k].blocks > roomOf(k)) throw std::logic_error("parseProgram: more blocks than lines in a part");
+  };
+  for (std::size_t k = 0; k < n; ++k) checkRoom(k);
   LinesRead whole = read[0];
   std::size_t blocks = inPlace ? read[0].blocks : program.blocks.size();
   for (std::size_t k = 1; k < n && !whole.closed; ++k) {
@@ -1109,6 +1111,7 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
       laterDiags[k - 1] = Diagnostics(diags.cap());
       read[k] = parseLines(source, later[k - 1], laterDiags[k - 1], options, firstLine[k], firstLine[k + 1], bom, false,
                            inPlace ? slotOf(k) : nullptr, roomOf(k));
+      checkRoom(k);
     }
     const PlacedBlocks placed{firstLine[k] - std::size_t{1}, read[k].blocks};
     appendPart(program, std::move(later[k - 1]), inPlace ? &placed : nullptr, blocks);

@@ -3,14 +3,20 @@
 // Built as a real fuzzer with clang (-DKERF_BUILD_FUZZERS=ON, tests/fuzz/run.sh), and always
 // as kerf_fuzz_replay, which feeds it every file of the bad corpus, the samples and
 // tests/fuzz/corpus so CI replays what the fuzzer found.
+// Two readings are compared where one must equal the other: the interpreter's windows against its
+// block loop (a quarter of the inputs), and, for about one input in 16, the input repeated past
+// 256 KB parsed in parts on 3 workers against one pass (the parts' join moves words and blocks;
+// inputs are at most 4 KB, so only this way does the fuzzer reach it).
 #include "kerf/converter/pipeline.h"
 #include "kerf/converter/points.h"
+#include "kerf/converter/program.h"
 #include "kerf/converter/report.h"
 #include "kerf/converter/summary.h"
 #include "kerf/geometry/ruled_surface.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -41,6 +47,67 @@ bool sameReading(const kerf::converter::Pipeline& a, const kerf::converter::Pipe
   return true;
 }
 
+/// The parse of text on `threads` workers (a long text is read in parts, one per worker).
+kerf::converter::Program parseOn(const char* threads, const kerf::converter::SourceFile& src,
+                                 kerf::converter::Diagnostics& diags, const kerf::converter::ParseOptions& options) {
+  std::string old;
+  const char* was = std::getenv("KERF_THREADS");
+  if (was != nullptr) old = was;
+  ::setenv("KERF_THREADS", threads, 1);
+  kerf::converter::Program p = kerf::converter::parseProgram(src, diags, options);
+  if (was != nullptr)
+    ::setenv("KERF_THREADS", old.c_str(), 1);
+  else
+    ::unsetenv("KERF_THREADS");
+  return p;
+}
+
+/// The same blocks with the same words (at whatever indices), the same lists of blocks that are
+/// not plain, and the same diagnostics.
+bool sameParse(const kerf::converter::Program& a, const kerf::converter::Diagnostics& da,
+               const kerf::converter::Program& b, const kerf::converter::Diagnostics& db) {
+  if (a.blocks.size() != b.blocks.size() || a.notPlain != b.notPlain || da.all().size() != db.all().size() ||
+      a.settings.size() != b.settings.size() || a.largestInteger != b.largestInteger ||
+      a.integerLengthWords != b.integerLengthWords || a.anyDecimalPoint != b.anyDecimalPoint)
+    return false;
+  for (std::size_t k = 0; k < a.blocks.size(); ++k) {
+    const kerf::converter::Block &x = a.blocks[k], &y = b.blocks[k];
+    if (x.offset != y.offset || x.length != y.length || x.line != y.line || x.wordCount != y.wordCount ||
+        x.upperFrom != y.upperFrom || x.kind != y.kind || x.plain != y.plain || x.hasError != y.hasError)
+      return false;
+    for (std::size_t w = 0; w < x.wordCount; ++w) {
+      const kerf::converter::Word &u = a.words[x.firstWord + w], &v = b.words[y.firstWord + w];
+      if (u.letter != v.letter || u.offset != v.offset || u.length != v.length || u.kind != v.kind ||
+          !sameBits(u.value, v.value))
+        return false;
+    }
+  }
+  for (std::size_t i = 0; i < da.all().size(); ++i)
+    if (kerf::converter::formatDiagnostic(da.all()[i]) != kerf::converter::formatDiagnostic(db.all()[i])) return false;
+  return true;
+}
+
+/// The text repeated past the size from which the parser reads in parts (256 KB), read in one
+/// pass and in parts on 3 workers, with ';' ending blocks or not: the parts joined (their words
+/// moved or copied, their blocks written in place or copied) must give the one pass's program.
+void checkParts(const std::string& text) {
+  using namespace kerf::converter;
+  std::string longText;
+  while (longText.size() < 300000) {
+    longText += text;
+    longText += '\n';
+  }
+  const SourceFile src("parts.nc", longText);
+  for (const bool semicolonEndsBlock : {false, true}) {
+    ParseOptions options;
+    options.semicolonEndsBlock = semicolonEndsBlock;
+    Diagnostics d1(50), d3(50);
+    const Program one = parseOn("1", src, d1, options);
+    const Program three = parseOn("3", src, d3, options);
+    if (!sameParse(one, d1, three, d3)) __builtin_trap();
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -65,6 +132,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // inputs the block loop alone reads the program again, and the two must agree bit for bit.
   options.read.parallelRun = 2;
   options.read.parallelWindow = 16;
+  // For about one input in 16, the parse in parts against the one pass (checkParts).
+  unsigned sum = 0;
+  for (std::size_t k = 0; k < size; ++k) sum += data[k];
+  if (size > 0 && sum % 16 == 5) checkParts(text);
   const Pipeline p = runPipeline({"fuzz.nc", text}, options);
   if (size > 0 && (data[0] & 6) == 6) {
     PipelineOptions serial = options;

@@ -7,7 +7,6 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
-#include <mutex>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -260,9 +259,7 @@ bool TextBytes::cutShort() const {
 #endif
 }
 
-TextBytes::TextBytes(const TextBytes& other) : bytes_(other.map_ ? decltype(bytes_)() : other.bytes_) {
-  if (other.map_) *this = TextBytes(other.view());
-}
+TextBytes::TextBytes(const TextBytes& other) : TextBytes(other.view()) {}
 
 TextBytes& TextBytes::operator=(const TextBytes& other) {
   if (this != &other) *this = TextBytes(other);
@@ -274,9 +271,7 @@ TextBytes::TextBytes(TextBytes&& other) noexcept
       map_(std::exchange(other.map_, nullptr)),
       mapSize_(std::exchange(other.mapSize_, 0)),
       mapLength_(std::exchange(other.mapLength_, 0)),
-      slot_(std::exchange(other.slot_, -1)) {
-  if (other.bytes_.empty()) other.bytes_.assign(1, '\0');
-}
+      slot_(std::exchange(other.slot_, -1)) {}
 
 TextBytes& TextBytes::operator=(TextBytes&& other) noexcept {
   if (this == &other) return *this;
@@ -286,7 +281,6 @@ TextBytes& TextBytes::operator=(TextBytes&& other) noexcept {
   mapSize_ = std::exchange(other.mapSize_, 0);
   mapLength_ = std::exchange(other.mapLength_, 0);
   slot_ = std::exchange(other.slot_, -1);
-  if (other.bytes_.empty()) other.bytes_.assign(1, '\0');
   return *this;
 }
 

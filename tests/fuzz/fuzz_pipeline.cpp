@@ -14,9 +14,11 @@
 #include "kerf/converter/summary.h"
 #include "kerf/geometry/ruled_surface.h"
 
+#include "../unit/parse_compare.h"
+#include "../unit/test_support.h"
+
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -25,6 +27,14 @@
 namespace {
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// The same diagnostics, as they are shown.
+bool sameDiagnostics(const kerf::converter::Diagnostics& a, const kerf::converter::Diagnostics& b) {
+  if (a.all().size() != b.all().size()) return false;
+  for (std::size_t i = 0; i < a.all().size(); ++i)
+    if (kerf::converter::formatDiagnostic(a.all()[i]) != kerf::converter::formatDiagnostic(b.all()[i])) return false;
+  return true;
+}
 
 /// The same moves, bit for bit, and the same diagnostics.
 bool sameReading(const kerf::converter::Pipeline& a, const kerf::converter::Pipeline& b) {
@@ -41,50 +51,7 @@ bool sameReading(const kerf::converter::Pipeline& a, const kerf::converter::Pipe
         x[i].wireOffset != y[i].wireOffset)
       return false;
   }
-  for (std::size_t i = 0; i < a.diags.all().size(); ++i)
-    if (kerf::converter::formatDiagnostic(a.diags.all()[i]) != kerf::converter::formatDiagnostic(b.diags.all()[i]))
-      return false;
-  return true;
-}
-
-/// The parse of text on `threads` workers (a long text is read in parts, one per worker).
-kerf::converter::Program parseOn(const char* threads, const kerf::converter::SourceFile& src,
-                                 kerf::converter::Diagnostics& diags, const kerf::converter::ParseOptions& options) {
-  std::string old;
-  const char* was = std::getenv("KERF_THREADS");
-  if (was != nullptr) old = was;
-  ::setenv("KERF_THREADS", threads, 1);
-  kerf::converter::Program p = kerf::converter::parseProgram(src, diags, options);
-  if (was != nullptr)
-    ::setenv("KERF_THREADS", old.c_str(), 1);
-  else
-    ::unsetenv("KERF_THREADS");
-  return p;
-}
-
-/// The same blocks with the same words (at whatever indices), the same lists of blocks that are
-/// not plain, and the same diagnostics.
-bool sameParse(const kerf::converter::Program& a, const kerf::converter::Diagnostics& da,
-               const kerf::converter::Program& b, const kerf::converter::Diagnostics& db) {
-  if (a.blocks.size() != b.blocks.size() || a.notPlain != b.notPlain || da.all().size() != db.all().size() ||
-      a.settings.size() != b.settings.size() || a.largestInteger != b.largestInteger ||
-      a.integerLengthWords != b.integerLengthWords || a.anyDecimalPoint != b.anyDecimalPoint)
-    return false;
-  for (std::size_t k = 0; k < a.blocks.size(); ++k) {
-    const kerf::converter::Block &x = a.blocks[k], &y = b.blocks[k];
-    if (x.offset != y.offset || x.length != y.length || x.line != y.line || x.wordCount != y.wordCount ||
-        x.upperFrom != y.upperFrom || x.kind != y.kind || x.plain != y.plain || x.hasError != y.hasError)
-      return false;
-    for (std::size_t w = 0; w < x.wordCount; ++w) {
-      const kerf::converter::Word &u = a.words[x.firstWord + w], &v = b.words[y.firstWord + w];
-      if (u.letter != v.letter || u.offset != v.offset || u.length != v.length || u.kind != v.kind ||
-          !sameBits(u.value, v.value))
-        return false;
-    }
-  }
-  for (std::size_t i = 0; i < da.all().size(); ++i)
-    if (kerf::converter::formatDiagnostic(da.all()[i]) != kerf::converter::formatDiagnostic(db.all()[i])) return false;
-  return true;
+  return sameDiagnostics(a.diags, b.diags);
 }
 
 /// The text repeated past the size from which the parser reads in parts (256 KB), read in one
@@ -102,9 +69,16 @@ void checkParts(const std::string& text) {
     ParseOptions options;
     options.semicolonEndsBlock = semicolonEndsBlock;
     Diagnostics d1(50), d3(50);
-    const Program one = parseOn("1", src, d1, options);
-    const Program three = parseOn("3", src, d3, options);
-    if (!sameParse(one, d1, three, d3)) __builtin_trap();
+    Program one, three;
+    {
+      const kerf::test::ScopedThreads t("1");
+      one = parseProgram(src, d1, options);
+    }
+    {
+      const kerf::test::ScopedThreads t("3");
+      three = parseProgram(src, d3, options);
+    }
+    if (!kerf::test::parseDifference(one, three).empty() || !sameDiagnostics(d1, d3)) __builtin_trap();
   }
 }
 

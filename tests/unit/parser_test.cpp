@@ -1,6 +1,7 @@
 #include "kerf/converter/program.h"
 
 #include "converter_support.h"
+#include "parse_compare.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -439,47 +440,8 @@ std::string mixedProgram(std::size_t lines, unsigned seed) {
   return text;
 }
 
-/// The same blocks with the same words. b's words may lie at other indices than a's: the parser
-/// moves a later part's words to the next 2 MiB page (parseProgram), and the indices between, which
-/// no block names, must hold empty words.
 void expectSameProgram(const Program& a, const Program& b, const std::string& what) {
-  ASSERT_EQ(a.blocks.size(), b.blocks.size()) << what;
-  std::vector<bool> named(b.words.size(), false);
-  for (std::size_t k = 0; k < a.blocks.size(); ++k) {
-    const Block &x = a.blocks[k], &y = b.blocks[k];
-    ASSERT_TRUE(x.wordCount == y.wordCount && x.offset == y.offset && x.length == y.length && x.line == y.line &&
-                x.upperFrom == y.upperFrom && x.kind == y.kind && x.colon == y.colon && x.hasError == y.hasError)
-        << what << ": block " << k;
-    ASSERT_LE(std::size_t{y.firstWord} + y.wordCount, b.words.size()) << what << ": block " << k;
-    for (std::size_t w = 0; w < x.wordCount; ++w) {
-      const Word &u = a.words[x.firstWord + w], &v = b.words[y.firstWord + w];
-      ASSERT_TRUE(u.letter == v.letter && u.offset == v.offset && u.length == v.length && u.hasPoint == v.hasPoint &&
-                  u.kind == v.kind && u.value == v.value)
-          << what << ": block " << k << ", word " << w;
-      named[y.firstWord + w] = true;
-    }
-  }
-  std::size_t unnamed = 0;
-  for (std::size_t k = 0; k < b.words.size(); ++k)
-    if (!named[k]) {
-      ++unnamed;
-      ASSERT_EQ(b.words[k].letter, 0) << what << ": word " << k << " lies between parts and is not empty";
-    }
-  EXPECT_EQ(a.words.size() + unnamed, b.words.size()) << what << ": a word of a's that no block names";
-  if (!a.words.empty() && !b.words.empty()) {
-    EXPECT_EQ(a.words[a.largestIntegerWord].offset, b.words[b.largestIntegerWord].offset) << what;
-  }
-  ASSERT_EQ(a.settings.size(), b.settings.size()) << what;
-  for (std::size_t k = 0; k < a.settings.size(); ++k)
-    EXPECT_TRUE(a.settings[k].name == b.settings[k].name && a.settings[k].value == b.settings[k].value &&
-                a.settings[k].line == b.settings[k].line)
-        << what << ": setting " << k;
-  ASSERT_EQ(a.heights.size(), b.heights.size()) << what;
-  for (std::size_t k = 0; k < a.heights.size(); ++k)
-    EXPECT_TRUE(a.heights[k].value == b.heights[k].value && a.heights[k].line == b.heights[k].line) << what;
-  EXPECT_EQ(a.anyDecimalPoint, b.anyDecimalPoint) << what;
-  EXPECT_EQ(a.largestInteger, b.largestInteger) << what;
-  EXPECT_EQ(a.integerLengthWords, b.integerLengthWords) << what;
+  EXPECT_EQ(kerf::test::parseDifference(a, b), "") << what;
 }
 
 void expectSameDiagnostics(const Diagnostics& a, const Diagnostics& b, const std::string& what) {

@@ -66,7 +66,8 @@ class TextBytes {
   /// The bytes; a mapped text's are not to be written.
   [[nodiscard]] char* data() { return map_ ? map_ : bytes_.data(); }
   [[nodiscard]] const char* data() const { return map_ ? map_ : bytes_.data(); }
-  [[nodiscard]] std::size_t size() const { return map_ ? mapSize_ : bytes_.size() - 1; }
+  /// 0 for one moved from (its bytes went, NUL and all).
+  [[nodiscard]] std::size_t size() const { return map_ ? mapSize_ : bytes_.empty() ? 0 : bytes_.size() - 1; }
   [[nodiscard]] std::string_view view() const { return {data(), size()}; }
   /// Keeps the first n bytes (n <= size()).
   void shrink(std::size_t n);

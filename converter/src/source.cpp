@@ -1,17 +1,8 @@
 #include "kerf/converter/source.h"
 
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <bit>
-#include <cerrno>
-#include <csignal>
 #include <cstring>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#include <unistd.h>
-#endif
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -120,172 +111,6 @@ void forEachFeed(const char* data, std::size_t size, F&& f) {
 
 }  // namespace
 
-#if defined(__linux__)
-namespace {
-
-// The mapped texts' file pages, for the SIGBUS handler: a file cut shorter while mapped faults
-// where it no longer has pages, and the handler puts zeros there instead of the process stopping.
-// Slots are claimed and cleared with atomics (the handler may run on any thread at any time).
-struct MappedPages {
-  std::atomic<std::uintptr_t> begin{0};
-  std::atomic<std::uintptr_t> end{0};
-  std::atomic<bool> cut{false};
-};
-constexpr std::size_t kMappedSlots = 64;
-std::array<MappedPages, kMappedSlots> gMapped;
-std::uintptr_t gPageSize = 4096;
-struct sigaction gPreviousBus {};
-
-void onBus(int sig, siginfo_t* info, void* context) {
-  const auto at = reinterpret_cast<std::uintptr_t>(info->si_addr);
-  for (MappedPages& m : gMapped) {
-    const std::uintptr_t begin = m.begin.load(std::memory_order_acquire);
-    const std::uintptr_t end = m.end.load(std::memory_order_acquire);
-    if (begin == 0 || at < begin || at >= end) continue;
-    // From the page the file no longer has to the end of its pages: anonymous zeros, read-only.
-    const std::uintptr_t page = at & ~(gPageSize - 1);
-    if (mmap(reinterpret_cast<void*>(page), end - page, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0) !=
-        MAP_FAILED) {
-      m.cut.store(true, std::memory_order_release);
-      return;  // the read is made again, of a zero
-    }
-    break;
-  }
-  // Not a mapped text's page: what was there before.
-  if ((gPreviousBus.sa_flags & SA_SIGINFO) != 0 && gPreviousBus.sa_sigaction != nullptr) {
-    gPreviousBus.sa_sigaction(sig, info, context);
-    return;
-  }
-  if ((gPreviousBus.sa_flags & SA_SIGINFO) == 0 && gPreviousBus.sa_handler != SIG_DFL &&
-      gPreviousBus.sa_handler != SIG_IGN) {
-    gPreviousBus.sa_handler(sig);
-    return;
-  }
-  signal(sig, SIG_DFL);
-  raise(sig);
-}
-
-/// Installs the handler once; false where it cannot be.
-bool busHandlerInstalled() {
-  static const bool installed = [] {
-    const long page = sysconf(_SC_PAGESIZE);
-    if (page <= 0) return false;
-    gPageSize = static_cast<std::uintptr_t>(page);
-    struct sigaction action {};
-    action.sa_sigaction = onBus;
-    action.sa_flags = SA_SIGINFO | SA_NODEFER;
-    sigemptyset(&action.sa_mask);
-    return sigaction(SIGBUS, &action, &gPreviousBus) == 0;
-  }();
-  return installed;
-}
-
-int claimSlot(std::uintptr_t begin, std::uintptr_t end) {
-  for (std::size_t k = 0; k < kMappedSlots; ++k) {
-    std::uintptr_t free = 0;
-    if (gMapped[k].begin.compare_exchange_strong(free, begin, std::memory_order_acq_rel)) {
-      gMapped[k].cut.store(false, std::memory_order_relaxed);
-      gMapped[k].end.store(end, std::memory_order_release);
-      return static_cast<int>(k);
-    }
-  }
-  return -1;
-}
-
-void clearSlot(int slot) {
-  gMapped[static_cast<std::size_t>(slot)].end.store(0, std::memory_order_release);
-  gMapped[static_cast<std::size_t>(slot)].begin.store(0, std::memory_order_release);
-}
-
-}  // namespace
-#endif
-
-std::optional<TextBytes> TextBytes::mapFile(int fd, std::size_t size) {
-#if defined(__linux__) && defined(MAP_POPULATE)
-  if (size < kMapFrom || size >= SourceFile::kMaxSize || !busHandlerInstalled()) return std::nullopt;
-  const std::uintptr_t page = gPageSize;
-  const std::size_t whole = size / page * page;                    // the file's whole pages, mapped
-  const std::size_t length = (size + 1 + page - 1) / page * page;  // then its last bytes and a NUL
-  void* room = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
-  if (room == MAP_FAILED) return std::nullopt;
-  char* const at = static_cast<char*>(room);
-  TextBytes t;
-  t.map_ = at;
-  t.mapSize_ = size;
-  t.mapLength_ = length;
-  // The last bytes are copied after the mapped pages, so that the NUL after them is ours: the
-  // part of the file's last page past its end would show what is appended to it meanwhile.
-  std::size_t got = whole;
-  while (got < size) {
-    const ssize_t n = pread(fd, at + got, size - got, static_cast<off_t>(got));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return std::nullopt;  // shorter than it was: read it
-    got += static_cast<std::size_t>(n);
-  }
-  char more = 0;
-  ssize_t extra = 0;
-  do extra = pread(fd, &more, 1, static_cast<off_t>(size));
-  while (extra < 0 && errno == EINTR);
-  if (extra != 0) return std::nullopt;  // longer than it was: read it
-  if (whole > 0) {
-    t.slot_ = claimSlot(reinterpret_cast<std::uintptr_t>(at), reinterpret_cast<std::uintptr_t>(at) + whole);
-    if (t.slot_ < 0) return std::nullopt;
-    if (mmap(at, whole, PROT_READ, MAP_PRIVATE | MAP_FIXED | MAP_POPULATE, fd, 0) == MAP_FAILED) return std::nullopt;
-  }
-  return t;
-#else
-  (void)fd;
-  (void)size;
-  return std::nullopt;
-#endif
-}
-
-void TextBytes::unmap() noexcept {
-#if defined(__linux__)
-  if (map_ == nullptr) return;
-  if (slot_ >= 0) clearSlot(slot_);
-  (void)munmap(map_, mapLength_);
-#endif
-  map_ = nullptr;
-  mapSize_ = mapLength_ = 0;
-  slot_ = -1;
-}
-
-bool TextBytes::cutShort() const {
-#if defined(__linux__)
-  return slot_ >= 0 && gMapped[static_cast<std::size_t>(slot_)].cut.load(std::memory_order_acquire);
-#else
-  return false;
-#endif
-}
-
-TextBytes::TextBytes(const TextBytes& other) : TextBytes(other.view()) {}
-
-TextBytes& TextBytes::operator=(const TextBytes& other) {
-  if (this != &other) *this = TextBytes(other);
-  return *this;
-}
-
-TextBytes::TextBytes(TextBytes&& other) noexcept
-    : bytes_(std::move(other.bytes_)),
-      map_(std::exchange(other.map_, nullptr)),
-      mapSize_(std::exchange(other.mapSize_, 0)),
-      mapLength_(std::exchange(other.mapLength_, 0)),
-      slot_(std::exchange(other.slot_, -1)) {}
-
-TextBytes& TextBytes::operator=(TextBytes&& other) noexcept {
-  if (this == &other) return *this;
-  unmap();
-  bytes_ = std::move(other.bytes_);
-  map_ = std::exchange(other.map_, nullptr);
-  mapSize_ = std::exchange(other.mapSize_, 0);
-  mapLength_ = std::exchange(other.mapLength_, 0);
-  slot_ = std::exchange(other.slot_, -1);
-  return *this;
-}
-
-TextBytes::~TextBytes() { unmap(); }
-
 TextBytes::TextBytes(std::string_view text) {
   bytes_.reserve(text.size() + 1);
   bytes_.insert(bytes_.end(), text.begin(), text.end());
@@ -301,10 +126,6 @@ TextBytes TextBytes::ofSize(std::size_t n) {
 
 void TextBytes::shrink(std::size_t n) {
   if (n >= size()) return;
-  if (map_) {  // a mapping keeps its NUL after the file's end: the first n bytes become bytes of its own
-    *this = TextBytes(view().substr(0, n));
-    return;
-  }
   bytes_.resize(n + 1);
   bytes_[n] = '\0';
 }
@@ -338,7 +159,6 @@ void SourceFile::releaseText(TextSource readAgain) {
   if (released_ || !readAgain) return;
   readAgain_ = std::move(readAgain);
   hash_ = hashOf(text_.view());
-  cutShort_ = cutShort_ || text_.cutShort();
   text_ = TextBytes();
   released_ = true;
 }

@@ -6,19 +6,12 @@
 
 #include <gtest/gtest.h>
 
-#include <csignal>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <random>
 #include <string>
 #include <vector>
-
-#if defined(__linux__)
-#include <fcntl.h>
-#include <unistd.h>
-#endif
 
 using namespace kerf::converter;
 
@@ -527,89 +520,6 @@ TEST(source, text_bytes_written_in_place_read_as_the_same_text) {
   EXPECT_EQ(TextBytes().size(), 0u);
   EXPECT_EQ(TextBytes().data()[0], '\0');
 }
-
-#if defined(__linux__)
-/// A file of `size` bytes of program lines in a directory of the test's own; its descriptor.
-struct TempFile {
-  explicit TempFile(std::size_t size) {
-    std::string line = "G01 X12.3456 Y-7.8901\n";
-    while (text.size() + line.size() <= size) text += line;
-    text += std::string(size - text.size(), 'Y');
-    path = ::testing::TempDir() + "kerf_map_" + std::to_string(::getpid()) + "_" + std::to_string(size) + ".nc";
-    FILE* f = std::fopen(path.c_str(), "wb");
-    if (f == nullptr || std::fwrite(text.data(), 1, text.size(), f) != text.size() || std::fclose(f) != 0) return;
-    fd = ::open(path.c_str(), O_RDWR);
-  }
-  ~TempFile() {
-    if (fd >= 0) ::close(fd);
-    std::remove(path.c_str());
-  }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  std::string text, path;
-  int fd = -1;
-};
-
-// A long file's text is mapped, not copied: the same bytes, a NUL after them whether or not the
-// file ends on a page boundary, and a copy of its own when copied. A short file is read instead.
-TEST(source, a_long_file_is_mapped_as_the_same_text_with_a_nul_after_it) {
-  for (const std::size_t size : {TextBytes::kMapFrom, TextBytes::kMapFrom + 4096 * 3, TextBytes::kMapFrom + 77}) {
-    const TempFile file(size);
-    ASSERT_GE(file.fd, 0);
-    std::optional<TextBytes> mapped = TextBytes::mapFile(file.fd, size);
-    ASSERT_TRUE(mapped) << size;
-    EXPECT_TRUE(mapped->mapped());
-    EXPECT_EQ(mapped->size(), size);
-    EXPECT_TRUE(mapped->view() == file.text) << size;
-    EXPECT_EQ(mapped->data()[size], '\0') << size;
-    EXPECT_FALSE(mapped->cutShort());
-    const TextBytes copy = *mapped;  // NOLINT: the copy is what is tested
-    EXPECT_FALSE(copy.mapped());
-    EXPECT_TRUE(copy.view() == file.text);
-    TextBytes moved = std::move(*mapped);
-    EXPECT_TRUE(moved.mapped());
-    EXPECT_EQ(mapped->size(), 0u);  // NOLINT: moved from, and empty
-    const SourceFile src("m.nc", std::move(moved));
-    EXPECT_EQ(src.lineText(2), "G01 X12.3456 Y-7.8901");
-    EXPECT_FALSE(src.cutShort());
-  }
-  const TempFile small(TextBytes::kMapFrom - 1);
-  EXPECT_FALSE(TextBytes::mapFile(small.fd, TextBytes::kMapFrom - 1));
-  const TempFile longer(TextBytes::kMapFrom + 100);
-  EXPECT_FALSE(TextBytes::mapFile(longer.fd, TextBytes::kMapFrom)) << "the file is longer than its size said";
-  EXPECT_FALSE(TextBytes::mapFile(longer.fd, TextBytes::kMapFrom + 200)) << "the file is shorter than its size said";
-}
-
-// A file cut shorter while its text is mapped would stop the process (SIGBUS) where the text is
-// read past its new end; the text reads as zeros from there instead, and says it was cut short.
-TEST(source, a_mapped_file_cut_shorter_reads_as_zeros_past_its_new_end_and_says_so) {
-  const std::size_t size = 3 * TextBytes::kMapFrom;
-  const TempFile file(size);
-  ASSERT_GE(file.fd, 0);
-  std::optional<TextBytes> mapped = TextBytes::mapFile(file.fd, size);
-  ASSERT_TRUE(mapped);
-  SourceFile src("cut.nc", std::move(*mapped));
-  ASSERT_EQ(::ftruncate(file.fd, static_cast<off_t>(TextBytes::kMapFrom)), 0);
-  const std::string_view text = src.text();
-  EXPECT_EQ(text[2 * TextBytes::kMapFrom], '\0');
-  EXPECT_EQ(text[size - 1], '\0');
-  EXPECT_EQ(text[10], file.text[10]);
-  EXPECT_EQ(text[TextBytes::kMapFrom - 1], file.text[TextBytes::kMapFrom - 1]);
-  EXPECT_TRUE(src.cutShort());
-  Diagnostics d;
-  const Program p = parseProgram(src, d);
-  EXPECT_FALSE(p.blocks.empty());
-  EXPECT_TRUE(d.hasErrors()) << "the zeros are not a program";
-}
-
-// The handler takes only the faults of mapped texts: any other SIGBUS stops the process as before.
-TEST(sourceDeathTest, a_sigbus_that_is_not_a_mapped_text_s_stops_the_process) {
-  const TempFile file(TextBytes::kMapFrom);
-  ASSERT_TRUE(TextBytes::mapFile(file.fd, TextBytes::kMapFrom));  // the handler is installed
-  // (Killed by SIGBUS, or under AddressSanitizer its report of a deadly signal.)
-  EXPECT_DEATH(std::raise(SIGBUS), "");
-}
-#endif
 
 // The text's hash (source.cpp) reads it in four lanes of 8 bytes, then 8 bytes, then the tail: a
 // change of one byte in any of them, and only a change, is seen when the text is read again.

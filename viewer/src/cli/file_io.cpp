@@ -71,8 +71,7 @@ std::optional<std::string> makeTemporary(const fs::path& dir, const fs::path& ta
 
 }  // namespace
 
-std::optional<converter::TextBytes> readProgramFile(const std::string& path, std::size_t maxBytes, std::string& error,
-                                                    bool mapLong) {
+std::optional<converter::TextBytes> readProgramFile(const std::string& path, std::size_t maxBytes, std::string& error) {
   auto throughText = [&]() -> std::optional<converter::TextBytes> {
     std::optional<std::string> text = readTextFile(path, maxBytes, error);
     if (!text) return std::nullopt;
@@ -93,13 +92,6 @@ std::optional<converter::TextBytes> readProgramFile(const std::string& path, std
     ::close(fd);
     error = "'" + path + "' is larger than " + std::to_string(maxBytes) + " bytes";
     return std::nullopt;
-  }
-  if (mapLong) {
-    if (std::optional<converter::TextBytes> mapped =
-            converter::TextBytes::mapFile(fd, static_cast<std::size_t>(size))) {
-      ::close(fd);
-      return mapped;
-    }
   }
   converter::TextBytes text = converter::TextBytes::ofSize(static_cast<std::size_t>(size));
   std::size_t got = 0;

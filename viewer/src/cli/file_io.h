@@ -28,8 +28,7 @@ std::optional<std::string> readTextFile(const std::string& path, std::size_t max
 /// readTextFile for a program: a regular file is read straight into the bytes a SourceFile keeps
 /// (converter::TextBytes: one copy from the system, on huge pages once long); anything else
 /// (standard input, a pipe, a device) goes through readTextFile.
-std::optional<converter::TextBytes> readProgramFile(const std::string& path, std::size_t maxBytes, std::string& error,
-                                                    bool mapLong = false);
+std::optional<converter::TextBytes> readProgramFile(const std::string& path, std::size_t maxBytes, std::string& error);
 
 /// The name a file is shown under: "<stdin>" for "-".
 std::string displayName(const std::string& path);

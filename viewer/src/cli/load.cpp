@@ -80,12 +80,8 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
       return readProgramFile(file, converter::SourceFile::kMaxSize, why);
     };
   }
-  // A text given back before the interpreter runs (rereadSource) is mapped, not copied, when long:
-  // it is read only while it is parsed, so the file may be cut short meanwhile only briefly, and
-  // that is said (K0115).
-  std::optional<converter::TextBytes> text =
-      curve ? std::optional<converter::TextBytes>(curveText(options.input))
-            : readProgramFile(file, converter::SourceFile::kMaxSize, failure, static_cast<bool>(po.rereadSource));
+  std::optional<converter::TextBytes> text = curve ? std::optional<converter::TextBytes>(curveText(options.input))
+                                                   : readProgramFile(file, converter::SourceFile::kMaxSize, failure);
   if (!text) return std::nullopt;
   std::optional<converter::SourceText> upper;
   if (options.input.upper) {
@@ -95,12 +91,6 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
     upper = converter::SourceText{*options.input.upper, std::move(*upperText)};
   }
   Loaded out{converter::runPipeline({curve ? file : displayName(file), std::move(*text)}, po, std::move(upper)), {}};
-  if (out.pipeline.source && out.pipeline.source->cutShort())
-    out.pipeline.diags.error(converter::Code::FileCutShort, out.pipeline.source.get(),
-                             converter::SourceSpan::wholeFile(),
-                             "the file was cut shorter while it was read: past its new end Kerf read zeros, not "
-                             "the program, and what it says of the program may not hold",
-                             "check the file again once nothing writes it");
   // Every command says what check says under the same -W options.
   if (!policy.empty()) out.pipeline.diags = out.pipeline.diags.under(policy);
   if (!out.pipeline.read) return out;

@@ -36,7 +36,6 @@ enum class Code : std::uint16_t {
   DecimalComma = 112,
   MacroStatement = 113,
   BlockTooLong = 114,
-  FileCutShort = 115,
   ThreeBSyntax = 120,
   DxfSyntax = 121,
   DxfEntity = 122,

@@ -42,44 +42,17 @@ class TextBytes {
   TextBytes(std::string_view text);  // NOLINT: implicit, as a string converts to a view
   TextBytes(const std::string& text) : TextBytes(std::string_view(text)) {}  // NOLINT
   TextBytes(const char* text) : TextBytes(std::string_view(text)) {}         // NOLINT
-  TextBytes(const TextBytes& other);  ///< a mapped text's copy is bytes of its own
-  TextBytes& operator=(const TextBytes& other);
-  TextBytes(TextBytes&& other) noexcept;
-  TextBytes& operator=(TextBytes&& other) noexcept;
-  ~TextBytes();
   /// n bytes for the caller to write through data() before any is read.
   static TextBytes ofSize(std::size_t n);
-  /// The first `size` bytes of the regular file open as fd, mapped from the system's cache of the
-  /// file instead of copied into fresh memory (6 MB: 0.55-1.0 ms for the mapping against 1.2-1.6
-  /// for read(2), and no 2 MiB pages of the process's own to fault in). Nothing (the caller reads the
-  /// file) where it is not worth it (under kMapFrom bytes) or cannot be done: not Linux, the file
-  /// grew or shrank meanwhile, no room. The file is not to be written while mapped: a file cut
-  /// shorter reads as zeros from the first page it no longer has (the fault that would stop the
-  /// process, SIGBUS, is caught for the mapping's pages alone), and cutShort() says so.
-  static std::optional<TextBytes> mapFile(int fd, std::size_t size);
-  /// Files from this size on are worth mapping (a smaller one is read).
-  static constexpr std::size_t kMapFrom = std::size_t{1} << 20;
-  /// The text is a mapping (mapFile).
-  [[nodiscard]] bool mapped() const { return map_ != nullptr; }
-  /// The mapped file was cut shorter while mapped, and what it no longer holds reads as zeros.
-  [[nodiscard]] bool cutShort() const;
-  /// The bytes; a mapped text's are not to be written.
-  [[nodiscard]] char* data() { return map_ ? map_ : bytes_.data(); }
-  [[nodiscard]] const char* data() const { return map_ ? map_ : bytes_.data(); }
-  /// 0 for one moved from (its bytes went, NUL and all).
-  [[nodiscard]] std::size_t size() const { return map_ ? mapSize_ : bytes_.empty() ? 0 : bytes_.size() - 1; }
-  [[nodiscard]] std::string_view view() const { return {data(), size()}; }
+  [[nodiscard]] char* data() { return bytes_.data(); }
+  [[nodiscard]] const char* data() const { return bytes_.data(); }
+  [[nodiscard]] std::size_t size() const { return bytes_.size() - 1; }
+  [[nodiscard]] std::string_view view() const { return {bytes_.data(), size()}; }
   /// Keeps the first n bytes (n <= size()).
   void shrink(std::size_t n);
 
  private:
-  void unmap() noexcept;
-
   std::vector<char, geometry::FillLaterAllocator<char>> bytes_;
-  char* map_ = nullptr;        // a mapping: the file's whole pages, then its last bytes copied, a NUL
-  std::size_t mapSize_ = 0;    // the text's bytes
-  std::size_t mapLength_ = 0;  // the mapping's
-  int slot_ = -1;              // its entry in the table the SIGBUS handler reads
 };
 
 class SourceFile {
@@ -113,9 +86,6 @@ class SourceFile {
   [[nodiscard]] bool released() const { return released_; }
   /// The text was read again after releaseText() and the file had changed.
   [[nodiscard]] bool changedOnDisk() const { return changed_; }
-  /// The file was cut shorter while its text was mapped (TextBytes::cutShort): what was read past
-  /// its new end was zeros, not the program.
-  [[nodiscard]] bool cutShort() const { return cutShort_ || text_.cutShort(); }
 
  private:
   std::string name_;
@@ -132,7 +102,6 @@ class SourceFile {
   std::uint64_t hash_ = 0;
   mutable bool released_ = false;
   mutable bool changed_ = false;
-  bool cutShort_ = false;
 };
 
 }  // namespace kerf::converter

@@ -7,8 +7,8 @@
 //           5. the whole text: byte-order mark, lines, '%' frame
 #include "kerf/converter/program.h"
 #include "kerf/geometry/memory.h"
-
 #include "kerf/geometry/parallel.h"
+#include "kerf/geometry/phase_times.h"
 
 #include <algorithm>
 #include <array>
@@ -1098,6 +1098,7 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
   });
   // A part never has more blocks than lines here; were it to, its blocks past its slots were not
   // written (LineParser::finish), and the parse fails rather than lose them.
+  geometry::markPhase("parse: parts");
   auto checkRoom = [&](std::size_t k) {
     if (inPlace && read[k].blocks > roomOf(k)) throw std::logic_error("parseProgram: more blocks than lines in a part");
   };
@@ -1122,6 +1123,7 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
     whole.macros.add(read[k].macros);
   }
   if (inPlace) program.blocks.resize(blocks);  // the parts' slots past the last block go
+  geometry::markPhase("parse: joined");
   reportMacroStatements(whole.macros, source, diags);
   return program;
 }

@@ -2,6 +2,7 @@
 #include "kerf/converter/pipeline.h"
 
 #include "kerf/geometry/parallel.h"
+#include "kerf/geometry/phase_times.h"
 
 #include "kerf/converter/analysis.h"
 #include "kerf/converter/curve.h"
@@ -70,7 +71,9 @@ void releaseSource(Pipeline& out, const PipelineOptions& options) {
 
 /// The summary, when the caller asked for one.
 void summarizeInto(Pipeline& out, const PipelineOptions& options) {
+  geometry::markPhase("summary: start");
   if (options.summarize) out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
+  geometry::markPhase("summary");
 }
 
 /// The checks, with the machine's limits unless the user gave others, then the summary (it reads
@@ -238,6 +241,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   const geometry::ParallelScope threads;  // parallelFor keeps its threads for the whole reading
   Pipeline out;
   out.source = std::make_unique<SourceFile>(std::move(input.name), std::move(input.text));
+  geometry::markPhase("line starts");
   const ReadOptions& ro = options.read;
 
   // 1. The machine profile: a file, a name, or (after parsing) the evidence.
@@ -272,6 +276,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   }
 
   MachineReading reading = readForMachine(*out.source, given, ro.upperAxesUZ);
+  geometry::markPhase("machine detected");
   // The parse tree lives only while the program is interpreted: nothing after needs it (the
   // source and the toolpath say everything), and the checks then run without its memory.
   Program program = std::move(reading.program);
@@ -382,7 +387,9 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},  // where a program would start
                     "the file holds no program (no block of words): nothing to cut");
   program = Program{};
+  geometry::markPhase("parse tree freed");
   runChecks(out, options);
+  geometry::markPhase("checks and summary");
   return out;
 }
 

@@ -59,6 +59,20 @@ SurfaceMeasures measureSurface(const Toolpath& toolpath) {
 
 namespace {
 
+/// box.add(s.bounds()) without the arc's angles where its whole circle lies inside the box with
+/// its end points (nearly every arc of a long program): its extremes, points of that circle, would
+/// not move the box. The same box, bit for bit: an extreme is (c.x +- r, c.y + 0) or (c.x, c.y +- r).
+void addBounds(geometry::Box& box, const geometry::Segment& s) {
+  box.add(s.start);
+  box.add(s.end);
+  if (!s.isArc()) return;
+  const geometry::Vec2& c = s.centre;
+  if (c.x() + s.radius <= box.max.x() && c.x() - s.radius >= box.min.x() && c.y() + s.radius <= box.max.y() &&
+      c.y() - s.radius >= box.min.y())
+    return;
+  box.add(s.bounds());
+}
+
 TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) {
   constexpr double kDegrees = 180.0 / geometry::kPi;
   TaperSummary t;
@@ -128,7 +142,7 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
           ++part.lines;
         if (s.taperProgram) ++(toolpath.upper[i].isArc() ? part.upperArcs : part.upperLines);
         part.cutLength += m.lower.length();
-        part.bounds.add(m.lower.bounds());
+        addBounds(part.bounds, m.lower);
         part.sampler.add(m.lower);
       }
     }

@@ -8,6 +8,7 @@
 #include "kerf/geometry/float_steps.h"
 #include "kerf/geometry/memory.h"
 #include "kerf/geometry/parallel.h"
+#include "kerf/geometry/phase_times.h"
 
 #include <algorithm>
 #include <array>
@@ -845,6 +846,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     dead += e.dead;
   }
   std::vector<Extent>().swap(extents);
+  markPhase("sweep: extents");
   const auto live = static_cast<std::uint32_t>(n - dead);
   if (dead > 0) {
     ranks.assign(n, kDead);
@@ -863,6 +865,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
         if (isLive(i)) byMinX.push_back({LooseBox::below(path[i].bounds().min.x()), static_cast<std::uint32_t>(i)});
     }
     if (!sorted) sortByX(byMinX);  // byMinX comes in the order of the segments
+    markPhase("sweep: sorted");
     sorted = true;
   };
   auto isForward = [&](std::size_t i, std::size_t j) {
@@ -980,6 +983,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
       active.resize(w);
       active.push_back({box, idx});
     }
+    markPhase("sweep: swept");
     if (flush()) return r;
     std::sort(r.contacts.begin(), r.contacts.end(), byPair);
     return r;

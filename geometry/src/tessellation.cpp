@@ -27,6 +27,9 @@ struct ChordPlan {
   std::size_t full = 0;
   double span = 0.0;
   double rest = 0.0;
+  /// sin(span / 2) when the span is a chord's of length k (span = 2 asin(k / 2r)): k / 2r, of
+  /// which the chord's errors need the cosine only as sqrt(1 - sin^2); 0 otherwise.
+  double sinHalf = 0.0;
 };
 
 ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
@@ -34,6 +37,7 @@ ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
   ChordPlan plan;
   if (sampling.mode == SamplingMode::Step) {
     plan.span = stepAngle(sampling.value, arc.radius);
+    if (sampling.value < 2 * arc.radius) plan.sinHalf = sampling.value / (2 * arc.radius);
     // A remainder smaller than 1e-9 of a step is rounding noise, not a chord.
     const double q = sweep / plan.span;
     const double whole = std::floor(q + 1e-9);
@@ -78,6 +82,14 @@ ChordError chordError(double r, double span) {
   return {r * (1 - cosHalf), meanRelativeError(span, cosHalf, sinHalf)};
 }
 
+/// chordError of a chord whose half angle's sine is known (ChordPlan::sinHalf): its cosine is
+/// sqrt((1 - s)(1 + s)), within a unit of the last place of cos(asin s), without the sine and
+/// cosine calls (one call of the summary's four on an arc, a fifth of its time).
+ChordError chordErrorOfSine(double r, double span, double sinHalf) {
+  const double cosHalf = std::sqrt((1 - sinHalf) * (1 + sinHalf));
+  return {r * (1 - cosHalf), meanRelativeError(span, cosHalf, sinHalf)};
+}
+
 }  // namespace
 
 double chordMeanRelativeError(double span) { return meanRelativeError(span, std::cos(span / 2), std::sin(span / 2)); }
@@ -110,7 +122,8 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
   const double sweep = std::abs(seg.sweep);
   double weighted = 0.0;
   if (plan.full > 0) {
-    const ChordError e = chordError(seg.radius, plan.span);
+    const ChordError e =
+        plan.sinHalf > 0 ? chordErrorOfSine(seg.radius, plan.span, plan.sinHalf) : chordError(seg.radius, plan.span);
     stats.maxDeviation = e.sagitta;
     weighted += static_cast<double>(plan.full) * plan.span * e.meanRelative;
   }

@@ -1,7 +1,9 @@
 # The dependency direction of the design (README: layout), checked on the sources:
 #  - geometry includes only its own headers, Eigen and the standard library; the one exception is
 #    geometry/src/memory.cpp, which maps the pages of large arrays itself (Linux mmap and madvise,
-#    behind #if defined(__linux__)): the system's memory calls, no library;
+#    behind #if defined(__linux__)): the system's memory calls, no library; and
+#    geometry/src/phase_times.cpp, which reads the process's page faults (getrusage, behind
+#    #if defined(__unix__));
 #  - converter includes no viewer, window or GL header;
 #  - libraries never touch the process: no printing to the terminal, no exit(), no opening files.
 #   cmake -DSOURCE=<repo> -P check_layering.cmake
@@ -12,6 +14,9 @@ foreach(f IN LISTS geometry_files)
   file(STRINGS "${f}" includes REGEX "^#include")
   foreach(inc IN LISTS includes)
     if(f MATCHES "/geometry/src/memory\\.cpp$" AND inc MATCHES "^#include <(sys/mman|unistd)\\.h>$")
+      continue()
+    endif()
+    if(f MATCHES "/geometry/src/phase_times\\.cpp$" AND inc MATCHES "^#include <sys/resource\\.h>$")
       continue()
     endif()
     if(NOT inc MATCHES "^#include (\"kerf/geometry/|\"[a-z_]+\\.h\"|<Eigen/|<unsupported/Eigen/|<[a-z_]+>)")

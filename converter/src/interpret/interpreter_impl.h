@@ -240,6 +240,9 @@ class Interpreter {
   ArcCentreTally tally_;
   bool released_ = false;  // releaseParsedBefore was called
   std::size_t blocksInWindows_ = 0;
+  /// The moves the windows made, [begin, end) in order: their arcs have their angles already, so the
+  /// pass that completes deferred angles skips them (a window's moves are never written again).
+  std::vector<std::pair<std::size_t, std::size_t>> windowMoves_;
 
   // Modal state (the interpreter's "settings").
   Dialect dialect_ = Dialect::Plain;

@@ -3,6 +3,7 @@
 #include "interpreter_impl.h"
 
 #include "kerf/geometry/parallel.h"
+#include "kerf/geometry/phase_times.h"
 
 #include "kerf/converter/dialect.h"
 #include "kerf/geometry/memory.h"
@@ -67,6 +68,7 @@ Interpretation Interpreter::run() {
   for (const Setting& s : program_.settings) toolpath_.settings.push_back(s);
   toolpath_.blocks = program_.blocks.size();
   warnIntegerUnit();
+  geometry::markPhase("interpreter: set up");
   const bool release = straight && options_.releaseParsed;
   std::size_t pc = 0;
   const std::size_t n = program_.blocks.size();
@@ -124,13 +126,23 @@ Interpretation Interpreter::run() {
   flushUnknown(nullptr);
   if (!toolpath_.endedProperly && !diags_.hasErrors() && n > 0)
     diags_.warning(Code::MissingProgramEnd, src_, program_.blocks.back().span(), "program ends without M02 or M30");
-  if (anglesDeferred_) {  // each arc's own: on every core
+  geometry::markPhase("interpreter: blocks");
+  if (anglesDeferred_) {  // each arc's own, on every core: the block loop's moves (the windows' have theirs)
     MoveList& moves = toolpath_.moves;
-    geometry::parallelFor(moves.size(), 8192, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i)
-        if (moves[i].lower.anglesPending()) moves[i].lower.completeAngles();
-    });
+    std::vector<std::pair<std::size_t, std::size_t>> loopMoves;  // the ranges between the windows' moves
+    std::size_t from = 0;
+    for (const auto& [begin, end] : windowMoves_) {
+      if (begin > from) loopMoves.emplace_back(from, begin);
+      from = std::max(from, end);
+    }
+    if (moves.size() > from) loopMoves.emplace_back(from, moves.size());
+    for (const auto& [first, last] : loopMoves)
+      geometry::parallelFor(last - first, 8192, [&, first = first](std::size_t begin, std::size_t end) {
+        for (std::size_t i = first + begin; i < first + end; ++i)
+          if (moves[i].lower.anglesPending()) moves[i].lower.completeAngles();
+      });
   }
+  geometry::markPhase("interpreter: arc angles");
   resolveHeights();
   if (dialect_ == Dialect::XyuvRel) resolveRel();
   if (dialect_ == Dialect::TaperAngle) resolveTaperAngle();

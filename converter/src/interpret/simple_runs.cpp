@@ -226,6 +226,10 @@ bool Interpreter::runSimpleWindow(std::size_t begin, std::size_t end) {
     }
   toolpath_.moves.resize(kept);
   if (record) words.resize(kept);
+  if (!windowMoves_.empty() && windowMoves_.back().second == base)
+    windowMoves_.back().second = kept;
+  else
+    windowMoves_.emplace_back(base, kept);
   for (const SimpleStretch& r : results) {
     tally_.arcs += r.tally.arcs;
     for (int k = 0; k < 3; ++k) tally_.closes[k] += r.tally.closes[k];

@@ -1,5 +1,7 @@
 #include "file_io.h"
 
+#include "kerf/geometry/phase_times.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -93,6 +95,7 @@ std::optional<converter::TextBytes> readProgramFile(const std::string& path, std
     error = "'" + path + "' is larger than " + std::to_string(maxBytes) + " bytes";
     return std::nullopt;
   }
+  kerf::geometry::markPhase("file opened");
   converter::TextBytes text = converter::TextBytes::ofSize(static_cast<std::size_t>(size));
   std::size_t got = 0;
   bool failed = false;
@@ -113,6 +116,7 @@ std::optional<converter::TextBytes> readProgramFile(const std::string& path, std
     failed = extra < 0;
   }
   ::close(fd);
+  kerf::geometry::markPhase("file read");
   if (failed) {
     error = "error reading '" + path + "'";
     return std::nullopt;

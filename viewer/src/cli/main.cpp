@@ -5,14 +5,27 @@
 #include "file_io.h"
 #include "load.h"
 
+#include "kerf/geometry/phase_times.h"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <functional>
+#include <iostream>
 #include <iterator>
+#include <string>
 #include <string_view>
 
 int main(int argc, char** argv) {
+  // KERF_PHASE_TIMES=1: where the time went, on standard error at the end (docs/interpreter.md).
+  const char* phaseTimes = std::getenv("KERF_PHASE_TIMES");
+  const bool timed = phaseTimes && *phaseTimes && std::string_view(phaseTimes) != "0";
+  if (timed) {
+    kerf::geometry::enablePhaseTimes();
+    kerf::geometry::markPhase("main");
+  }
   using namespace kerf::cli;
   CLI::App app{"Kerf: verify, explain and convert wire-EDM NC programs"};
   app.name("kerf");  // the help's usage line, whatever path the program was started by
@@ -71,10 +84,21 @@ int main(int argc, char** argv) {
   int code = kExitUsage;
   for (const Command& c : commands)
     if (c.app && *c.app) code = c.run();
+  kerf::geometry::markPhase("command");
   // Output lost on the way (a full disk, a closed pipe) is a failure, whatever the verdict.
   if (std::string error; !finishStandardOutput(error)) {
     reportError(error);
     code = std::max(code, kExitUsage);
+  }
+  if (timed) {
+    std::string report =
+        "kerf: phase times (ms since main, page faults so far; a phase's figure is taken where it ends)\n";
+    char line[160];
+    for (const kerf::geometry::PhaseMark& m : kerf::geometry::phaseMarks()) {
+      std::snprintf(line, sizeof line, "%10.3f %8ld  %s\n", m.ms, m.minorFaults, m.what);
+      report += line;
+    }
+    std::cerr << report;
   }
   return code;
 }

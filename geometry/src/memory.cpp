@@ -182,8 +182,10 @@ class PagePool {
   /// Moves the page at p to a slot of its own, leaving p mapped as fresh memory that reads as
   /// zeros (MREMAP_DONTUNMAP, Linux 5.7): the block it was in never has a hole, whether it is still
   /// in use or about to be freed. False, nothing changed, where that cannot be done.
+  /// A page at least a quarter written is parked: in small pages (memory.h) a 2 MiB unit is often
+  /// written only in part where a text or an array ends, and what it holds is in memory all the same.
   bool park(std::uintptr_t p) {
-    if (parked_.size() >= kMostParked || residentPages(p) != kHuge / page_) return false;
+    if (parked_.size() >= kMostParked || residentPages(p) * 4 < kHuge / page_) return false;
     const std::uintptr_t slot = mapAligned(kHuge, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE);
     if (slot == 0) return false;
     if (mremap(reinterpret_cast<void*>(p), kHuge, kHuge, MREMAP_MAYMOVE | MREMAP_FIXED | MREMAP_DONTUNMAP,
@@ -261,7 +263,12 @@ void* allocateLarge(std::size_t bytes) {
   if (size < bytes || size + kHuge < size) throw std::bad_alloc();
   const std::uintptr_t from = mapAligned(size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS);
   if (from == 0) throw std::bad_alloc();
-  (void)madvise(reinterpret_cast<void*>(from), size, MADV_HUGEPAGE);
+  // Huge pages only when asked for (memory.h: a cold one costs as much as 13 MiB of small ones).
+  static const bool huge = [] {
+    const char* env = std::getenv("KERF_HUGE_PAGES");
+    return env && std::strcmp(env, "1") == 0;
+  }();
+  if (huge) (void)madvise(reinterpret_cast<void*>(from), size, MADV_HUGEPAGE);
 #if defined(KERF_PAGE_POOL)
   if (PagePool* pool = PagePool::get()) {
     try {

@@ -2,6 +2,7 @@
 // pages given back; a large block starts on a 2 MiB page of its own where the pages are ours.
 #include "kerf/geometry/memory.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -166,6 +167,32 @@ TEST(memory, given_back_pages_read_as_zeros_and_are_adopted_where_a_block_writes
   for (std::size_t k = 0; k < w.size(); k += 1021) ASSERT_EQ(w[k], k);
 }
 
+// In small pages (the default: KERF_HUGE_PAGES unset), a 2 MiB page written in part, as where a
+// text or an array ends, is parked when at least a quarter of it is written, and carries what was
+// written; less is given to the system.
+TEST(memory, a_page_written_in_part_is_parked_from_a_quarter_on) {
+  if (!poolOn()) GTEST_SKIP() << "the pages are not Kerf's own here (AddressSanitizer, or KERF_PAGE_POOL=0)";
+  const char* huge = std::getenv("KERF_HUGE_PAGES");
+  if (huge && std::strcmp(huge, "1") == 0) GTEST_SKIP() << "in huge pages a page is written whole or not at all";
+  const Drained drained;
+  const auto words = kHugePage / 8;
+  const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  auto* a = static_cast<std::uint64_t*>(allocateLarge(2 * kHugePage));
+  for (std::size_t k = 0; k < words / 2; ++k) a[k] = value(k);  // half of the first page
+  a[words] = 1;                                                   // a few bytes of the second
+  ASSERT_EQ(residentIn(a), kHugePage / page / 2);
+  ASSERT_EQ(residentIn(a + words), 1u);
+  const std::size_t before = parkedPages();
+  freeLarge(a, 2 * kHugePage);
+  EXPECT_EQ(parkedPages(), before + 1) << "the half-written page parked, the nearly empty one not";
+  auto* b = static_cast<std::uint64_t*>(allocateLarge(kHugePage));
+  EXPECT_EQ(parkedPages(), before);
+  EXPECT_EQ(residentIn(b), kHugePage / page / 2) << "the parked page's written half came with it";
+  for (std::size_t k = 0; k < words; ++k) b[k] = ~value(k);
+  for (std::size_t k = 0; k < words; k += 1021) ASSERT_EQ(b[k], ~value(k));
+  freeLarge(b, kHugePage);
+}
+
 // movePages moves whole pages between Kerf's blocks without copying: the bytes arrive, the place
 // they left reads as zeros, and a page already at the target is parked rather than lost. It
 // refuses (nothing moved) what it cannot do: unaligned places, overlapping ranges, memory that is
@@ -180,7 +207,9 @@ TEST(memory, pages_move_between_blocks_whole_and_the_place_they_left_reads_as_ze
   to.reserve(6 * words);
   to.resize(words / 2);
   for (std::size_t k = 0; k < to.size(); ++k) to[k] = ~value(k);
-  to.data()[3 * words] = 5;  // a page at the target already written: parked, not dropped
+  // A page at the target already written: parked, not dropped (written whole: in small pages a
+  // 2 MiB page written in a quarter or less is given to the system instead).
+  std::fill_n(to.data() + 3 * words, words, std::uint64_t{5});
   const std::size_t parked = parkedPages();
   ASSERT_TRUE(movePages(to.data() + 2 * words, from.data(), from.size() * 8));
   EXPECT_EQ(parkedPages(), parked + 1);

@@ -13,6 +13,13 @@
 // per MiB instead of 0.1: pages a long program's text, parse and arrays are done with are moved
 // (mremap) into the arrays filled after them (adoptPages), not given to the system and faulted in
 // again. kerf check of a 6 MB program faulted 30 huge pages, with this 17.
+//
+// Since 2026-11-26 the blocks are not advised huge unless KERF_HUGE_PAGES=1: which huge pages come
+// back from the host cold is a draw (the first few a run takes are usually warm, the rest cold at
+// 4.3-6.6 ms each), so kerf check of the 6 MB program took 38-114 ms between runs of rs274, median
+// 62-64; in small pages, whose cost (about 0.33 ms per MiB) does not depend on the host, 45-72 ms,
+// median 55-56 (41 rounds each way, twice; docs/interpreter.md, "Fresh pages"). The blocks keep
+// their 2 MiB alignment and whole 2 MiB units, so that the pool moves the same units either way.
 #pragma once
 
 #include <cstddef>
@@ -49,11 +56,11 @@ bool movePages(void* to, void* from, std::size_t bytes);
 
 /// From this size on LargeAllocator maps whole 2 MiB pages of its own (smaller blocks come from
 /// operator new). A block is rounded up to whole 2 MiB pages: at most 2 MiB more, only in address
-/// space until touched, and one huge page costs less than the 256 small ones it replaces.
+/// space until touched.
 inline constexpr std::size_t kLargeBlock = std::size_t{1} << 20;
 
-/// bytes from fresh 2 MiB-aligned pages advised huge (at least kLargeBlock), else operator new;
-/// throws std::bad_alloc when the system has no memory for it.
+/// bytes from fresh 2 MiB-aligned pages (at least kLargeBlock; advised huge with
+/// KERF_HUGE_PAGES=1), else operator new; throws std::bad_alloc when the system has no memory for it.
 void* allocateLarge(std::size_t bytes);
 /// Frees what allocateLarge(bytes) gave, with the same bytes.
 void freeLarge(void* p, std::size_t bytes) noexcept;

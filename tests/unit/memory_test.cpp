@@ -2,9 +2,9 @@
 // pages given back; a large block starts on a 2 MiB page of its own where the pages are ours.
 #include "kerf/geometry/memory.h"
 
-#include <algorithm>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -179,7 +179,7 @@ TEST(memory, a_page_written_in_part_is_parked_from_a_quarter_on) {
   const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
   auto* a = static_cast<std::uint64_t*>(allocateLarge(2 * kHugePage));
   for (std::size_t k = 0; k < words / 2; ++k) a[k] = value(k);  // half of the first page
-  a[words] = 1;                                                   // a few bytes of the second
+  a[words] = 1;                                                 // a few bytes of the second
   ASSERT_EQ(residentIn(a), kHugePage / page / 2);
   ASSERT_EQ(residentIn(a + words), 1u);
   const std::size_t before = parkedPages();

@@ -197,6 +197,42 @@ TEST(interpreter, rapid_moves_are_not_cut) {
   EXPECT_TRUE(r->path().moves[1].isCut());
 }
 
+// The summary's box is the union of the cut moves' own boxes, bit for bit: arcs whose circle lies
+// inside the box so far skip the test of their extremes, arcs that bulge past it do not.
+TEST(interpreter, summary_bounds_are_the_union_of_the_moves_boxes) {
+  // End points on a 30 mm square, and four half circles that each bulge 5 mm past one of its
+  // sides alone (clockwise: left, top, right, bottom), then small arcs well inside it.
+  std::string program = "G90 G21 G92 X0 Y0\nG01 X30. Y0\nX30. Y30.\nX0 Y30.\nX0 Y10.\n";
+  program += "G02 X0 Y20. R5.\nG01 X10. Y30.\nG02 X20. Y30. R5.\nG01 X30. Y20.\nG02 X30. Y10. R5.\n";
+  program += "G01 X20. Y0\nG02 X10. Y0 R5.\nG01 X15. Y15.\n";
+  for (int k = 0; k < 40; ++k)
+    program += std::string(k % 2 ? "G02" : "G03") + " X" + std::to_string(15.1 + 0.1 * k) + " Y" +
+               std::to_string(15.0 + 0.05 * (k % 3)) + " R0.3\n";
+  program += "M02\n";
+  auto r = run(program);
+  ASSERT_FALSE(r->diags.hasErrors()) << kerf::test::dump(r->diags);
+  kerf::geometry::Box expected, ends;
+  std::size_t arcs = 0;
+  for (const Move& m : r->path().moves)
+    if (m.isCut()) {
+      expected.add(m.lower.bounds());
+      ends.add(m.lower.start);
+      ends.add(m.lower.end);
+      arcs += m.lower.isArc();
+    }
+  ASSERT_EQ(arcs, 44u);
+  const Summary s = summarize(r->path(), kerf::geometry::Sampling::step(0.1));
+  EXPECT_EQ(s.bounds.min.x(), expected.min.x());
+  EXPECT_EQ(s.bounds.min.y(), expected.min.y());
+  EXPECT_EQ(s.bounds.max.x(), expected.max.x());
+  EXPECT_EQ(s.bounds.max.y(), expected.max.y());
+  // Each side was moved by its half circle's extreme, not by an end point.
+  EXPECT_DOUBLE_EQ(s.bounds.min.x(), ends.min.x() - 5.0);
+  EXPECT_DOUBLE_EQ(s.bounds.min.y(), ends.min.y() - 5.0);
+  EXPECT_DOUBLE_EQ(s.bounds.max.x(), ends.max.x() + 5.0);
+  EXPECT_DOUBLE_EQ(s.bounds.max.y(), ends.max.y() + 5.0);
+}
+
 TEST(interpreter, every_move_keeps_its_block_span) {
   auto r = run("G01 X1.\n\n  G02 X2. Y1. R1.\nM02\n");
   ASSERT_EQ(r->path().moves.size(), 2u);

@@ -117,6 +117,41 @@ TextBytes::TextBytes(std::string_view text) {
   bytes_.push_back('\0');
 }
 
+TextBytes::TextBytes(TextBytes&& other) noexcept
+    : bytes_(std::move(other.bytes_)),
+      kept_(other.kept_),
+      keptSize_(other.keptSize_),
+      keeper_(std::move(other.keeper_)) {
+  other = TextBytes();
+}
+
+TextBytes& TextBytes::operator=(const TextBytes& other) {
+  if (this != &other) *this = TextBytes(other.view());
+  return *this;
+}
+
+TextBytes& TextBytes::operator=(TextBytes&& other) noexcept {
+  if (this == &other) return *this;
+  bytes_ = std::move(other.bytes_);
+  kept_ = other.kept_;
+  keptSize_ = other.keptSize_;
+  keeper_ = std::move(other.keeper_);
+  // What was moved from is empty text again (a vector moved from holds nothing, not even the NUL).
+  other.bytes_.assign(1, '\0');
+  other.kept_ = nullptr;
+  other.keptSize_ = 0;
+  return *this;
+}
+
+TextBytes TextBytes::kept(const char* at, std::size_t n, std::unique_ptr<TextKeeper> keeper) {
+  TextBytes t;
+  if (!keeper) return TextBytes(std::string_view(at, n));
+  t.kept_ = at;
+  t.keptSize_ = n;
+  t.keeper_ = std::move(keeper);
+  return t;
+}
+
 TextBytes TextBytes::ofSize(std::size_t n) {
   TextBytes t;
   t.bytes_.resize(n + 1);  // left for the caller (FillLaterAllocator), but for the NUL after them
@@ -126,6 +161,10 @@ TextBytes TextBytes::ofSize(std::size_t n) {
 
 void TextBytes::shrink(std::size_t n) {
   if (n >= size()) return;
+  if (keeper_) {  // kept bytes are read only: the first n are copied
+    *this = TextBytes(std::string_view(kept_, n));
+    return;
+  }
   bytes_.resize(n + 1);
   bytes_[n] = '\0';
 }
@@ -137,10 +176,16 @@ SourceFile::SourceFile(std::string name, TextBytes text)
   const std::size_t size = text_.size();
   if (std::memchr(data, '\r', size) == nullptr) {  // LF only: the fast way
     // The starts are counted first, so the list is made at its size once, then written.
+    // Kept bytes (a mapped file) can change between the two passes when the file is written
+    // meanwhile: the second never writes past what the first counted.
     const std::size_t count = countFeeds(data, size);
     lineStarts_.resize(count + 1);
     std::uint32_t* out = lineStarts_.data() + 1;
-    forEachFeed(data, size, [&](std::size_t at) { *out++ = static_cast<std::uint32_t>(at + 1); });
+    std::uint32_t* const last = lineStarts_.data() + lineStarts_.size();
+    forEachFeed(data, size, [&](std::size_t at) {
+      if (out != last) *out++ = static_cast<std::uint32_t>(at + 1);
+    });
+    while (out != last) *out++ = static_cast<std::uint32_t>(size);  // feeds gone meanwhile: empty lines at the end
     return;
   }
   for (std::size_t i = 0; i < size; ++i) {
@@ -170,8 +215,8 @@ void SourceFile::reload() const {
     // Changed: blank lines of the old lengths keep every position valid.
     changed_ = true;
     again = TextBytes::ofSize(size_);
-    std::fill_n(again->data(), size_, ' ');
-    for (std::size_t k = 1; k < lineStarts_.size(); ++k) again->data()[lineStarts_[k] - 1] = '\n';
+    std::fill_n(again->writable(), size_, ' ');
+    for (std::size_t k = 1; k < lineStarts_.size(); ++k) again->writable()[lineStarts_[k] - 1] = '\n';
   }
   text_ = std::move(*again);  // not a copy: the text may be as long as the file may be
 }

@@ -508,7 +508,7 @@ TEST(source, text_bytes_written_in_place_read_as_the_same_text) {
   EXPECT_EQ(copied.view(), text);
   EXPECT_EQ(copied.data()[copied.size()], '\0');
   TextBytes written = TextBytes::ofSize(text.size() + 5);
-  std::copy(text.begin(), text.end(), written.data());
+  std::copy(text.begin(), text.end(), written.writable());
   written.shrink(text.size());  // the file was shorter than its size said
   EXPECT_EQ(written.view(), text);
   EXPECT_EQ(written.data()[written.size()], '\0');

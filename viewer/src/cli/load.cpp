@@ -5,10 +5,12 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string_view>
 
 namespace kerf::cli {
@@ -80,17 +82,26 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
       return readProgramFile(file, converter::SourceFile::kMaxSize, why);
     };
   }
-  std::optional<converter::TextBytes> text = curve ? std::optional<converter::TextBytes>(curveText(options.input))
-                                                   : readProgramFile(file, converter::SourceFile::kMaxSize, failure);
+  // A mapped file cut short while it was read (file_io.h) was read as zeros past the cut.
+  std::shared_ptr<const std::atomic<bool>> cut, upperCut;
+  std::optional<converter::TextBytes> text =
+      curve ? std::optional<converter::TextBytes>(curveText(options.input))
+            : readProgramFile(file, converter::SourceFile::kMaxSize, failure, &cut);
   if (!text) return std::nullopt;
   std::optional<converter::SourceText> upper;
   if (options.input.upper) {
     std::optional<converter::TextBytes> upperText =
-        readProgramFile(*options.input.upper, converter::SourceFile::kMaxSize, failure);
+        readProgramFile(*options.input.upper, converter::SourceFile::kMaxSize, failure, &upperCut);
     if (!upperText) return std::nullopt;
     upper = converter::SourceText{*options.input.upper, std::move(*upperText)};
   }
   Loaded out{converter::runPipeline({curve ? file : displayName(file), std::move(*text)}, po, std::move(upper)), {}};
+  const bool upperCutShort = upperCut && upperCut->load();
+  if ((cut && cut->load()) || upperCutShort) {
+    failure = "'" + (upperCutShort ? *options.input.upper : file) +
+              "' was cut short while it was read: it changed under the check, which says nothing of it";
+    return std::nullopt;
+  }
   // Every command says what check says under the same -W options.
   if (!policy.empty()) out.pipeline.diags = out.pipeline.diags.under(policy);
   if (!out.pipeline.read) return out;

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,27 +33,47 @@ struct SourceLocation {
   std::uint32_t column = 0;  ///< 1-based, in bytes
 };
 
+/// Bytes a TextBytes reads where someone else keeps them (a file mapped into memory, see
+/// kept()): given back when it is destroyed.
+class TextKeeper {
+ public:
+  virtual ~TextKeeper() = default;
+};
+
 /// A text's bytes as a SourceFile keeps them. A long one lies on whole 2 MiB pages of its own
-/// (geometry::LargeAllocator), and a reader can fill it where it lies (ofSize, data) instead of
-/// through a string: one copy from the system, no bytes cleared first. A NUL byte follows the last,
-/// as in a std::string. Made implicitly from a string, which it copies.
+/// (geometry::LargeAllocator), and a reader can fill it where it lies (ofSize, writable) instead of
+/// through a string: one copy from the system, no bytes cleared first. Or the bytes are kept
+/// elsewhere (kept(): a file mapped read-only, no copy at all). A NUL byte follows the last, as in
+/// a std::string. Made implicitly from a string, which it copies; a copy of kept bytes is its own.
 class TextBytes {
  public:
   TextBytes() : bytes_(1, '\0') {}
   TextBytes(std::string_view text);  // NOLINT: implicit, as a string converts to a view
   TextBytes(const std::string& text) : TextBytes(std::string_view(text)) {}  // NOLINT
   TextBytes(const char* text) : TextBytes(std::string_view(text)) {}         // NOLINT
-  /// n bytes for the caller to write through data() before any is read.
+  TextBytes(const TextBytes& other) : TextBytes(other.view()) {}
+  TextBytes(TextBytes&& other) noexcept;
+  TextBytes& operator=(const TextBytes& other);
+  TextBytes& operator=(TextBytes&& other) noexcept;
+  ~TextBytes() = default;
+  /// n bytes for the caller to write through writable() before any is read.
   static TextBytes ofSize(std::size_t n);
-  [[nodiscard]] char* data() { return bytes_.data(); }
-  [[nodiscard]] const char* data() const { return bytes_.data(); }
-  [[nodiscard]] std::size_t size() const { return bytes_.size() - 1; }
-  [[nodiscard]] std::string_view view() const { return {bytes_.data(), size()}; }
+  /// The n bytes at `at`, followed by a NUL, read where they lie for as long as `keeper` lives
+  /// (it is destroyed with the last of them). Read only: data() gives them only as const.
+  static TextBytes kept(const char* at, std::size_t n, std::unique_ptr<TextKeeper> keeper);
+  /// The bytes to write (ofSize); nullptr for kept bytes.
+  [[nodiscard]] char* writable() { return keeper_ ? nullptr : bytes_.data(); }
+  [[nodiscard]] const char* data() const { return keeper_ ? kept_ : bytes_.data(); }
+  [[nodiscard]] std::size_t size() const { return keeper_ ? keptSize_ : bytes_.size() - 1; }
+  [[nodiscard]] std::string_view view() const { return {data(), size()}; }
   /// Keeps the first n bytes (n <= size()).
   void shrink(std::size_t n);
 
  private:
   std::vector<char, geometry::FillLaterAllocator<char>> bytes_;
+  const char* kept_ = nullptr;
+  std::size_t keptSize_ = 0;
+  std::unique_ptr<TextKeeper> keeper_;
 };
 
 class SourceFile {

@@ -1130,8 +1130,14 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
 
 void releaseParsedBefore(const Program& program, std::size_t block) {
   if (block < 2 || block >= program.blocks.size()) return;
-  // The first block stays (what is said of the whole program points at it).
-  geometry::releasePages(program.blocks.data() + 1, program.blocks.data() + block);
+  // The first block stays (what is said of the whole program points at it): it is copied back to
+  // where it was, on a fresh small page, once the 2 MiB page it lay on is given back. Left out of
+  // the range instead, that page (87,000 blocks) went back only with the whole list, after the
+  // interpreter, too late for the moves to take it in place of fresh ones.
+  const Block first = program.blocks.front();
+  geometry::releasePages(program.blocks.data(), program.blocks.data() + block);
+  // The list itself is not const (only the caller's view of it): the same block, written back.
+  std::memcpy(static_cast<void*>(const_cast<Block*>(program.blocks.data())), &first, sizeof first);
   geometry::releasePages(program.words.data(), program.words.data() + program.blocks[block].firstWord);
 }
 

@@ -1,4 +1,5 @@
 #include "kerf/converter/program.h"
+#include "kerf/geometry/memory.h"
 
 #include "converter_support.h"
 #include "parse_compare.h"
@@ -8,6 +9,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <random>
 #include <string>
@@ -695,4 +697,33 @@ TEST(parser, the_blocks_that_are_not_plain_are_listed_in_order_across_the_parts)
   EXPECT_GT(expected.size(), 10000u);
   EXPECT_LT(expected.size(), p.blocks.size() - 10000);
   EXPECT_EQ(p.notPlain, expected);
+}
+
+// A long program that runs straight through gives its parse tree back as the interpreter passes
+// it (releaseParsedBefore), the first block's 2 MiB page with it (the moves take it in place of a
+// fresh one): the first block is written back and reads as before, the blocks at and after the
+// one named stay, and those between read as zeros where the pages are Kerf's own.
+TEST(parser, the_parse_given_back_keeps_its_first_block_and_the_rest_from_there) {
+  std::string text = "%\nO1 (first)\nG90 G21\n";
+  for (int line = 0; line < 120000; ++line)
+    text += "G01 X" + std::to_string(line % 997) + ".5 Y-" + std::to_string(line % 113) + ".25\n";
+  text += "M02\n%\n";
+  Diagnostics d;
+  const SourceFile src("long.nc", text);
+  const Program p = parseProgram(src, d);
+  ASSERT_GT(p.blocks.size() * sizeof(Block), std::size_t{2} << 20);  // the first block's page is whole
+  const std::size_t at = 100000;
+  const Block first = p.blocks.front(), there = p.blocks[at], last = p.blocks.back();
+  const std::string firstText(src.text().substr(first.offset, first.length));
+  releaseParsedBefore(p, at);
+  EXPECT_EQ(std::memcmp(&p.blocks.front(), &first, sizeof first), 0);
+  EXPECT_EQ(src.text().substr(p.blocks.front().offset, p.blocks.front().length), firstText);
+  EXPECT_EQ(std::memcmp(&p.blocks[at], &there, sizeof there), 0);
+  EXPECT_EQ(std::memcmp(&p.blocks.back(), &last, sizeof last), 0);
+  for (std::size_t k = at; k < at + 100; ++k)
+    for (const Word& w : p.wordsOf(p.blocks[k])) EXPECT_TRUE(w.letter == 'G' || w.letter == 'X' || w.letter == 'Y');
+  if (kerf::geometry::largePagesOwned()) {  // given back: read as zeros (the first 2 MiB page's second block)
+    static const Block zero{};
+    EXPECT_EQ(std::memcmp(&p.blocks[1], &zero, sizeof zero), 0);
+  }
 }

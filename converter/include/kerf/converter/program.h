@@ -175,7 +175,7 @@ struct Program {
 /// lines end at LF, CR LF or a lone CR.
 Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOptions& options = {});
 
-/// Gives the memory of the blocks before `block` (the first excepted) and of their words back to
+/// Gives the memory of the blocks before `block` (the first excepted: it is written back) and of their words back to
 /// the system, whole pages at a time: a long program that runs straight through needs its parse
 /// tree only where it is. Those blocks and words read as zeros after, so the caller must never
 /// read them again; the vectors keep their sizes and may be destroyed as usual. Linux (madvise);

@@ -118,10 +118,7 @@ TextBytes::TextBytes(std::string_view text) {
 }
 
 TextBytes::TextBytes(TextBytes&& other) noexcept
-    : bytes_(std::move(other.bytes_)),
-      kept_(other.kept_),
-      keptSize_(other.keptSize_),
-      keeper_(std::move(other.keeper_)) {
+    : bytes_(std::move(other.bytes_)), kept_(other.kept_), keeper_(std::move(other.keeper_)) {
   other = TextBytes();
 }
 
@@ -134,20 +131,17 @@ TextBytes& TextBytes::operator=(TextBytes&& other) noexcept {
   if (this == &other) return *this;
   bytes_ = std::move(other.bytes_);
   kept_ = other.kept_;
-  keptSize_ = other.keptSize_;
   keeper_ = std::move(other.keeper_);
   // What was moved from is empty text again (a vector moved from holds nothing, not even the NUL).
   other.bytes_.assign(1, '\0');
-  other.kept_ = nullptr;
-  other.keptSize_ = 0;
+  other.kept_ = {};
   return *this;
 }
 
 TextBytes TextBytes::kept(const char* at, std::size_t n, std::unique_ptr<TextKeeper> keeper) {
   TextBytes t;
   if (!keeper) return TextBytes(std::string_view(at, n));
-  t.kept_ = at;
-  t.keptSize_ = n;
+  t.kept_ = std::string_view(at, n);
   t.keeper_ = std::move(keeper);
   return t;
 }
@@ -162,7 +156,7 @@ TextBytes TextBytes::ofSize(std::size_t n) {
 void TextBytes::shrink(std::size_t n) {
   if (n >= size()) return;
   if (keeper_) {  // kept bytes are read only: the first n are copied
-    *this = TextBytes(std::string_view(kept_, n));
+    *this = TextBytes(kept_.substr(0, n));
     return;
   }
   bytes_.resize(n + 1);

@@ -964,7 +964,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
         const std::size_t base = k, count = std::min(kBoxBlock, byMinX.size() - k);
         geometry::parallelForBalanced(count, 4096, [&](std::size_t b, std::size_t e) {
           constexpr std::size_t kAhead = 8;
-          if (keepBoxes) {
+          if (!keptBoxes.empty()) {  // given back before a decision sweep, never read after
             for (std::size_t q = b; q < e; ++q) {
               if (q + kAhead < e) __builtin_prefetch(&keptBoxes[byMinX[base + q + kAhead].seg]);
               boxes[q] = keptBoxes[byMinX[base + q].seg];

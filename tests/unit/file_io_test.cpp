@@ -40,6 +40,17 @@ class FileIo : public ::testing::Test {
     std::ofstream(path, std::ios::binary) << text;
     return path;
   }
+  /// The file read as the program reads it, with its cut-short mark (null unless mapped).
+  struct Read {
+    std::optional<converter::TextBytes> text;
+    std::shared_ptr<const std::atomic<bool>> cut;
+    std::string error;
+  };
+  static Read read(const std::string& path) {
+    Read r;
+    r.text = readProgramFile(path, converter::SourceFile::kMaxSize, r.error, &r.cut);
+    return r;
+  }
   fs::path dir_;
 };
 
@@ -47,49 +58,41 @@ TEST_F(FileIo, a_long_program_is_mapped_and_reads_as_its_bytes_with_a_nul_after)
   // A size inside a page, and whole pages (the NUL then lies on the page after the file's).
   for (const std::size_t size : {std::size_t{300000}, std::size_t{4096 * 100}, std::size_t{1 << 20}}) {
     const std::string text = programOf(size);
-    const std::string path = write("long.nc", text);
-    std::string error;
-    std::shared_ptr<const std::atomic<bool>> cut;
-    const std::optional<converter::TextBytes> read =
-        readProgramFile(path, converter::SourceFile::kMaxSize, error, &cut);
-    ASSERT_TRUE(read) << error;
-    ASSERT_TRUE(cut) << "a program of " << size << " bytes was not mapped";
-    EXPECT_FALSE(cut->load());
-    ASSERT_EQ(read->size(), size);
-    EXPECT_TRUE(read->view() == text) << size;
-    EXPECT_EQ(read->data()[size], '\0');
+    const Read r = read(write("long.nc", text));
+    ASSERT_TRUE(r.text) << r.error;
+    ASSERT_TRUE(r.cut) << "a program of " << size << " bytes was not mapped";
+    EXPECT_FALSE(r.cut->load());
+    ASSERT_EQ(r.text->size(), size);
+    EXPECT_TRUE(r.text->view() == text) << size;
+    EXPECT_EQ(r.text->data()[size], '\0');
     // A copy is text of its own, the same bytes.
-    const converter::TextBytes copy = *read;
-    EXPECT_NE(copy.data(), read->data());
+    const converter::TextBytes copy = *r.text;
+    EXPECT_NE(copy.data(), r.text->data());
     EXPECT_TRUE(copy.view() == text);
   }
 }
 
 TEST_F(FileIo, a_short_program_is_read_not_mapped) {
   const std::string text = programOf(1000);
-  const std::string path = write("short.nc", text);
-  std::string error;
-  std::shared_ptr<const std::atomic<bool>> cut;
-  const std::optional<converter::TextBytes> read = readProgramFile(path, converter::SourceFile::kMaxSize, error, &cut);
-  ASSERT_TRUE(read) << error;
-  EXPECT_FALSE(cut);
-  EXPECT_TRUE(read->view() == text);
-  EXPECT_EQ(read->data()[read->size()], '\0');
+  const Read r = read(write("short.nc", text));
+  ASSERT_TRUE(r.text) << r.error;
+  EXPECT_FALSE(r.cut);
+  EXPECT_TRUE(r.text->view() == text);
+  EXPECT_EQ(r.text->data()[r.text->size()], '\0');
 }
 
 TEST_F(FileIo, a_mapped_program_cut_short_reads_as_zeros_past_the_cut_and_says_so) {
   const std::size_t size = 1 << 20, kept = 300001;
   const std::string text = programOf(size);
   const std::string path = write("cut.nc", text);
-  std::string error;
-  std::shared_ptr<const std::atomic<bool>> cut;
-  const std::optional<converter::TextBytes> read = readProgramFile(path, converter::SourceFile::kMaxSize, error, &cut);
-  ASSERT_TRUE(read && cut) << error;
+  const Read r = read(path);
+  ASSERT_TRUE(r.text && r.cut) << r.error;
+  const converter::TextBytes& bytes = *r.text;
   ASSERT_EQ(::truncate(path.c_str(), static_cast<off_t>(kept)), 0);
   // Every byte is read, from the first page past the cut on through SIGBUS and the zero pages.
   std::size_t same = 0, zeros = 0;
   for (std::size_t k = 0; k < size; ++k) {
-    const char c = read->data()[k];
+    const char c = bytes.data()[k];
     if (k < kept)
       same += c == text[k];
     else
@@ -97,23 +100,21 @@ TEST_F(FileIo, a_mapped_program_cut_short_reads_as_zeros_past_the_cut_and_says_s
   }
   EXPECT_EQ(same, kept);
   EXPECT_EQ(zeros, size - kept);
-  EXPECT_TRUE(cut->load());
-  EXPECT_EQ(read->data()[size], '\0');
+  EXPECT_TRUE(r.cut->load());
+  EXPECT_EQ(bytes.data()[size], '\0');
 }
 
 TEST_F(FileIo, a_mapped_program_that_grows_keeps_its_size_and_its_nul) {
   const std::size_t size = 300000;
   const std::string text = programOf(size);
   const std::string path = write("grow.nc", text);
-  std::string error;
-  std::shared_ptr<const std::atomic<bool>> cut;
-  const std::optional<converter::TextBytes> read = readProgramFile(path, converter::SourceFile::kMaxSize, error, &cut);
-  ASSERT_TRUE(read && cut) << error;
+  const Read r = read(path);
+  ASSERT_TRUE(r.text && r.cut) << r.error;
   std::ofstream(path, std::ios::binary | std::ios::app) << std::string(10000, 'X');
-  EXPECT_EQ(read->size(), size);
-  EXPECT_EQ(read->data()[size], '\0');  // on a page of the reader's own, not the file's
-  EXPECT_TRUE(read->view() == text);
-  EXPECT_FALSE(cut->load());
+  EXPECT_EQ(r.text->size(), size);
+  EXPECT_EQ(r.text->data()[size], '\0');  // on a page of the reader's own, not the file's
+  EXPECT_TRUE(r.text->view() == text);
+  EXPECT_FALSE(r.cut->load());
 }
 
 }  // namespace

@@ -63,16 +63,15 @@ class TextBytes {
   static TextBytes kept(const char* at, std::size_t n, std::unique_ptr<TextKeeper> keeper);
   /// The bytes to write (ofSize); nullptr for kept bytes.
   [[nodiscard]] char* writable() { return keeper_ ? nullptr : bytes_.data(); }
-  [[nodiscard]] const char* data() const { return keeper_ ? kept_ : bytes_.data(); }
-  [[nodiscard]] std::size_t size() const { return keeper_ ? keptSize_ : bytes_.size() - 1; }
+  [[nodiscard]] const char* data() const { return keeper_ ? kept_.data() : bytes_.data(); }
+  [[nodiscard]] std::size_t size() const { return keeper_ ? kept_.size() : bytes_.size() - 1; }
   [[nodiscard]] std::string_view view() const { return {data(), size()}; }
   /// Keeps the first n bytes (n <= size()).
   void shrink(std::size_t n);
 
  private:
   std::vector<char, geometry::FillLaterAllocator<char>> bytes_;
-  const char* kept_ = nullptr;
-  std::size_t keptSize_ = 0;
+  std::string_view kept_;  // the bytes keeper_ keeps (when there is one)
   std::unique_ptr<TextKeeper> keeper_;
 };
 

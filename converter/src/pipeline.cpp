@@ -9,6 +9,7 @@
 #include "kerf/converter/points.h"
 
 #include <cstdio>
+#include <optional>
 
 namespace kerf::converter {
 namespace {
@@ -71,9 +72,7 @@ void releaseSource(Pipeline& out, const PipelineOptions& options) {
 
 /// The summary, when the caller asked for one.
 void summarizeInto(Pipeline& out, const PipelineOptions& options) {
-  geometry::markPhase("summary: start");
   if (options.summarize) out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
-  geometry::markPhase("summary");
 }
 
 /// The checks, with the machine's limits unless the user gave others, then the summary (it reads
@@ -86,11 +85,16 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   releaseSource(out, options);  // the checks and what follows them only quote the text
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
-    // The summary reads what the checks read and writes only out.summary: it runs beside them, on
-    // the core the self-intersection sweep (serial) leaves idle.
-    geometry::runBeside(
+    // The summary reads what the checks read and writes only its own stretches: they are made
+    // beside the checks, on the core the self-intersection sweep (serial) leaves idle, and what
+    // is left when the checks are done, on both (docs/interpreter.md, "The summary beside").
+    std::optional<SummaryMaker> maker;
+    if (options.summarize) maker.emplace(out.toolpath, *options.summarize);
+    geometry::runBesideWhenIdle(
         [&] { checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures); },
-        [&] { summarizeInto(out, options); });
+        maker ? maker->pieces() : 0, [&](std::size_t k) { maker->makePiece(k); });
+    geometry::markPhase("summary");
+    if (maker) out.summary = maker->finish(&out.measures);
   } else {
     summarizeInto(out, options);
   }

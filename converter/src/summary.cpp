@@ -3,6 +3,7 @@
 #include "kerf/geometry/contour.h"
 #include "kerf/geometry/parallel.h"
 
+#include <algorithm>
 #include <atomic>
 
 namespace kerf::converter {
@@ -115,51 +116,64 @@ TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) 
 
 }  // namespace
 
-Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, const SurfaceMeasures* measures) {
+// The cut moves sampled where they lie, among the rapids: no copy of the path. In stretches of a
+// fixed length whose figures are added in order: the sums do not depend on the number of threads
+// (a program of one stretch adds them move by move, as one thread would).
+struct SummaryMaker::Stretch {
+  explicit Stretch(const geometry::Sampling& sampling) : sampler(sampling, nullptr) {}
+  std::size_t cutMoves = 0, rapidMoves = 0, lines = 0, arcs = 0, upperLines = 0, upperArcs = 0;
+  double cutLength = 0.0, rapidLength = 0.0;
+  geometry::Box bounds;
+  geometry::PathSampler sampler;
+};
+
+namespace {
+constexpr std::size_t kStretch = 4096;
+}  // namespace
+
+SummaryMaker::SummaryMaker(const Toolpath& toolpath, const geometry::Sampling& sampling)
+    : toolpath_(toolpath),
+      sampling_(sampling),
+      stretches_((toolpath.moves.size() + kStretch - 1) / kStretch, Stretch(sampling)) {}
+
+SummaryMaker::~SummaryMaker() = default;
+
+std::size_t SummaryMaker::pieces() const { return stretches_.size(); }
+
+void SummaryMaker::makePiece(std::size_t k) {
+  Stretch& part = stretches_[k];
+  const bool taper = toolpath_.isTaper();
+  const std::size_t n = toolpath_.moves.size();
+  for (std::size_t i = k * kStretch; i < std::min(n, (k + 1) * kStretch); ++i) {
+    const Move& m = toolpath_.moves[i];
+    if (!m.isCut()) {
+      ++part.rapidMoves;
+      part.rapidLength += m.lower.length();
+      continue;
+    }
+    ++part.cutMoves;
+    if (m.kind == MoveKind::Arc)
+      ++part.arcs;
+    else
+      ++part.lines;
+    if (taper) ++(toolpath_.upper[i].isArc() ? part.upperArcs : part.upperLines);
+    part.cutLength += m.lower.length();
+    addBounds(part.bounds, m.lower);
+    part.sampler.add(m.lower);
+  }
+}
+
+Summary SummaryMaker::finish(const SurfaceMeasures* measures) const {
+  const Toolpath& toolpath = toolpath_;
   Summary s;
   s.format = toolpath.format;
   s.reading = toolpath.reading;
   s.dialect = toolpath.dialect;
   s.blocks = toolpath.blocks;
   s.moves = toolpath.moves.size();
-  // The cut moves sampled where they lie, among the rapids: no copy of the path. On every core, in
-  // stretches of a fixed length whose figures are added in order: the sums do not depend on the
-  // number of threads (a program of one stretch adds them move by move, as one thread would).
   s.taperProgram = toolpath.isTaper();
-  struct Stretch {
-    explicit Stretch(const geometry::Sampling& sampling) : sampler(sampling, nullptr) {}
-    std::size_t cutMoves = 0, rapidMoves = 0, lines = 0, arcs = 0, upperLines = 0, upperArcs = 0;
-    double cutLength = 0.0, rapidLength = 0.0;
-    geometry::Box bounds;
-    geometry::PathSampler sampler;
-  };
-  constexpr std::size_t kStretch = 4096;
-  const std::size_t n = toolpath.moves.size();
-  std::vector<Stretch> stretches((n + kStretch - 1) / kStretch, Stretch(sampling));
-  geometry::parallelForBalanced(stretches.size(), 1, [&](std::size_t sb, std::size_t se) {
-    for (std::size_t st = sb; st < se; ++st) {
-      Stretch& part = stretches[st];
-      for (std::size_t i = st * kStretch; i < std::min(n, (st + 1) * kStretch); ++i) {
-        const Move& m = toolpath.moves[i];
-        if (!m.isCut()) {
-          ++part.rapidMoves;
-          part.rapidLength += m.lower.length();
-          continue;
-        }
-        ++part.cutMoves;
-        if (m.kind == MoveKind::Arc)
-          ++part.arcs;
-        else
-          ++part.lines;
-        if (s.taperProgram) ++(toolpath.upper[i].isArc() ? part.upperArcs : part.upperLines);
-        part.cutLength += m.lower.length();
-        addBounds(part.bounds, m.lower);
-        part.sampler.add(m.lower);
-      }
-    }
-  });
-  geometry::PathSampler sampler(sampling, nullptr);
-  for (const Stretch& part : stretches) {
+  geometry::PathSampler sampler(sampling_, nullptr);
+  for (const Stretch& part : stretches_) {
     s.cutMoves += part.cutMoves;
     s.rapidMoves += part.rapidMoves;
     s.lines += part.lines;
@@ -171,7 +185,7 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
     s.bounds.add(part.bounds);
     sampler.append(part.sampler);
   }
-  s.sampling = sampling;
+  s.sampling = sampling_;
   s.points = sampler.stats();
   if (toolpath.isTaper() && toolpath.heights.known) {
     if (measures && measures->patches.size() == toolpath.moves.size()) {
@@ -181,6 +195,14 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, 
     }
   }
   return s;
+}
+
+Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, const SurfaceMeasures* measures) {
+  SummaryMaker maker(toolpath, sampling);
+  geometry::parallelForBalanced(maker.pieces(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) maker.makePiece(k);
+  });
+  return maker.finish(measures);
 }
 
 }  // namespace kerf::converter

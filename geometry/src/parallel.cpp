@@ -11,8 +11,16 @@
 #include <thread>
 #include <vector>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 namespace kerf::geometry {
 namespace {
+
+/// Set on runBesideWhenIdle's thread: a parallelFor there runs serially, not on threads of
+/// ordinary priority that would take the cores its caller leaves to main.
+thread_local bool besideWhenIdle = false;
 
 /// Threads kept for parallelFor while a ParallelScope lives: a check calls it a score of times,
 /// and a thread made and ended for each call cost more than some of the calls' work (and moved the
@@ -128,7 +136,7 @@ unsigned workerCount() {
 
 void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(std::size_t, std::size_t)>& body) {
   const std::size_t chunk = std::max<std::size_t>(minChunk, 1);
-  const std::size_t workers = std::min<std::size_t>(workerCount(), n / chunk);
+  const std::size_t workers = besideWhenIdle ? 1 : std::min<std::size_t>(workerCount(), n / chunk);
   if (workers <= 1) {
     if (n > 0) body(0, n);
     return;
@@ -164,7 +172,7 @@ void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(s
 void parallelForBalanced(std::size_t n, std::size_t minChunk,
                          const std::function<void(std::size_t, std::size_t)>& body) {
   const std::size_t chunk = std::max<std::size_t>(minChunk, 1);
-  const std::size_t workers = std::min<std::size_t>(workerCount(), n / chunk);
+  const std::size_t workers = besideWhenIdle ? 1 : std::min<std::size_t>(workerCount(), n / chunk);
   if (workers <= 1) {
     if (n > 0) body(0, n);
     return;
@@ -240,6 +248,62 @@ void runBeside(const std::function<void()>& main, const std::function<void()>& b
     main();
   } catch (...) {
     mainFailure = std::current_exception();
+  }
+  other.join();
+  if (mainFailure) std::rethrow_exception(mainFailure);
+  if (besideFailure) std::rethrow_exception(besideFailure);
+}
+
+void runBesideWhenIdle(const std::function<void()>& main, std::size_t pieces,
+                       const std::function<void(std::size_t)>& piece) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  // Takes pieces until none is left, or one has thrown (here or on the other thread).
+  auto take = [&] {
+    while (!failed.load(std::memory_order_relaxed)) {
+      const std::size_t k = next.fetch_add(1, std::memory_order_relaxed);
+      if (k >= pieces) return;
+      try {
+        piece(k);
+      } catch (...) {
+        failed.store(true, std::memory_order_relaxed);
+        throw;
+      }
+    }
+  };
+  if (workerCount() < 2 || pieces == 0) {
+    main();
+    take();
+    return;
+  }
+  std::exception_ptr besideFailure;
+  std::thread other;
+  try {
+    other = std::thread([&] {
+      besideWhenIdle = true;
+#if defined(__linux__) && defined(SCHED_IDLE)
+      // Lowering a thread's priority needs no privilege; where it is refused, the pieces still run.
+      const sched_param none{};
+      (void)sched_setscheduler(0, SCHED_IDLE, &none);
+#endif
+      try {
+        take();
+      } catch (...) {
+        besideFailure = std::current_exception();
+      }
+    });
+  } catch (...) {  // no thread to be had: one after the other
+    main();
+    take();
+    return;
+  }
+  std::exception_ptr mainFailure;
+  try {
+    main();
+    take();
+  } catch (...) {
+    mainFailure = std::current_exception();
+    failed.store(true, std::memory_order_relaxed);
   }
   other.join();
   if (mainFailure) std::rethrow_exception(mainFailure);

@@ -15,6 +15,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 namespace {
 
 using kerf::geometry::parallelFor;
@@ -215,6 +219,88 @@ TEST(Parallel, BesideRunsTheSecondOnAThreadOfItsOwnWhileTheFirstKeepsTheScopesTh
     ADD_FAILURE() << "no exception";
   } catch (const std::logic_error&) {
     EXPECT_TRUE(besideDone.load());
+  }
+}
+
+TEST(Parallel, BesideWhenIdleRunsEveryPieceOnceAndTheCallerTakesTheRestAfterMain) {
+  for (const char* threads : {"1", "2", "4"}) {
+    const Threads t(threads);
+    const kerf::geometry::ParallelScope scope;
+    constexpr std::size_t kPieces = 400;
+    std::vector<std::atomic<int>> ran(kPieces);
+    std::vector<std::atomic<int>> seen(50000);
+    std::atomic<bool> mainDone{false};
+    std::atomic<std::size_t> afterMainHere{0}, elsewhere{0};
+    std::atomic<int> otherPolicy{-1}, besideInner{0};
+    const std::thread::id caller = std::this_thread::get_id();
+    kerf::geometry::runBesideWhenIdle(
+        [&] {
+          // main's own parallelFor still has every worker and covers every index once.
+          parallelFor(seen.size(), 16, [&](std::size_t b, std::size_t e) {
+            for (std::size_t i = b; i < e; ++i) ++seen[i];
+          });
+          mainDone = true;
+        },
+        kPieces,
+        [&](std::size_t k) {
+          ++ran[k];
+          if (std::this_thread::get_id() == caller) {
+            EXPECT_TRUE(mainDone.load());  // the caller takes pieces only once main has returned
+            ++afterMainHere;
+            return;
+          }
+          ++elsewhere;
+#if defined(__linux__)
+          otherPolicy = sched_getscheduler(0);
+#endif
+          // A parallelFor on the beside thread runs there, serially.
+          std::atomic<int> calls{0};
+          std::thread::id on;
+          parallelFor(5000, 16, [&](std::size_t, std::size_t) {
+            ++calls;
+            on = std::this_thread::get_id();
+          });
+          if (calls.load() == 1 && on == std::this_thread::get_id()) ++besideInner;
+          std::this_thread::sleep_for(std::chrono::microseconds(200));  // so that the caller takes some too
+        });
+    EXPECT_TRUE(std::all_of(ran.begin(), ran.end(), [](const std::atomic<int>& v) { return v.load() == 1; }))
+        << threads;
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](const std::atomic<int>& v) { return v.load() == 1; }))
+        << threads;
+    EXPECT_EQ(afterMainHere.load() + elsewhere.load(), kPieces) << threads;
+    if (std::string(threads) == "1") {
+      EXPECT_EQ(elsewhere.load(), 0U);  // one worker: main, then every piece here
+    } else {
+      EXPECT_GT(afterMainHere.load(), 0U) << threads;  // the beside thread sleeps in each piece
+      EXPECT_EQ(besideInner.load(), static_cast<int>(elsewhere.load())) << threads;
+#if defined(__linux__) && defined(SCHED_IDLE)
+      if (elsewhere.load() > 0) {
+        EXPECT_EQ(otherPolicy.load(), SCHED_IDLE) << threads;
+      }
+#endif
+    }
+  }
+  // An exception from main or a piece reaches the caller once both threads have stopped; main's
+  // when both throw; no piece starts after one has thrown.
+  const Threads t("2");
+  std::atomic<int> started{0};
+  EXPECT_THROW(kerf::geometry::runBesideWhenIdle([] {}, 1000,
+                                                 [&](std::size_t k) {
+                                                   ++started;
+                                                   if (k == 3) throw std::runtime_error("piece");
+                                                 }),
+               std::runtime_error);
+  EXPECT_LT(started.load(), 1000);  // at most one piece in flight on each thread after the throw
+  started = 0;
+  try {
+    kerf::geometry::runBesideWhenIdle([] { throw std::logic_error("main"); }, 50,
+                                      [&](std::size_t) {
+                                        ++started;
+                                        throw std::runtime_error("piece");
+                                      });
+    ADD_FAILURE() << "no exception";
+  } catch (const std::logic_error&) {
+    EXPECT_LE(started.load(), 1);
   }
 }
 

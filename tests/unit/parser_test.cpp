@@ -562,6 +562,15 @@ TEST(source, lines_start_after_every_line_feed_wherever_it_falls_in_a_word) {
     for (std::uint32_t line = 1; line <= starts.size(); ++line)
       ASSERT_EQ(src.lineRange(line).first, starts[line - 1]) << "trial " << trial << " line " << line;
   }
+  // A long text of feeds alone: one start after every byte, the most the one pass over a text of
+  // 1 MiB and more makes room for.
+  {
+    const std::string feeds((std::size_t{1} << 20) + 3, '\n');
+    const SourceFile src("feeds.nc", feeds);
+    ASSERT_EQ(src.lineCount(), feeds.size() + 1);
+    for (const std::uint32_t line : {1u, 2u, 777u, static_cast<std::uint32_t>(feeds.size() + 1)})
+      EXPECT_EQ(src.lineRange(line).first, line - 1) << line;
+  }
   // Texts of several MiB: runs of feeds, a tail after the last whole word, a feed at the end.
   for (const std::size_t size : {std::size_t{3} << 20, (std::size_t{5} << 20) + 7}) {
     std::string text(size, 'X');

@@ -111,6 +111,36 @@ TEST(tessellation, mean_relative_error_is_continuous_and_positive_for_tiny_chord
   }
 }
 
+TEST(tessellation, mean_relative_error_series_and_closed_form_agree_with_forty_digits) {
+  // 1 - cos(s/2) (2/s) ln tan(pi/4 + s/4), by mpmath at 40 digits (mp.dps = 40), to 20: below
+  // 0.25 rad the summary takes the series, from there the closed form. The series is exact to a
+  // few units of the last place; the closed form loses digits to cancellation as the span shrinks.
+  const struct {
+    double span, value, relative;
+  } cases[] = {{0.001, 8.3333333333333382937e-8, 1e-15},   {0.01, 8.3333333333829367835e-6, 1e-15},
+               {0.1, 0.00083333338296408405839, 1e-15},    {0.2, 0.0033333365150104774283, 1e-15},
+               {0.2499999, 0.0052083413190174814303, 1e-15}, {0.25, 0.0052083454857125143723, 1e-13},
+               {0.3, 0.0075000363426345947138, 1e-13}};
+  for (const auto& c : cases)
+    EXPECT_NEAR(chordMeanRelativeError(c.span), c.value, c.value * c.relative) << c.span;
+}
+
+TEST(tessellation, sagitta_of_short_chords_agrees_with_forty_digits) {
+  // A half-circle arc of radius 2 cut into chords of 0.2 mm in step mode: its last chord is
+  // shorter than a step, so both the full chords' sagitta (from the sine of the half angle) and
+  // the last one's (a series below 0.25 rad) are taken. The full chord's angle is
+  // 2 asin(0.05); 2 (1 - cos(asin 0.05)) by mpmath at 40 digits is 0.002501564456182108422.
+  const Segment arc = Segment::arc({2, 0}, {-2, 0}, {0, 0}, ArcDirection::CounterClockwise);
+  const ArcSampleStats st = sample(arc, Sampling{SamplingMode::Step, 0.2}, nullptr);
+  EXPECT_NEAR(st.maxDeviation, 0.002501564456182108422, 2e-18);
+  // A chord of 0.1 rad on a circle of radius 1 (tolerance mode gives equal chords): sagitta
+  // 1 - cos(0.05) = 0.0012497396050337534371 (mpmath, 40 digits).
+  const Segment tenth = Segment::arc({1, 0}, {std::cos(0.1), std::sin(0.1)}, {0, 0}, ArcDirection::CounterClockwise);
+  const ArcSampleStats one = sample(tenth, Sampling{SamplingMode::Tolerance, 0.01}, nullptr);
+  EXPECT_EQ(one.points, 1u);
+  EXPECT_NEAR(one.maxDeviation, 0.0012497396050337534371, 2e-18);
+}
+
 TEST(tessellation, lines_add_only_their_end_point) {
   const std::vector<Segment> path = {Segment::line({0, 0}, {10, 0}), Segment::line({10, 0}, {10, 10})};
   std::vector<Vec2> pts;

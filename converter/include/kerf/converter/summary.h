@@ -118,4 +118,27 @@ struct Summary {
 Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling,
                   const SurfaceMeasures* measures = nullptr);
 
+/// summarize in parts: the moves' figures in stretches of a fixed length (pieces(), each made by
+/// makePiece, in any order and on any thread, different ones at once), then added in order
+/// (finish). The figures do not depend on which thread made which stretch. The pipeline makes the
+/// stretches beside the checks, on the core their sweep leaves idle (geometry::runBesideWhenIdle).
+class SummaryMaker {
+ public:
+  SummaryMaker(const Toolpath& toolpath, const geometry::Sampling& sampling);
+  ~SummaryMaker();
+  SummaryMaker(const SummaryMaker&) = delete;
+  SummaryMaker& operator=(const SummaryMaker&) = delete;
+
+  [[nodiscard]] std::size_t pieces() const;
+  void makePiece(std::size_t k);
+  /// The summary, once every piece is made; measures as for summarize.
+  [[nodiscard]] Summary finish(const SurfaceMeasures* measures = nullptr) const;
+
+ private:
+  struct Stretch;
+  const Toolpath& toolpath_;
+  geometry::Sampling sampling_;
+  std::vector<Stretch> stretches_;
+};
+
 }  // namespace kerf::converter

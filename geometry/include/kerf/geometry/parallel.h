@@ -55,6 +55,21 @@ void parallelInvoke(const std::function<void()>& first, const std::function<void
 /// here once both have finished (main's, when both throw).
 void runBeside(const std::function<void()>& main, const std::function<void()>& beside);
 
+/// Runs main in the calling thread while piece(0) .. piece(pieces - 1) run beside it on a thread
+/// of the lowest priority (SCHED_IDLE on Linux), one piece at a time and in order, on whatever
+/// core main leaves idle; when main returns, the calling thread takes the pieces still left as
+/// well, and the call returns once every piece has run. Work that must be done by the end of a
+/// stage, beside a stage that needs every core for some of its time and one for the rest: the
+/// summary beside the checks, whose passes over the moves want both cores and whose box sweep
+/// leaves one idle. (A beside thread of equal priority took a core from those passes; one that
+/// ran its work alone after main, half of it.) piece must be safe to run for different pieces at
+/// once, on different threads; a parallelFor inside it runs serially on the beside thread. With
+/// one worker, or no thread to be had, main then the pieces. An exception from main or a piece is
+/// rethrown here once both threads have stopped (main's, when both throw); after a piece throws
+/// no further piece starts.
+void runBesideWhenIdle(const std::function<void()>& main, std::size_t pieces,
+                       const std::function<void(std::size_t)>& piece);
+
 /// Sorts [first, last) by less: one chunk per worker sorted at once, then merged pairwise (in
 /// place; std::inplace_merge takes a buffer when it can). Below minSize elements, or with one
 /// worker, std::sort alone. Not stable, as std::sort is not: equal elements may come in any order.

@@ -542,6 +542,26 @@ TEST(source, a_change_of_one_byte_anywhere_in_a_long_text_is_seen) {
     changed[at] = changed[at] == 'X' ? 'Y' : 'X';
     ASSERT_TRUE(seenChanged(changed)) << "byte " << at;
   }
+  // A text of several pieces (the hash takes 1 MiB at a time, on every core): a byte changed in
+  // each piece, at its ends and inside, and two pieces swapped, are seen.
+  std::string longText;
+  for (int k = 0; longText.size() < (std::size_t{3} << 20) + 77; ++k) longText += "G1 X" + std::to_string(k) + ".5\n";
+  auto longChanged = [&](const std::string& onDisk) {
+    SourceFile src("long.nc", longText);
+    src.releaseText([&onDisk]() -> std::optional<std::string> { return onDisk; });
+    (void)src.lineText(1);
+    return src.changedOnDisk();
+  };
+  EXPECT_FALSE(longChanged(longText));
+  constexpr std::size_t kMiB = std::size_t{1} << 20;
+  for (const std::size_t at : {std::size_t{0}, kMiB - 1, kMiB, 2 * kMiB + 5, longText.size() - 1}) {
+    std::string changed = longText;
+    changed[at] = changed[at] == '1' ? '2' : '1';
+    EXPECT_TRUE(longChanged(changed)) << "byte " << at;
+  }
+  std::string swapped = longText.substr(kMiB, kMiB) + longText.substr(0, kMiB) + longText.substr(2 * kMiB);
+  ASSERT_EQ(swapped.size(), longText.size());
+  EXPECT_TRUE(longChanged(swapped));
 }
 
 TEST(source, lines_start_after_every_line_feed_wherever_it_falls_in_a_word) {

@@ -11,16 +11,14 @@
 #include <thread>
 #include <vector>
 
-#if defined(__linux__)
-#include <sched.h>
-#endif
 
 namespace kerf::geometry {
 namespace {
 
-/// Set on runBesideWhenIdle's thread: a parallelFor there runs serially, not on threads of
-/// ordinary priority that would take the cores its caller leaves to main.
+/// Set while a thread runs a piece of runBesideWhenIdle's: a parallelFor there runs serially (the
+/// kept threads it would use are the ones that run such pieces).
 thread_local bool besideWhenIdle = false;
+
 
 /// Threads kept for parallelFor while a ParallelScope lives: a check calls it a score of times,
 /// and a thread made and ended for each call cost more than some of the calls' work (and moved the
@@ -28,6 +26,35 @@ thread_local bool besideWhenIdle = false;
 /// inside a body, or from another thread) makes threads of its own.
 class Helpers {
  public:
+  /// Pieces of work the kept threads take while no call needs them (runBesideWhenIdle): one at a
+  /// time, each to its end, so that a call waits for a helper at most one piece.
+  struct Background {
+    Background(const std::function<void(std::size_t)>& work, std::size_t count) : piece(work), pieces(count) {}
+    const std::function<void(std::size_t)>& piece;
+    const std::size_t pieces;
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> failed{false};
+    std::mutex failureMutex;
+    std::exception_ptr failure;  // the first piece's exception, guarded by failureMutex
+    /// Takes and runs one piece; false when none is left or one has thrown.
+    bool runOne() {
+      if (failed.load(std::memory_order_relaxed)) return false;
+      const std::size_t k = next.fetch_add(1, std::memory_order_relaxed);
+      if (k >= pieces) return false;
+      try {
+        piece(k);
+      } catch (...) {
+        failed.store(true, std::memory_order_relaxed);
+        const std::lock_guard<std::mutex> lock(failureMutex);
+        if (!failure) failure = std::current_exception();
+      }
+      return true;
+    }
+    [[nodiscard]] bool left() const {
+      return !failed.load(std::memory_order_relaxed) && next.load(std::memory_order_relaxed) < pieces;
+    }
+  };
+
   explicit Helpers(std::size_t count) {
     threads_.reserve(count);
     try {
@@ -46,6 +73,8 @@ class Helpers {
     wake_.notify_all();
     for (std::thread& t : threads_) t.join();
   }
+
+  [[nodiscard]] std::size_t size() const { return threads_.size(); }
 
   /// Runs task(0) here and task(1) .. task(workers - 1) on the kept threads; false (nothing run)
   /// when they are busy or too few.
@@ -72,19 +101,54 @@ class Helpers {
     return true;
   }
 
+  /// The kept threads take background's pieces while no call needs them, until stopBackground.
+  /// One background at a time: false (nothing started) when another is on.
+  bool startBackground(Background& background) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (background_ != nullptr) return false;
+      background_ = &background;
+    }
+    wake_.notify_all();
+    return true;
+  }
+  /// No piece starts on the kept threads after this; returns once the ones running have ended.
+  void stopBackground() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    background_ = nullptr;
+    backgroundDone_.wait(lock, [&] { return inBackground_ == 0; });
+  }
+
  private:
   void serve(std::size_t index) {
     std::uint64_t seen = 0;
     for (;;) {
       const std::function<void(std::size_t)>* task = nullptr;
+      Background* background = nullptr;
       {
         std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        wake_.wait(lock, [&] {
+          return stop_ || generation_ != seen || (background_ != nullptr && background_->left());
+        });
         if (stop_) return;
-        seen = generation_;
-        if (index > active_) continue;
-        task = task_;
+        if (generation_ != seen) {
+          seen = generation_;
+          if (index > active_) continue;
+          task = task_;
+        } else {
+          background = background_;
+          ++inBackground_;
+        }
       }
+      if (background != nullptr) {
+        besideWhenIdle = true;  // a parallelFor inside a piece runs here, serially
+        (void)background->runOne();
+        besideWhenIdle = false;
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (--inBackground_ == 0) backgroundDone_.notify_all();
+        continue;
+      }
+      if (task == nullptr) continue;
       (*task)(index);
       const std::lock_guard<std::mutex> lock(mutex_);
       if (--pending_ == 0) done_.notify_one();
@@ -94,11 +158,13 @@ class Helpers {
   std::vector<std::thread> threads_;
   std::atomic<bool> busy_{false};  // one call at a time
   std::mutex mutex_;               // what follows
-  std::condition_variable wake_, done_;
+  std::condition_variable wake_, done_, backgroundDone_;
   const std::function<void(std::size_t)>* task_ = nullptr;
   std::size_t active_ = 0, pending_ = 0;
   std::uint64_t generation_ = 0;
   bool stop_ = false;
+  Background* background_ = nullptr;
+  std::size_t inBackground_ = 0;  // kept threads inside a background piece
 };
 
 // The scope's threads, made at the first call that needs them (a short program needs none); calls
@@ -256,58 +322,36 @@ void runBeside(const std::function<void()>& main, const std::function<void()>& b
 
 void runBesideWhenIdle(const std::function<void()>& main, std::size_t pieces,
                        const std::function<void(std::size_t)>& piece) {
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
-  // Takes pieces until none is left, or one has thrown (here or on the other thread).
-  auto take = [&] {
-    while (!failed.load(std::memory_order_relaxed)) {
-      const std::size_t k = next.fetch_add(1, std::memory_order_relaxed);
-      if (k >= pieces) return;
-      try {
-        piece(k);
-      } catch (...) {
-        failed.store(true, std::memory_order_relaxed);
-        throw;
-      }
+  Helpers::Background background(piece, pieces);
+  auto takeHere = [&] {
+    const bool was = besideWhenIdle;
+    besideWhenIdle = true;
+    while (background.runOne()) {
     }
+    besideWhenIdle = was;
   };
-  if (workerCount() < 2 || pieces == 0) {
-    main();
-    take();
+  auto rethrowPiece = [&] {
+    if (background.failure) std::rethrow_exception(background.failure);
+  };
+  const std::shared_ptr<Helpers> kept = workerCount() >= 2 && pieces > 0 ? currentHelpers() : nullptr;
+  if (kept && kept->size() > 0 && kept->startBackground(background)) {
+    std::exception_ptr mainFailure;
+    try {
+      main();
+    } catch (...) {
+      mainFailure = std::current_exception();
+      background.failed.store(true, std::memory_order_relaxed);
+    }
+    if (!mainFailure) takeHere();
+    kept->stopBackground();
+    if (mainFailure) std::rethrow_exception(mainFailure);
+    rethrowPiece();
     return;
   }
-  std::exception_ptr besideFailure;
-  std::thread other;
-  try {
-    other = std::thread([&] {
-      besideWhenIdle = true;
-#if defined(__linux__) && defined(SCHED_IDLE)
-      // Lowering a thread's priority needs no privilege; where it is refused, the pieces still run.
-      const sched_param none{};
-      (void)sched_setscheduler(0, SCHED_IDLE, &none);
-#endif
-      try {
-        take();
-      } catch (...) {
-        besideFailure = std::current_exception();
-      }
-    });
-  } catch (...) {  // no thread to be had: one after the other
-    main();
-    take();
-    return;
-  }
-  std::exception_ptr mainFailure;
-  try {
-    main();
-    take();
-  } catch (...) {
-    mainFailure = std::current_exception();
-    failed.store(true, std::memory_order_relaxed);
-  }
-  other.join();
-  if (mainFailure) std::rethrow_exception(mainFailure);
-  if (besideFailure) std::rethrow_exception(besideFailure);
+  // No kept threads (outside a ParallelScope, or one worker): main, then the pieces, here.
+  main();
+  takeHere();
+  rethrowPiece();
 }
 
 }  // namespace kerf::geometry

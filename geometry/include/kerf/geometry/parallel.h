@@ -55,18 +55,19 @@ void parallelInvoke(const std::function<void()>& first, const std::function<void
 /// here once both have finished (main's, when both throw).
 void runBeside(const std::function<void()>& main, const std::function<void()>& beside);
 
-/// Runs main in the calling thread while piece(0) .. piece(pieces - 1) run beside it on a thread
-/// of the lowest priority (SCHED_IDLE on Linux), one piece at a time and in order, on whatever
-/// core main leaves idle; when main returns, the calling thread takes the pieces still left as
-/// well, and the call returns once every piece has run. Work that must be done by the end of a
-/// stage, beside a stage that needs every core for some of its time and one for the rest: the
-/// summary beside the checks, whose passes over the moves want both cores and whose box sweep
-/// leaves one idle. (A beside thread of equal priority took a core from those passes; one that
-/// ran its work alone after main, half of it.) piece must be safe to run for different pieces at
-/// once, on different threads; a parallelFor inside it runs serially on the beside thread. With
-/// one worker, or no thread to be had, main then the pieces. An exception from main or a piece is
-/// rethrown here once both threads have stopped (main's, when both throw); after a piece throws
-/// no further piece starts.
+/// Runs main in the calling thread while the scope's kept threads (ParallelScope) take
+/// piece(0) .. piece(pieces - 1) whenever no parallelFor needs them, one piece at a time, each to
+/// its end; when main returns, the calling thread takes the pieces still left, and the call
+/// returns once every piece has run. Work that must be done by the end of a stage, beside a stage
+/// that needs every core for some of its time and one for the rest: the summary beside the
+/// checks, whose passes over the moves want both cores and whose box sweep leaves one idle. A
+/// parallelFor of main's waits for a helper at most the piece it is in. (A thread of its own beside
+/// them took a core from those passes at ordinary priority; at the lowest (SCHED_IDLE) a helper
+/// woken for main's parallelFor waited for the scheduler's next tick, up to 4 ms, behind it.)
+/// piece must be safe to run for different pieces at once, on different threads; a parallelFor
+/// inside it runs serially. Outside a scope, or with one worker, main then the pieces, here. An
+/// exception from main is rethrown here once the pieces running have ended (no more start); from
+/// a piece, the first one, once every piece has run or stopped (no more start after it).
 void runBesideWhenIdle(const std::function<void()>& main, std::size_t pieces,
                        const std::function<void(std::size_t)>& piece);
 

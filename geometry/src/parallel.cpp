@@ -288,38 +288,6 @@ void parallelInvoke(const std::function<void()>& first, const std::function<void
   });
 }
 
-void runBeside(const std::function<void()>& main, const std::function<void()>& beside) {
-  if (workerCount() < 2) {
-    main();
-    beside();
-    return;
-  }
-  std::exception_ptr besideFailure;
-  std::thread other;
-  try {
-    other = std::thread([&] {
-      try {
-        beside();
-      } catch (...) {
-        besideFailure = std::current_exception();
-      }
-    });
-  } catch (...) {  // no thread to be had: one after the other
-    main();
-    beside();
-    return;
-  }
-  std::exception_ptr mainFailure;
-  try {
-    main();
-  } catch (...) {
-    mainFailure = std::current_exception();
-  }
-  other.join();
-  if (mainFailure) std::rethrow_exception(mainFailure);
-  if (besideFailure) std::rethrow_exception(besideFailure);
-}
-
 void runBesideWhenIdle(const std::function<void()>& main, std::size_t pieces,
                        const std::function<void(std::size_t)>& piece) {
   Helpers::Background background(piece, pieces);

@@ -172,53 +172,6 @@ TEST(Parallel, InvokeRunsBothOnceAndTogetherWhenThereAreTwoWorkers) {
   EXPECT_TRUE(firstDone.load());
 }
 
-TEST(Parallel, BesideRunsTheSecondOnAThreadOfItsOwnWhileTheFirstKeepsTheScopesThreads) {
-  for (const char* threads : {"1", "2", "4"}) {
-    const Threads t(threads);
-    const kerf::geometry::ParallelScope scope;
-    std::atomic<int> main{0}, beside{0};
-    std::thread::id mainOn, besideOn;
-    std::vector<std::atomic<int>> seen(50000);
-    kerf::geometry::runBeside(
-        [&] {
-          ++main;
-          mainOn = std::this_thread::get_id();
-          // main's own parallelFor, while beside runs, still covers every index once.
-          parallelFor(seen.size(), 16, [&](std::size_t b, std::size_t e) {
-            for (std::size_t i = b; i < e; ++i) ++seen[i];
-          });
-        },
-        [&] {
-          ++beside;
-          besideOn = std::this_thread::get_id();
-          parallelFor(1000, 16, [&](std::size_t, std::size_t) {});  // a call of its own beside main's
-        });
-    EXPECT_EQ(main.load(), 1) << threads;
-    EXPECT_EQ(beside.load(), 1) << threads;
-    EXPECT_EQ(mainOn, std::this_thread::get_id()) << threads;
-    EXPECT_EQ(besideOn == std::this_thread::get_id(), std::string(threads) == "1") << threads;
-    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](const std::atomic<int>& v) { return v.load() == 1; }))
-        << threads;
-  }
-  // An exception from either reaches the caller once both have ended; main's first when both throw.
-  const Threads t("2");
-  std::atomic<bool> mainDone{false}, besideDone{false};
-  EXPECT_THROW(kerf::geometry::runBeside([&] { mainDone = true; }, [] { throw std::runtime_error("beside"); }),
-               std::runtime_error);
-  EXPECT_TRUE(mainDone.load());
-  try {
-    kerf::geometry::runBeside([] { throw std::logic_error("main"); },
-                              [&] {
-                                std::this_thread::sleep_for(std::chrono::milliseconds(20));
-                                besideDone = true;
-                                throw std::runtime_error("beside");
-                              });
-    ADD_FAILURE() << "no exception";
-  } catch (const std::logic_error&) {
-    EXPECT_TRUE(besideDone.load());
-  }
-}
-
 TEST(Parallel, BesideWhenIdleRunsEveryPieceOnceAndTheCallerTakesTheRestAfterMain) {
   for (const char* threads : {"1", "2", "4"}) {
     const Threads t(threads);

@@ -20,8 +20,8 @@ unsigned workerCount();
 void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(std::size_t, std::size_t)>& body);
 
 /// parallelFor in pieces of at least minChunk indices, up to four a worker, each taken by the
-/// first worker free: for work split finely enough, a worker whose core is shared (runBeside's
-/// work beside it, another program on a shared machine) takes fewer pieces, and the call no longer
+/// first worker free: for work split finely enough, a worker whose core is shared (runBesideWhenIdle's
+/// pieces, another program on a shared machine) takes fewer pieces, and the call no longer
 /// waits for the slower of fixed halves. Pieces run in no fixed order and on no fixed thread, so
 /// body must write only what belongs to its own indices (as for parallelFor).
 void parallelForBalanced(std::size_t n, std::size_t minChunk,
@@ -47,13 +47,6 @@ class ParallelScope {
 /// otherwise first, then second. The two must not write what the other reads. An exception from
 /// either is rethrown here once both have finished (one of them, when both throw).
 void parallelInvoke(const std::function<void()>& first, const std::function<void()>& second);
-
-/// Runs main in the calling thread and beside at once on a thread made for it (not one of the
-/// scope's kept threads, so main's own parallelFor calls still have them): work that needs a core
-/// for a while beside a stage that leaves one idle. With one worker, or no thread to be had, main
-/// then beside. The two must not write what the other reads. An exception from either is rethrown
-/// here once both have finished (main's, when both throw).
-void runBeside(const std::function<void()>& main, const std::function<void()>& beside);
 
 /// Runs main in the calling thread while the scope's kept threads (ParallelScope) take
 /// piece(0) .. piece(pieces - 1) whenever no parallelFor needs them, one piece at a time, each to

@@ -6,12 +6,6 @@
 
 namespace kerf::converter::interp {
 
-double Interpreter::length(const Word& w) const {
-  double v = w.value;
-  if (!w.hasPoint && options_.integerUnit == IntegerUnit::Micrometre) v *= 0.001;
-  return v * (inch_ ? 25.4 : 1.0);
-}
-
 void Interpreter::warnIgnoredWords(const BlockWords& bw, const BlockPlan& plan) {
   // Q is the second parameter of an M code (M100 P Q); Z may set the position with G92.
   const bool mCode = bw.mCount > 0 || bw.machineCount > 0;

@@ -301,7 +301,8 @@ void runBesideWhenIdle(const std::function<void()>& main, std::size_t pieces,
   auto rethrowPiece = [&] {
     if (background.failure) std::rethrow_exception(background.failure);
   };
-  const std::shared_ptr<Helpers> kept = workerCount() >= 2 && pieces > 0 ? currentHelpers() : nullptr;
+  // One piece is not worth a thread: a short program (the summary of fewer than 4,096 moves) makes none.
+  const std::shared_ptr<Helpers> kept = workerCount() >= 2 && pieces > 1 ? currentHelpers() : nullptr;
   if (kept && kept->size() > 0 && kept->startBackground(background)) {
     std::exception_ptr mainFailure;
     try {

@@ -190,7 +190,10 @@ TEST(Parallel, BesideWhenIdleRunsEveryPieceOnceAndTheCallerTakesTheRestAfterMain
           parallelFor(seen.size(), 16, [&](std::size_t b, std::size_t e) {
             for (std::size_t i = b; i < e; ++i) ++seen[i];
           });
-          std::this_thread::sleep_for(std::chrono::milliseconds(30));
+          // Until a kept thread has taken a piece (10 s at most: a loaded machine is slow, not wrong).
+          const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+          while (std::string(threads) != "1" && elsewhere.load() == 0 && std::chrono::steady_clock::now() < until)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
           mainDone = true;
         },
         kPieces,
@@ -222,8 +225,8 @@ TEST(Parallel, BesideWhenIdleRunsEveryPieceOnceAndTheCallerTakesTheRestAfterMain
     if (std::string(threads) == "1") {
       EXPECT_EQ(elsewhere.load(), 0U);  // one worker: main, then every piece here
     } else {
-      EXPECT_GT(elsewhereDuringMain.load(), 0U) << threads;  // the kept threads took some during main's sleep
-      EXPECT_GT(afterMainHere.load(), 0U) << threads;        // 80 ms of pieces outlast main's 30
+      EXPECT_GT(elsewhereDuringMain.load(), 0U) << threads;  // the kept threads took some while main waited
+      EXPECT_GT(afterMainHere.load(), 0U) << threads;        // and 80 ms of pieces outlast that wait
     }
   }
   // Outside a scope there are no kept threads: main, then every piece, here.
@@ -245,9 +248,12 @@ TEST(Parallel, BesideWhenIdleRunsEveryPieceOnceAndTheCallerTakesTheRestAfterMain
                                                  [&](std::size_t k) {
                                                    ++started;
                                                    if (k == 3) throw std::runtime_error("piece");
+                                                   // Long enough that the throw is seen long before
+                                                   // the other pieces could all have started.
+                                                   std::this_thread::sleep_for(std::chrono::microseconds(50));
                                                  }),
                std::runtime_error);
-  EXPECT_LT(started.load(), 1000);  // at most one piece in flight on each thread after the throw
+  EXPECT_LT(started.load(), 500);  // pieces already taken when the throw was seen, and no more
   started = 0;
   try {
     kerf::geometry::runBesideWhenIdle([] { throw std::logic_error("main"); }, 50,

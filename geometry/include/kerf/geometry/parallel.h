@@ -58,7 +58,8 @@ void parallelInvoke(const std::function<void()>& first, const std::function<void
 /// them took a core from those passes at ordinary priority; at the lowest (SCHED_IDLE) a helper
 /// woken for main's parallelFor waited for the scheduler's next tick, up to 4 ms, behind it.)
 /// piece must be safe to run for different pieces at once, on different threads; a parallelFor
-/// inside it runs serially. Outside a scope, or with one worker, main then the pieces, here. An
+/// inside it runs serially. Outside a scope, with one worker or one piece, main then the pieces,
+/// here. An
 /// exception from main is rethrown here once the pieces running have ended (no more start); from
 /// a piece, the first one, once every piece has run or stopped (no more start after it).
 void runBesideWhenIdle(const std::function<void()>& main, std::size_t pieces,

@@ -191,11 +191,13 @@ SourceFile::SourceFile(std::string name, TextBytes text)
   const char* data = text_.data();
   const std::size_t size = text_.size();
   if (std::memchr(data, '\r', size) == nullptr) {  // LF only: the fast way
-    if (size >= kOnePassBytes && geometry::largePagesOwned()) {
+    if (size >= kOnePassBytes && geometry::largePagesOwned() && geometry::parkedPages() == 0) {
       // One pass, into room for a feed at every byte: the list's pages are mapped for it alone
       // and become memory only where written (4 bytes a line), the rest is address space. The
       // pass that counted the feeds first read a long text twice (0.5 of the 1.7 ms the starts of
       // a 6 MB program took). Kept bytes that change meanwhile still hold at most size feeds.
+      // Not while pages an earlier program gave back wait to be taken (a folder's next file):
+      // a new block takes them all, and this one would keep them from the parse and the moves.
       lineStarts_.resize(size + 1);  // FillLaterAllocator: nothing written here
       std::uint32_t* out = lineStarts_.data() + 1;
       forEachFeed(data, size, [&](std::size_t at) { *out++ = static_cast<std::uint32_t>(at + 1); });

@@ -11,14 +11,12 @@
 #include <thread>
 #include <vector>
 
-
 namespace kerf::geometry {
 namespace {
 
 /// Set while a thread runs a piece of runBesideWhenIdle's: a parallelFor there runs serially (the
 /// kept threads it would use are the ones that run such pieces).
 thread_local bool besideWhenIdle = false;
-
 
 /// Threads kept for parallelFor while a ParallelScope lives: a check calls it a score of times,
 /// and a thread made and ended for each call cost more than some of the calls' work (and moved the

@@ -51,7 +51,8 @@ std::size_t adoptPages(void* begin, void* end);
 /// it cannot be done (not Kerf's own pages, KERF_PAGE_POOL=0, not Linux): the caller copies. The
 /// parser joins the words its parts read this way.
 bool movePages(void* to, void* from, std::size_t bytes);
-/// How many pages are waiting to be adopted (for tests).
+/// How many pages are waiting to be adopted (tests; a text's line starts take one pass only when
+/// none are: converter/source.cpp).
 [[nodiscard]] std::size_t parkedPages();
 
 /// From this size on LargeAllocator maps whole 2 MiB pages of its own (smaller blocks come from

@@ -87,7 +87,7 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
     out.measures = measureSurface(out.toolpath);
     // The summary reads what the checks read and writes only its own stretches: they are made
     // beside the checks, on the core the self-intersection sweep (serial) leaves idle, and what
-    // is left when the checks are done, on both (docs/interpreter.md, "The summary beside").
+    // is left when the checks are done, on both (docs/interpreter.md, "The summary beside the checks").
     std::optional<SummaryMaker> maker;
     if (options.summarize) maker.emplace(out.toolpath, *options.summarize);
     geometry::runBesideWhenIdle(

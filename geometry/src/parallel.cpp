@@ -125,9 +125,8 @@ class Helpers {
       Background* background = nullptr;
       {
         std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] {
-          return stop_ || generation_ != seen || (background_ != nullptr && background_->left());
-        });
+        wake_.wait(lock,
+                   [&] { return stop_ || generation_ != seen || (background_ != nullptr && background_->left()); });
         if (stop_) return;
         if (generation_ != seen) {
           seen = generation_;

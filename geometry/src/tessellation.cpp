@@ -59,20 +59,21 @@ ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
 namespace {
 
 /// Below this chord angle (rad) the chord's errors come from their Taylor series, not from the
-/// sine, cosine and logarithm: a chord of a long program's arcs is nearly always this short, and
-/// those calls were most of the summary's time (sample, planChords and the library's log and
-/// sincos: 12% of kerf check on the 6.1 MB program). The series are also the more accurate there:
-/// the closed forms subtract numbers that agree in their first digits (at 0.25 rad, 1 - cos(span/2)
-/// loses 2 of them, the mean error 3). Their terms up to span^14 leave out less than 1e-17 of the
-/// value below 0.25 rad; the series are sympy's (tessellation_test.cpp checks them against the
-/// closed forms on both sides of the switch).
+/// sine, cosine and logarithm. The chords of a real program's arcs are nearly all this short (a
+/// 0.1 mm step on a 5 mm radius is 0.02 rad), and those calls were most of the summary's time
+/// (12% of kerf check on the 6.1 MB benchmark, whose arcs' chords are 1.1 rad and keep them). The
+/// series are also the more accurate there: the closed forms subtract numbers that agree in their
+/// first digits (at 0.25 rad, 1 - cos(span/2) loses 2 of them, the mean error 3). Their terms up to
+/// span^14 leave out less than 1e-17 of the value below 0.25 rad; the coefficients are sympy's
+/// (tessellation_test.cpp checks both sides of the switch against mpmath).
 constexpr double kSeriesSpan = 0.25;
 
 /// 1 - cos x for |x| < kSeriesSpan / 2, by its series (Horner in x^2).
 double oneMinusCosSeries(double x) {
   const double q = x * x;
-  return q * (1.0 / 2 - q * (1.0 / 24 - q * (1.0 / 720 - q * (1.0 / 40320 - q * (1.0 / 3628800 - q * (1.0 / 479001600 -
-                                                                                                     q / 87178291200.0))))));
+  return q * (1.0 / 2 -
+              q * (1.0 / 24 - q * (1.0 / 720 - q * (1.0 / 40320 -
+                                                    q * (1.0 / 3628800 - q * (1.0 / 479001600 - q / 87178291200.0))))));
 }
 
 /// The mean relative error of a chord of angle span < kSeriesSpan: the series of
@@ -81,47 +82,46 @@ double oneMinusCosSeries(double x) {
 /// + 10753 span^14/10461394944000.
 double meanRelativeErrorSeries(double span) {
   const double q = span * span;
-  const double high = 1.0 / 20160 + q * (1.0 / 362880 + q * (1.0 / 5322240 + q * (13.0 / 958003200 + q * (10753.0 / 10461394944000.0))));
+  const double high =
+      1.0 / 20160 +
+      q * (1.0 / 362880 + q * (1.0 / 5322240 + q * (13.0 / 958003200 + q * (10753.0 / 10461394944000.0))));
   return q / 12 + q * q * q * high;
 }
 
-/// chordMeanRelativeError with the cosine and sine of span / 2 given: the sagitta needs the
-/// cosine too, and the two come from one call. ln tan(pi/4 + span/4) is taken as
-/// ln((1 + sin(span/2)) / cos(span/2)) (tan(pi/4 + x) = (1 + sin 2x) / cos 2x), a sine that comes
-/// with the cosine instead of a tangent.
-double meanRelativeError(double span, double cosHalf, double sinHalf) {
-  if (span <= 0) return 0.0;
-  // Average over phi in [-span/2, span/2] of 1 - cos(span/2) / cos(phi).
-  if (span < kSeriesSpan) return meanRelativeErrorSeries(span);
+/// The mean relative error of a chord of angle span >= kSeriesSpan, the average over phi in
+/// [-span/2, span/2] of 1 - cos(span/2) / cos(phi), with the cosine and sine of span / 2 given:
+/// the sagitta needs the cosine too, and the two come from one call. ln tan(pi/4 + span/4) is
+/// taken as ln((1 + sin(span/2)) / cos(span/2)) (tan(pi/4 + x) = (1 + sin 2x) / cos 2x), a sine
+/// that comes with the cosine instead of a tangent.
+double meanRelativeErrorClosed(double span, double cosHalf, double sinHalf) {
   return 1 - cosHalf * (2 / span) * std::log((1 + sinHalf) / cosHalf);
 }
 
 /// A chord of angle span on a circle of radius r: its sagitta r (1 - cos(span/2)), the deviation
-/// at its middle, and its mean relative error.
+/// at its middle, and its mean relative error (0 and 0 for no angle).
 struct ChordError {
   double sagitta = 0.0;
   double meanRelative = 0.0;
 };
 ChordError chordError(double r, double span) {
-  if (span < kSeriesSpan) return {span > 0 ? r * oneMinusCosSeries(span / 2) : 0.0, meanRelativeError(span, 1.0, 0.0)};
+  if (span <= 0) return {};
+  if (span < kSeriesSpan) return {r * oneMinusCosSeries(span / 2), meanRelativeErrorSeries(span)};
   const double cosHalf = std::cos(span / 2), sinHalf = std::sin(span / 2);
-  return {r * (1 - cosHalf), meanRelativeError(span, cosHalf, sinHalf)};
+  return {r * (1 - cosHalf), meanRelativeErrorClosed(span, cosHalf, sinHalf)};
 }
 
-/// chordError of a chord whose half angle's sine is known (ChordPlan::sinHalf): its cosine is
-/// sqrt((1 - s)(1 + s)), within a unit of the last place of cos(asin s), without the sine and
-/// cosine calls; 1 - that cosine is s^2 / (1 + cosine), which does not cancel.
+/// chordError of a chord (span > 0) whose half angle's sine is known (ChordPlan::sinHalf): its
+/// cosine is sqrt((1 - s)(1 + s)), within a unit of the last place of cos(asin s), without the
+/// sine and cosine calls; 1 - that cosine is s^2 / (1 + cosine), which does not cancel.
 ChordError chordErrorOfSine(double r, double span, double sinHalf) {
   const double cosHalf = std::sqrt((1 - sinHalf) * (1 + sinHalf));
-  return {r * (sinHalf * sinHalf / (1 + cosHalf)), meanRelativeError(span, cosHalf, sinHalf)};
+  return {r * (sinHalf * sinHalf / (1 + cosHalf)),
+          span < kSeriesSpan ? meanRelativeErrorSeries(span) : meanRelativeErrorClosed(span, cosHalf, sinHalf)};
 }
 
 }  // namespace
 
-double chordMeanRelativeError(double span) {
-  if (span < kSeriesSpan) return meanRelativeError(span, 1.0, 0.0);
-  return meanRelativeError(span, std::cos(span / 2), std::sin(span / 2));
-}
+double chordMeanRelativeError(double span) { return chordError(1.0, span).meanRelative; }
 
 std::size_t sampleCount(const Segment& seg, const Sampling& sampling) {
   if (!seg.isArc()) return 1;

@@ -15,7 +15,6 @@
 #include <utility>
 #include <vector>
 
-
 namespace {
 
 using kerf::geometry::parallelFor;
@@ -234,9 +233,10 @@ TEST(Parallel, BesideWhenIdleRunsEveryPieceOnceAndTheCallerTakesTheRestAfterMain
     const Threads t("2");
     std::atomic<std::size_t> here{0};
     const std::thread::id caller = std::this_thread::get_id();
-    kerf::geometry::runBesideWhenIdle([] {}, 10, [&](std::size_t) {
-      if (std::this_thread::get_id() == caller) ++here;
-    });
+    kerf::geometry::runBesideWhenIdle([] {}, 10,
+                                      [&](std::size_t) {
+                                        if (std::this_thread::get_id() == caller) ++here;
+                                      });
     EXPECT_EQ(here.load(), 10U);
   }
   // An exception from main or a piece reaches the caller once the pieces running have ended;

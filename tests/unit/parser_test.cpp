@@ -523,45 +523,42 @@ TEST(source, text_bytes_written_in_place_read_as_the_same_text) {
   EXPECT_EQ(TextBytes().data()[0], '\0');
 }
 
-// The text's hash (source.cpp) reads it in four lanes of 8 bytes, then 8 bytes, then the tail: a
-// change of one byte in any of them, and only a change, is seen when the text is read again.
+// The text's hash (source.cpp) reads it in pieces of 1 MiB, each in four lanes of 8 bytes, then
+// 8 bytes, then the tail: a change of one byte in any of them, and only a change, is seen when the
+// text is read again.
 TEST(source, a_change_of_one_byte_anywhere_in_a_long_text_is_seen) {
-  std::string text;
-  for (int k = 0; text.size() < 1000; ++k) text += "G1 X" + std::to_string(k) + ".5\n";
-  text += "M2\n";  // 1000 and more bytes: not a multiple of 32, nor of 8
-  ASSERT_NE(text.size() % 8, 0u);
-  auto seenChanged = [&](const std::string& onDisk) {
-    SourceFile src("p.nc", text);
+  auto programOf = [](std::size_t bytes) {
+    std::string text;
+    for (int k = 0; text.size() < bytes; ++k) text += "G1 X" + std::to_string(k) + ".5\n";
+    return text;
+  };
+  auto seenChanged = [](const std::string& read, const std::string& onDisk) {
+    SourceFile src("p.nc", read);
     src.releaseText([&onDisk]() -> std::optional<std::string> { return onDisk; });
     (void)src.lineText(1);
     return src.changedOnDisk();
   };
-  EXPECT_FALSE(seenChanged(text));
+  const std::string text = programOf(1000) + "M2\n";  // 1000 and more bytes: not a multiple of 32, nor of 8
+  ASSERT_NE(text.size() % 8, 0u);
+  EXPECT_FALSE(seenChanged(text, text));
   for (std::size_t at = 0; at < text.size(); ++at) {
     std::string changed = text;
     changed[at] = changed[at] == 'X' ? 'Y' : 'X';
-    ASSERT_TRUE(seenChanged(changed)) << "byte " << at;
+    ASSERT_TRUE(seenChanged(text, changed)) << "byte " << at;
   }
-  // A text of several pieces (the hash takes 1 MiB at a time, on every core): a byte changed in
-  // each piece, at its ends and inside, and two pieces swapped, are seen.
-  std::string longText;
-  for (int k = 0; longText.size() < (std::size_t{3} << 20) + 77; ++k) longText += "G1 X" + std::to_string(k) + ".5\n";
-  auto longChanged = [&](const std::string& onDisk) {
-    SourceFile src("long.nc", longText);
-    src.releaseText([&onDisk]() -> std::optional<std::string> { return onDisk; });
-    (void)src.lineText(1);
-    return src.changedOnDisk();
-  };
-  EXPECT_FALSE(longChanged(longText));
+  // A text of several pieces: a byte changed in each piece, at its ends and inside, and two pieces
+  // swapped, are seen.
+  const std::string longText = programOf((std::size_t{3} << 20) + 77);
+  EXPECT_FALSE(seenChanged(longText, longText));
   constexpr std::size_t kMiB = std::size_t{1} << 20;
   for (const std::size_t at : {std::size_t{0}, kMiB - 1, kMiB, 2 * kMiB + 5, longText.size() - 1}) {
     std::string changed = longText;
     changed[at] = changed[at] == '1' ? '2' : '1';
-    EXPECT_TRUE(longChanged(changed)) << "byte " << at;
+    EXPECT_TRUE(seenChanged(longText, changed)) << "byte " << at;
   }
-  std::string swapped = longText.substr(kMiB, kMiB) + longText.substr(0, kMiB) + longText.substr(2 * kMiB);
+  const std::string swapped = longText.substr(kMiB, kMiB) + longText.substr(0, kMiB) + longText.substr(2 * kMiB);
   ASSERT_EQ(swapped.size(), longText.size());
-  EXPECT_TRUE(longChanged(swapped));
+  EXPECT_TRUE(seenChanged(longText, swapped));
 }
 
 TEST(source, lines_start_after_every_line_feed_wherever_it_falls_in_a_word) {

@@ -117,12 +117,11 @@ TEST(tessellation, mean_relative_error_series_and_closed_form_agree_with_forty_d
   // few units of the last place; the closed form loses digits to cancellation as the span shrinks.
   const struct {
     double span, value, relative;
-  } cases[] = {{0.001, 8.3333333333333382937e-8, 1e-15},   {0.01, 8.3333333333829367835e-6, 1e-15},
-               {0.1, 0.00083333338296408405839, 1e-15},    {0.2, 0.0033333365150104774283, 1e-15},
+  } cases[] = {{0.001, 8.3333333333333382937e-8, 1e-15},     {0.01, 8.3333333333829367835e-6, 1e-15},
+               {0.1, 0.00083333338296408405839, 1e-15},      {0.2, 0.0033333365150104774283, 1e-15},
                {0.2499999, 0.0052083413190174814303, 1e-15}, {0.25, 0.0052083454857125143723, 1e-13},
                {0.3, 0.0075000363426345947138, 1e-13}};
-  for (const auto& c : cases)
-    EXPECT_NEAR(chordMeanRelativeError(c.span), c.value, c.value * c.relative) << c.span;
+  for (const auto& c : cases) EXPECT_NEAR(chordMeanRelativeError(c.span), c.value, c.value * c.relative) << c.span;
 }
 
 TEST(tessellation, sagitta_of_short_chords_agrees_with_forty_digits) {

@@ -20,9 +20,9 @@ unsigned workerCount();
 void parallelFor(std::size_t n, std::size_t minChunk, const std::function<void(std::size_t, std::size_t)>& body);
 
 /// parallelFor in pieces of at least minChunk indices, up to four a worker, each taken by the
-/// first worker free: for work split finely enough, a worker whose core is shared (runBesideWhenIdle's
-/// pieces, another program on a shared machine) takes fewer pieces, and the call no longer
-/// waits for the slower of fixed halves. Pieces run in no fixed order and on no fixed thread, so
+/// first worker free: for work split finely enough, a worker whose core is shared (a piece of
+/// runBesideWhenIdle's, another program on a shared machine) takes fewer pieces, and the call no
+/// longer waits for the slower of fixed halves. Pieces run in no fixed order and on no fixed thread, so
 /// body must write only what belongs to its own indices (as for parallelFor).
 void parallelForBalanced(std::size_t n, std::size_t minChunk,
                          const std::function<void(std::size_t, std::size_t)>& body);
@@ -59,9 +59,8 @@ void parallelInvoke(const std::function<void()>& first, const std::function<void
 /// woken for main's parallelFor waited for the scheduler's next tick, up to 4 ms, behind it.)
 /// piece must be safe to run for different pieces at once, on different threads; a parallelFor
 /// inside it runs serially. Outside a scope, with one worker or one piece, main then the pieces,
-/// here. An
-/// exception from main is rethrown here once the pieces running have ended (no more start); from
-/// a piece, the first one, once every piece has run or stopped (no more start after it).
+/// here. An exception from main is rethrown here once the pieces running have ended (no more
+/// start); from a piece, the first one, once every piece has run or stopped (no more start after it).
 void runBesideWhenIdle(const std::function<void()>& main, std::size_t pieces,
                        const std::function<void(std::size_t)>& piece);
 

@@ -5,7 +5,6 @@
 #include "kerf/geometry/contour.h"
 #include "kerf/geometry/intersection.h"
 #include "kerf/geometry/parallel.h"
-#include "kerf/geometry/phase_times.h"
 #include "kerf/geometry/ruled_surface.h"
 
 #include <algorithm>
@@ -448,9 +447,7 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
 
   // The lower contour's self-intersections and closure.
   Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
-  geometry::markPhase("checks: lower contour start");
   ContourTest lowerTest = testContour(lower, options);
-  geometry::markPhase("checks: lower contour");
   const geometry::ClosureReport& closure = lowerTest.closure;
   if (!closure.loopFrom) {
     const Move& last = moves[path.moveIndex.back()];

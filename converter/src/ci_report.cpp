@@ -16,68 +16,19 @@
 #include <string_view>
 
 namespace kerf::converter {
-namespace docs {
-extern const char* const kDiagnosticsMd;  // docs/diagnostics.md, compiled in (converter/CMakeLists.txt)
-}
-
 namespace {
 
 using json = nlohmann::ordered_json;
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
-/// Markdown of a table cell as plain text: no code ticks, `\|` as `|`.
-std::string plain(std::string_view cell) {
+/// A meaning's Markdown as plain text: no code ticks, `\|` as `|`.
+std::string plain(std::string_view markdown) {
   std::string out;
-  for (std::size_t i = 0; i < cell.size(); ++i) {
-    if (cell[i] == '`') continue;
-    if (cell[i] == '\\' && i + 1 < cell.size() && cell[i + 1] == '|') continue;
-    out += cell[i];
+  for (std::size_t i = 0; i < markdown.size(); ++i) {
+    if (markdown[i] == '`') continue;
+    if (markdown[i] == '\\' && i + 1 < markdown.size() && markdown[i + 1] == '|') continue;
+    out += markdown[i];
   }
   return out;
-}
-
-/// The cells of a table row `| a | b \| c | d |`: a `\|` stays inside its cell.
-std::vector<std::string_view> cells(std::string_view row) {
-  std::vector<std::string_view> out;
-  std::size_t start = 1;
-  for (std::size_t i = 1; i < row.size(); ++i) {
-    if (row[i] == '|' && row[i - 1] != '\\') {
-      out.push_back(trim(row.substr(start, i - start)));
-      start = i + 1;
-    }
-  }
-  return out;
-}
-
-std::vector<CodeInfo> readCodeTable() {
-  std::vector<CodeInfo> codes;
-  const std::string_view text = docs::kDiagnosticsMd;
-  for (std::size_t at = 0; at < text.size();) {
-    std::size_t end = text.find('\n', at);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view line = text.substr(at, end - at);
-    at = end + 1;
-    if (!line.starts_with("| K")) continue;
-    const std::vector<std::string_view> c = cells(line);
-    if (c.size() < 3) continue;
-    CodeInfo info;
-    info.id = std::string(c[0]);
-    info.name = std::string(c[1]);
-    const std::string_view meaning = c[2];
-    const std::size_t colon = meaning.find(':');
-    info.severityText = std::string(trim(meaning.substr(0, colon)));
-    info.meaning = plain(colon == std::string_view::npos ? meaning : trim(meaning.substr(colon + 1)));
-    info.severity = info.severityText.starts_with("error")     ? Severity::Error
-                    : info.severityText.starts_with("warning") ? Severity::Warning
-                                                               : Severity::Note;
-    codes.push_back(std::move(info));
-  }
-  return codes;
 }
 
 /// A file name as a URI reference (RFC 3986; RFC 8089 for an absolute path, file:///...):
@@ -158,23 +109,18 @@ std::string xmlEscaped(std::string_view s) {
 
 }  // namespace
 
-const std::vector<CodeInfo>& diagnosticCodes() {
-  static const std::vector<CodeInfo> codes = readCodeTable();
-  return codes;
-}
-
 std::string sarifLog(std::span<const CheckedFile> files, const std::string& version) {
   json rules = json::array();
   std::map<std::string, std::size_t> ruleIndex;
   for (const CodeInfo& c : diagnosticCodes()) {
-    ruleIndex.emplace(c.id, rules.size());
-    rules.push_back({{"id", c.id},
-                     {"name", c.name},
-                     {"shortDescription", {{"text", c.meaning}}},
-                     {"fullDescription", {{"text", c.severityText + ": " + c.meaning}}},
-                     {"help",
-                      {{"text", c.id + " (" + c.name + "), " + c.severityText + ": " + c.meaning +
-                                    ". docs/diagnostics.md lists every code."}}},
+    const std::string id = codeName(c.code), name(c.name), words(c.severityText), meaning = plain(c.meaning);
+    ruleIndex.emplace(id, rules.size());
+    rules.push_back({{"id", id},
+                     {"name", name},
+                     {"shortDescription", {{"text", meaning}}},
+                     {"fullDescription", {{"text", words + ": " + meaning}}},
+                     {"help", {{"text", id + " (" + name + "), " + words + ": " + meaning +
+                                            ". docs/diagnostics.md lists every code."}}},
                      {"defaultConfiguration", {{"level", severityName(c.severity)}}}});
   }
   json results = json::array();

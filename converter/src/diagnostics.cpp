@@ -11,6 +11,67 @@ std::string codeName(Code code) {
   return buf;
 }
 
+namespace {
+
+constexpr CodeInfo kCodes[] = {
+#define KERF_CODE_INFO(number, name, severity, words, meaning) \
+  {Code::name, #name, Severity::severity, words, meaning},
+    KERF_DIAGNOSTIC_TABLE(KERF_CODE_INFO)
+#undef KERF_CODE_INFO
+};
+
+}  // namespace
+
+std::span<const CodeInfo> diagnosticCodes() { return kCodes; }
+
+const CodeInfo& codeInfo(Code code) {
+  // The table is in ascending order (tests/unit/diagnostics_test.cpp keeps it so).
+  const auto* it = std::lower_bound(std::begin(kCodes), std::end(kCodes), code,
+                                    [](const CodeInfo& c, Code k) { return c.code < k; });
+  return it != std::end(kCodes) && it->code == code ? *it : kCodes[0];
+}
+
+std::string diagnosticsMarkdown() {
+  std::string md = R"(# Diagnostic codes
+
+Stable codes; the text may improve, the code stays. `kerf check` prints them compiler style:
+
+```
+part.nc:12:7: error: arc radius 4.000 is shorter than half the chord 5.000 mm [K0302]
+    G02 X10. Y0 R4.
+                ^~~
+```
+
+This page is made from the table in `converter/include/kerf/converter/diagnostic_table.h`, the one
+source of the codes, their severities and meanings (a test keeps the two equal:
+`KERF_UPDATE_GOLDEN=1` rewrites this page). The hundreds are the family: 1 reading the text, 2
+words and modal state, 3 arcs, 4 motion, 5 program flow, 6 the geometry of the cut, 7 numbers, 8
+outputs and options.
+
+| code | name | severity and meaning |
+|---|---|---|
+)";
+  for (const CodeInfo& c : kCodes) {
+    md += "| " + codeName(c.code) + " | ";
+    md += c.name;
+    md += " | ";
+    md += c.severityText;
+    md += ": ";
+    md += c.meaning;
+    md += " |\n";
+  }
+  md += R"(
+Exit codes of `kerf`: 0 no errors (warnings and notes allowed), 1 errors in the program, 2 usage or
+file problems (a file that cannot be read, a wrong machine profile, an output that cannot be
+written, standard output lost). With several files, the worst of them.
+
+A code has one meaning. Where one meaning was split from another, the old code kept the first:
+K0205 (letters) gave K0222, K0223, K0224 and K0225; K0220 (two files) gave K0226 and K0227; K0304
+(lower arc) gave K0306; K0604 (retrace) gave K0609; K0201 (unknown G) gave K0236.
+)";
+  return md;
+}
+
 const char* severityName(Severity s) {
   switch (s) {
     case Severity::Note: return "note";
@@ -105,10 +166,6 @@ namespace {
 void appendQuote(std::string& out, const Diagnostic& d) {
   const SourceLocation loc = d.source->locate(d.span.offset);
   std::string_view text = d.source->lineText(loc.line);
-  if (d.source->changedOnDisk()) {  // read again for the quote, and no longer what was checked
-    out += "    (the file changed after it was read: its line is not quoted)\n";
-    return;
-  }
   std::size_t col = loc.column - 1;
   // Long lines are shown as a window around the column, so a binary file or a megabyte-long
   // line cannot flood the terminal.

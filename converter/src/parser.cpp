@@ -6,13 +6,9 @@
 //           4. the sides of a 4-axis block
 //           5. the whole text: byte-order mark, lines, '%' frame
 #include "kerf/converter/program.h"
-#include "kerf/geometry/memory.h"
-#include "kerf/geometry/parallel.h"
-#include "kerf/geometry/phase_times.h"
 
 #include <algorithm>
-#include <array>
-#include <bit>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -51,12 +47,9 @@ bool isAxisLetter(char u) {
   return u == 'X' || u == 'Y' || u == 'Z' || u == 'U' || u == 'V' || u == 'W' || u == 'A' || u == 'C';
 }
 
-constexpr std::array<double, 19> kPowersOfTen = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8, 1e9,
-                                                 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18};
-
 /// Numbers larger than this are refused (K0105): no wire machine travels a kilometre.
 constexpr double kLargestNumber = 1e9;
-/// At most this many digits in one number.
+/// At most this many significant digits before the point.
 constexpr int kMaxDigits = 18;
 
 struct NumberScan {
@@ -66,110 +59,39 @@ struct NumberScan {
   double value = 0.0;
 };
 
-/// How many of the 8 characters in w (the first in its lowest byte) are digits before the first
-/// that is not: a byte is a digit when its high half is 3 and stays 3 with 6 added. A carry out
-/// of a byte of 0xFA and up only reaches the bytes after it, past the first non-digit.
-int leadingDigits(std::uint64_t w) {
-  constexpr std::uint64_t kHigh = 0xF0F0F0F0F0F0F0F0ULL, kThrees = 0x3030303030303030ULL;
-  const std::uint64_t notDigit = ((w & kHigh) ^ kThrees) | (((w + 0x0606060606060606ULL) & kHigh) ^ kThrees);
-  return notDigit == 0 ? 8 : std::countr_zero(notDigit) / 8;
-}
-
-/// The value of the first n (1 to 8) characters of w, all digits: shifted up so that zeros stand
-/// before them, then 8 digits joined in pairs, fours and eights (each step within its lane).
-std::uint64_t digitsValue(std::uint64_t w, int n) {
-  std::uint64_t d = (w - 0x3030303030303030ULL) << (8 * (8 - n));  // what follows the digits is gone
-  d = (d * 10 + (d >> 8)) & 0x00FF00FF00FF00FFULL;                 // 2 digits a 16-bit lane
-  d = (d * 100 + (d >> 16)) & 0x0000FFFF0000FFFFULL;               // 4 digits a 32-bit lane
-  return (d * 10000 + (d >> 32)) & 0xFFFFFFFFULL;
-}
-
-[[gnu::noinline]] NumberScan scanNumberByBytes(std::string_view text, std::size_t pos, std::size_t limit);
-
-/// [sign] digits [. digits] — no exponent, no spaces inside. The value is mantissa / 10^k with
-/// both exact doubles, so it is correctly rounded (the same as strtod) for up to 15 digits.
-/// Leading zeros are not digits (after the point they still count as places); past 18 digits an
-/// integer part is refused and a fraction's further digits are dropped.
-/// Most numbers have at most 7 digits each side of the point: those are read 8 characters at a
-/// time (leadingDigits, digitsValue), to the same mantissa and places as digit by digit.
-[[gnu::always_inline]] inline NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit) {
-  const char* const base = text.data();
-  const char* p = base + pos;
-  const char* const end = base + limit;
-  const char* const textEnd = base + text.size();
-  const bool negative = p < end && *p == '-';
-  if (p < end && (*p == '+' || *p == '-')) ++p;
-  if (textEnd - p < 17) return scanNumberByBytes(text, pos, limit);  // 8 + '.' + 8 readable
-  std::uint64_t w;
-  std::memcpy(&w, p, 8);
-  const int whole = static_cast<int>(std::min<std::ptrdiff_t>(leadingDigits(w), end - p));
-  if (whole == 8) return scanNumberByBytes(text, pos, limit);
-  std::uint64_t mantissa = whole > 0 ? digitsValue(w, whole) : 0;
-  bool anyDigit = whole > 0;
-  p += whole;
+/// [sign] digits [. digits] in text[pos, limit) — no exponent, no spaces inside. Leading zeros are
+/// not significant; more than 18 significant digits before the point are refused. The value is
+/// std::from_chars's: correctly rounded, whatever the number of digits.
+NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit) {
   NumberScan s;
-  int places = 0;
-  if (p < end && *p == '.') {
+  std::size_t i = pos;
+  const bool negative = i < limit && text[i] == '-';
+  if (i < limit && (text[i] == '+' || text[i] == '-')) ++i;
+  const std::size_t first = i;
+  while (i < limit && text[i] == '0') ++i;  // leading zeros
+  const std::size_t significant = i;
+  while (i < limit && isDigit(text[i])) ++i;
+  const bool tooMany = i - significant > static_cast<std::size_t>(kMaxDigits);
+  bool anyDigit = i > first;
+  if (i < limit && text[i] == '.') {
     s.hasPoint = true;
-    ++p;
-    std::memcpy(&w, p, 8);
-    places = static_cast<int>(std::min<std::ptrdiff_t>(leadingDigits(w), end - p));
-    if (places == 8) return scanNumberByBytes(text, pos, limit);
-    static constexpr std::uint64_t kScale[8] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000};
-    if (places > 0) mantissa = mantissa * kScale[places] + digitsValue(w, places);
-    anyDigit |= places > 0;
-    p += places;
+    const std::size_t point = ++i;
+    while (i < limit && isDigit(text[i])) ++i;
+    anyDigit = anyDigit || i > point;
   }
-  s.end = static_cast<std::size_t>(p - base);
+  s.end = i;
   if (!anyDigit) return s;  // Missing
-  s.status = NumberScan::Ok;
-  double v = static_cast<double>(mantissa);
-  if (places > 0) v /= kPowersOfTen[places];
-  s.value = negative ? -v : v;
-  return s;
-}
-
-/// scanNumber one character at a time: any length.
-NumberScan scanNumberByBytes(std::string_view text, std::size_t pos, std::size_t limit) {
-  NumberScan s;
-  const char* const base = text.data();
-  const char* p = base + pos;
-  const char* const end = base + limit;
-  bool negative = false;
-  if (p < end && (*p == '+' || *p == '-')) negative = *p++ == '-';
-  const char* const first = p;
-  while (p < end && *p == '0') ++p;  // leading zeros
-  std::uint64_t mantissa = 0;
-  const char* const significant = p;
-  while (p < end && isDigit(*p)) mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p++ - '0');
-  int digits = static_cast<int>(p - significant);
-  bool anyDigit = p > first;
-  if (digits > kMaxDigits) s.status = NumberScan::TooManyDigits;
-  int fraction = 0;
-  if (p < end && *p == '.') {
-    s.hasPoint = true;
-    ++p;
-    const char* const point = p;
-    if (mantissa == 0)
-      while (p < end && *p == '0') ++p;  // zeros before the first significant digit: places only
-    fraction = static_cast<int>(p - point);
-    for (; p < end && isDigit(*p); ++p) {
-      if (digits >= kMaxDigits) continue;  // past 18 significant digits: dropped
-      mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
-      ++digits;
-      ++fraction;
-    }
-    anyDigit |= p > point;
-  }
-  s.end = static_cast<std::size_t>(p - base);
-  if (!anyDigit) {
-    s.status = NumberScan::Missing;
+  if (tooMany) {
+    s.status = NumberScan::TooManyDigits;
     return s;
   }
-  if (s.status == NumberScan::TooManyDigits) return s;
   s.status = NumberScan::Ok;
-  double v = static_cast<double>(mantissa);
-  if (fraction > 0) v = fraction < static_cast<int>(kPowersOfTen.size()) ? v / kPowersOfTen[fraction] : 0.0;
+  // from_chars takes no '+' and no lone '.' after the digits in every library: the digits alone.
+  std::size_t digitsEnd = i;
+  if (s.hasPoint && text[digitsEnd - 1] == '.') --digitsEnd;
+  double v = 0.0;
+  if (digitsEnd > first)
+    std::from_chars(text.data() + first, text.data() + digitsEnd, v, std::chars_format::fixed);
   s.value = negative ? -v : v;
   return s;
 }
@@ -249,16 +171,6 @@ struct MacroTally {
   SourceSpan first;
   std::uint32_t firstLine = 0, lastLine = 0;
 
-  /// Adds the tally of lines that come after these.
-  void add(const MacroTally& later) {
-    if (later.count == 0) return;
-    if (count == 0) {
-      first = later.first;
-      firstLine = later.firstLine;
-    }
-    count += later.count;
-    lastLine = later.lastLine;
-  }
 };
 
 class LineParser {
@@ -276,21 +188,12 @@ class LineParser {
   /// The macro B statements of the lines parsed.
   [[nodiscard]] const MacroTally& macros() const { return macros_; }
 
-  /// The blocks go to [out, out + capacity), not to the program's list: the parts of a long text
-  /// write theirs in place (parseProgram). A block past the capacity is counted, not written.
-  void writeBlocksTo(Block* out, std::size_t capacity) {
-    blockOut_ = out;
-    blockRoom_ = capacity;
-  }
-  /// Blocks made so far.
-  [[nodiscard]] std::size_t blockCount() const { return blockOut_ ? blocksMade_ : program_.blocks.size(); }
 
  private:
   /// Parses one block from i; returns where the next block on this line starts (or end).
   std::size_t parseBlock(std::size_t i, std::size_t end, std::uint32_t line) {
     while (i < end && isBlank(text_[i])) ++i;
     if (i >= end) return end;
-    if (options_.plainLines && tryPlainLine(i, end, line)) return end;
     if (trySetting(i, end, line)) return end;
 
     Block block;
@@ -406,13 +309,8 @@ class LineParser {
                   !block.twoMotions && !block.lowerCase && !block.unusualValues && block.upperFrom == block.wordCount;
     plainWords_ = true;
     if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) {
-      if (!block.plain) program_.notPlain.push_back(static_cast<std::uint32_t>(blockCount()));
-      if (blockOut_ == nullptr) {
-        program_.blocks.push_back(block);
-      } else {
-        if (blocksMade_ < blockRoom_) blockOut_[blocksMade_] = block;
-        ++blocksMade_;
-      }
+      if (!block.plain) program_.notPlain.push_back(static_cast<std::uint32_t>(program_.blocks.size()));
+      program_.blocks.push_back(block);
     }
   }
 
@@ -544,89 +442,6 @@ class LineParser {
     block.hasError = true;
     diags_.error(code, &src_, {static_cast<std::uint32_t>(at), static_cast<std::uint32_t>(length)}, std::move(message),
                  std::move(help));
-  }
-
-  /// The rest of the line, from i, as one plain block (Block::plain) written the usual way: upper
-  /// case words X Y I J R F and G00-G03, each a number within range, one space between them,
-  /// nothing after but blanks; the motion codes as parseWord allows them, no letter but G twice.
-  /// Read here to what parseBlock makes of it, word for word (the words push keeps, then finish);
-  /// false, with nothing kept, for any other line.
-  bool tryPlainLine(std::size_t i, std::size_t end, std::uint32_t line) {
-    // The words go straight to the program (what push keeps, for words known to be plain); a line
-    // that turns out not to be plain takes them back, and the integer-unit figures are kept only
-    // for a line that is.
-    constexpr std::size_t kMost = 8;
-    WordList& out = program_.words;
-    const std::size_t first = out.size();
-    auto fail = [&] {
-      out.resize(first);
-      return false;
-    };
-    std::uint32_t letters = 0;
-    bool coordinate = false, motion = false;
-    bool anyPoint = false;
-    std::uint32_t integers = 0;
-    double largest = program_.largestInteger;
-    std::uint32_t largestWord = program_.largestIntegerWord;
-    while (true) {
-      if (out.size() - first == kMost) return fail();
-      const char c = text_[i];
-      const NumberScan n = scanNumber(text_, i + 1, end);
-      if (n.status != NumberScan::Ok || std::abs(n.value) >= kLargestNumber ||
-          !isPlainWord(c, WordValue::Number, n.value))
-        return fail();
-      if (c == 'G') {
-        if (coordinate && motion) return fail();  // a second motion word opens the upper side
-        motion = true;
-      } else {
-        const std::uint32_t bit = 1u << (c - 'A');
-        if (letters & bit) return fail();
-        letters |= bit;
-        coordinate = coordinate || c != 'F';
-      }
-      Word w;
-      w.letter = c;
-      w.hasPoint = n.hasPoint;
-      w.offset = static_cast<std::uint32_t>(i);
-      w.length = static_cast<std::uint16_t>(std::min<std::size_t>(n.end - i, 0xFFFF));
-      w.value = n.value;
-      if (isLengthLetter(c)) {
-        if (n.hasPoint) {
-          anyPoint = true;
-        } else {
-          ++integers;
-          if (std::abs(n.value) > largest) {
-            largest = std::abs(n.value);
-            largestWord = static_cast<std::uint32_t>(out.size());
-          }
-        }
-      }
-      out.push_back(w);
-      i = n.end;
-      if (i < end && text_[i] == ' ' && i + 1 < end && text_[i + 1] != ' ') {
-        ++i;
-        continue;
-      }
-      while (i < end && isBlank(text_[i])) ++i;
-      if (i < end) return fail();
-      break;
-    }
-    program_.anyDecimalPoint = program_.anyDecimalPoint || anyPoint;
-    program_.integerLengthWords += integers;
-    program_.largestInteger = largest;
-    program_.largestIntegerWord = largestWord;
-    Block block;
-    block.firstWord = static_cast<std::uint32_t>(first);
-    block.offset = static_cast<std::uint32_t>(out[first].offset);
-    block.line = line;
-    upperLetters_ = false;
-    splitAt_ = -1;
-    colon_ = false;
-    // What assignSides makes of one side without a letter twice: every word on it, in order.
-    block.upperFrom = static_cast<std::uint16_t>(out.size() - first);
-    hasUpper_ = true;
-    finish(block, end);
-    return true;
   }
 
   /// `H001 = +0.13`, `C000 = ...`, `E001= ...`: letter, digits, blanks, '='.
@@ -879,9 +694,6 @@ class LineParser {
   bool homing_ = false;              ///< G28 or G30 seen in this block: bare axis letters allowed
   bool hasUpper_ = false;            ///< assignSides set upperFrom for this block
   MacroTally macros_;
-  Block* blockOut_ = nullptr;  // writeBlocksTo
-  std::size_t blockRoom_ = 0;
-  std::size_t blocksMade_ = 0;
 };
 
 }  // namespace
@@ -905,240 +717,41 @@ void reportMacroStatements(const MacroTally& macros, const SourceFile& src, Diag
               "written as #n is known only at the machine");
 }
 
-/// What a run of lines gave besides its blocks.
-struct LinesRead {
-  bool sawContent = false;  ///< a block or a setting was read (so a later '%' closes the program)
-  bool closed = false;      ///< a '%' after content closed the program: nothing after it is read
-  MacroTally macros;
-  std::size_t blocks = 0;  ///< blocks made (written in place: parseLines' blockOut)
-};
-
-/// Parses lines [first, last) into program. sawContent: whether the lines before held a block or a
-/// setting, which makes a '%' line a closing one.
-///
-/// With blockOut the blocks go to [blockOut, blockOut + blockRoom) instead of program.blocks.
-LinesRead parseLines(const SourceFile& source, Program& program, Diagnostics& diags, const ParseOptions& options,
-                     std::uint32_t first, std::uint32_t last, std::size_t bom, bool sawContent,
-                     Block* blockOut = nullptr, std::size_t blockRoom = 0) {
-  const std::string_view text = source.text();
-  LineParser parser(source, program, diags, options);
-  if (blockOut != nullptr) parser.writeBlocksTo(blockOut, blockRoom);
-  LinesRead read;
-  for (std::uint32_t line = first; line < last; ++line) {
-    auto [begin, end] = source.lineRange(line);
-    if (line == 1) begin = static_cast<std::uint32_t>(std::min<std::size_t>(bom, end));
-    // A '%' line opens the program; a '%' line after content closes it (the rest is ignored).
-    std::size_t at = begin;
-    while (at < end && isBlank(text[at])) ++at;
-    if (at < end && text[at] == '%') {
-      if (sawContent) {
-        read.closed = true;
-        break;
-      }
-      continue;
-    }
-    const std::size_t before = parser.blockCount() + program.settings.size();
-    parser.parseLine(begin, end, line);
-    if (parser.blockCount() + program.settings.size() != before) sawContent = read.sawContent = true;
-  }
-  read.macros = parser.macros();
-  read.blocks = parser.blockCount();
-  return read;
-}
-
-/// Appends part to to, a slice at a time, giving each slice of part back to the system once it is
-/// copied: the two copies never stand whole side by side.
-template <typename Vector>
-void appendReleasing(Vector& to, Vector& part) {
-  using T = typename Vector::value_type;
-  constexpr std::size_t kSlice = (1 << 20) / sizeof(T);  // about 1 MB
-  to.reserve(to.size() + part.size());
-  for (std::size_t k = 0; k < part.size(); k += kSlice) {
-    const std::size_t end = std::min(part.size(), k + kSlice);
-    // The rest of to is reserved and written by the inserts: the pages part gave back take the
-    // place of fresh ones. The release reaches 2 MiB back before the slice, so that the 2 MiB
-    // page a slice ends in (a slice is half of one) is given back whole by the next.
-    T* const at = to.data() + to.size();
-    geometry::adoptPages(at, at + (part.size() - k));
-    to.insert(to.end(), part.begin() + static_cast<std::ptrdiff_t>(k), part.begin() + static_cast<std::ptrdiff_t>(end));
-    constexpr std::size_t kBack = (std::size_t{2} << 20) / sizeof(T) + 1;
-    geometry::releasePages(part.data() + (k > kBack ? k - kBack : 0), part.data() + end);
-  }
-  Vector().swap(part);
-}
-
-/// Moves the words of a later part into to's and returns the index its first word has there, or
-/// nothing where they have to be copied. The pages are moved, not the bytes (geometry::movePages):
-/// the part's words start at the next 2 MiB page of to's after its last word, and the indices
-/// between hold empty words.
-std::optional<std::size_t> moveWords(WordList& to, WordList& part) {
-  constexpr std::size_t kPage = std::size_t{2} << 20;
-  static_assert(kPage % sizeof(Word) == 0, "a 2 MiB page holds whole words");
-  const std::size_t n = to.size();
-  const std::size_t base = (n * sizeof(Word) + kPage - 1) / kPage * (kPage / sizeof(Word));
-  if (part.empty() || base + part.size() > std::numeric_limits<std::uint32_t>::max()) return std::nullopt;
-  if (to.capacity() < base + part.size()) to.reserve(base + part.size());
-  if (reinterpret_cast<std::uintptr_t>(to.data()) % kPage != 0 ||
-      !geometry::movePages(to.data() + base, part.data(), part.size() * sizeof(Word)))
-    return std::nullopt;
-  to.resize(base + part.size());  // the moved words: FillLaterAllocator writes nothing over them
-  std::fill(to.begin() + static_cast<std::ptrdiff_t>(n), to.begin() + static_cast<std::ptrdiff_t>(base), Word{});
-  WordList().swap(part);
-  return base;
-}
-
-/// Where a part wrote its blocks in place: `count` of them from `at` in the program's list.
-struct PlacedBlocks {
-  std::size_t at = 0;
-  std::size_t count = 0;
-};
-
-/// Appends the blocks of the lines after to's, read on their own (their word indices start at 0),
-/// as to's blocks from blockBase on. Without `placed` they are part's; with it they lie in to's
-/// list already, from placed->at >= blockBase, and are moved down to blockBase.
-void appendPart(Program& to, Program&& part, const PlacedBlocks* placed, std::size_t blockBase) {
-  for (const std::uint32_t k : part.notPlain) to.notPlain.push_back(static_cast<std::uint32_t>(blockBase + k));
-  // The words' pages are moved into place (a long text's parts: 4.7 MB of the 7 MB of a 6 MB
-  // program); the blocks are moved down where the part wrote them in place, else copied. Where
-  // the words cannot be moved, they are copied, beside the blocks' copy on another core.
-  std::uint32_t base = 0;
-  if (placed != nullptr) {  // the blocks are in place: only their words move
-    const std::optional<std::size_t> moved = moveWords(to.words, part.words);
-    base = static_cast<std::uint32_t>(moved ? *moved : to.words.size());
-    if (!moved) appendReleasing(to.words, part.words);
-    Block* const blocks = to.blocks.data();
-    for (std::size_t k = 0; k < placed->count; ++k) {  // down, in order: the places never overlap wrongly
-      Block b = blocks[placed->at + k];
-      b.firstWord += base;
-      blocks[blockBase + k] = b;
-    }
-  } else if (const std::optional<std::size_t> moved = moveWords(to.words, part.words)) {
-    base = static_cast<std::uint32_t>(*moved);
-    for (Block& b : part.blocks) b.firstWord += base;
-    appendReleasing(to.blocks, part.blocks);
-  } else {
-    base = static_cast<std::uint32_t>(to.words.size());
-    geometry::parallelInvoke([&] { appendReleasing(to.words, part.words); },
-                             [&] {
-                               for (Block& b : part.blocks) b.firstWord += base;
-                               appendReleasing(to.blocks, part.blocks);
-                             });
-  }
-  for (Setting& s : part.settings) to.settings.push_back(std::move(s));
-  to.heights.insert(to.heights.end(), part.heights.begin(), part.heights.end());
-  to.anyDecimalPoint = to.anyDecimalPoint || part.anyDecimalPoint;
-  to.integerLengthWords += part.integerLengthWords;
-  if (part.largestInteger > to.largestInteger) {  // the first of equal ones stays, as in one pass
-    to.largestInteger = part.largestInteger;
-    to.largestIntegerWord = part.largestIntegerWord + base;
-  }
-}
-
-/// Texts from this size on are parsed in parts, one per core: each line is parsed on its own, so
-/// the parts are independent but for the '%' frame and the macro count, which are joined after.
-constexpr std::size_t kPartBytes = 256 * 1024;
-
 }  // namespace
 
 Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOptions& options) {
   Program program;
   program.source = &source;
   const std::string_view text = source.text();
-  program.words.reserve(text.size() / 6);
   // A NUL byte near the start means a binary file, not NC text: one diagnostic, not thousands.
   if (const std::size_t nul = text.substr(0, 4096).find('\0'); nul != std::string_view::npos) {
     diags.error(Code::UnexpectedCharacter, &source, {static_cast<std::uint32_t>(nul), 1},
                 "the file contains NUL bytes: it is not an NC text file");
     return program;
   }
+  // Room for what a typical wire program holds: a block of about 24 bytes and a word of about 6.
+  program.words.reserve(text.size() / 6);
+  program.blocks.reserve(text.size() / 24);
   // A UTF-8 byte-order mark (some Windows editors write one) is not part of the program.
   const std::size_t bom = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
-  const std::uint32_t lines = source.lineCount();
-
-  // Parts of nearly equal bytes, on whole lines: part k reads lines [firstLine[k], firstLine[k + 1]).
-  const std::size_t parts = text.size() < kPartBytes
-                                ? 1
-                                : std::clamp<std::size_t>(text.size() / (kPartBytes / 2), 1, geometry::workerCount());
-  std::vector<std::uint32_t> firstLine{1};
-  for (std::size_t k = 1; k < parts; ++k) {
-    const std::uint32_t line = source.locate(static_cast<std::uint32_t>(text.size() * k / parts)).line;
-    if (line > firstLine.back() && line <= lines) firstLine.push_back(line);
-  }
-  firstLine.push_back(lines + 1);
-  const std::size_t n = firstLine.size() - 1;
-  // The parts write their blocks in place, each part in the slots of its lines: a line holds one
-  // block at most unless ';' ends blocks. The join then moves each part's blocks down to follow
-  // the ones before (a few blocks' shift: the pages they lie on already) instead of copying them
-  // from arrays of the part's own (2.4 MB and about two fresh 2 MiB pages for a 6 MB program).
-  const bool inPlace = n > 1 && !options.semicolonEndsBlock;
-  if (inPlace) {
-    program.blocks.resize(lines);  // FillLaterAllocator: nothing written here
-  } else {
-    program.blocks.reserve(text.size() / 24);
-  }
-  auto slotOf = [&](std::size_t k) { return program.blocks.data() + (firstLine[k] - 1); };
-  auto roomOf = [&](std::size_t k) { return std::size_t{firstLine[k + 1] - firstLine[k]}; };
-  // Every part but the first is read as if content came before it (so a '%' there closes); the
-  // join reads it again in the rare case that nothing did.
-  std::vector<Program> later(n - 1);
-  std::vector<Diagnostics> laterDiags(n - 1, Diagnostics(diags.cap()));
-  std::vector<LinesRead> read(n);
-  geometry::parallelFor(n, 1, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      Program& into = k == 0 ? program : later[k - 1];
-      into.source = &source;
-      if (k > 0) {
-        const std::size_t bytes = source.lineRange(firstLine[k + 1] - 1).second - source.lineRange(firstLine[k]).first;
-        into.words.reserve(bytes / 6);
-        if (!inPlace) into.blocks.reserve(bytes / 24);
-      }
-      read[k] = parseLines(source, into, k == 0 ? diags : laterDiags[k - 1], options, firstLine[k], firstLine[k + 1],
-                           bom, k > 0, inPlace ? slotOf(k) : nullptr, roomOf(k));
+  LineParser parser(source, program, diags, options);
+  bool sawContent = false;  // a block or a setting was read, so a '%' line closes the program
+  for (std::uint32_t line = 1; line <= source.lineCount(); ++line) {
+    auto [begin, end] = source.lineRange(line);
+    if (line == 1) begin = static_cast<std::uint32_t>(std::min<std::size_t>(bom, end));
+    // A '%' line opens the program; a '%' line after content closes it (the rest is ignored).
+    std::size_t at = begin;
+    while (at < end && isBlank(text[at])) ++at;
+    if (at < end && text[at] == '%') {
+      if (sawContent) break;
+      continue;
     }
-  });
-  // A part never has more blocks than lines here; were it to, its blocks past its slots were not
-  // written (LineParser::finish), and the parse fails rather than lose them.
-  geometry::markPhase("parse: parts");
-  auto checkRoom = [&](std::size_t k) {
-    if (inPlace && read[k].blocks > roomOf(k)) throw std::logic_error("parseProgram: more blocks than lines in a part");
-  };
-  for (std::size_t k = 0; k < n; ++k) checkRoom(k);
-  LinesRead whole = read[0];
-  std::size_t blocks = inPlace ? read[0].blocks : program.blocks.size();
-  for (std::size_t k = 1; k < n && !whole.closed; ++k) {
-    if (!whole.sawContent) {  // nothing before this part: its first '%' opens the program
-      later[k - 1] = Program{};
-      later[k - 1].source = &source;
-      laterDiags[k - 1] = Diagnostics(diags.cap());
-      read[k] = parseLines(source, later[k - 1], laterDiags[k - 1], options, firstLine[k], firstLine[k + 1], bom, false,
-                           inPlace ? slotOf(k) : nullptr, roomOf(k));
-      checkRoom(k);
-    }
-    const PlacedBlocks placed{firstLine[k] - std::size_t{1}, read[k].blocks};
-    appendPart(program, std::move(later[k - 1]), inPlace ? &placed : nullptr, blocks);
-    blocks = inPlace ? blocks + read[k].blocks : program.blocks.size();
-    diags.append(std::move(laterDiags[k - 1]));
-    whole.sawContent = whole.sawContent || read[k].sawContent;
-    whole.closed = read[k].closed;
-    whole.macros.add(read[k].macros);
+    const std::size_t before = program.blocks.size() + program.settings.size();
+    parser.parseLine(begin, end, line);
+    sawContent = sawContent || program.blocks.size() + program.settings.size() != before;
   }
-  if (inPlace) program.blocks.resize(blocks);  // the parts' slots past the last block go
-  geometry::markPhase("parse: joined");
-  reportMacroStatements(whole.macros, source, diags);
+  reportMacroStatements(parser.macros(), source, diags);
   return program;
-}
-
-void releaseParsedBefore(const Program& program, std::size_t block) {
-  if (block < 2 || block >= program.blocks.size()) return;
-  // The first block stays (what is said of the whole program points at it): it is copied back to
-  // where it was, on a fresh small page, once the 2 MiB page it lay on is given back. Left out of
-  // the range instead, that page (87,000 blocks) went back only with the whole list, after the
-  // interpreter, too late for the moves to take it in place of fresh ones.
-  const Block first = program.blocks.front();
-  geometry::releasePages(program.blocks.data(), program.blocks.data() + block);
-  // The list itself is not const (only the caller's view of it): the same block, written back.
-  std::memcpy(static_cast<void*>(const_cast<Block*>(program.blocks.data())), &first, sizeof first);
-  geometry::releasePages(program.words.data(), program.words.data() + program.blocks[block].firstWord);
 }
 
 }  // namespace kerf::converter

@@ -1,9 +1,6 @@
 // Sections: 1. the machine profile  2. the conventions from the evidence  3. the pipeline
 #include "kerf/converter/pipeline.h"
 
-#include "kerf/geometry/parallel.h"
-#include "kerf/geometry/phase_times.h"
-
 #include "kerf/converter/analysis.h"
 #include "kerf/converter/curve.h"
 #include "kerf/converter/points.h"
@@ -62,14 +59,6 @@ std::string centreEvidence(const ArcCentreTally& t, ArcCentreMode m) {
 
 namespace {
 
-/// Gives a program's text back when the caller needs it again only for quotes
-/// (PipelineOptions::rereadSource): before the interpreter runs, and again before the checks when
-/// a second parse read it back. A drawing keeps its text.
-void releaseSource(Pipeline& out, const PipelineOptions& options) {
-  if (options.rereadSource && out.source && (out.format == InputFormat::Iso || out.format == InputFormat::ThreeB))
-    out.source->releaseText(options.rereadSource);
-}
-
 /// The summary, when the caller asked for one.
 void summarizeInto(Pipeline& out, const PipelineOptions& options) {
   if (options.summarize) out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
@@ -82,22 +71,11 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
   if (options.check.sectionBudget) out.checkOptions.sectionBudget = *options.check.sectionBudget;
   if (options.check.surfaceLevels) out.checkOptions.surfaceLevels = *options.check.surfaceLevels;
-  releaseSource(out, options);  // the checks and what follows them only quote the text
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
-    // The summary reads what the checks read and writes only its own stretches: they are made
-    // beside the checks, on the core the self-intersection sweep (serial) leaves idle, and what
-    // is left when the checks are done, on both (docs/interpreter.md, "The summary beside the checks").
-    std::optional<SummaryMaker> maker;
-    if (options.summarize) maker.emplace(out.toolpath, *options.summarize);
-    geometry::runBesideWhenIdle(
-        [&] { checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures); },
-        maker ? maker->pieces() : 0, [&](std::size_t k) { maker->makePiece(k); });
-    geometry::markPhase("summary");
-    if (maker) out.summary = maker->finish(&out.measures);
-  } else {
-    summarizeInto(out, options);
+    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
   }
+  summarizeInto(out, options);
   out.diags.sortByPosition();
 }
 
@@ -242,10 +220,8 @@ void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::opti
 }  // namespace
 
 Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::optional<SourceText> upper) {
-  const geometry::ParallelScope threads;  // parallelFor keeps its threads for the whole reading
   Pipeline out;
   out.source = std::make_unique<SourceFile>(std::move(input.name), std::move(input.text));
-  geometry::markPhase("line starts");
   const ReadOptions& ro = options.read;
 
   // 1. The machine profile: a file, a name, or (after parsing) the evidence.
@@ -280,7 +256,6 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   }
 
   MachineReading reading = readForMachine(*out.source, given, ro.upperAxesUZ);
-  geometry::markPhase("machine detected");
   // The parse tree lives only while the program is interpreted: nothing after needs it (the
   // source and the toolpath say everything), and the checks then run without its memory.
   Program program = std::move(reading.program);
@@ -305,8 +280,6 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   io.wireOffset = ro.wireOffset;
   io.maxExecutedBlocks = ro.maxExecutedBlocks;
   io.maxMoves = ro.maxMoves;
-  io.parallelRun = ro.parallelRun;
-  io.parallelWindow = ro.parallelWindow;
   io.recordCentreWords = options.centreWords;
   std::vector<std::string> evidence;
   if (ro.integerUnit) {
@@ -331,22 +304,12 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     mt.polarFrameTable = ro.polarFrameTable.value_or(machine.polarFrameTable);
     in.toolpath = readMillTurn(program, mt, interpretDiags);
   } else {
-    // The parse tree may give its memory back as the program runs (a long program that runs
-    // straight through): a second run, under another arc-centre convention, parses again. The
-    // text goes back before it when only quotes need it (the interpreter quotes words only in
-    // rare diagnostics, which read the file again).
-    io.releaseParsed = true;
-    releaseSource(out, options);
     in = interpretProgram(program, io, interpretDiags);
   }
   if (!centreFixed && !millTurn) {
     if (const std::optional<ArcCentreMode> better = betterCentre(in.arcs, io.arcCentre)) {
       io.arcCentre = *better;
       interpretDiags = Diagnostics(100000);
-      if (in.parseReleased) {
-        Diagnostics again(reading.diags.cap());  // said already, by the first parse
-        program = parseProgram(*out.source, again, reading.parse);
-      }
       in = interpretProgram(program, io, interpretDiags);
       evidence.push_back(centreEvidence(in.arcs, *better));
     }
@@ -390,10 +353,8 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   if (program.blocks.empty() && !out.diags.hasErrors())  // with errors, those say why nothing was read
     out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},  // where a program would start
                     "the file holds no program (no block of words): nothing to cut");
-  program = Program{};
-  geometry::markPhase("parse tree freed");
+  program = Program{};  // the checks need the toolpath alone
   runChecks(out, options);
-  geometry::markPhase("checks and summary");
   return out;
 }
 

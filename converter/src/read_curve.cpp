@@ -1,8 +1,8 @@
 // Curves as drawings (curve.h). Expressions are parsed and evaluated by muparser (Debian's
 // libmuparser-dev, https://beltoforion.de/en/muparser/): bytecode, so the thousands of evaluations
 // a biarc fit makes cost little. The library is loaded when a curve is first read, through its C
-// interface (muParserDLL.h): linked, it and the OpenMP runtime it needs were loaded by every run of
-// kerf, 0.7 ms before any work.
+// interface (muParserDLL.h): linked, it and the OpenMP runtime it needs would be loaded by every run
+// of kerf.
 #include "kerf/converter/curve.h"
 
 #include "kerf/converter/points.h"

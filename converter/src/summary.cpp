@@ -26,8 +26,8 @@ CutView cutView(const Toolpath& toolpath) {
   std::size_t first = 0, last = moves.size();
   while (first < last && !moves[first].isCut()) ++first;
   while (last > first && !moves[last - 1].isCut()) --last;
-  // Whether a rapid lies between the cuts, on every core: a pass over all the moves (19 MB for
-  // 200,000), bound by memory, that took 2 ms on one core with the other idle.
+  // Whether a rapid lies between the cuts: a pass over all the moves, bound by memory, so on
+  // every core.
   std::atomic<bool> rapid{false};
   geometry::parallelFor(last - first, 1 << 15, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = first + begin; i < first + end; ++i)
@@ -199,7 +199,7 @@ Summary SummaryMaker::finish(const SurfaceMeasures* measures) const {
 
 Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling, const SurfaceMeasures* measures) {
   SummaryMaker maker(toolpath, sampling);
-  geometry::parallelForBalanced(maker.pieces(), 1, [&](std::size_t begin, std::size_t end) {
+  geometry::parallelFor(maker.pieces(), 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) maker.makePiece(k);
   });
   return maker.finish(measures);

@@ -13,7 +13,7 @@ ArcTolerance ArcTolerance::forInch() {
 }
 
 ArcBuild arcFromRadius(const Vec2& start, const Vec2& end, double signedRadius, ArcDirection dir,
-                       const ArcTolerance& tol, bool withAngles) {
+                       const ArcTolerance& tol) {
   ArcBuild out;
   const Vec2 chord = end - start;
   const double chordLength = chord.norm();
@@ -41,7 +41,7 @@ ArcBuild arcFromRadius(const Vec2& start, const Vec2& end, double signedRadius, 
   double side = dir == ArcDirection::CounterClockwise ? 1.0 : -1.0;
   if (signedRadius < 0) side = -side;
   const Vec2 centre = mid + side * h * left;
-  out.arc = withAngles ? Segment::arc(start, end, centre, dir) : Segment::arcWithoutAngles(start, end, centre, dir);
+  out.arc = Segment::arc(start, end, centre, dir);
   return out;
 }
 
@@ -80,26 +80,25 @@ Vec2 seedCentreFromRadiusSigned(const Vec2& start, const Vec2& end, double signe
   return {xs, ys};
 }
 
-ArcBuild arcFromCentre(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir,
-                       const ArcTolerance& tol, bool withAngles) {
-  ArcBuild out;
+ArcStatus centreVerdict(const Vec2& start, const Vec2& end, const Vec2& centre, const ArcTolerance& tol,
+                        double* radiusError) {
   const double r0 = (start - centre).norm();
   const double r1 = (end - centre).norm();
-  out.radiusError = r1 - r0;
-  if (r0 < tol.radius || r1 < tol.radius) {
-    out.status = ArcStatus::ZeroRadius;
-    return out;
-  }
+  if (radiusError) *radiusError = r1 - r0;
+  if (r0 < tol.radius || r1 < tol.radius) return ArcStatus::ZeroRadius;
   // LinuxCNC's rule: up to centreAbsolute always fine; up to 100x that, fine if the relative
   // difference is within centreRelative; beyond, always an error.
-  const double delta = std::abs(out.radiusError);
+  const double delta = std::abs(r1 - r0);
   const bool ok = delta <= tol.centreAbsolute ||
                   (delta <= 100 * tol.centreAbsolute && delta / std::max(r0, r1) <= tol.centreRelative);
-  if (!ok) {
-    out.status = ArcStatus::EndOffCircle;
-    return out;
-  }
-  out.arc = withAngles ? Segment::arc(start, end, centre, dir) : Segment::arcWithoutAngles(start, end, centre, dir);
+  return ok ? ArcStatus::Ok : ArcStatus::EndOffCircle;
+}
+
+ArcBuild arcFromCentre(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir,
+                       const ArcTolerance& tol) {
+  ArcBuild out;
+  out.status = centreVerdict(start, end, centre, tol, &out.radiusError);
+  if (out.status == ArcStatus::Ok) out.arc = Segment::arc(start, end, centre, dir);
   return out;
 }
 

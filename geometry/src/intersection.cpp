@@ -6,9 +6,7 @@
 
 #include "angles.h"
 #include "kerf/geometry/float_steps.h"
-#include "kerf/geometry/memory.h"
 #include "kerf/geometry/parallel.h"
-#include "kerf/geometry/phase_times.h"
 
 #include <algorithm>
 #include <array>
@@ -661,19 +659,18 @@ std::uint32_t orderKey(float f) {
 }
 
 /// A segment's place in the box sweep: the least x of its box (rounded down to a float), then its
-/// index. Made in place by the extents pass (FillLaterAllocator: resize leaves them unwritten).
+/// index. Made in place by the extents pass.
 struct XKey {
   float x;
   std::uint32_t seg;
   friend bool operator<(const XKey& a, const XKey& b) { return a.x != b.x ? a.x < b.x : a.seg < b.seg; }
 };
-using XKeys = std::vector<XKey, FillLaterAllocator<XKey>>;
+using XKeys = std::vector<XKey>;
 
 /// Sorts (x, segment) keys that come in the order of their segments by x, then segment: the
 /// order std::sort gives them. A least-significant-digit radix sort of the keys in
-/// three passes of 11 bits, each stable, so pairs of one x keep their segments' order: O(n), a
-/// sixth of std::sort's time at 200,000 pairs (that sort was a tenth of kerf check's time). A pass
-/// whose digit is the same in every key is skipped.
+/// three passes of 11 bits, each stable, so pairs of one x keep their segments' order: O(n) where
+/// std::sort is O(n log n). A pass whose digit is the same in every key is skipped.
 void sortByX(XKeys& pairs) {
   constexpr int kBits = 11, kPasses = 3;
   constexpr std::size_t kBuckets = std::size_t{1} << kBits;
@@ -747,7 +744,7 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
       std::mutex mutex;
       std::vector<std::pair<std::size_t, std::vector<Contact>>> parts;
       std::size_t pairs = 0;
-      geometry::parallelForBalanced(n, 4096, [&](std::size_t lo, std::size_t hi) {
+      geometry::parallelFor(n, 4096, [&](std::size_t lo, std::size_t hi) {
         std::vector<Contact> found;
         std::size_t count = 0;
         for (std::size_t j = lo; j < hi; ++j) {
@@ -808,10 +805,10 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
   if (boxesFirst) byMinX.resize(n);
   // Up to a million segments (16 MiB) the sweep's boxes are made here too, in the segments' order
   // from the box just computed, and kept: the sweep then reads each from this list instead of
-  // making it again from its segment, fetched out of order (a third of the sweep's time on the
-  // 6.1 MB program). Past that the memory would grow with the path, so they are made in the sweep.
+  // making it again from its segment, fetched out of order. Past that the memory would grow with
+  // the path, so they are made in the sweep.
   constexpr std::size_t kKeptBoxesMost = std::size_t{1} << 20;
-  std::vector<SweepBox, FillLaterAllocator<SweepBox>> keptBoxes;
+  std::vector<SweepBox> keptBoxes;
   if (boxesFirst && n <= kKeptBoxesMost) keptBoxes.resize(n);
   const bool keepBoxes = !keptBoxes.empty();
   // On every core, in stretches of a fixed length whose sums are added in order: the figures do
@@ -825,7 +822,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     std::size_t dead = 0;
   };
   std::vector<Extent> extents(stretches);
-  geometry::parallelForBalanced(stretches, 2, [&](std::size_t sb, std::size_t se) {
+  geometry::parallelFor(stretches, 2, [&](std::size_t sb, std::size_t se) {
     for (std::size_t st = sb; st < se; ++st) {
       Extent e;
       for (std::size_t i = st * kStretch; i < std::min(n, (st + 1) * kStretch); ++i) {
@@ -855,7 +852,6 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
     dead += e.dead;
   }
   std::vector<Extent>().swap(extents);
-  markPhase("sweep: extents");
   const auto live = static_cast<std::uint32_t>(n - dead);
   if (dead > 0) {
     ranks.assign(n, kDead);
@@ -874,7 +870,6 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
         if (isLive(i)) byMinX.push_back({LooseBox::below(path[i].bounds().min.x()), static_cast<std::uint32_t>(i)});
     }
     if (!sorted) sortByX(byMinX);  // byMinX comes in the order of the segments
-    markPhase("sweep: sorted");
     sorted = true;
   };
   auto isForward = [&](std::size_t i, std::size_t j) {
@@ -922,7 +917,7 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
       if (pending.empty()) return false;
       std::mutex mutex;
       std::vector<std::pair<std::size_t, std::vector<Contact>>> parts;  // (first pair, its contacts)
-      geometry::parallelForBalanced(pending.size(), 2048, [&](std::size_t b, std::size_t e) {
+      geometry::parallelFor(pending.size(), 2048, [&](std::size_t b, std::size_t e) {
         std::vector<Contact> found;
         std::uint64_t first = UINT64_MAX;
         for (std::size_t k = b; k < e; ++k) {
@@ -955,14 +950,14 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
       return true;
     };
     // The boxes in the sweep's order, made a block at a time on every core before the sweep
-    // reads them in turn (it took a third of its time to fetch the segments one by one out of
-    // order): 1 MB however long the path.
+    // reads them in turn (rather than fetching the segments one by one out of order): 1 MB however
+    // long the path.
     constexpr std::size_t kBoxBlock = std::size_t{1} << 16;
-    std::vector<SweepBox, FillLaterAllocator<SweepBox>> boxes(std::min(byMinX.size(), kBoxBlock));
+    std::vector<SweepBox> boxes(std::min(byMinX.size(), kBoxBlock));
     for (std::size_t k = 0; k < byMinX.size(); ++k) {
       if (k % kBoxBlock == 0) {
         const std::size_t base = k, count = std::min(kBoxBlock, byMinX.size() - k);
-        geometry::parallelForBalanced(count, 4096, [&](std::size_t b, std::size_t e) {
+        geometry::parallelFor(count, 4096, [&](std::size_t b, std::size_t e) {
           constexpr std::size_t kAhead = 8;
           if (!keptBoxes.empty()) {  // given back before a decision sweep, never read after
             for (std::size_t q = b; q < e; ++q) {
@@ -999,7 +994,6 @@ SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfInterse
       active.resize(w);
       active.push_back({box, idx});
     }
-    markPhase("sweep: swept");
     if (flush()) return r;
     std::sort(r.contacts.begin(), r.contacts.end(), byPair);
     return r;

@@ -17,37 +17,25 @@ Segment Segment::line(const Vec2& a, const Vec2& b) {
 }
 
 Segment Segment::arc(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir) {
-  Segment s = arcWithoutAngles(start, end, centre, dir);
-  s.completeAngles();
-  return s;
-}
-
-Segment Segment::arcWithoutAngles(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir) {
   Segment s;
   s.kind = SegmentKind::Arc;
   s.start = start;
   s.end = end;
   s.centre = centre;
   s.radius = (start - centre).norm();
-  s.startAngle = std::numeric_limits<double>::quiet_NaN();
-  s.sweep = dir == ArcDirection::CounterClockwise ? 1.0 : -1.0;  // the direction, until the angles
-  return s;
-}
-
-void Segment::completeAngles() {
-  const ArcDirection dir = direction();
-  startAngle = angleOf(start - centre);
+  s.startAngle = angleOf(start - centre);
   const double endAngle = angleOf(end - centre);
-  const bool full = (end - start).norm() <= 1e-12 * std::max(1.0, radius);
+  const bool full = (end - start).norm() <= 1e-12 * std::max(1.0, s.radius);
   if (dir == ArcDirection::CounterClockwise) {
-    double w = detail::wrapPositive(endAngle - startAngle);
+    double w = detail::wrapPositive(endAngle - s.startAngle);
     if (full || w == 0.0) w = kTwoPi;
-    sweep = w;
+    s.sweep = w;
   } else {
-    double w = detail::wrapPositive(startAngle - endAngle);
+    double w = detail::wrapPositive(s.startAngle - endAngle);
     if (full || w == 0.0) w = kTwoPi;
-    sweep = -w;
+    s.sweep = -w;
   }
+  return s;
 }
 
 double Segment::length() const { return kind == SegmentKind::Line ? (end - start).norm() : radius * std::abs(sweep); }

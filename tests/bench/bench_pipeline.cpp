@@ -3,7 +3,7 @@
 // run in CTest fails if the harness rots). Speed targets are never checked here: machines are
 // shared and noisy; the figures go to the README.
 //
-//   kerf_bench [--blocks N] [--repeat R] [--shape circle|star|spiral] [--sweeps all|auto] [--write FILE]
+//   kerf_bench [--blocks N] [--repeat R] [--shape circle|star|spiral|crossing] [--sweeps all|auto] [--write FILE]
 //   (--sweeps auto: only the method kerf check runs, not the box and decision sweeps alone)
 //
 // --write FILE writes the program and stops (tests/bench/compare.sh times kerf check and LinuxCNC's
@@ -15,11 +15,16 @@
 // adversarial shape for a sweep over boxes, issue 13). --shape spiral: N modal `X Y` lines at 3
 // decimals, 1,000 a turn, on a spiral of radius 5000 mm growing 0.05 mm a turn, which never meets
 // itself (issue 13's 200 MB program is --blocks 10000000 --write: the turns' boxes pile up, so the
-// check takes the decision sweep).
+// check takes the decision sweep). --shape crossing: issue 39's adversarial program, random where
+// the others are regular: N moves around a ring of radius 5 m in random steps, lines and arcs in
+// every form (R of both signs, I J), G90 and G91 switching every few hundred blocks, and six
+// excursions across the ring and back, whose long chords cross one another (60 crossings): the
+// check must report them, not only find one.
 #include "kerf/converter/analysis.h"
 #include "kerf/converter/checks.h"
 #include "kerf/converter/summary.h"
 #include "kerf/geometry/intersection.h"
+#include "kerf/geometry/parallel.h"
 #include "kerf/geometry/tessellation.h"
 
 #include "bench_support.h"
@@ -31,6 +36,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <thread>
 
 namespace {
 
@@ -93,18 +99,87 @@ std::string generateSpiral(std::size_t blocks) {
   return text;
 }
 
+/// A number at 4 decimals, as an integer count of 0.1 µm: the generators write exact decimals, and
+/// the incremental words are differences of those, so G91 stretches never drift.
+long long tenths(double mm) { return std::llround(mm * 10000.0); }
+std::string decimal(long long t) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%s%lld.%04lld", t < 0 ? "-" : "", std::llabs(t) / 10000, std::llabs(t) % 10000);
+  return buf;
+}
+
+std::string generateCrossing(std::size_t blocks) {
+  std::string text;
+  text.reserve(blocks * 40);
+  text += "%\nO9003 (kerf benchmark crossing)\nG21 G90 G17\nG92 X5000. Y0\nF2.\n";
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  auto uniform = [&] {  // [0, 1), a fixed sequence on every machine
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  const double ring = 5000.0, step = 2 * M_PI / static_cast<double>(blocks);
+  constexpr int kExcursions = 6;
+  long long x = tenths(ring), y = 0;
+  bool incremental = false;
+  double angle = 0.0;
+  auto moveTo = [&](const char* code, long long nx, long long ny, const std::string& more) {
+    text += code;
+    text += " X" + decimal(incremental ? nx - x : nx) + " Y" + decimal(incremental ? ny - y : ny) + more + "\n";
+    x = nx;
+    y = ny;
+  };
+  for (std::size_t i = 1; i <= blocks; ++i) {
+    if (i % 400 == 0) {  // the distance mode changes every 400 blocks
+      incremental = !incremental;
+      text += incremental ? "G91\n" : "G90\n";
+    }
+    if (i % (blocks / kExcursions) == blocks / (2 * kExcursions)) {  // across the ring and back
+      const double far = angle + M_PI * (0.9 + 0.2 * uniform());
+      moveTo("G01", tenths(0.8 * ring * std::cos(far)), tenths(0.8 * ring * std::sin(far)), "");
+      angle += step;
+      moveTo("G01", tenths(ring * std::cos(angle)), tenths(ring * std::sin(angle)), "");
+      continue;
+    }
+    angle = i == blocks ? 2 * M_PI : angle + step * (0.5 + uniform());
+    const double r = ring + (i == blocks ? 0.0 : 0.02 * (uniform() - 0.5));
+    const long long nx = i == blocks ? tenths(ring) : tenths(r * std::cos(angle));
+    const long long ny = i == blocks ? 0 : tenths(r * std::sin(angle));
+    const double chord = std::hypot(static_cast<double>(nx - x), static_cast<double>(ny - y)) / 10000.0;
+    const double pick = uniform();
+    if (pick < 0.4 || chord < 0.05 || i == blocks) {
+      moveTo("G01", nx, ny, "");
+    } else if (pick < 0.7) {  // R, the short way: G03 bulges out of the ring, G02 into it
+      moveTo(pick < 0.55 ? "G03" : "G02", nx, ny, " R" + decimal(tenths(chord * (0.6 + 2 * uniform()))));
+    } else if (pick < 0.8) {  // R negative: the long way round a circle just wider than the chord, outside
+      moveTo("G03", nx, ny, " R" + decimal(-tenths(chord * 0.52)));
+    } else {  // I J: the centre on the chord's bisector, inside the ring; the arc bulges out
+      const double along = 0.5 + 2 * uniform();  // the centre's distance from the chord, in chords
+      const long long cx = (x + nx) / 2 - tenths(along * chord * std::cos(angle));
+      const long long cy = (y + ny) / 2 - tenths(along * chord * std::sin(angle));
+      // The end moved onto the circle through the start, to the written 0.1 µm.
+      const double radius = std::hypot(static_cast<double>(x - cx), static_cast<double>(y - cy));
+      const double to = std::atan2(static_cast<double>(ny - cy), static_cast<double>(nx - cx));
+      moveTo("G03", cx + std::llround(radius * std::cos(to)), cy + std::llround(radius * std::sin(to)),
+             " I" + decimal(cx - x) + " J" + decimal(cy - y));
+    }
+  }
+  text += "G90\nM02\n%\n";
+  return text;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::size_t blocks = 1'000'000;
   int repeat = 3;
-  bool star = false, spiral = false, autoOnly = false;
+  bool star = false, spiral = false, crossing = false, autoOnly = false;
   const char* write = nullptr;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--sweeps")) autoOnly = !std::strcmp(argv[i + 1], "auto");
     if (!std::strcmp(argv[i], "--shape")) {
       star = !std::strcmp(argv[i + 1], "star");
       spiral = !std::strcmp(argv[i + 1], "spiral");
+      crossing = !std::strcmp(argv[i + 1], "crossing");
     } else if (!std::strcmp(argv[i], "--blocks"))
       blocks = std::strtoul(argv[i + 1], nullptr, 10);
     else if (!std::strcmp(argv[i], "--write"))
@@ -114,7 +189,12 @@ int main(int argc, char** argv) {
   }
   using namespace kerf::converter;
   if (star && blocks % 2) ++blocks;  // the spikes alternate: an even count closes the star
-  const std::string text = star ? generateStar(blocks) : spiral ? generateSpiral(blocks) : generate(blocks);
+  // The library works on as many threads as the program says (kerf sets the hardware's count).
+  kerf::geometry::setWorkerCount(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
+  const std::string text = star       ? generateStar(blocks)
+                           : spiral   ? generateSpiral(blocks)
+                           : crossing ? generateCrossing(blocks)
+                                      : generate(blocks);
   const double mb = static_cast<double>(text.size()) / 1e6;
   if (write) {
     std::FILE* out = std::fopen(write, "wb");
@@ -175,7 +255,7 @@ int main(int argc, char** argv) {
   for (int r = 0; r < repeat; ++r) {
     for (int m = 0; m < 3; ++m) {
       // The box sweep alone is quadratic on the star: 20 s at 1e5 spikes, half an hour at 1e6.
-      if ((star || spiral) && m == 1 && blocks > 200'000) continue;
+      if ((star || spiral || crossing) && m == 1 && blocks > 200'000) continue;
       if (autoOnly && m > 0) continue;
       kerf::geometry::SelfIntersectionOptions o;
       o.closed = true;
@@ -212,8 +292,9 @@ int main(int argc, char** argv) {
                  found[2]);
     return 1;
   }
-  if (contacts != 0 || checkDiags.hasErrors()) {
-    std::fprintf(stderr, "the benchmark contour should not meet itself\n");
+  if (crossing ? contacts < 6 * 5 * 2 : contacts != 0 || checkDiags.hasErrors()) {
+    std::fprintf(stderr, crossing ? "the crossing program should cross itself at its excursions\n"
+                                  : "the benchmark contour should not meet itself\n");
     return 1;
   }
   return 0;

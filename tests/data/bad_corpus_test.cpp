@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   const auto files = kerf::test::sortedEntries(KERF_BAD_DIR, false, ".nc");
   for (const auto& f : files) {
-    testing::RegisterTest("bad_corpus", f.stem().string().c_str(), nullptr, nullptr, __FILE__, __LINE__,
+    testing::RegisterTest("bad_corpus_test", f.stem().string().c_str(), nullptr, nullptr, __FILE__, __LINE__,
                           [f]() -> testing::Test* { return new BadCorpusTest(f); });
   }
   if (files.size() < 25) {

@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
       std::string name = f.stem().string();
       for (char& ch : name)
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      testing::RegisterTest("dxf_ezdxf", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+      testing::RegisterTest("dxf_ezdxf_test", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
                             [f]() -> testing::Test* { return new DxfAgainstEzdxf(f); });
     }
   return RUN_ALL_TESTS();

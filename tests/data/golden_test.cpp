@@ -120,7 +120,7 @@ class GoldenTest : public testing::Test {
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   for (const auto& dir : kerf::test::sortedEntries(KERF_GOLDEN_DIR, true)) {
-    testing::RegisterTest("golden", dir.filename().string().c_str(), nullptr, nullptr, __FILE__, __LINE__,
+    testing::RegisterTest("golden_test", dir.filename().string().c_str(), nullptr, nullptr, __FILE__, __LINE__,
                           [dir]() -> testing::Test* { return new GoldenTest(dir); });
   }
   return RUN_ALL_TESTS();

@@ -75,7 +75,7 @@ class OffsetAgainstGeos : public testing::Test {
 void add(const std::string& drawing, std::string name) {
   for (char& ch : name)
     if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-  testing::RegisterTest("offset_geos", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+  testing::RegisterTest("offset_geos_test", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
                         [drawing, name]() -> testing::Test* { return new OffsetAgainstGeos(drawing, name); });
 }
 

@@ -237,7 +237,7 @@ class PolarRoundTrip : public testing::Test {
 // Seed 002 (Hadzhiyski et al., G-POST polar post): O30 mills a square on the face with a Y axis
 // (X a diameter); O31 is the same path as X/C points. Transcribed from the paper's listings (the
 // face moves N70-N100 of O30; O31's first points N70-N85 and its last, N1340).
-TEST(seed002, o30_written_as_polar_starts_as_o31_and_ends_a_turn_further) {
+TEST(seed002_test, o30_written_as_polar_starts_as_o31_and_ends_a_turn_further) {
   const fs::path in = fs::path(KERF_ROUNDTRIP_WORK) / "o30.nc";
   fs::create_directories(in.parent_path());
   kerf::test::writeFile(in,
@@ -261,7 +261,7 @@ TEST(seed002, o30_written_as_polar_starts_as_o31_and_ends_a_turn_further) {
 // `X240. C270.` turns the table (transcribed: N35-N115). Its post means the table's frame at C 0
 // (--polar-frame table): the cut is O30's square exactly. Read as the Fanuc 15i-MA manual says
 // (the default, tool), the frame turns with C270: the same square turned by 270 degrees.
-TEST(seed002, o66_in_the_table_frame_is_o30s_square_and_the_tool_frame_turns_it) {
+TEST(seed002_test, o66_in_the_table_frame_is_o30s_square_and_the_tool_frame_turns_it) {
   const fs::path dir = fs::path(KERF_ROUNDTRIP_WORK);
   fs::create_directories(dir);
   const fs::path o30 = dir / "o30_square.nc", o66 = dir / "o66.nc";
@@ -302,7 +302,7 @@ TEST(seed002, o66_in_the_table_frame_is_o30s_square_and_the_tool_frame_turns_it)
 }
 
 // A dwell on a lathe gives its time as X (`G4 X2.`): no move (the mill-turn reader).
-TEST(seed002, a_dwell_on_a_lathe_moves_nothing) {
+TEST(seed002_test, a_dwell_on_a_lathe_moves_nothing) {
   const fs::path in = fs::path(KERF_ROUNDTRIP_WORK) / "dwell.nc";
   fs::create_directories(in.parent_path());
   kerf::test::writeFile(in, "G28 C0.\nG0 X40. C0.\nG1 X20. F100\nG4 X2.\nG1 X20. C30.\nM30\n");
@@ -334,7 +334,7 @@ int main(int argc, char** argv) {
     std::string name = f.filename().string() + "_polar";
     for (char& ch : name)
       if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    testing::RegisterTest("roundtrip", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+    testing::RegisterTest("roundtrip_test", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
                           [f]() -> testing::Test* { return new PolarRoundTrip(f); });
   }
   for (const fs::path& f : files)
@@ -342,7 +342,7 @@ int main(int argc, char** argv) {
       std::string name = f.filename().string() + "_" + to;
       for (char& ch : name)
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      testing::RegisterTest("roundtrip", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+      testing::RegisterTest("roundtrip_test", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
                             [f, to]() -> testing::Test* {
                               return new RoundTrip(Case{f, to});
                             });

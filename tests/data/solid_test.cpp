@@ -41,9 +41,9 @@ Edges edgesOf(const std::string& stl) {
   return e;
 }
 
-class solid : public testing::TestWithParam<const char*> {};
+class solid_test : public testing::TestWithParam<const char*> {};
 
-TEST_P(solid, caps_make_a_closed_manifold_solid_without_the_lead_paths) {
+TEST_P(solid_test, caps_make_a_closed_manifold_solid_without_the_lead_paths) {
   const std::filesystem::path work = std::filesystem::path(KERF_SOLID_WORK);
   std::filesystem::create_directories(work);
   const std::string name = GetParam();
@@ -59,6 +59,6 @@ TEST_P(solid, caps_make_a_closed_manifold_solid_without_the_lead_paths) {
 
 // Not taper_punch_2deg: its upper contour does not close where the lower does (the taper's seam,
 // K0609), so no cap closes it yet (docs/rendering.md).
-INSTANTIATE_TEST_SUITE_P(samples, solid, testing::Values("sector_r40", "circle_under_square"));
+INSTANTIATE_TEST_SUITE_P(samples, solid_test, testing::Values("sector_r40", "circle_under_square"));
 
 }  // namespace

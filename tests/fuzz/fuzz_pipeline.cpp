@@ -3,18 +3,14 @@
 // Built as a real fuzzer with clang (-DKERF_BUILD_FUZZERS=ON, tests/fuzz/run.sh), and always
 // as kerf_fuzz_replay, which feeds it every file of the bad corpus, the samples and
 // tests/fuzz/corpus so CI replays what the fuzzer found.
-// Two readings are compared where one must equal the other: the interpreter's windows against its
-// block loop (a quarter of the inputs), and, for about one input in 16, the input repeated past
-// 256 KB parsed in parts on 3 workers against one pass (the parts' join moves words and blocks;
-// inputs are at most 4 KB, so only this way does the fuzzer reach it).
+// For a quarter of the inputs the pipeline runs on one worker and on three, and the two readings
+// must be the same bit for bit, diagnostics included (the checks split their passes over threads).
 #include "kerf/converter/pipeline.h"
 #include "kerf/converter/points.h"
-#include "kerf/converter/program.h"
 #include "kerf/converter/report.h"
 #include "kerf/converter/summary.h"
 #include "kerf/geometry/ruled_surface.h"
 
-#include "../unit/parse_compare.h"
 #include "../unit/test_support.h"
 
 #include <cstddef>
@@ -54,34 +50,6 @@ bool sameReading(const kerf::converter::Pipeline& a, const kerf::converter::Pipe
   return sameDiagnostics(a.diags, b.diags);
 }
 
-/// The text repeated past the size from which the parser reads in parts (256 KB), read in one
-/// pass and in parts on 3 workers, with ';' ending blocks or not: the parts joined (their words
-/// moved or copied, their blocks written in place or copied) must give the one pass's program.
-void checkParts(const std::string& text) {
-  using namespace kerf::converter;
-  std::string longText;
-  while (longText.size() < 300000) {
-    longText += text;
-    longText += '\n';
-  }
-  const SourceFile src("parts.nc", longText);
-  for (const bool semicolonEndsBlock : {false, true}) {
-    ParseOptions options;
-    options.semicolonEndsBlock = semicolonEndsBlock;
-    Diagnostics d1(50), d3(50);
-    Program one, three;
-    {
-      const kerf::test::ScopedThreads t("1");
-      one = parseProgram(src, d1, options);
-    }
-    {
-      const kerf::test::ScopedThreads t("3");
-      three = parseProgram(src, d3, options);
-    }
-    if (!kerf::test::parseDifference(one, three).empty() || !sameDiagnostics(d1, d3)) __builtin_trap();
-  }
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -99,22 +67,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.check.surfaceLevels = 4;
   options.centreWords = true;  // explain shows them, below
   std::string text(reinterpret_cast<const char*>(data), size);
-  // Half the inputs run as kerf check does: the text given back once parsed and read again for
-  // the quotes (and for explain, below), here from memory.
-  if (size > 0 && (data[0] & 1)) options.rereadSource = [text]() -> std::optional<std::string> { return text; };
-  // Runs of simple blocks go in windows of a few blocks (simple_runs.cpp); for a quarter of the
-  // inputs the block loop alone reads the program again, and the two must agree bit for bit.
-  options.read.parallelRun = 2;
-  options.read.parallelWindow = 16;
-  // For about one input in 16, the parse in parts against the one pass (checkParts).
-  unsigned sum = 0;
-  for (std::size_t k = 0; k < size; ++k) sum += data[k];
-  if (size > 0 && sum % 16 == 5) checkParts(text);
+  const kerf::test::ScopedThreads three(3);
   const Pipeline p = runPipeline({"fuzz.nc", text}, options);
   if (size > 0 && (data[0] & 6) == 6) {
-    PipelineOptions serial = options;
-    serial.read.parallelRun = 0;
-    const Pipeline q = runPipeline({"fuzz.nc", text}, serial);
+    const kerf::test::ScopedThreads one(1);
+    const Pipeline q = runPipeline({"fuzz.nc", text}, options);
     if (!sameReading(p, q)) __builtin_trap();
   }
   struct {

@@ -1,11 +1,9 @@
 # The dependency direction of the design (README: layout), checked on the sources:
-#  - geometry includes only its own headers, Eigen and the standard library; the one exception is
-#    geometry/src/memory.cpp, which maps the pages of large arrays itself (Linux mmap and madvise,
-#    behind #if defined(__linux__)): the system's memory calls, no library; and
-#    geometry/src/phase_times.cpp, which reads the process's page faults (getrusage, behind
-#    #if defined(__unix__));
+#  - geometry includes only its own headers, Eigen and the standard library;
 #  - converter includes no viewer, window or GL header;
-#  - libraries never touch the process: no printing to the terminal, no exit(), no opening files.
+#  - libraries never touch the process: no printing to the terminal, no exit(), no opening files,
+#    no environment, no signal handlers, no memory mappings (the program reads the environment
+#    once and passes the values in).
 #   cmake -DSOURCE=<repo> -P check_layering.cmake
 set(problems "")
 file(GLOB_RECURSE geometry_files "${SOURCE}/geometry/*.h" "${SOURCE}/geometry/*.cpp")
@@ -13,12 +11,6 @@ file(GLOB_RECURSE converter_files "${SOURCE}/converter/*.h" "${SOURCE}/converter
 foreach(f IN LISTS geometry_files)
   file(STRINGS "${f}" includes REGEX "^#include")
   foreach(inc IN LISTS includes)
-    if(f MATCHES "/geometry/src/memory\\.cpp$" AND inc MATCHES "^#include <(sys/mman|unistd)\\.h>$")
-      continue()
-    endif()
-    if(f MATCHES "/geometry/src/phase_times\\.cpp$" AND inc MATCHES "^#include <sys/resource\\.h>$")
-      continue()
-    endif()
     if(NOT inc MATCHES "^#include (\"kerf/geometry/|\"[a-z_]+\\.h\"|<Eigen/|<unsupported/Eigen/|<[a-z_]+>)")
       string(APPEND problems "${f}: geometry may include only Eigen and itself: ${inc}\n")
     endif()
@@ -47,7 +39,8 @@ file(GLOB cli_files "${SOURCE}/viewer/src/cli/*")
 forbid_includes("${cli_files}" "kerf/(render|headless|export)/|window/|ui/|draw\\.h|GL|glfw|imgui|vtk"
                 "the program (not its drawing module)")
 foreach(f IN LISTS geometry_files converter_files)
-  file(STRINGS "${f}" lines REGEX "std::cout|std::cerr|std::exit|[^_a-z]exit\\(|abort\\(|fopen|ifstream|ofstream|[^n]printf\\(")
+  file(STRINGS "${f}" lines
+       REGEX "std::cout|std::cerr|std::exit|[^_a-z]exit\\(|abort\\(|fopen|ifstream|ofstream|[^n]printf\\(|getenv|sigaction|signal\\(|mmap|madvise")
   foreach(l IN LISTS lines)
     string(APPEND problems "${f}: a library must not touch the process: ${l}\n")
   endforeach()

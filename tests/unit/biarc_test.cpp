@@ -65,7 +65,7 @@ ParametricCurve involute() {
   return c;
 }
 
-TEST(biarc, a_single_biarc_joins_its_ends_with_the_given_tangents) {
+TEST(biarc_test, a_single_biarc_joins_its_ends_with_the_given_tangents) {
   const std::vector<Segment> b = biarc({0, 0}, {1, 0}, {10, 5}, {0, 1});
   ASSERT_FALSE(b.empty());
   EXPECT_LE((b.front().start - Vec2(0, 0)).norm(), 1e-12);
@@ -75,7 +75,7 @@ TEST(biarc, a_single_biarc_joins_its_ends_with_the_given_tangents) {
   EXPECT_TRUE(biarc({0, 0}, {-1, 0}, {10, 0}, {-1, 0}).empty());  // both tangents against the chord
 }
 
-TEST(biarc, a_circle_is_fitted_by_its_own_arcs) {
+TEST(biarc_test, a_circle_is_fitted_by_its_own_arcs) {
   ParametricCurve c;
   c.point = [](double t) { return Vec2(7 * std::cos(t), 7 * std::sin(t)); };
   c.t0 = 0;
@@ -85,7 +85,7 @@ TEST(biarc, a_circle_is_fitted_by_its_own_arcs) {
   for (const Segment& s : fit.segments) EXPECT_NEAR(s.radius, 7.0, 1e-6);
 }
 
-TEST(seed003_table1, sine_within_5um_in_no_more_spans_than_cawep) {
+TEST(seed003_table1_test, sine_within_5um_in_no_more_spans_than_cawep) {
   const ParametricCurve c = sine();
   BiarcOptions o;
   o.tolerance = 0.005;
@@ -97,7 +97,7 @@ TEST(seed003_table1, sine_within_5um_in_no_more_spans_than_cawep) {
   report("sine", fit, c, 16);
 }
 
-TEST(seed003_table1, involute_within_5um_in_no_more_spans_than_cawep) {
+TEST(seed003_table1_test, involute_within_5um_in_no_more_spans_than_cawep) {
   const ParametricCurve c = involute();
   BiarcOptions o;
   o.tolerance = 0.005;
@@ -109,7 +109,7 @@ TEST(seed003_table1, involute_within_5um_in_no_more_spans_than_cawep) {
   report("involute", fit, c, 14);
 }
 
-TEST(seed003_table1, spans_have_approximately_equal_error) {
+TEST(seed003_table1_test, spans_have_approximately_equal_error) {
   for (const ParametricCurve& c : {sine(), involute()}) {
     BiarcOptions o;
     o.tolerance = 0.005;
@@ -125,7 +125,7 @@ TEST(seed003_table1, spans_have_approximately_equal_error) {
   }
 }
 
-TEST(fit_point_list, points_on_a_circle_give_arcs_near_the_circle) {
+TEST(fit_point_list_test, points_on_a_circle_give_arcs_near_the_circle) {
   std::vector<Vec2> pts;
   for (int i = 0; i <= 24; ++i) pts.emplace_back(20 * std::cos(i * 0.1), 20 * std::sin(i * 0.1));
   BiarcOptions o;

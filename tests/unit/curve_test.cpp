@@ -40,7 +40,7 @@ Read read(const std::string& text, double tolerance = 0.001) {
 
 }  // namespace
 
-TEST(curve, a_circle_from_its_expressions_is_one_closed_contour_within_the_tolerance) {
+TEST(curve_test, a_circle_from_its_expressions_is_one_closed_contour_within_the_tolerance) {
   const Read r = read("# a circle\nx = 7*cos(t)\ny = 7*sin(t)\nt = 0 : 2*pi\n");
   ASSERT_TRUE(r.firstError.empty()) << r.firstError;
   ASSERT_TRUE(r.drawing.ok);
@@ -62,7 +62,7 @@ TEST(curve, a_circle_from_its_expressions_is_one_closed_contour_within_the_toler
   EXPECT_NEAR(kerf::geometry::signedArea(chains[0].path), std::numbers::pi * 49, 0.05);
 }
 
-TEST(curve, statements_may_share_a_line_and_the_range_takes_expressions) {
+TEST(curve_test, statements_may_share_a_line_and_the_range_takes_expressions) {
   const Read r = read("x = t; y = t^2 ; t = -1 : sqrt(4)/2");
   ASSERT_TRUE(r.firstError.empty()) << r.firstError;
   EXPECT_DOUBLE_EQ(r.drawing.curve->t0, -1.0);
@@ -71,7 +71,7 @@ TEST(curve, statements_may_share_a_line_and_the_range_takes_expressions) {
   EXPECT_NEAR((r.drawing.elements.back().segment.end - kerf::geometry::Vec2(1, 1)).norm(), 0, 1e-9);
 }
 
-TEST(curve, a_point_list_becomes_a_smooth_curve_through_its_points) {
+TEST(curve_test, a_point_list_becomes_a_smooth_curve_through_its_points) {
   std::string text = "points\n";
   for (int k = 0; k <= 12; ++k) {
     const double a = std::numbers::pi * k / 12;
@@ -85,7 +85,7 @@ TEST(curve, a_point_list_becomes_a_smooth_curve_through_its_points) {
   for (const DrawingElement& e : r.drawing.elements) EXPECT_NEAR(e.segment.pointAt(0.5).norm(), 10.0, 0.02);
 }
 
-TEST(curve, errors_name_the_line_and_column) {
+TEST(curve_test, errors_name_the_line_and_column) {
   EXPECT_EQ(read("x = t\ny = sin(t\nt = 0:1").firstError, "2:9: y: Missing parenthesis");
   EXPECT_EQ(read("x = t\ny = foo(t)\nt = 0:1").firstError.substr(0, 5), "2:5: ");
   EXPECT_EQ(read("x = t\ny = 1/t\nt = 0:1").firstError, "2:5: y is not a finite number at t = 0.000000");
@@ -100,7 +100,7 @@ TEST(curve, errors_name_the_line_and_column) {
   EXPECT_EQ(read("points\n1 2\n1 2").firstError, "1:1: a point list needs at least two distinct points");
 }
 
-TEST(curve, only_curve_statements_look_like_a_curve) {
+TEST(curve_test, only_curve_statements_look_like_a_curve) {
   EXPECT_TRUE(looksLikeCurve("# involute\nx = 10*cos(t)"));
   EXPECT_TRUE(looksLikeCurve("points\n0 0\n1 1"));
   EXPECT_FALSE(looksLikeCurve("G01 X10 Y5\nM02"));

@@ -26,7 +26,7 @@ Drawing read(const std::string& text, Diagnostics& diags) {
   return readDxf(*keep.back(), DxfOptions{}, diags);
 }
 
-TEST(dxf_reader, a_positive_bulge_is_a_counter_clockwise_arc_from_its_own_vertex) {
+TEST(dxf_reader_test, a_positive_bulge_is_a_counter_clockwise_arc_from_its_own_vertex) {
   Diagnostics d(100);
   // (0,0) with bulge 1 to (10,0): counter-clockwise about (5,0), so through (5,-5); closed back
   // with the last vertex's bulge, 0: a half disc of radius 5.
@@ -43,7 +43,7 @@ TEST(dxf_reader, a_positive_bulge_is_a_counter_clockwise_arc_from_its_own_vertex
   EXPECT_NEAR(kerf::geometry::signedArea(path), 12.5 * kPi, 1e-9);
 }
 
-TEST(dxf_reader, a_negative_bulge_is_clockwise_and_a_bulge_over_one_takes_the_long_way) {
+TEST(dxf_reader_test, a_negative_bulge_is_clockwise_and_a_bulge_over_one_takes_the_long_way) {
   Diagnostics d(100);
   const Drawing g = read(ascii("0\nLWPOLYLINE\n8\n0\n90\n2\n70\n0\n10\n0\n20\n0\n42\n-2\n10\n10\n20\n0\n"), d);
   ASSERT_EQ(g.elements.size(), 1u);
@@ -54,7 +54,7 @@ TEST(dxf_reader, a_negative_bulge_is_clockwise_and_a_bulge_over_one_takes_the_lo
   EXPECT_NEAR((arc.end - Vec2(10, 0)).norm(), 0, 1e-9);
 }
 
-TEST(dxf_reader, an_arc_with_a_downward_extrusion_is_mirrored_and_clockwise) {
+TEST(dxf_reader_test, an_arc_with_a_downward_extrusion_is_mirrored_and_clockwise) {
   Diagnostics d(100);
   const Drawing g = read(ascii("0\nARC\n8\n0\n10\n5\n20\n0\n40\n2\n50\n0\n51\n90\n210\n0\n220\n0\n230\n-1\n"), d);
   ASSERT_EQ(g.elements.size(), 1u);
@@ -65,7 +65,7 @@ TEST(dxf_reader, an_arc_with_a_downward_extrusion_is_mirrored_and_clockwise) {
   EXPECT_NEAR((arc.end - Vec2(-5, 2)).norm(), 0, 1e-9);
 }
 
-TEST(dxf_reader, inserts_scale_rotate_mirror_and_nest) {
+TEST(dxf_reader_test, inserts_scale_rotate_mirror_and_nest) {
   Diagnostics d(100);
   const std::string blocks =
       "0\nBLOCK\n2\nB\n10\n1\n20\n0\n0\nLINE\n8\n0\n10\n1\n20\n0\n11\n2\n21\n0\n0\nENDBLK\n"
@@ -79,7 +79,7 @@ TEST(dxf_reader, inserts_scale_rotate_mirror_and_nest) {
   EXPECT_EQ(g.entities.at("INSERT"), 1u);
 }
 
-TEST(dxf_reader, text_and_dimensions_are_counted_as_skipped) {
+TEST(dxf_reader_test, text_and_dimensions_are_counted_as_skipped) {
   Diagnostics d(100);
   const Drawing g = read(ascii("0\nTEXT\n8\n0\n1\nhello\n0\nLINE\n8\n0\n10\n0\n20\n0\n11\n1\n21\n0\n"), d);
   EXPECT_EQ(g.skipped.at("TEXT"), 1u);
@@ -117,7 +117,7 @@ std::string binaryLine(bool truncate) {
   return b;
 }
 
-TEST(dxf_reader, binary_dxf_reads_as_its_ascii_twin) {
+TEST(dxf_reader_test, binary_dxf_reads_as_its_ascii_twin) {
   Diagnostics d(100);
   const Drawing g = read(binaryLine(false), d);
   ASSERT_TRUE(g.binary);
@@ -127,7 +127,7 @@ TEST(dxf_reader, binary_dxf_reads_as_its_ascii_twin) {
   EXPECT_FALSE(d.hasErrors());
 }
 
-TEST(dxf_reader, a_truncated_binary_dxf_is_an_error_at_its_byte_offset) {
+TEST(dxf_reader_test, a_truncated_binary_dxf_is_an_error_at_its_byte_offset) {
   Diagnostics d(100);
   const Drawing g = read(binaryLine(true), d);
   EXPECT_FALSE(g.ok);

@@ -1,17 +1,15 @@
-// Reading a program (viewer/src/cli/file_io.h): a long one is mapped where the system keeps it, not
-// copied. It must read as the file's bytes with a NUL after them, and a file cut short or grown
-// while it is mapped must neither crash the program nor move that NUL.
+// Reading inputs as the kerf program reads them (viewer/src/cli/file_io.h): a regular file whole,
+// a FIFO to its end, and clear refusals for a folder, a missing file and one past the limit.
 #include "file_io.h"
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <string>
+#include <thread>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace kerf::cli {
@@ -19,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A program of about `bytes` bytes whose lines differ, so that a byte out of place shows.
+/// A program of `bytes` bytes whose lines differ, so that a byte out of place shows.
 std::string programOf(std::size_t bytes) {
   std::string text;
   for (std::size_t k = 0; text.size() < bytes; ++k)
@@ -28,7 +26,7 @@ std::string programOf(std::size_t bytes) {
   return text;
 }
 
-class FileIo : public ::testing::Test {
+class file_io_test : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("kerf-file-io-" + std::to_string(::getpid()));
@@ -40,81 +38,39 @@ class FileIo : public ::testing::Test {
     std::ofstream(path, std::ios::binary) << text;
     return path;
   }
-  /// The file read as the program reads it, with its cut-short mark (null unless mapped).
-  struct Read {
-    std::optional<converter::TextBytes> text;
-    std::shared_ptr<const std::atomic<bool>> cut;
-    std::string error;
-  };
-  static Read read(const std::string& path) {
-    Read r;
-    r.text = readProgramFile(path, converter::SourceFile::kMaxSize, r.error, &r.cut);
-    return r;
-  }
   fs::path dir_;
 };
 
-TEST_F(FileIo, a_long_program_is_mapped_and_reads_as_its_bytes_with_a_nul_after) {
-  // A size inside a page, and whole pages (the NUL then lies on the page after the file's).
-  for (const std::size_t size : {std::size_t{300000}, std::size_t{4096 * 100}, std::size_t{1 << 20}}) {
+TEST_F(file_io_test, a_regular_file_reads_as_its_bytes) {
+  for (const std::size_t size : {std::size_t{0}, std::size_t{1000}, std::size_t{65536}, std::size_t{1 << 20}}) {
     const std::string text = programOf(size);
-    const Read r = read(write("long.nc", text));
-    ASSERT_TRUE(r.text) << r.error;
-    ASSERT_TRUE(r.cut) << "a program of " << size << " bytes was not mapped";
-    EXPECT_FALSE(r.cut->load());
-    ASSERT_EQ(r.text->size(), size);
-    EXPECT_TRUE(r.text->view() == text) << size;
-    EXPECT_EQ(r.text->data()[size], '\0');
-    // A copy is text of its own, the same bytes.
-    const converter::TextBytes copy = *r.text;
-    EXPECT_NE(copy.data(), r.text->data());
-    EXPECT_TRUE(copy.view() == text);
+    std::string error;
+    const std::optional<std::string> read = readTextFile(write("p.nc", text), 1u << 30, error);
+    ASSERT_TRUE(read) << error;
+    EXPECT_TRUE(*read == text) << size;
   }
 }
 
-TEST_F(FileIo, a_short_program_is_read_not_mapped) {
-  const std::string text = programOf(1000);
-  const Read r = read(write("short.nc", text));
-  ASSERT_TRUE(r.text) << r.error;
-  EXPECT_FALSE(r.cut);
-  EXPECT_TRUE(r.text->view() == text);
-  EXPECT_EQ(r.text->data()[r.text->size()], '\0');
+TEST_F(file_io_test, a_fifo_is_read_to_its_end) {
+  const std::string path = (dir_ / "fifo").string();
+  ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+  const std::string text = programOf(200000);  // more than a pipe holds at once
+  std::thread writer([&] { std::ofstream(path, std::ios::binary) << text; });
+  std::string error;
+  const std::optional<std::string> read = readTextFile(path, 1u << 30, error);
+  writer.join();
+  ASSERT_TRUE(read) << error;
+  EXPECT_TRUE(*read == text);
 }
 
-TEST_F(FileIo, a_mapped_program_cut_short_reads_as_zeros_past_the_cut_and_says_so) {
-  const std::size_t size = 1 << 20, kept = 300001;
-  const std::string text = programOf(size);
-  const std::string path = write("cut.nc", text);
-  const Read r = read(path);
-  ASSERT_TRUE(r.text && r.cut) << r.error;
-  const converter::TextBytes& bytes = *r.text;
-  ASSERT_EQ(::truncate(path.c_str(), static_cast<off_t>(kept)), 0);
-  // Every byte is read, from the first page past the cut on through SIGBUS and the zero pages.
-  std::size_t same = 0, zeros = 0;
-  for (std::size_t k = 0; k < size; ++k) {
-    const char c = bytes.data()[k];
-    if (k < kept)
-      same += c == text[k];
-    else
-      zeros += c == '\0';
-  }
-  EXPECT_EQ(same, kept);
-  EXPECT_EQ(zeros, size - kept);
-  EXPECT_TRUE(r.cut->load());
-  EXPECT_EQ(bytes.data()[size], '\0');
-}
-
-TEST_F(FileIo, a_mapped_program_that_grows_keeps_its_size_and_its_nul) {
-  const std::size_t size = 300000;
-  const std::string text = programOf(size);
-  const std::string path = write("grow.nc", text);
-  const Read r = read(path);
-  ASSERT_TRUE(r.text && r.cut) << r.error;
-  std::ofstream(path, std::ios::binary | std::ios::app) << std::string(10000, 'X');
-  EXPECT_EQ(r.text->size(), size);
-  EXPECT_EQ(r.text->data()[size], '\0');  // on a page of the reader's own, not the file's
-  EXPECT_TRUE(r.text->view() == text);
-  EXPECT_FALSE(r.cut->load());
+TEST_F(file_io_test, a_folder_a_missing_file_and_a_file_past_the_limit_are_refused) {
+  std::string error;
+  EXPECT_FALSE(readTextFile(dir_.string(), 1000, error));
+  EXPECT_NE(error.find("is a folder"), std::string::npos) << error;
+  EXPECT_FALSE(readTextFile((dir_ / "missing.nc").string(), 1000, error));
+  EXPECT_NE(error.find("no such file"), std::string::npos) << error;
+  EXPECT_FALSE(readTextFile(write("big.nc", programOf(1001)), 1000, error));
+  EXPECT_NE(error.find("larger than 1000 bytes"), std::string::npos) << error;
 }
 
 }  // namespace

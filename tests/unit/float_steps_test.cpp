@@ -65,7 +65,7 @@ std::vector<double> samples() {
   return v;
 }
 
-TEST(float_steps, a_step_is_the_librarys_next_float_and_no_step_is_the_float_itself) {
+TEST(float_steps_test, a_step_is_the_librarys_next_float_and_no_step_is_the_float_itself) {
   std::size_t compared = 0;
   for (const double d : samples()) {
     const auto f = static_cast<float>(d);
@@ -87,7 +87,7 @@ TEST(float_steps, a_step_is_the_librarys_next_float_and_no_step_is_the_float_its
   EXPECT_EQ(floatStepDownIf(kInf, 1), std::numeric_limits<float>::max());
 }
 
-TEST(float_steps, a_double_is_rounded_down_and_up_to_the_floats_either_side) {
+TEST(float_steps_test, a_double_is_rounded_down_and_up_to_the_floats_either_side) {
   for (const double d : samples()) {
     const float below = floatBelow(d), above = floatAbove(d);
     ASSERT_EQ(bitsOf(below), bitsOf(libraryBelow(d))) << d;

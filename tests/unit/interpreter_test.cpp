@@ -15,7 +15,7 @@ namespace {
 
 constexpr double kEps = 1e-9;
 
-TEST(interpreter, absolute_and_incremental_moves) {
+TEST(interpreter_test, absolute_and_incremental_moves) {
   auto r = run("G90 G01 X10. Y0\nG91 X5. Y5.\nG90 X0 Y0\nM02\n");
   ASSERT_FALSE(r->diags.hasErrors());
   const auto& m = r->path().moves;
@@ -25,13 +25,13 @@ TEST(interpreter, absolute_and_incremental_moves) {
   EXPECT_TRUE(r->path().endedProperly);
 }
 
-TEST(interpreter, modal_motion_carries_over) {
+TEST(interpreter_test, modal_motion_carries_over) {
   auto r = run("G01 X1.\nY1.\nX0\nM30\n");
   ASSERT_EQ(r->path().moves.size(), 3u);
   for (const auto& m : r->path().moves) EXPECT_EQ(m.kind, MoveKind::Line);
 }
 
-TEST(interpreter, inch_units_are_converted_to_mm) {
+TEST(interpreter_test, inch_units_are_converted_to_mm) {
   auto r = run("G20 G01 X1. Y0.5\nM02\n");
   ASSERT_EQ(r->path().moves.size(), 1u);
   EXPECT_NEAR(r->path().moves[0].lower.end.x(), 25.4, kEps);
@@ -40,7 +40,7 @@ TEST(interpreter, inch_units_are_converted_to_mm) {
   EXPECT_NEAR(r70->path().moves[1].lower.end.x(), 1.0, kEps);
 }
 
-TEST(interpreter, integer_micrometres) {
+TEST(interpreter_test, integer_micrometres) {
   InterpreterOptions o;
   o.integerUnit = IntegerUnit::Micrometre;
   auto r = run("G92 X115000 Y-10000\nG91 G01 X-9900 Y0\nX1.5\nM02\n", o);
@@ -54,7 +54,7 @@ TEST(interpreter, integer_micrometres) {
   EXPECT_TRUE(warned->hasCode(Code::IntegerUnitSuspect));
 }
 
-TEST(interpreter, arc_centre_modes) {
+TEST(interpreter_test, arc_centre_modes) {
   // The same quarter circle about the origin, from (10, 0) to (0, 10), with I J written three ways.
   struct Case {
     ArcCentreMode mode;
@@ -82,14 +82,14 @@ TEST(interpreter, arc_centre_modes) {
   EXPECT_NE(reversed->diags.all()[0].help.find("--arc-centre"), std::string::npos);
 }
 
-TEST(interpreter, full_circle_from_centre_words) {
+TEST(interpreter_test, full_circle_from_centre_words) {
   auto r = run("G92 X5. Y0\nG02 I-5. J0\nM02\n");
   ASSERT_FALSE(r->diags.hasErrors());
   ASSERT_EQ(r->path().moves.size(), 1u);
   EXPECT_NEAR(std::abs(r->path().moves[0].lower.sweep), 2 * M_PI, kEps);
 }
 
-TEST(interpreter, g92_mid_program_shifts_the_frame_not_the_wire) {
+TEST(interpreter_test, g92_mid_program_shifts_the_frame_not_the_wire) {
   auto r = run("G92 X0 Y0\nG01 X10. Y0\nG92 X0 Y0\nG01 X5. Y0\nM02\n");
   ASSERT_EQ(r->path().moves.size(), 2u);
   // The second move starts where the wire is (10, 0) and goes 5 mm further.
@@ -97,14 +97,14 @@ TEST(interpreter, g92_mid_program_shifts_the_frame_not_the_wire) {
   EXPECT_EQ(r->path().moves[1].lower.end, Vec2(15, 0));
 }
 
-TEST(interpreter, dwell_x_is_time_not_a_coordinate) {
+TEST(interpreter_test, dwell_x_is_time_not_a_coordinate) {
   auto r = run("G01 X1.\nG04 X2.5\nG01 Y1.\nM02\n");
   ASSERT_FALSE(r->diags.hasErrors());
   ASSERT_EQ(r->path().moves.size(), 2u);
   EXPECT_EQ(r->path().moves[1].lower.start, Vec2(1, 0));
 }
 
-TEST(interpreter, subprogram_with_repeats_in_incremental_mode) {
+TEST(interpreter_test, subprogram_with_repeats_in_incremental_mode) {
   auto r = run("G91 G01 X1.\nM98 P100 L3\nM02\nO100\nG01 X2.\nM99\n");
   ASSERT_FALSE(r->diags.hasErrors());
   ASSERT_EQ(r->path().moves.size(), 4u);
@@ -113,7 +113,7 @@ TEST(interpreter, subprogram_with_repeats_in_incremental_mode) {
   EXPECT_EQ(r->path().moves.back().line, 5u);  // the move names the subprogram's line
 }
 
-TEST(interpreter, sodick_style_n_label_after_m02) {
+TEST(interpreter_test, sodick_style_n_label_after_m02) {
   auto r = run("H001 = +000000.1300;\nG90 G01 X0 Y0;\nM98 P0001;\nM02;\nN0001 G41 H001 G01 X1.;\nM99;\n");
   ASSERT_FALSE(r->diags.hasErrors());
   ASSERT_EQ(r->path().moves.size(), 2u);
@@ -121,7 +121,7 @@ TEST(interpreter, sodick_style_n_label_after_m02) {
   EXPECT_TRUE(r->path().offsetRole.empty()) << "a start-up move alone compensates nothing";
 }
 
-TEST(interpreter, g41_with_an_h_register_is_applied_with_arcs_at_convex_corners) {
+TEST(interpreter_test, g41_with_an_h_register_is_applied_with_arcs_at_convex_corners) {
   // A 10 x 10 square cut clockwise from a lead-in, the wire 0.13 to the left (outside).
   auto r =
       run("H001 = +000000.1300;\nG90 G92 X-5 Y0;\nG41 H001 G01 X0 Y0;\nG01 X0 Y10;\nG01 X10 Y10;\nG01 X10 Y0;\n"
@@ -146,7 +146,7 @@ TEST(interpreter, g41_with_an_h_register_is_applied_with_arcs_at_convex_corners)
   EXPECT_TRUE(r->hasCode(Code::WireOffsetNotApplied));     // the note that it was applied
 }
 
-TEST(interpreter, explain_derives_an_offset_arc_from_its_programmed_words) {
+TEST(interpreter_test, explain_derives_an_offset_arc_from_its_programmed_words) {
   // G41 left of a line, then an R arc: the corner arc has no words (its centre is the corner), the
   // offset arc's centre follows from R on the programmed chord (10 mm), not the offset one.
   auto r =
@@ -163,13 +163,13 @@ TEST(interpreter, explain_derives_an_offset_arc_from_its_programmed_words) {
   EXPECT_NE(text.find("the wire path keeps that centre, inside the programmed arc by the offset"), std::string::npos);
 }
 
-TEST(interpreter, recursion_is_stopped) {
+TEST(interpreter_test, recursion_is_stopped) {
   auto r = run("O1\nG91 G01 X1.\nM98 P1\nM99\n");
   EXPECT_TRUE(r->hasCode(Code::CallTooDeep));
   EXPECT_LE(r->path().moves.size(), 17u);
 }
 
-TEST(interpreter, execution_limits_bound_time_and_memory) {
+TEST(interpreter_test, execution_limits_bound_time_and_memory) {
   InterpreterOptions o;
   o.maxMoves = 1000;
   auto r = run("G91 G01\nM98 P1 L9999\nM02\nO1 M98 P2 L9999\nM99\nO2 X1.\nM99\n", o);
@@ -181,7 +181,7 @@ TEST(interpreter, execution_limits_bound_time_and_memory) {
   EXPECT_TRUE(r2->hasCode(Code::ExecutionLimit));
 }
 
-TEST(interpreter, block_delete_skips_when_enabled) {
+TEST(interpreter_test, block_delete_skips_when_enabled) {
   auto on = run("G01 X1.\n/G01 Y5.\nM02\n");
   EXPECT_EQ(on->path().moves.size(), 1u);
   InterpreterOptions o;
@@ -190,7 +190,7 @@ TEST(interpreter, block_delete_skips_when_enabled) {
   EXPECT_EQ(off->path().moves.size(), 2u);
 }
 
-TEST(interpreter, rapid_moves_are_not_cut) {
+TEST(interpreter_test, rapid_moves_are_not_cut) {
   auto r = run("G00 X5.\nG01 X6.\nM02\n");
   ASSERT_EQ(r->path().moves.size(), 2u);
   EXPECT_FALSE(r->path().moves[0].isCut());
@@ -199,7 +199,7 @@ TEST(interpreter, rapid_moves_are_not_cut) {
 
 // The summary's box is the union of the cut moves' own boxes, bit for bit: arcs whose circle lies
 // inside the box so far skip the test of their extremes, arcs that bulge past it do not.
-TEST(interpreter, summary_bounds_are_the_union_of_the_moves_boxes) {
+TEST(interpreter_test, summary_bounds_are_the_union_of_the_moves_boxes) {
   // End points on a 30 mm square, and four half circles that each bulge 5 mm past one of its
   // sides alone (clockwise: left, top, right, bottom), then small arcs well inside it.
   std::string program = "G90 G21 G92 X0 Y0\nG01 X30. Y0\nX30. Y30.\nX0 Y30.\nX0 Y10.\n";
@@ -233,7 +233,7 @@ TEST(interpreter, summary_bounds_are_the_union_of_the_moves_boxes) {
   EXPECT_DOUBLE_EQ(s.bounds.max.y(), ends.max.y() + 5.0);
 }
 
-TEST(interpreter, every_move_keeps_its_block_span) {
+TEST(interpreter_test, every_move_keeps_its_block_span) {
   auto r = run("G01 X1.\n\n  G02 X2. Y1. R1.\nM02\n");
   ASSERT_EQ(r->path().moves.size(), 2u);
   const auto& m = r->path().moves[1];
@@ -241,13 +241,13 @@ TEST(interpreter, every_move_keeps_its_block_span) {
   EXPECT_EQ(r->source->text().substr(m.span.offset, m.span.length), "G02 X2. Y1. R1.");
 }
 
-TEST(interpreter, missing_program_end_is_a_warning) {
+TEST(interpreter_test, missing_program_end_is_a_warning) {
   auto r = run("G01 X1.\n");
   EXPECT_TRUE(r->hasCode(Code::MissingProgramEnd));
   EXPECT_FALSE(r->diags.hasErrors());
 }
 
-TEST(interpreter, unknown_g_code_names_the_profile_that_knows_it) {
+TEST(interpreter_test, unknown_g_code_names_the_profile_that_knows_it) {
   // G60 is no standard code: the generic profile refuses it and says which profile knows it,
   // instead of guessing at typos ("G00 or G20 ...").
   InterpreterOptions io;
@@ -269,7 +269,7 @@ TEST(interpreter, unknown_g_code_names_the_profile_that_knows_it) {
   EXPECT_TRUE(unknown->diags.all()[0].help.empty());
 }
 
-TEST(checks, retrace_is_a_note_and_crossing_an_error) {
+TEST(checks_test, retrace_is_a_note_and_crossing_an_error) {
   auto clean = run("G92 X-5. Y0\nG01 X0 Y0\nX10.\nY10.\nX0\nY0\nX-5.\nM02\n", {}, true);
   EXPECT_FALSE(clean->diags.hasErrors());
   EXPECT_TRUE(clean->hasCode(Code::PathRetraces));
@@ -284,7 +284,7 @@ TEST(checks, retrace_is_a_note_and_crossing_an_error) {
     }
 }
 
-TEST(checks, open_path_is_a_warning) {
+TEST(checks_test, open_path_is_a_warning) {
   auto r = run("G01 X10.\nY10.\nM02\n", {}, true);
   EXPECT_TRUE(r->hasCode(Code::PathOpen));
   EXPECT_FALSE(r->diags.hasErrors());
@@ -294,7 +294,7 @@ TEST(checks, open_path_is_a_warning) {
 
 namespace {
 
-TEST(checks, a_touch_that_closes_the_contour_is_a_note_however_the_blocks_are_split) {
+TEST(checks_test, a_touch_that_closes_the_contour_is_a_note_however_the_blocks_are_split) {
   // IGK1-style: the last block closes the contour at the lead-in's end and runs on down the
   // lead-in. Split at that point it meets itself only at shared vertices: the same verdict.
   const std::string whole = "G92 X0 Y0\nG01 Y10.\nX-20.\nY20.\nX0\nY0\nM02\n";
@@ -313,7 +313,7 @@ TEST(checks, a_touch_that_closes_the_contour_is_a_note_however_the_blocks_are_sp
   EXPECT_FALSE(pinch->hasCode(Code::LoopClosesInsideMove));
 }
 
-TEST(interpreter, a_bare_g92_makes_the_current_position_the_origin_on_robofil) {
+TEST(interpreter_test, a_bare_g92_makes_the_current_position_the_origin_on_robofil) {
   InterpreterOptions io;
   io.machine = findBuiltinMachine("robofil");
   auto r = run("G01 X5. Y2.\nG92\nG01 X1. Y0\nM02\n", io);
@@ -323,7 +323,7 @@ TEST(interpreter, a_bare_g92_makes_the_current_position_the_origin_on_robofil) {
   EXPECT_NEAR((r->path().moves[1].lower.end - kerf::geometry::Vec2(6, 2)).norm(), 0.0, 1e-12);
 }
 
-TEST(interpreter, the_polar_section_is_one_error_and_what_follows_is_said_once) {
+TEST(interpreter_test, the_polar_section_is_one_error_and_what_follows_is_said_once) {
   // The section's blocks are not read (one error); where it left the wire is unknown, so the cut
   // after it cannot be checked (one more error, for every such move together).
   auto r = run("G92 X0 Y0\nG01 X10.\nG112\nG1 X5. C1.\nG3 X4. C2. R1.\nG113\nG01 X20.\nX30.\nM30\n");
@@ -343,7 +343,7 @@ namespace {
 
 // The checks read the cut path in place when no rapid lies between cuts, and copy it only when one
 // does: either way the view holds the cut moves' lower segments, in order.
-TEST(cut_view, reads_contiguous_cuts_in_place_and_copies_otherwise) {
+TEST(cut_view_test, reads_contiguous_cuts_in_place_and_copies_otherwise) {
   auto r = run("G00 X1. Y0\nG01 X2.\nG03 X2. Y2. I0 J1.\nG01 X1. Y0\nG00 X0 Y0\nM02\n");
   ASSERT_FALSE(r->diags.hasErrors()) << kerf::test::dump(r->diags);
   const auto& moves = r->path().moves;

@@ -75,30 +75,30 @@ void expectSameVerdictUnderMotions(const std::vector<Segment>& path, bool closed
   EXPECT_EQ(kinds(reversedPath(path), closed), base);
 }
 
-TEST(intersect, crossing_lines) {
+TEST(intersect_test, crossing_lines) {
   const auto x = intersect(Segment::line({0, 0}, {10, 10}), Segment::line({0, 10}, {10, 0}), 1e-9);
   ASSERT_EQ(x.count, 1);
   EXPECT_NEAR((x.points[0] - Vec2(5, 5)).norm(), 0, 1e-12);
 }
 
-TEST(intersect, collinear_overlap) {
+TEST(intersect_test, collinear_overlap) {
   const auto x = intersect(Segment::line({0, 0}, {10, 0}), Segment::line({4, 0}, {20, 0}), 1e-9);
   EXPECT_TRUE(x.overlap);
 }
 
-TEST(intersect, line_through_arc_twice) {
+TEST(intersect_test, line_through_arc_twice) {
   const Segment arc = Segment::arc({10, 0}, {10, 0}, {0, 0}, ArcDirection::CounterClockwise);
   const auto x = intersect(Segment::line({-20, 0}, {20, 0}), arc, 1e-9);
   EXPECT_EQ(x.count, 2);
 }
 
-TEST(intersect, line_misses_the_arc_part_of_its_circle) {
+TEST(intersect_test, line_misses_the_arc_part_of_its_circle) {
   const Segment upper = Segment::arc({10, 0}, {-10, 0}, {0, 0}, ArcDirection::CounterClockwise);
   EXPECT_EQ(intersect(Segment::line({-20, -5}, {20, -5}), upper, 1e-9).count, 0);
   EXPECT_EQ(intersect(Segment::line({-20, 5}, {20, 5}), upper, 1e-9).count, 2);
 }
 
-TEST(intersect, arcs_on_the_same_circle_overlap) {
+TEST(intersect_test, arcs_on_the_same_circle_overlap) {
   const Segment a = Segment::arc({10, 0}, {0, 10}, {0, 0}, ArcDirection::CounterClockwise);
   const Segment b =
       Segment::arc({7.0710678118654755, 7.0710678118654755}, {-10, 0}, {0, 0}, ArcDirection::CounterClockwise);
@@ -112,7 +112,7 @@ TEST(intersect, arcs_on_the_same_circle_overlap) {
 // Two full circles on one circle share all of it: the stretch closes on itself and has one end.
 // Its overlap contact lies on the circle; the second point, never set, was read uninitialised (a
 // different "near" point from run to run: the fuzz target's two readings of one program disagreed).
-TEST(intersect, two_full_circles_on_one_circle_overlap_with_one_end_on_the_circle) {
+TEST(intersect_test, two_full_circles_on_one_circle_overlap_with_one_end_on_the_circle) {
   const Segment a = Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::CounterClockwise);
   const Segment b = Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::Clockwise);
   const SegmentIntersection x = intersect(a, b, 1e-6);
@@ -131,13 +131,13 @@ TEST(intersect, two_full_circles_on_one_circle_overlap_with_one_end_on_the_circl
   }
 }
 
-TEST(intersect, tangent_circles_touch_once) {
+TEST(intersect_test, tangent_circles_touch_once) {
   const Segment a = Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::CounterClockwise);
   const Segment b = Segment::arc({15, 0}, {15, 0}, {10, 0}, ArcDirection::CounterClockwise);
   EXPECT_EQ(intersect(a, b, 1e-9).count, 1);
 }
 
-TEST(self_intersection, square_is_clean) {
+TEST(self_intersection_test, square_is_clean) {
   const auto sq = polyline({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}});
   SelfIntersectionOptions o;
   o.closed = true;
@@ -145,7 +145,7 @@ TEST(self_intersection, square_is_clean) {
   expectSameVerdictUnderMotions(sq, true);
 }
 
-TEST(self_intersection, bow_tie_crosses) {
+TEST(self_intersection_test, bow_tie_crosses) {
   const auto bow = polyline({{0, 0}, {10, 10}, {10, 0}, {0, 10}, {0, 0}});
   SelfIntersectionOptions o;
   o.closed = true;
@@ -156,13 +156,13 @@ TEST(self_intersection, bow_tie_crosses) {
   expectSameVerdictUnderMotions(bow, true);
 }
 
-TEST(self_intersection, near_miss_bow_is_clean) {
+TEST(self_intersection_test, near_miss_bow_is_clean) {
   // Same shape, but the second diagonal stops 0.01 mm short of the first.
   const auto open = polyline({{0, 0}, {10, 10}, {10, 0}, {5.01, 4.99}});
   EXPECT_TRUE(findSelfIntersections(open).contacts.empty());
 }
 
-TEST(self_intersection, t_junction_touches) {
+TEST(self_intersection_test, t_junction_touches) {
   const auto t = polyline({{0, 0}, {10, 0}, {10, 5}, {5, 5}, {5, 0}});
   const auto r = findSelfIntersections(t);
   ASSERT_EQ(r.contacts.size(), 1u);
@@ -170,7 +170,7 @@ TEST(self_intersection, t_junction_touches) {
   expectSameVerdictUnderMotions(t, false);
 }
 
-TEST(self_intersection, fold_back_overlaps_its_neighbour) {
+TEST(self_intersection_test, fold_back_overlaps_its_neighbour) {
   const auto f = polyline({{0, 0}, {10, 0}, {4, 0}});
   const auto r = findSelfIntersections(f);
   ASSERT_EQ(r.contacts.size(), 1u);
@@ -179,7 +179,7 @@ TEST(self_intersection, fold_back_overlaps_its_neighbour) {
   expectSameVerdictUnderMotions(f, false);
 }
 
-TEST(self_intersection, lead_out_over_lead_in_is_an_opposite_overlap) {
+TEST(self_intersection_test, lead_out_over_lead_in_is_an_opposite_overlap) {
   auto p = polyline({{-5, 0}, {0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}, {-5, 0}});
   const auto r = findSelfIntersections(p);
   ASSERT_EQ(r.contacts.size(), 1u);
@@ -189,13 +189,13 @@ TEST(self_intersection, lead_out_over_lead_in_is_an_opposite_overlap) {
   EXPECT_EQ(r.contacts[0].second, 5u);
 }
 
-TEST(self_intersection, vertex_revisited_is_not_a_contact) {
+TEST(self_intersection_test, vertex_revisited_is_not_a_contact) {
   // A lead-in that ends where the loop starts and ends.
   auto p = polyline({{-5, 0}, {0, 0}, {10, 0}, {10, 10}, {0, 0}});
   EXPECT_TRUE(findSelfIntersections(p).contacts.empty());
 }
 
-TEST(self_intersection, arc_crossing_a_line) {
+TEST(self_intersection_test, arc_crossing_a_line) {
   std::vector<Segment> p;
   p.push_back(Segment::line({0, 0}, {20, 0}));
   p.push_back(Segment::line({20, 0}, {20, 5}));
@@ -207,7 +207,7 @@ TEST(self_intersection, arc_crossing_a_line) {
   expectSameVerdictUnderMotions(p, false);
 }
 
-TEST(self_intersection, sweep_matches_all_pairs_on_random_paths) {
+TEST(self_intersection_test, sweep_matches_all_pairs_on_random_paths) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> step(-3, 3);
   for (int trial = 0; trial < 60; ++trial) {
@@ -261,7 +261,7 @@ TEST(self_intersection, sweep_matches_all_pairs_on_random_paths) {
 // must be lineArc's: random pairs, both orders, near tangent (down to 1e-10 rad off it) and far from
 // the origin, arcs that end off their circle, at two tolerances, against intersect() classified as
 // the sweep does.
-TEST(self_intersection, a_line_and_an_arc_end_to_end_meet_where_intersect_says) {
+TEST(self_intersection_test, a_line_and_an_arc_end_to_end_meet_where_intersect_says) {
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> unit(0, 1);
   auto logUniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, unit(rng)); };
@@ -329,7 +329,7 @@ TEST(self_intersection, a_line_and_an_arc_end_to_end_meet_where_intersect_says) 
   EXPECT_GT(withContacts, 200);  // pairs that do meet elsewhere, near tangent among them
 }
 
-TEST(closure, loop_after_lead_in) {
+TEST(closure_test, loop_after_lead_in) {
   auto p = polyline({{-5, 0}, {0, 0}, {10, 0}, {10, 10}, {0, 0}});
   const ClosureReport c = analyseClosure(p, 1e-6);
   ASSERT_TRUE(c.loopFrom.has_value());
@@ -338,7 +338,7 @@ TEST(closure, loop_after_lead_in) {
   EXPECT_FALSE(c.endsAtStart);
 }
 
-TEST(closure, open_path_has_no_loop) {
+TEST(closure_test, open_path_has_no_loop) {
   auto p = polyline({{0, 0}, {10, 0}, {10, 10}});
   const ClosureReport c = analyseClosure(p, 1e-6);
   EXPECT_FALSE(c.loopFrom.has_value());
@@ -355,7 +355,7 @@ std::pair<std::optional<std::size_t>, std::optional<std::size_t>> firstLoopOfEve
   return {};
 }
 
-TEST(closure, the_first_loop_is_the_one_a_search_of_every_pair_finds) {
+TEST(closure_test, the_first_loop_is_the_one_a_search_of_every_pair_finds) {
   // Random walks on a coarse grid (so the walk comes back to where it was), jittered within the
   // tolerance, some of 20,000 steps: the table's answer (first end on an earlier start, earliest
   // such start) must be what comparing every pair gives.
@@ -385,7 +385,7 @@ TEST(closure, the_first_loop_is_the_one_a_search_of_every_pair_finds) {
   EXPECT_GT(loops, 40);  // most walks do come back
 }
 
-TEST(closure, an_end_just_inside_or_outside_the_tolerance_of_a_start_anywhere_on_the_grid) {
+TEST(closure_test, an_end_just_inside_or_outside_the_tolerance_of_a_start_anywhere_on_the_grid) {
   // Ends put at 0.999 or 1.001 tolerances from an earlier start, in every direction, at every
   // place relative to the table's cells (the points are spread over a few hundred cells): the
   // table's answer must be what comparing every pair gives.
@@ -416,14 +416,14 @@ TEST(closure, an_end_just_inside_or_outside_the_tolerance_of_a_start_anywhere_on
   EXPECT_LT(loops, 200);
 }
 
-TEST(closure, full_circle_closes_itself) {
+TEST(closure_test, full_circle_closes_itself) {
   std::vector<Segment> p = {Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::Clockwise)};
   EXPECT_TRUE(analyseClosure(p, 1e-6).loopFrom.has_value());
 }
 
 }  // namespace
 
-TEST(self_intersection, the_decision_sweep_agrees_with_the_box_sweep_on_random_simple_and_nearly_simple_polygons) {
+TEST(self_intersection_test, the_decision_sweep_agrees_with_the_box_sweep_on_random_simple_and_nearly_simple_polygons) {
   // Star-shaped polygons (sorted angles, random radii: simple), with arcs bulging from some edges,
   // axis-parallel and vertical edges, and in some trials one vertex pulled onto another edge
   // (a touch within the tolerance) or across it (a crossing). Whatever the case, the decision
@@ -513,7 +513,7 @@ TEST(self_intersection, the_decision_sweep_agrees_with_the_box_sweep_on_random_s
   EXPECT_GE(dropsSame, 2998);
 }
 
-TEST(self_intersection, a_long_vertical_in_many_pieces_is_decided_with_few_tests) {
+TEST(self_intersection_test, a_long_vertical_in_many_pieces_is_decided_with_few_tests) {
   // 100,000 collinear vertical pieces (all boxes at one x: the box sweep's budget runs out), closed
   // by two lines and an arc.
   std::vector<Segment> path;
@@ -529,7 +529,7 @@ TEST(self_intersection, a_long_vertical_in_many_pieces_is_decided_with_few_tests
   EXPECT_LT(r.candidatePairs, 4 * path.size());
 }
 
-TEST(self_intersection, a_star_of_long_spikes_is_decided_with_few_tests) {
+TEST(self_intersection_test, a_star_of_long_spikes_is_decided_with_few_tests) {
   // 20,000 spikes: every box overlaps most others (the box sweep tests millions of pairs), while
   // the decision sweep tests each piece against its neighbours only.
   const int n = 20000;
@@ -583,7 +583,7 @@ std::pair<SelfIntersectionResult, SelfIntersectionResult> boxesAnd(const std::ve
 
 }  // namespace
 
-TEST(self_intersection, a_star_with_a_few_crossings_lists_them_without_testing_every_box_pair) {
+TEST(self_intersection_test, a_star_with_a_few_crossings_lists_them_without_testing_every_box_pair) {
   // 10,000 spikes, crossing at five places far apart: the box sweep tests millions of pairs; the
   // decision sweep finds a contact, then drops the segments that touch and sweeps again.
   const std::vector<Segment> path = starWithCrossings(10000, {5, 2000, 4500, 7500, 9990});
@@ -602,7 +602,7 @@ TEST(self_intersection, a_star_with_a_few_crossings_lists_them_without_testing_e
   }
 }
 
-TEST(self_intersection, a_chord_across_a_star_is_dropped_once_with_all_its_crossings) {
+TEST(self_intersection_test, a_chord_across_a_star_is_dropped_once_with_all_its_crossings) {
   // A line from spike 0's tip to the tip a quarter turn on, and back, crosses every spike between
   // twice: the pair first found has it, the longer one, dropped, and one pass lists its crossings.
   std::vector<Segment> path = starWithCrossings(4000, {});
@@ -615,7 +615,7 @@ TEST(self_intersection, a_chord_across_a_star_is_dropped_once_with_all_its_cross
   EXPECT_FALSE(r.truncated);
 }
 
-TEST(self_intersection, past_max_contacts_the_dropping_sweep_stops_with_contacts_of_the_full_answer) {
+TEST(self_intersection_test, past_max_contacts_the_dropping_sweep_stops_with_contacts_of_the_full_answer) {
   std::vector<int> at;
   for (int k = 10; k < 10000; k += 200) at.push_back(k);  // 50 crossings
   const std::vector<Segment> path = starWithCrossings(10000, at);
@@ -649,9 +649,9 @@ std::vector<Segment> zigzagOverLine(int n) {
   return path;
 }
 
-/// Runs f with KERF_THREADS set to threads (restored after).
+/// Runs f on `threads` workers (the count restored after).
 template <typename F>
-auto withThreads(const char* threads, F&& f) {
+auto withThreads(unsigned threads, F&& f) {
   const kerf::test::ScopedThreads scoped(threads);
   return f();
 }
@@ -668,15 +668,15 @@ bool sameContacts(const SelfIntersectionResult& a, const SelfIntersectionResult&
 
 }  // namespace
 
-TEST(self_intersection, the_box_sweep_tests_its_pairs_in_batches_on_every_core_with_one_answer) {
+TEST(self_intersection_test, the_box_sweep_tests_its_pairs_in_batches_on_every_core_with_one_answer) {
   // 50,000 crossings: more pairs than one batch of the box sweep's exact tests.
   const int n = 50000;
   const std::vector<Segment> path = zigzagOverLine(n);
   SelfIntersectionOptions o;
   o.method = SweepMethod::Boxes;
   o.maxContacts = 1000000;
-  const auto one = withThreads("1", [&] { return findSelfIntersections(path, o); });
-  const auto four = withThreads("4", [&] { return findSelfIntersections(path, o); });
+  const auto one = withThreads(1, [&] { return findSelfIntersections(path, o); });
+  const auto four = withThreads(4, [&] { return findSelfIntersections(path, o); });
   ASSERT_EQ(one.contacts.size(), static_cast<std::size_t>(n));  // every zigzag piece but the first, which starts on it
   EXPECT_FALSE(one.truncated);
   EXPECT_TRUE(sameContacts(one, four));
@@ -685,8 +685,8 @@ TEST(self_intersection, the_box_sweep_tests_its_pairs_in_batches_on_every_core_w
   // Stopped at maxContacts inside the second batch: the same contacts and pairs counted however
   // many threads test them, each one among the full answer's, and fewer pairs than in full.
   o.maxContacts = 40000;
-  const auto cut1 = withThreads("1", [&] { return findSelfIntersections(path, o); });
-  const auto cut4 = withThreads("4", [&] { return findSelfIntersections(path, o); });
+  const auto cut1 = withThreads(1, [&] { return findSelfIntersections(path, o); });
+  const auto cut4 = withThreads(4, [&] { return findSelfIntersections(path, o); });
   EXPECT_TRUE(cut1.truncated);
   ASSERT_EQ(cut1.contacts.size(), 40000u);
   EXPECT_TRUE(sameContacts(cut1, cut4));
@@ -698,7 +698,7 @@ TEST(self_intersection, the_box_sweep_tests_its_pairs_in_batches_on_every_core_w
   for (const Contact& c : cut1.contacts) EXPECT_TRUE(std::binary_search(full.begin(), full.end(), c.second));
 }
 
-TEST(closure, the_first_loop_is_the_same_on_every_core) {
+TEST(closure_test, the_first_loop_is_the_same_on_every_core) {
   // A path that comes back to an early vertex twice: the first return (k = 30,000, to v = 100) is
   // the loop reported, not the second (k = 60,000, to v = 5), wherever the threads' stretches fall.
   std::vector<Segment> path;
@@ -711,7 +711,7 @@ TEST(closure, the_first_loop_is_the_same_on_every_core) {
   go(path[100].start);
   for (int k = 0; k < 30000; ++k) go({-k - 1.0, 10 + (k % 2) * 0.5});
   go(path[5].start);
-  for (const char* threads : {"1", "2", "3", "8"}) {
+  for (const unsigned threads : {1u, 2u, 3u, 8u}) {
     const ClosureReport r = withThreads(threads, [&] { return analyseClosure(path, 1e-6); });
     ASSERT_TRUE(r.loopFrom.has_value()) << threads;
     EXPECT_EQ(*r.loopFrom, 100u) << threads;
@@ -719,7 +719,7 @@ TEST(closure, the_first_loop_is_the_same_on_every_core) {
   }
 }
 
-TEST(closure, the_sweep_finds_the_first_loop_the_closure_finds) {
+TEST(closure_test, the_sweep_finds_the_first_loop_the_closure_finds) {
   // Random walks of lines and arcs on a coarse grid (they come back to earlier vertices), ends
   // jittered within or just past the tolerance, some with a full circle or a zero-length move:
   // findLoop gives analyseClosure's answer (and comparing every pair's) whenever it says it knows

@@ -117,7 +117,7 @@ std::vector<Canon> runRs274(const std::filesystem::path& input) {
   return moves;
 }
 
-TEST(linuxcnc, random_programs_agree_to_1e_4_mm) {
+TEST(linuxcnc_test, random_programs_agree_to_1e_4_mm) {
   std::mt19937 rng(20261121);
   const auto dir = std::filesystem::temp_directory_path() / ("kerf-rs274-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);

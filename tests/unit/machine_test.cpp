@@ -340,7 +340,7 @@ TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_o
   for (int k = 0; k < 20; ++k)  // a zigzag up, then one move down across it: crossings, never closed
     text += "G01 X" + std::to_string(3 + k % 2 * 40) + " Y" + std::to_string(2 + k) + "\n";
   text += "G01 X20 Y0\nM02\n";
-  auto listed = [&](const char* threads) {
+  auto listed = [&](unsigned threads) {
     const kerf::test::ScopedThreads scoped(threads);
     const Pipeline p = read(text);
     std::vector<std::string> out;
@@ -348,7 +348,7 @@ TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_o
       out.push_back(std::string(codeName(d.code)) + " @" + std::to_string(d.span.offset) + " " + d.message);
     return out;
   };
-  const std::vector<std::string> one = listed("1");
+  const std::vector<std::string> one = listed(1);
   auto count = [&](Code c) {
     return std::count_if(one.begin(), one.end(), [&](const std::string& s) { return s.starts_with(codeName(c)); });
   };
@@ -366,7 +366,7 @@ TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_o
   });
   ASSERT_NE(crossing, one.end());
   EXPECT_LT(open, crossing);
-  for (const char* threads : {"2", "4"}) EXPECT_EQ(listed(threads), one) << threads << " threads";
+  for (const unsigned threads : {2u, 4u}) EXPECT_EQ(listed(threads), one) << threads << " threads";
 }
 
 // Plain blocks (X Y I J R F and G00-G03 only) take a short way through the interpreter

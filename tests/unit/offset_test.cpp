@@ -25,7 +25,7 @@ double carrierDistance(const Segment& s, const Vec2& p) {
   return std::abs(kerf::geometry::cross(d, p - s.start));
 }
 
-TEST(Offset, LineMovesLeftByTheDistance) {
+TEST(offset_test, line_moves_left_by_the_distance) {
   const auto o = offsetSegment(Segment::line({0, 0}, {10, 0}), 2.0);
   ASSERT_TRUE(o);
   EXPECT_NEAR(o->start.y(), 2.0, 1e-15);
@@ -34,7 +34,7 @@ TEST(Offset, LineMovesLeftByTheDistance) {
   EXPECT_NEAR(r->start.y(), -2.0, 1e-15);
 }
 
-TEST(Offset, ArcsStayConcentricAndCollapseAtTheirRadius) {
+TEST(offset_test, arcs_stay_concentric_and_collapse_at_their_radius) {
   const Segment ccw = Segment::arc({5, 0}, {0, 5}, {0, 0}, ArcDirection::CounterClockwise);
   EXPECT_NEAR(offsetSegment(ccw, 1.0)->radius, 4.0, 1e-15);  // left of CCW is the centre
   EXPECT_NEAR(offsetSegment(ccw, -1.0)->radius, 6.0, 1e-15);
@@ -45,7 +45,7 @@ TEST(Offset, ArcsStayConcentricAndCollapseAtTheirRadius) {
   EXPECT_NEAR(offsetSegment(cw, 1.0)->radius, 6.0, 1e-15);
 }
 
-TEST(Offset, SharpCornersMeetAtTheOffsetLinesIntersection) {
+TEST(offset_test, sharp_corners_meet_at_the_offset_lines_intersection) {
   // Square, counter-clockwise, offset inwards by 1: corners at (1,1), (9,1), ...
   const std::vector<Segment> sq = {Segment::line({0, 0}, {10, 0}), Segment::line({10, 0}, {10, 10}),
                                    Segment::line({10, 10}, {0, 10}), Segment::line({0, 10}, {0, 0})};
@@ -59,7 +59,7 @@ TEST(Offset, SharpCornersMeetAtTheOffsetLinesIntersection) {
   for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR((r.segments[i].end - r.segments[(i + 1) % 4].start).norm(), 0, 1e-12);
 }
 
-TEST(Offset, EveryCornerLiesOnBothNeighbourCarriersUnderRigidMotions) {
+TEST(offset_test, every_corner_lies_on_both_neighbour_carriers_under_rigid_motions) {
   // A punch outline with line-arc, arc-line and line-line corners, offset by 0.7.
   const std::vector<Segment> base = {
       Segment::line({0, -10}, {7, -10}), Segment::arc({7, -10}, {10, -7}, {7, -7}, ArcDirection::CounterClockwise),
@@ -81,7 +81,7 @@ TEST(Offset, EveryCornerLiesOnBothNeighbourCarriersUnderRigidMotions) {
   }
 }
 
-TEST(Offset, AnchoredEndsStayOnTheProgrammedPoints) {
+TEST(offset_test, anchored_ends_stay_on_the_programmed_points) {
   const std::vector<Segment> chain = {Segment::line({0, -5}, {0, 0}), Segment::line({0, 0}, {10, 0}),
                                       Segment::line({10, 0}, {10, -5})};
   OffsetChainOptions opt;
@@ -92,7 +92,7 @@ TEST(Offset, AnchoredEndsStayOnTheProgrammedPoints) {
   EXPECT_NEAR((r.segments[1].start - Vec2(-1, 1)).norm(), 0, 1e-12);
 }
 
-TEST(Offset, ATabNarrowerThanTwiceTheOffsetIsSwallowed) {
+TEST(offset_test, a_tab_narrower_than_twice_the_offset_is_swallowed) {
   // A 2 mm tab's end: offsets of its sides (inwards by 1.2 each) cross before reaching it.
   const std::vector<Segment> tab = {Segment::line({0, -1}, {5, -1}), Segment::line({5, -1}, {5, 1}),
                                     Segment::line({5, 1}, {0, 1})};
@@ -103,7 +103,7 @@ TEST(Offset, ATabNarrowerThanTwiceTheOffsetIsSwallowed) {
   EXPECT_TRUE(offsetChain(tab, std::vector<double>(3, 0.99)).issues.empty());  // near miss
 }
 
-TEST(Offset, ACollapsedCornerArcBecomesTheSharpCorner) {
+TEST(offset_test, a_collapsed_corner_arc_becomes_the_sharp_corner) {
   const std::vector<Segment> corner = {Segment::line({0, -10}, {8, -10}),
                                        Segment::arc({8, -10}, {10, -8}, {8, -8}, ArcDirection::CounterClockwise),
                                        Segment::line({10, -8}, {10, 0})};
@@ -115,7 +115,7 @@ TEST(Offset, ACollapsedCornerArcBecomesTheSharpCorner) {
   EXPECT_NEAR((r.segments[0].end - Vec2(7, -7)).norm(), 0, 1e-12);
 }
 
-TEST(Offset, ParallelLinesWithDifferentDistancesHaveNoCorner) {
+TEST(offset_test, parallel_lines_with_different_distances_have_no_corner) {
   const std::vector<Segment> straight = {Segment::line({0, 0}, {5, 0}), Segment::line({5, 0}, {10, 0})};
   const auto r = offsetChain(straight, std::vector<double>{1.0, 2.0});
   ASSERT_EQ(r.issues.size(), 1u);

@@ -30,13 +30,13 @@ double farthest(const PolarPoint& a, const PolarPoint& b, const std::vector<Segm
   return worst;
 }
 
-TEST(unwrap_degrees, takes_the_value_nearest_the_previous) {
+TEST(unwrap_degrees_test, takes_the_value_nearest_the_previous) {
   EXPECT_DOUBLE_EQ(unwrapDegrees(-135.0, 180.0), 225.0);
   EXPECT_DOUBLE_EQ(unwrapDegrees(10.0, 725.0), 730.0);
   EXPECT_DOUBLE_EQ(unwrapDegrees(-154.231, -480.0), -514.231);  // seed 002's O31 end, one turn on
 }
 
-TEST(spiral_as_arcs, constant_radius_is_exact_arcs_about_the_centre) {
+TEST(spiral_as_arcs_test, constant_radius_is_exact_arcs_about_the_centre) {
   const PolarPoint a{20.0, 10.0}, b{20.0, 100.0};
   const SpiralPieces s = spiralAsArcs(a, b, 1e-4, 1000);
   ASSERT_FALSE(s.overBudget);
@@ -53,7 +53,7 @@ TEST(spiral_as_arcs, constant_radius_is_exact_arcs_about_the_centre) {
   EXPECT_LE(farthest(a, b, s.pieces), 1e-9);
 }
 
-TEST(spiral_as_arcs, a_growing_spiral_stays_within_the_tolerance_in_both_directions) {
+TEST(spiral_as_arcs_test, a_growing_spiral_stays_within_the_tolerance_in_both_directions) {
   for (const double tol : {1e-3, 1e-4, 1e-5}) {
     for (const auto& [a, b] : {std::pair{PolarPoint{5.0, 0.0}, PolarPoint{40.0, 300.0}},
                                std::pair{PolarPoint{40.0, 300.0}, PolarPoint{5.0, 0.0}},
@@ -73,14 +73,14 @@ TEST(spiral_as_arcs, a_growing_spiral_stays_within_the_tolerance_in_both_directi
   }
 }
 
-TEST(spiral_as_arcs, a_turn_far_off_is_refused_before_it_is_expanded) {
+TEST(spiral_as_arcs_test, a_turn_far_off_is_refused_before_it_is_expanded) {
   const SpiralPieces s = spiralAsArcs({10.0, 0.0}, {10.0, 3.6e9}, 1e-4, 100000);
   EXPECT_TRUE(s.overBudget);
   EXPECT_TRUE(s.pieces.empty());
   EXPECT_TRUE(spiralAsArcs({10.0, 0.0}, {10.0, std::nan("")}, 1e-4, 100000).overBudget);
 }
 
-TEST(subdivide_for_polar, a_full_circle_about_the_centre_turns_the_table_a_whole_turn) {
+TEST(subdivide_for_polar_test, a_full_circle_about_the_centre_turns_the_table_a_whole_turn) {
   const Segment circle = Segment::arc({10, 0}, {10, 0}, {0, 0}, ArcDirection::CounterClockwise);
   const PolarSubdivision s = subdivideForPolar(circle, 0.0, 1e-3, 1000);
   ASSERT_FALSE(s.points.empty());
@@ -91,7 +91,7 @@ TEST(subdivide_for_polar, a_full_circle_about_the_centre_turns_the_table_a_whole
   }
 }
 
-TEST(subdivide_for_polar, a_clockwise_circle_off_the_centre_keeps_c_continuous) {
+TEST(subdivide_for_polar_test, a_clockwise_circle_off_the_centre_keeps_c_continuous) {
   const Segment circle = Segment::arc({30, 0}, {30, 0}, {20, 0}, ArcDirection::Clockwise);
   const PolarSubdivision s = subdivideForPolar(circle, 0.0, 1e-3, 100000);
   ASSERT_FALSE(s.points.empty());

@@ -54,7 +54,7 @@ const char* kFrustum =
     "(AXIS,XY_Z_POS,0)\n(AXIS,UV_Z_POS,10)\nG90 G21\nG00 X-10. Y-10. U-8. V-8.\nG01 X10. U8.\nY10. V8.\nX-10. U-8.\n"
     "Y-10. V-8.\nM30\n";
 
-TEST(render_camera, top_view_fits_the_box_with_the_margin) {
+TEST(render_camera_test, top_view_fits_the_box_with_the_margin) {
   const render::Camera c = render::fitCamera({0, 0, 0}, {20, 10, 2}, render::View::Top, 400, 200, 0.1);
   const Eigen::Vector2d lo = c.project({0, 0, 0}, 400, 200), hi = c.project({20, 10, 0}, 400, 200);
   // Top view: x to the right, y up (so down the image); the box fills the width less 2 x 10 %.
@@ -64,7 +64,7 @@ TEST(render_camera, top_view_fits_the_box_with_the_margin) {
   EXPECT_NEAR(0.5 * (lo.y() + hi.y()), 100, 1e-6);
 }
 
-TEST(render_camera, iso_view_is_the_classic_isometric) {
+TEST(render_camera_test, iso_view_is_the_classic_isometric) {
   const render::Camera c = render::fitCamera({-1, -1, -1}, {1, 1, 1}, render::View::Iso, 100, 100);
   const geometry::Vec3 e = c.eyeDirection();
   EXPECT_NEAR(e.x(), 1 / std::sqrt(3.0), 1e-12);
@@ -75,7 +75,7 @@ TEST(render_camera, iso_view_is_the_classic_isometric) {
   EXPECT_GT(c.up().z(), 0.0);  // z points up the picture
 }
 
-TEST(render_scene, two_axis_wall_faces_outwards_with_zero_slope) {
+TEST(render_scene_test, two_axis_wall_faces_outwards_with_zero_slope) {
   const Part p = analyse(kRectangle);
   const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
   ASSERT_GT(s.triangles(), 0u);
@@ -101,7 +101,7 @@ TEST(render_scene, two_axis_wall_faces_outwards_with_zero_slope) {
   EXPECT_NEAR(s.boundsMax.y(), 10.0, 1e-6);
 }
 
-TEST(render_scene, moving_frames_merge_runs_of_moves_within_the_tolerance) {
+TEST(render_scene_test, moving_frames_merge_runs_of_moves_within_the_tolerance) {
   // A circle of radius 10 as 720 lines, then a square corner: with 0.05 mm the runs of lines merge
   // into chords (22 lines of 0.5° stay within 0.05 mm of theirs), the corner does not.
   std::string text = "G90 G21\nG92 X10. Y0\n";
@@ -144,7 +144,7 @@ TEST(render_scene, moving_frames_merge_runs_of_moves_within_the_tolerance) {
   EXPECT_EQ(render::displayRuns(p.toolpath, 0.0)[5], 6u);
 }
 
-TEST(render_scene, frustum_slope_is_the_taper) {
+TEST(render_scene_test, frustum_slope_is_the_taper) {
   const Part p = analyse(kFrustum);
   ASSERT_TRUE(p.toolpath.isTaper());
   const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
@@ -154,7 +154,7 @@ TEST(render_scene, frustum_slope_is_the_taper) {
   EXPECT_DOUBLE_EQ(s.planes.upper, 10.0);
 }
 
-TEST(render_scene, findings_become_markers_and_flag_their_move) {
+TEST(render_scene_test, findings_become_markers_and_flag_their_move) {
   // The path crosses itself: an error with a point.
   const Part p = analyse("G90 G21\nG01 X10. Y10.\nX10. Y0\nX0 Y10.\nX0 Y0\nM30\n");
   ASSERT_TRUE(p.diags->hasErrors());
@@ -167,7 +167,7 @@ TEST(render_scene, findings_become_markers_and_flag_their_move) {
   EXPECT_TRUE(flagged);
 }
 
-class Headless : public ::testing::Test {
+class headless_test : public ::testing::Test {
  protected:
   void SetUp() override {
     std::string error;
@@ -189,7 +189,7 @@ std::vector<std::uint8_t> drawTop(const render::Scene& scene, int w, int h, cons
   return t.readRgba();
 }
 
-TEST_F(Headless, top_view_puts_the_contour_where_the_camera_says) {
+TEST_F(headless_test, top_view_puts_the_contour_where_the_camera_says) {
   const Part p = analyse(kRectangle);
   const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
   constexpr int w = 200, h = 120;
@@ -216,7 +216,7 @@ TEST_F(Headless, top_view_puts_the_contour_where_the_camera_says) {
   }
 }
 
-TEST_F(Headless, the_reference_geometry_is_drawn_dashed_beside_the_path_and_can_be_hidden) {
+TEST_F(headless_test, the_reference_geometry_is_drawn_dashed_beside_the_path_and_can_be_hidden) {
   const Part p = analyse(kRectangle);
   // The rectangle 2 mm inside the path, as the drawing a wire path was made from.
   const std::vector<geometry::Segment> ref{
@@ -259,7 +259,7 @@ std::pair<std::size_t, std::size_t> blueAndRed(const std::vector<std::uint8_t>& 
   return {blue, red};
 }
 
-TEST_F(Headless, same_scene_same_pixels) {
+TEST_F(headless_test, same_scene_same_pixels) {
   const Part p = analyse(kFrustum);
   const render::Scene s = render::buildScene(p.toolpath, p.diags->all());
   render::RenderOptions o;
@@ -270,7 +270,7 @@ TEST_F(Headless, same_scene_same_pixels) {
   EXPECT_GT(drawnPixels(a), 160u * 120u / 10u);
 }
 
-TEST_F(Headless, drawn_in_pieces_the_picture_is_the_same) {
+TEST_F(headless_test, drawn_in_pieces_the_picture_is_the_same) {
   // The walls and lines drawn a few primitives at a time (RenderOptions::drawChunk), each piece's
   // first index and count from the last: the same pixels as in one call.
   const Part p = analyse(kFrustum);
@@ -284,7 +284,7 @@ TEST_F(Headless, drawn_in_pieces_the_picture_is_the_same) {
   EXPECT_EQ(a, b);
 }
 
-TEST_F(Headless, colour_by_slope_follows_the_ramp) {
+TEST_F(headless_test, colour_by_slope_follows_the_ramp) {
   // The frustum's wire leans 11.3 degrees mid-side (2 mm over 10) and 15.8 at the corners (2.83
   // mm): coloured by slope, its walls run from the ramp's blue (mid-sides) to its red (corners);
   // shaded plainly, they are one colour, neither blue nor red.
@@ -303,7 +303,7 @@ TEST_F(Headless, colour_by_slope_follows_the_ramp) {
   EXPECT_LT(plainBlue + plainRed, slopeBlue + slopeRed);
 }
 
-TEST(headless_png, encodes_and_decodes_the_same_pixels) {
+TEST(headless_png_test, encodes_and_decodes_the_same_pixels) {
   std::vector<std::uint8_t> rgba(7 * 5 * 4);
   for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>(i * 37 % 256);
   const std::string png = headless::encodePng(rgba, 7, 5);
@@ -327,14 +327,14 @@ std::vector<std::uint8_t> checker(int w, int h) {
   return px;
 }
 
-TEST(snapshot_ssim, identical_images_have_no_error) {
+TEST(snapshot_ssim_test, identical_images_have_no_error) {
   const auto a = checker(96, 64);
   const test::SsimResult r = test::compareImages({96, 64, &a}, {96, 64, &a});
   EXPECT_NEAR(r.error, 0.0, 1e-6);
   EXPECT_NEAR(r.meanSsim, 1.0, 1e-6);
 }
 
-TEST(snapshot_ssim, a_small_local_change_is_above_the_default_threshold) {
+TEST(snapshot_ssim_test, a_small_local_change_is_above_the_default_threshold) {
   const auto a = checker(320, 240);
   auto b = a;
   // A 10 x 10 red square (a finding marker) in a 320 x 240 picture: 0.13 % of its pixels.
@@ -350,7 +350,7 @@ TEST(snapshot_ssim, a_small_local_change_is_above_the_default_threshold) {
   EXPECT_EQ(r.worstTileY, 96);
 }
 
-TEST(snapshot_ssim, faint_noise_is_below_the_default_threshold) {
+TEST(snapshot_ssim_test, faint_noise_is_below_the_default_threshold) {
   const auto a = checker(160, 120);
   auto b = a;
   for (std::size_t i = 0; i < b.size(); i += 4)
@@ -360,12 +360,12 @@ TEST(snapshot_ssim, faint_noise_is_below_the_default_threshold) {
   EXPECT_LT(r.error, 0.05);
 }
 
-TEST(snapshot_ssim, different_sizes_are_a_full_error) {
+TEST(snapshot_ssim_test, different_sizes_are_a_full_error) {
   const auto a = checker(16, 16), b = checker(16, 24);
   EXPECT_EQ(test::compareImages({16, 16, &a}, {16, 24, &b}).error, 1.0);
 }
 
-class Export : public ::testing::Test {
+class export_test : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
@@ -376,7 +376,7 @@ class Export : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
-TEST_F(Export, vtp_carries_move_line_slope_and_findings) {
+TEST_F(export_test, vtp_carries_move_line_slope_and_findings) {
   // The frustum: every cell names its move and that move's line, and its slope lies between the
   // mid-side (atan 0.2) and the corner (atan 0.2 sqrt 2) generators.
   const Part p = analyse(kFrustum);
@@ -404,7 +404,7 @@ TEST_F(Export, vtp_carries_move_line_slope_and_findings) {
   }
 }
 
-TEST_F(Export, findings_flags_mark_the_moves_with_findings) {
+TEST_F(export_test, findings_flags_mark_the_moves_with_findings) {
   const Part p = analyse("G90 G21\nG01 X10. Y10.\nX10. Y0\nX0 Y10.\nX0 Y0\nM30\n");
   const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags->all(), {}, false);
   std::size_t flagged = 0;
@@ -415,7 +415,7 @@ TEST_F(Export, findings_flags_mark_the_moves_with_findings) {
   EXPECT_LT(flagged, data.cellFindings.size());  // the crossing is on some moves, not all
 }
 
-TEST_F(Export, stl_and_ply_read_back_with_the_same_triangles) {
+TEST_F(export_test, stl_and_ply_read_back_with_the_same_triangles) {
   const Part p = analyse(kFrustum);
   const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags->all(), {}, true);
   EXPECT_EQ(data.surface.mesh.capsMade, 2u);
@@ -434,7 +434,7 @@ TEST_F(Export, stl_and_ply_read_back_with_the_same_triangles) {
   EXPECT_EQ(plyReader->GetOutput()->GetNumberOfPoints(), static_cast<vtkIdType>(data.surface.mesh.vertices.size()));
 }
 
-TEST(export_format, chosen_by_extension) {
+TEST(export_format_test, chosen_by_extension) {
   EXPECT_EQ(exporter::formatOfPath("a/b.VTP"), exporter::MeshFormat::Vtp);
   EXPECT_EQ(exporter::formatOfPath("b.stl"), exporter::MeshFormat::Stl);
   EXPECT_EQ(exporter::formatOfPath("b.ply"), exporter::MeshFormat::Ply);

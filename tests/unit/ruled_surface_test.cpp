@@ -17,7 +17,7 @@ using namespace kerf::geometry;
 
 constexpr double kDeg = 180.0 / kPi;
 
-TEST(RuledSurface, SlopeMatchesTheClosedFormTo1e9Degrees) {
+TEST(ruled_surface_test, slope_matches_the_closed_form_to_1e9_degrees) {
   // A constant offset o over a height h: slope = atan(o / h), along the whole patch.
   for (const double o : {0.05, 0.5, 1.0, 3.3, 11.0}) {
     for (const double h : {5.0, 20.0, 137.0}) {
@@ -40,7 +40,7 @@ TEST(RuledSurface, SlopeMatchesTheClosedFormTo1e9Degrees) {
   }
 }
 
-TEST(RuledSurface, RefinedExtremesOfArcPatchesMatchADenseSearch) {
+TEST(ruled_surface_test, refined_extremes_of_arc_patches_match_a_dense_search) {
   // Arc with line, arcs of different sweeps and centres: the extremes lie between the 65 samples.
   // The refined maximum is at least every one of 200,001 dense samples, and no more than the
   // largest of them plus what lies between two of them.
@@ -80,7 +80,7 @@ TEST(RuledSurface, RefinedExtremesOfArcPatchesMatchADenseSearch) {
   }
 }
 
-TEST(RuledSurface, LinePairExtremesAreExact) {
+TEST(ruled_surface_test, line_pair_extremes_are_exact) {
   // Offset (0,-2) at t = 0 and (0,2) at t = 1: vertical in the middle, atan(2/10) at the ends.
   const Planes planes{0.0, 10.0};
   const PatchMeasures m = measurePatch(Segment::line({0, 2}, {10, -2}), Segment::line({0, 0}, {10, 0}), planes);
@@ -90,7 +90,7 @@ TEST(RuledSurface, LinePairExtremesAreExact) {
   EXPECT_NEAR(m.maxOffsetY.value, 2.0, 1e-15);
 }
 
-TEST(RuledSurface, AreaOfAFrustumAndOfAWall) {
+TEST(ruled_surface_test, area_of_a_frustum_and_of_a_wall) {
   const Planes planes{0.0, 20.0};
   // A wall: 10 x 20.
   EXPECT_NEAR(patchArea(Segment::line({0, 0}, {10, 0}), Segment::line({0, 0}, {10, 0}), planes), 200.0, 1e-9);
@@ -101,7 +101,7 @@ TEST(RuledSurface, AreaOfAFrustumAndOfAWall) {
   EXPECT_NEAR(patchArea(lo, up, planes), kPi * 18.0 * slant / 4.0, 1e-9 * 200);
 }
 
-TEST(RuledSurface, TwistIsFoundExactlyAndItsNearMissIsNot) {
+TEST(ruled_surface_test, twist_is_found_exactly_and_its_near_miss_is_not) {
   const Segment lo = Segment::line({0, 0}, {10, 0});
   auto rotated = [](double deg) {
     const Vec2 d = 10.0 * direction(deg / kDeg);
@@ -118,7 +118,7 @@ TEST(RuledSurface, TwistIsFoundExactlyAndItsNearMissIsNot) {
   EXPECT_FALSE(measureTwist(lo, Segment::line({1, 1}, {1, 1})).defined);
 }
 
-TEST(RuledSurface, FoldAtAJointIsTheRootOfItsQuadratic) {
+TEST(ruled_surface_test, fold_at_a_joint_is_the_root_of_its_quadratic) {
   // The corner (10,0): below it turns 90 degrees, above it turns back over the first side; half
   // way up the second side runs exactly back along the first.
   const Segment l1 = Segment::line({0, 0}, {10, 0}), u1 = Segment::line({0, 0}, {10, 0});
@@ -132,7 +132,7 @@ TEST(RuledSurface, FoldAtAJointIsTheRootOfItsQuadratic) {
   EXPECT_FALSE(foldAtJoint(l1, u1, Segment::line({10, 0}, {20, 0}), Segment::line({10, 0}, {20, 5})).has_value());
 }
 
-TEST(RuledSurface, SectionsOfLinesAndMatchingArcsAreExact) {
+TEST(ruled_surface_test, sections_of_lines_and_matching_arcs_are_exact) {
   std::vector<Segment> out;
   EXPECT_TRUE(appendSection(Segment::line({0, 0}, {10, 0}), Segment::line({2, 2}, {12, 2}), 0.25, 1e-3, out));
   EXPECT_NEAR((out.back().start - Vec2(0.5, 0.5)).norm(), 0, 1e-15);
@@ -176,7 +176,7 @@ void circleUnderSquare(std::vector<Segment>& lo, std::vector<Segment>& up) {
   }
 }
 
-TEST(RuledSurface, ClosedMeshWithCapsIsWatertightAndOriented) {
+TEST(ruled_surface_test, closed_mesh_with_caps_is_watertight_and_oriented) {
   std::vector<Segment> lo, up;
   circleUnderSquare(lo, up);
   MeshOptions opt;
@@ -221,7 +221,7 @@ double pointTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
   return std::min({seg(a, b), seg(b, c), seg(c, a)});
 }
 
-TEST(RuledSurface, MeshStaysWithinItsToleranceOfTheExactSurface) {
+TEST(ruled_surface_test, mesh_stays_within_its_tolerance_of_the_exact_surface) {
   // A twisted patch (arc below, a line turned 60 degrees above) and the circle-under-square.
   std::vector<Segment> lo, up;
   circleUnderSquare(lo, up);
@@ -252,7 +252,7 @@ TEST(RuledSurface, MeshStaysWithinItsToleranceOfTheExactSurface) {
   }
 }
 
-TEST(RuledSurface, NormalsOfAVerticalCounterClockwiseWallPointOutwards) {
+TEST(ruled_surface_test, normals_of_a_vertical_counter_clockwise_wall_point_outwards) {
   const Segment arc = Segment::arc({10, 0}, {0, 10}, {0, 0}, ArcDirection::CounterClockwise);
   const Vec3 n = surfaceNormal(arc, arc, {0.0, 10.0}, 0.5, 0.5);
   EXPECT_NEAR(n.dot(Vec3(std::sqrt(0.5), std::sqrt(0.5), 0)), 1.0, 1e-12);
@@ -264,7 +264,7 @@ namespace {
 
 // Each mesh vertex carries the slope of the generator it lies on, and a leaning patch gets at
 // least minTaperPieces pieces, so the slope is sampled inside it.
-TEST(ruled_surface_mesh, vertex_slope_is_the_generator_slope_and_leaning_patches_are_split) {
+TEST(ruled_surface_mesh_test, vertex_slope_is_the_generator_slope_and_leaning_patches_are_split) {
   using kerf::geometry::Segment;
   using kerf::geometry::Vec2;
   const Segment lower = Segment::line(Vec2(-10, -10), Vec2(10, -10));
@@ -293,7 +293,7 @@ namespace {
 
 // A huge twisted arc pair (the fuzzer's slow input: R 50 m against a turned line): the mesh
 // counts its triangles before it makes vertices, so a small budget costs little memory.
-TEST(ruled_surface_mesh, the_triangle_budget_is_counted_before_any_vertex_is_made) {
+TEST(ruled_surface_mesh_test, the_triangle_budget_is_counted_before_any_vertex_is_made) {
   using namespace kerf::geometry;
   std::vector<Segment> lo, up;
   for (int k = 0; k < 40; ++k) {

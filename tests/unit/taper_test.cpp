@@ -54,7 +54,7 @@ std::vector<Vec2> shifted(double dx, double dy) {
 
 // ---- dialects and heights -------------------------------------------------------------------
 
-TEST(Taper, EveryDialectParsesAndIsDetected) {
+TEST(taper_test, every_dialect_parses_and_is_detected) {
   struct Case {
     const char* text;
     Dialect dialect;
@@ -75,7 +75,7 @@ TEST(Taper, EveryDialectParsesAndIsDetected) {
   }
 }
 
-TEST(Taper, AmbiguousUvIsAnErrorUntilTheDialectIsGiven) {
+TEST(taper_test, ambiguous_uv_is_an_error_until_the_dialect_is_given) {
   // |U - X| + |V - Y| = 3 against |U| + |V| = 5: the numbers decide nothing.
   const std::string text = "G92 X0 Y0 U0 V0\nG1 X1. Y1. U2. V3.\nM2\n";
   auto r = run(text);
@@ -94,7 +94,7 @@ TEST(Taper, AmbiguousUvIsAnErrorUntilTheDialectIsGiven) {
   EXPECT_TRUE(run(text, io)->hasCode(Code::WordNotInDialect));
 }
 
-TEST(Taper, AbsoluteOrRelativeUvDecidedByTheNumbers) {
+TEST(taper_test, absolute_or_relative_uv_decided_by_the_numbers) {
   // U V that follow X Y are the upper contour itself; U V that stay small against X Y are the
   // deviation of the upper contour (docs/taper.md). The note names the numbers.
   auto abs = run("G92 X0 Y0 U0 V0\nG1 X10. Y0 U10.5 V0\nX10. Y10. U10.5 V9.5\nX0 Y0 U0 V0\nM2\n");
@@ -111,7 +111,7 @@ TEST(Taper, AbsoluteOrRelativeUvDecidedByTheNumbers) {
   EXPECT_EQ(run("G91\nG1 X10. U10. Y0 V0\nX0 Y10. U-0.5 V10.\nM2\n")->path().dialect, Dialect::XyuvAbs);
 }
 
-TEST(Taper, HeightsComeFromOptionsFirstThenTheProgram) {
+TEST(taper_test, heights_come_from_options_first_then_the_program) {
   const std::string body = "G92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U11 V0\nM2\n";
   EXPECT_TRUE(run("M100 P1 Q1\n" + body)->hasCode(Code::HeightsMissing));
   EXPECT_NEAR(run("M101 P12.5\n" + body)->path().heights.planes.upper, 12.5, 1e-12);
@@ -133,7 +133,7 @@ TEST(Taper, HeightsComeFromOptionsFirstThenTheProgram) {
   EXPECT_NEAR(n->path().heights.planes.upper, 30.0, 1e-12);
 }
 
-TEST(Taper, TaperAngleOffsetsByHeightTimesTangent) {
+TEST(taper_test, taper_angle_offsets_by_height_times_tangent) {
   // Lean left 2 degrees, 25 mm up: lines move 25 tan 2 to their left, arcs stay concentric,
   // corners are sharp, the start-up line starts vertical and the end line ends vertical.
   auto r = run("G92 X0 Y-5. I25.\nG51 A2.\nG01 X0 Y0\nX10.\nG03 X15. Y5. I0 J5.\nG01 Y10.\nG50\nG01 X20.\nM02\n");
@@ -157,7 +157,7 @@ TEST(Taper, TaperAngleOffsetsByHeightTimesTangent) {
 
 // ---- each check: a part that trips it and a near miss ----------------------------------------
 
-TEST(TaperChecks, SlopeAboveTheMachineLimit) {
+TEST(taper_checks_test, slope_above_the_machine_limit) {
   const double limit = 10.0 * std::tan(30.0 * kerf::geometry::kPi / 180.0);  // 5.7735
   EXPECT_TRUE(errorCodes(check(xyuvSquare(shifted(limit + 0.001, 0)))->diags).count(Code::TaperTooSteep));
   EXPECT_FALSE(errorCodes(check(xyuvSquare(shifted(limit - 0.001, 0)))->diags).count(Code::TaperTooSteep));
@@ -166,20 +166,20 @@ TEST(TaperChecks, SlopeAboveTheMachineLimit) {
   EXPECT_TRUE(errorCodes(check(xyuvSquare(shifted(4.0, 0)), co)->diags).count(Code::TaperTooSteep));
 }
 
-TEST(TaperChecks, AngleWordBeyond45IsRefused) {
+TEST(taper_checks_test, angle_word_beyond_45_is_refused) {
   const std::string head = "G92 X0 Y-5. I10.\nG51 A";
   EXPECT_TRUE(run(head + "45.1\nG01 X0 Y0\nM02\n")->hasCode(Code::TaperAngleTooLarge));
   EXPECT_FALSE(run(head + "45.\nG01 X0 Y0\nM02\n")->hasCode(Code::TaperAngleTooLarge));
 }
 
-TEST(TaperChecks, UpperContourSelfIntersection) {
+TEST(taper_checks_test, upper_contour_self_intersection) {
   const auto bow = check(xyuvSquare({{0, 0}, {10, 0}, {0, 10}, {10, 10}, {0, 0}}, 30.0));
   EXPECT_TRUE(errorCodes(bow->diags).count(Code::PathCrossesItself));
   const auto fine = check(xyuvSquare({{0, 0}, {10, 0}, {9, 10}, {1, 10}, {0, 0}}, 30.0));
   EXPECT_TRUE(errorCodes(fine->diags).empty()) << kerf::test::dump(fine->diags);
 }
 
-TEST(TaperChecks, SurfaceMeetsItselfBetweenSimpleContours) {
+TEST(taper_checks_test, surface_meets_itself_between_simple_contours) {
   auto part = [](double px) {
     std::ostringstream s;
     s << "M101 P20\nG92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U10 V8\nG1 X8 Y1 G1 U" << px
@@ -191,7 +191,7 @@ TEST(TaperChecks, SurfaceMeetsItselfBetweenSimpleContours) {
   EXPECT_FALSE(errorCodes(near->diags).count(Code::SurfaceSelfIntersection)) << kerf::test::dump(near->diags);
 }
 
-TEST(TaperChecks, WireCrossingAndTwist) {
+TEST(taper_checks_test, wire_crossing_and_twist) {
   auto one = [](const char* upperEnd) {
     return std::string("M101 P30\nG92 X0 Y0 U10 V0\nG1 X10 Y0 G1 ") + upperEnd + "\nM2\n";
   };
@@ -210,7 +210,7 @@ TEST(TaperChecks, WireCrossingAndTwist) {
   EXPECT_FALSE(errorCodes(fine->diags).count(Code::WireCrossing));
 }
 
-TEST(TaperChecks, FoldBetweenNeighbours) {
+TEST(taper_checks_test, fold_between_neighbours) {
   auto part = [](const char* third) {
     return std::string("M101 P30\nG92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U10 V0\nG1 X10 Y10 G1 ") + third +
            "\nG1 X0 Y10 G1 U-10 V0\nG1 X0 Y0 G1 U0 V0\nM2\n";
@@ -219,32 +219,32 @@ TEST(TaperChecks, FoldBetweenNeighbours) {
   EXPECT_FALSE(errorCodes(check(part("U5 V5"))->diags).count(Code::SurfaceFold));
 }
 
-TEST(TaperChecks, OneContourClosedAndTheOtherNot) {
+TEST(taper_checks_test, one_contour_closed_and_the_other_not) {
   auto open = xyuvSquare({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 3}});
   EXPECT_TRUE(errorCodes(check(open)->diags).count(Code::ClosureMismatch));
   EXPECT_FALSE(errorCodes(check(xyuvSquare(shifted(1, 1)))->diags).count(Code::ClosureMismatch));
 }
 
-TEST(TaperChecks, UvRange) {
+TEST(taper_checks_test, uv_range) {
   CheckOptions co;
   co.uvRange = 2.0;
   EXPECT_TRUE(errorCodes(check(xyuvSquare(shifted(2.5, 0)), co)->diags).count(Code::UvOutOfRange));
   EXPECT_FALSE(errorCodes(check(xyuvSquare(shifted(1.5, 1.5)), co)->diags).count(Code::UvOutOfRange));
 }
 
-TEST(TaperChecks, TaperStartedOrEndedOnAnArc) {
+TEST(taper_checks_test, taper_started_or_ended_on_an_arc) {
   EXPECT_TRUE(run("G92 X10 Y0 I20.\nG52 A3.\nG03 X-10 Y0 I-10 J0\nM02\n")->hasCode(Code::TaperOnArc));
   EXPECT_TRUE(run("G92 X10 Y-5 I20.\nG52 A3.\nG01 X10 Y0\nG50\nG03 X-10 Y0 I-10 J0\nM02\n")->hasCode(Code::TaperOnArc));
   EXPECT_FALSE(run("G92 X10 Y-5 I20.\nG52 A3.\nG01 X10 Y0\nG03 X-10 Y0 I-10 J0\nG50\nG01 X-10 Y-5\nM02\n")
                    ->hasCode(Code::TaperOnArc));
 }
 
-TEST(TaperChecks, SodickBlockWithoutUpperSideInsideG141) {
+TEST(taper_checks_test, sodick_block_without_upper_side_inside_g141) {
   EXPECT_TRUE(run("TP20.\nG141\nG01 X10 Y0 : X10 Y0\nG01 X10 Y10\nG140\nM02\n")->hasCode(Code::UpperSideMissing));
   EXPECT_FALSE(run("TP20.\nG141\nG01 X10 Y0 : X10 Y0\nG140\nG01 X10 Y10\nM02\n")->hasCode(Code::UpperSideMissing));
 }
 
-TEST(TaperChecks, TwoFilePairingCountsMoves) {
+TEST(taper_checks_test, two_file_pairing_counts_moves) {
   SourceFile lo("lower.nc", "G01 X10 Y0\nX10 Y10\nX0 Y0\nM02\n");
   SourceFile up2("upper.nc", "G01 X11 Y0\nX0 Y0\nM02\n");
   SourceFile up3("upper.nc", "G01 X11 Y1\nX11 Y11\nX0 Y0\nM02\n");
@@ -265,7 +265,7 @@ TEST(TaperChecks, TwoFilePairingCountsMoves) {
 
 // ---- outputs -------------------------------------------------------------------------------
 
-TEST(TaperOutputs, Points4KeepsBothPlanesInStep) {
+TEST(taper_outputs_test, points4_keeps_both_planes_in_step) {
   auto r = run("M101 P30\nG92 X10 Y0 U10 V0\nG3 X-10 Y0 I-10 J0 G1 U-10 V0\nM2\n");
   PointRequest req;
   req.sampling = kerf::geometry::Sampling::step(1.0);
@@ -286,7 +286,7 @@ TEST(TaperOutputs, Points4KeepsBothPlanesInStep) {
   EXPECT_GT(n, 30u);
 }
 
-TEST(TaperOutputs, Points4CountsAgainstTheCapacityBeforeItSamples) {
+TEST(taper_outputs_test, points4_counts_against_the_capacity_before_it_samples) {
   // A half circle of radius 7 m at step 0.1 mm is ceil(pi 7000 / 0.1) = 219,912 steps and the start:
   // 219,913 point pairs, refused for a controller of
   // 500 with the count computed in closed form (it used to sample all of them first).
@@ -306,7 +306,7 @@ TEST(TaperOutputs, Points4CountsAgainstTheCapacityBeforeItSamples) {
   EXPECT_EQ(out->points, 219913u);
 }
 
-TEST(TaperOutputs, APlaneBetweenTheContoursIsTheirSection) {
+TEST(taper_outputs_test, a_plane_between_the_contours_is_their_section) {
   auto r = run("M101 P20\nG92 X0 Y0 U0 V0\nG1 X10 Y0 G1 U10 V4\nM2\n");
   Diagnostics d;
   const auto flat = toolpathAtPlane(r->path(), PlaneChoice{PlaneChoice::Kind::Height, 5.0}, 1e-3, nullptr, d);
@@ -342,7 +342,7 @@ std::set<Code> verdict(const Toolpath& tp) {
   return errorCodes(d);
 }
 
-TEST(TaperMetamorphic, SamplesKeepTheirVerdicts) {
+TEST(taper_metamorphic_test, samples_keep_their_verdicts) {
   namespace fs = std::filesystem;
   std::vector<fs::path> files;
   for (const char* dir : {KERF_SAMPLES_DIR, KERF_SAMPLES_DIR "/bad"})
@@ -369,7 +369,7 @@ TEST(TaperMetamorphic, SamplesKeepTheirVerdicts) {
 
 namespace {
 
-TEST(Taper, LinuxCncMovesUvInAStraightLineDuringAnArc) {
+TEST(taper_test, linux_cnc_moves_uv_in_a_straight_line_during_an_arc) {
   // LinuxCNC moves the extra axes linearly during an arc (as Z in a helix): the upper side of the
   // arc block is a line, and needs no centre of its own.
   const std::string text =
@@ -391,7 +391,7 @@ TEST(Taper, LinuxCncMovesUvInAStraightLineDuringAnArc) {
       run("(AXIS,UV_Z_POS,20)\nG0 X0 Y0 U0 V0\nG2 X10 Y0 I5 J0 U10 V0 I5 J0\nM30\n")->hasCode(Code::DialectAmbiguous));
 }
 
-TEST(Taper, XyuvAbsUpperSideWithoutItsOwnCentreIsAStraightLine) {
+TEST(taper_test, xyuv_abs_upper_side_without_its_own_centre_is_a_straight_line) {
   // cnc3 takes a missing upper centre as the start point and draws that arc as a line; LinuxCNC
   // moves U V linearly. Both say: U V without a centre of their own move straight.
   auto r = run("M101 P10\nG92 X0 Y0 U0 V0\nG2 X10. Y0 I5. J0 U10. V0\nM2\n");
@@ -406,7 +406,7 @@ TEST(Taper, XyuvAbsUpperSideWithoutItsOwnCentreIsAStraightLine) {
 
 namespace {
 
-TEST(Taper, NcvcHeightsInTheSetPositionOfAnXyuvRelProgram) {
+TEST(taper_test, ncvc_heights_in_the_set_position_of_an_xyuv_rel_program) {
   // G92 X0 Y0 U0 V0 I20 J0: U V the starting deviation, I J NCVC's thickness and program plane.
   // It is what makes the program xyuv-rel; it must not then be refused for its I J.
   auto r = run("G92 X0 Y0 U0 V0 I20. J0\nG01 X10. Y0 U0.5 V0\nX10. Y10. U0.5 V0.5\nX0 Y0 U0 V0\nM02\n");
@@ -423,7 +423,7 @@ namespace {
 // The sections are counted before they are made: past the budget, the twisted patches get their
 // share of it and a note says so (found by the fuzzer: huge twisted arcs asked for 369,161 pieces a
 // section, 1.7 s for a 4 KB program).
-TEST(Taper, SectionsPastTheBudgetAreCoarsenedWithANote) {
+TEST(taper_test, sections_past_the_budget_are_coarsened_with_a_note) {
   const std::string text =
       "M101 P10\nG92 X0 Y0 U0 V0\nG1 X10 Y0 G3 U10 V0 R6\nG1 X10 Y10 G1 U10 V10\nG1 X0 Y10 G1 U0 V10\n"
       "G1 X0 Y0 G1 U0 V0\nM2\n";

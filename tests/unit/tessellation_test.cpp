@@ -20,7 +20,7 @@ Segment sectorArc() {  // the seed's test part: 90 degrees of radius 40 mm
 // angle is gamma = 2 asin(k / 2R); there are floor(sweep / gamma) full chords and one shorter
 // chord for the rest; the largest deviation is the sagitta of a full chord, R (1 - cos(gamma/2)),
 // which equals R - sqrt(R^2 - k^2/4).
-TEST(tessellation, seed_sector_experiment_matches_closed_form) {
+TEST(tessellation_test, seed_sector_experiment_matches_closed_form) {
   const double r = 40.0, sweep = kPi / 2;
   struct Case {
     double k;
@@ -48,7 +48,7 @@ TEST(tessellation, seed_sector_experiment_matches_closed_form) {
   }
 }
 
-TEST(tessellation, seed_algorithm_gives_the_same_points) {
+TEST(tessellation_test, seed_algorithm_gives_the_same_points) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> coord(-20, 20), ks(0.05, 3);
   for (int i = 0; i < 300; ++i) {
@@ -66,7 +66,7 @@ TEST(tessellation, seed_algorithm_gives_the_same_points) {
   }
 }
 
-TEST(tessellation, tolerance_mode_keeps_every_chord_within_tolerance) {
+TEST(tessellation_test, tolerance_mode_keeps_every_chord_within_tolerance) {
   for (double tol : {0.001, 0.01, 0.1}) {
     for (double r : {0.5, 5.0, 80.0}) {
       const Segment s = Segment::arc({r, 0}, {r, 0}, {0, 0}, ArcDirection::Clockwise);  // full circle
@@ -89,7 +89,7 @@ TEST(tessellation, tolerance_mode_keeps_every_chord_within_tolerance) {
   }
 }
 
-TEST(tessellation, mean_relative_error_closed_form_matches_numeric_average) {
+TEST(tessellation_test, mean_relative_error_closed_form_matches_numeric_average) {
   for (double span : {0.001, 0.05, 0.5, 1.0, kPi / 2, kPi}) {
     // Average of 1 - cos(span/2)/cos(phi) over phi in [-span/2, span/2], by the midpoint rule.
     const int n = 200000;
@@ -102,7 +102,7 @@ TEST(tessellation, mean_relative_error_closed_form_matches_numeric_average) {
   }
 }
 
-TEST(tessellation, mean_relative_error_is_continuous_and_positive_for_tiny_chords) {
+TEST(tessellation_test, mean_relative_error_is_continuous_and_positive_for_tiny_chords) {
   // Either side of the switch to the series, and far below it, where the closed form cancelled.
   EXPECT_NEAR(chordMeanRelativeError(1e-2 * (1 - 1e-12)), chordMeanRelativeError(1e-2), 1e-12);
   for (double span : {1e-11, 1e-8, 1e-5, 1e-3}) {
@@ -111,7 +111,7 @@ TEST(tessellation, mean_relative_error_is_continuous_and_positive_for_tiny_chord
   }
 }
 
-TEST(tessellation, mean_relative_error_series_and_closed_form_agree_with_forty_digits) {
+TEST(tessellation_test, mean_relative_error_series_and_closed_form_agree_with_forty_digits) {
   // 1 - cos(s/2) (2/s) ln tan(pi/4 + s/4), by mpmath at 40 digits (mp.dps = 40), to 20: below
   // 0.25 rad the summary takes the series, from there the closed form. The series is exact to a
   // few units of the last place; the closed form loses digits to cancellation as the span shrinks.
@@ -124,7 +124,7 @@ TEST(tessellation, mean_relative_error_series_and_closed_form_agree_with_forty_d
   for (const auto& c : cases) EXPECT_NEAR(chordMeanRelativeError(c.span), c.value, c.value * c.relative) << c.span;
 }
 
-TEST(tessellation, sagitta_of_short_chords_agrees_with_forty_digits) {
+TEST(tessellation_test, sagitta_of_short_chords_agrees_with_forty_digits) {
   // A half-circle arc of radius 2 cut into chords of 0.2 mm in step mode: its last chord is
   // shorter than a step, so both the full chords' sagitta (from the sine of the half angle) and
   // the last one's (a series below 0.25 rad) are taken. The full chord's angle is
@@ -140,7 +140,7 @@ TEST(tessellation, sagitta_of_short_chords_agrees_with_forty_digits) {
   EXPECT_NEAR(one.maxDeviation, 0.0012497396050337534371, 2e-18);
 }
 
-TEST(tessellation, lines_add_only_their_end_point) {
+TEST(tessellation_test, lines_add_only_their_end_point) {
   const std::vector<Segment> path = {Segment::line({0, 0}, {10, 0}), Segment::line({10, 0}, {10, 10})};
   std::vector<Vec2> pts;
   const PathSampleStats st = samplePath(path, Sampling::step(0.1), &pts);
@@ -149,7 +149,7 @@ TEST(tessellation, lines_add_only_their_end_point) {
   ASSERT_EQ(pts.size(), 3u);
 }
 
-TEST(tessellation, metamorphic_rigid_motion_keeps_counts_and_errors) {
+TEST(tessellation_test, metamorphic_rigid_motion_keeps_counts_and_errors) {
   const Vec2 c(0.5, 3);
   const Segment s = Segment::arc(c + 3.2 * direction(0.3), c + 3.2 * direction(2.4), c, ArcDirection::Clockwise);
   const ArcSampleStats base = sample(s, Sampling::step(0.2), nullptr);
@@ -164,7 +164,7 @@ TEST(tessellation, metamorphic_rigid_motion_keeps_counts_and_errors) {
   EXPECT_NEAR(rev.maxDeviation, base.maxDeviation, 1e-12);
 }
 
-TEST(tessellation, fit_to_capacity_never_exceeds_and_is_the_finest) {
+TEST(tessellation_test, fit_to_capacity_never_exceeds_and_is_the_finest) {
   std::vector<Segment> path;
   path.push_back(Segment::line({-5, 0}, {0, 0}));
   path.push_back(Segment::line({0, 0}, {40, 0}));
@@ -189,7 +189,7 @@ TEST(tessellation, fit_to_capacity_never_exceeds_and_is_the_finest) {
 
 }  // namespace
 
-TEST(tessellation, samplers_of_consecutive_stretches_append_to_the_whole_paths_counts) {
+TEST(tessellation_test, samplers_of_consecutive_stretches_append_to_the_whole_paths_counts) {
   // Lines and arcs with a jump now and then (a start that is not the last end counts a point):
   // split anywhere, including at a jump, the appended samplers count what one sampler does.
   std::mt19937 rng(7);

@@ -1,34 +1,26 @@
 // Helpers shared by the unit tests.
 #pragma once
 
+#include "kerf/geometry/parallel.h"
 #include "kerf/geometry/segment.h"
 
 #include <Eigen/Geometry>
 
-#include <cstdlib>
 #include <random>
 #include <string>
 
 namespace kerf::test {
 
-/// Sets KERF_THREADS (the workers of geometry/parallel.h) for one test and restores it after.
+/// Sets the workers of geometry/parallel.h for one test and restores the count after.
 class ScopedThreads {
  public:
-  explicit ScopedThreads(const char* value) {
-    if (const char* old = std::getenv("KERF_THREADS")) old_ = old;
-    ::setenv("KERF_THREADS", value, 1);
-  }
-  ~ScopedThreads() {
-    if (old_.empty())
-      ::unsetenv("KERF_THREADS");
-    else
-      ::setenv("KERF_THREADS", old_.c_str(), 1);
-  }
+  explicit ScopedThreads(unsigned workers) : old_(geometry::workerCount()) { geometry::setWorkerCount(workers); }
+  ~ScopedThreads() { geometry::setWorkerCount(old_); }
   ScopedThreads(const ScopedThreads&) = delete;
   ScopedThreads& operator=(const ScopedThreads&) = delete;
 
  private:
-  std::string old_;
+  unsigned old_;
 };
 
 using geometry::Segment;

@@ -64,7 +64,7 @@ int arcZ(double deg, bool ccw) {
   return k == 0 ? 4 : k;
 }
 
-TEST(three_b, lines_in_every_quadrant_on_every_axis_and_at_45_degrees) {
+TEST(three_b_test, lines_in_every_quadrant_on_every_axis_and_at_45_degrees) {
   const long cases[][2] = {{5000, 0},      {0, 5000},     {-5000, 0},     {0, -5000},    {3000, 1000},   {-3000, 1000},
                            {-3000, -1000}, {3000, -1000}, {1000, 3000},   {-1000, 3000}, {-1000, -3000}, {1000, -3000},
                            {2000, 2000},   {-2000, 2000}, {-2000, -2000}, {2000, -2000}};
@@ -82,7 +82,7 @@ TEST(three_b, lines_in_every_quadrant_on_every_axis_and_at_45_degrees) {
   }
 }
 
-TEST(three_b, arcs_cw_and_ccw_over_one_to_four_quadrants_and_full_circles) {
+TEST(three_b_test, arcs_cw_and_ccw_over_one_to_four_quadrants_and_full_circles) {
   const double r = 10.0;  // mm
   int n = 0;
   for (const bool ccw : {true, false})

@@ -49,7 +49,7 @@ void expectExactDistance(const std::vector<Segment>& contour, const std::vector<
   }
 }
 
-TEST(WireOffset, ASquareOutsideGetsArcsAtItsCornersOfTheOffsetRadius) {
+TEST(wire_offset_test, a_square_outside_gets_arcs_at_its_corners_of_the_offset_radius) {
   const auto square = polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}});  // counter-clockwise
   const auto r = wireOffset(square, -1.0);                            // right of travel: outside
   ASSERT_EQ(r.paths.size(), 1u);
@@ -70,7 +70,7 @@ TEST(WireOffset, ASquareOutsideGetsArcsAtItsCornersOfTheOffsetRadius) {
   EXPECT_TRUE(r.lost.empty());
 }
 
-TEST(WireOffset, ALeftOffsetRollsClockwiseRoundAConvexCorner) {
+TEST(wire_offset_test, a_left_offset_rolls_clockwise_round_a_convex_corner) {
   const auto square = polygon({{0, 0}, {0, 10}, {10, 10}, {10, 0}});  // clockwise: left is outside
   const auto r = wireOffset(square, 1.0);
   ASSERT_EQ(r.paths.size(), 1u);
@@ -82,7 +82,7 @@ TEST(WireOffset, ALeftOffsetRollsClockwiseRoundAConvexCorner) {
   EXPECT_NEAR(std::abs(signedArea(segments(r.paths[0]))), 100 + 40 + std::numbers::pi, 1e-9);
 }
 
-TEST(WireOffset, InsideASquareTheCornersStaySharp) {
+TEST(wire_offset_test, inside_a_square_the_corners_stay_sharp) {
   const auto square = polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}});
   const auto r = wireOffset(square, 1.0);
   ASSERT_EQ(r.paths.size(), 1u);
@@ -93,7 +93,7 @@ TEST(WireOffset, InsideASquareTheCornersStaySharp) {
   EXPECT_NEAR(r.paths[0][0].segment.start.y(), 1.0, 1e-12);
 }
 
-TEST(WireOffset, ACircleGrowsAndShrinksAndVanishesWhenSmallerThanTheWire) {
+TEST(wire_offset_test, a_circle_grows_and_shrinks_and_vanishes_when_smaller_than_the_wire) {
   const Segment circle = Segment::arc({5, 0}, {5, 0}, {0, 0}, ArcDirection::CounterClockwise);
   const std::vector<Segment> c{circle};
   auto out = wireOffset(c, -0.5);
@@ -112,7 +112,7 @@ TEST(WireOffset, ACircleGrowsAndShrinksAndVanishesWhenSmallerThanTheWire) {
   ASSERT_EQ(gone.lost.size(), 1u);
 }
 
-TEST(WireOffset, ACornerArcShorterThanTheLinkToleranceAtTheSeamStaysInTheLoop) {
+TEST(wire_offset_test, a_corner_arc_shorter_than_the_link_tolerance_at_the_seam_stays_in_the_loop) {
   // A square whose first side leaves the start point 1e-5 rad off the last side's direction (a
   // closed curve fitted with biarcs has such a seam): the corner arc there is 5e-6 mm long, well
   // inside the linking tolerance, and must not be left over as a loop of its own.
@@ -124,7 +124,7 @@ TEST(WireOffset, ACornerArcShorterThanTheLinkToleranceAtTheSeamStaysInTheLoop) {
   EXPECT_NEAR(signedArea(segments(out.paths[0])), 100 + 4 * 10 * 0.5 + std::numbers::pi * 0.25, 1e-3);
 }
 
-TEST(WireOffset, ASlotNarrowerThanTheWireDisappearsAndIsNamed) {
+TEST(wire_offset_test, a_slot_narrower_than_the_wire_disappears_and_is_named) {
   // A die 20 x 10 with a slot 0.2 wide and 4 long out of its top edge; wire offset 0.15 inside.
   const auto die = polygon({{0, 0}, {20, 0}, {20, 10}, {10.1, 10}, {10.1, 14}, {9.9, 14}, {9.9, 10}, {0, 10}});
   const auto r = wireOffset(die, 0.15);
@@ -145,7 +145,7 @@ TEST(WireOffset, ASlotNarrowerThanTheWireDisappearsAndIsNamed) {
   EXPECT_TRUE(wireOffset(wide, 0.15).lost.empty());
 }
 
-TEST(WireOffset, AContourPinchedNarrowerThanTheWireSplitsInTwo) {
+TEST(wire_offset_test, a_contour_pinched_narrower_than_the_wire_splits_in_two) {
   // Two 10 x 10 squares joined by a neck 0.2 wide: inside at 0.15 the path is two loops.
   const auto dumbbell = polygon({{0, 0},
                                  {10, 0},
@@ -171,7 +171,7 @@ TEST(WireOffset, AContourPinchedNarrowerThanTheWireSplitsInTwo) {
   }
 }
 
-TEST(WireOffset, AnInsideFilletSmallerThanTheWireIsReportedAsSuch) {
+TEST(wire_offset_test, an_inside_fillet_smaller_than_the_wire_is_reported_as_such) {
   // An L with a 0.1 fillet in its inside corner; outside offset 0.15 (the fillet is concave there).
   std::vector<Segment> l;
   l.push_back(Segment::line({0, 0}, {10, 0}));
@@ -189,7 +189,7 @@ TEST(WireOffset, AnInsideFilletSmallerThanTheWireIsReportedAsSuch) {
   EXPECT_TRUE(r.lost[0].fillet);
 }
 
-TEST(WireOffset, ArcsThatTurnInsideOutAreRemovedNotFollowed) {
+TEST(wire_offset_test, arcs_that_turn_inside_out_are_removed_not_followed) {
   // A rounded square (corner radius 1) offset inside by 2: the corners vanish, sharp, as a square.
   std::vector<Segment> s;
   const double r = 1.0;
@@ -211,7 +211,7 @@ TEST(WireOffset, ArcsThatTurnInsideOutAreRemovedNotFollowed) {
   EXPECT_EQ(out.paths[0].size(), 8u) << "tangent joints need no corner arc";
 }
 
-TEST(WireOffset, AnOpenChainKeepsItsOrderAndGetsArcsOnlyAtItsCorners) {
+TEST(wire_offset_test, an_open_chain_keeps_its_order_and_gets_arcs_only_at_its_corners) {
   const std::vector<Segment> open = polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}});
   std::vector<Segment> chain(open.begin(), open.begin() + 3);
   WireOffsetOptions o;
@@ -223,7 +223,7 @@ TEST(WireOffset, AnOpenChainKeepsItsOrderAndGetsArcsOnlyAtItsCorners) {
   EXPECT_NEAR(r.paths[0].back().segment.end.y(), 11.0, 1e-12);
 }
 
-TEST(WireOffset, RandomStarsStayExactlyAtTheDistance) {
+TEST(wire_offset_test, random_stars_stay_exactly_at_the_distance) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> radius(3.0, 10.0);
   for (int trial = 0; trial < 30; ++trial) {
@@ -243,7 +243,7 @@ TEST(WireOffset, RandomStarsStayExactlyAtTheDistance) {
   }
 }
 
-TEST(WireOffset, LoopsAroundCountsWhatAskingEveryLoopCounts) {
+TEST(wire_offset_test, loops_around_counts_what_asking_every_loop_counts) {
   // Random squares, circles (two arcs) and rotated triangles, many nested: for each loop's probe,
   // the loops round it from the box tree against windingNumber over every loop.
   std::mt19937 rng(5);
@@ -284,14 +284,14 @@ TEST(WireOffset, LoopsAroundCountsWhatAskingEveryLoopCounts) {
   EXPECT_GT(nested, 50);  // many probes lie inside other loops, so the counts mean something
 }
 
-TEST(WireOffset, TooManyPiecesIsRefusedBeforeWork) {
+TEST(wire_offset_test, too_many_pieces_is_refused_before_work) {
   const auto square = polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}});
   WireOffsetOptions o;
   o.maxPieces = 5;
   EXPECT_TRUE(wireOffset(square, 1.0, o).refused);
 }
 
-TEST(WireOffset, PastTheBudgetOfExactTestsTheOffsetIsRefusedAfterBoundedWork) {
+TEST(wire_offset_test, past_the_budget_of_exact_tests_the_offset_is_refused_after_bounded_work) {
   // A star of 2,000 thin spikes (radii 100 and 40): nearly every spike's box overlaps most others,
   // so the box tree's candidate pairs grow as the square of the spikes.
   std::vector<Vec2> pts;

@@ -123,7 +123,7 @@ struct UnknownPosition {
 enum class Flow : std::uint8_t { Continue, Stop };
 
 /// A word kept past its block (the motion word in force, a G41 not yet carried out): a copy, so
-/// that the parse tree may give its memory back as it is run (InterpreterOptions::releaseParsed).
+/// that nothing the interpreter holds points into the parse of blocks it has left.
 class HeldWord {
  public:
   void hold(const Word* w) {
@@ -135,15 +135,6 @@ class HeldWord {
  private:
   Word word_;
   bool held_ = false;
-};
-
-/// What one stretch of a window of simple blocks ends with (simple_runs.cpp).
-struct SimpleStretch {
-  bool ok = false;
-  Vec2 position{0, 0};
-  Motion motion = Motion::None;
-  const Word* motionWord = nullptr;  ///< the stretch's last motion code
-  ArcCentreTally tally;
 };
 
 class Interpreter {
@@ -158,16 +149,6 @@ class Interpreter {
   void findLegacyTaperCodes();
   void warnIntegerUnit();
   Flow executeBlock(std::size_t pc, std::size_t& next);
-  bool readPlainBlock(const Block& block, BlockWords& bw) const;
-  void executePlainBlock(const Block& block, const BlockWords& bw);
-  // simple_runs.cpp
-  bool simpleBlock(const Block& b) const;
-  bool parallelRunAllowed(bool straight) const;
-  Vec2 simpleEnd(const Word* x, const Word* y, const Vec2& start) const;
-  bool runSimpleStretch(std::size_t runStart, std::size_t begin, std::size_t end, Move* out, Vec2* centreWords,
-                        std::uint8_t* made, SimpleStretch& result) const;
-  /// Blocks [begin, end), all simple, on every core; false (nothing changed) gives them back.
-  bool runSimpleWindow(std::size_t begin, std::size_t end);
   // read_block.cpp (phase 1)
   bool readBlock(const Block& block, BlockWords& bw, BlockWords& ubw);
   void readWord(const Word& w, BlockWords& bw);
@@ -183,7 +164,7 @@ class Interpreter {
   bool executeTaperAngle(const BlockWords& bw);
   void setHeight(std::optional<Height>& slot, double value, const char* what, std::uint32_t line);
   /// A length word in mm: micrometres without a decimal point under --integer-unit um, inches
-  /// under G20. Inline: the windows call it for every X, Y and R (a call each took 2% of kerf check).
+  /// under G20.
   double length(const Word& w) const {
     double v = w.value;
     if (!w.hasPoint && options_.integerUnit == IntegerUnit::Micrometre) v *= 0.001;
@@ -194,8 +175,8 @@ class Interpreter {
   bool buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
                  const std::string& side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
                  Move* record);
-  void tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift, geometry::ArcDirection dir,
-                      bool closedAsUsed, std::uint32_t line);
+  void tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift, bool closedAsUsed,
+                      std::uint32_t line);
   void reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block, const std::string& side);
   void push(Move&& m, const Segment& upper);
   /// The run of moves under one G41/G42 that the move at `index` (about to be, or just, stored)
@@ -244,20 +225,11 @@ class Interpreter {
   Diagnostics& diags_;
   Toolpath toolpath_;
   ArcCentreTally tally_;
-  bool released_ = false;  // releaseParsedBefore was called
-  std::size_t blocksInWindows_ = 0;
-  /// The moves the windows made, [begin, end) in order: their arcs have their angles already, so the
-  /// pass that completes deferred angles skips them (a window's moves are never written again).
-  std::vector<std::pair<std::size_t, std::size_t>> windowMoves_;
 
   // Modal state (the interpreter's "settings").
   Dialect dialect_ = Dialect::Plain;
-  // The plain dialect's arcs get their angles after the run, on every core: nothing reads them
-  // before (the 4-axis dialects build the upper side from the lower one as they go).
-  bool deferAngles_ = false;
-  bool anglesDeferred_ = false;  // some arc waits for its angles
-  Vec2 position_{0, 0};          // in the toolpath frame
-  Vec2 shift_{0, 0};             // program coordinates = toolpath coordinates + shift (G92)
+  Vec2 position_{0, 0};  // in the toolpath frame
+  Vec2 shift_{0, 0};     // program coordinates = toolpath coordinates + shift (G92)
   Motion motion_ = Motion::None;
   HeldWord motionWord_;
   bool incremental_ = false;
@@ -281,7 +253,6 @@ class Interpreter {
   };
   std::vector<OffsetRun> offsetRuns_;
   bool programHasV_ = false;  // some word is V (for the U Z diagnostic)
-  bool plainPath_ = false;    // the profile gives G00-G03 no meaning of its own: plain blocks go the short way
 
   // 4-axis state.
   Vec2 upperPosition_{0, 0};  // xyuv-abs, xyuv-linuxcnc, sodick-colon: where the upper contour is

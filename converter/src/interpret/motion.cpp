@@ -46,11 +46,11 @@ void Interpreter::reportArc(const geometry::ArcBuild& build, const BlockWords& b
 
 /// Which conventions would close this I J arc: evidence for detecting the convention.
 void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift,
-                                 geometry::ArcDirection dir, bool closedAsUsed, std::uint32_t line) {
+                                 bool closedAsUsed, std::uint32_t line) {
   ++tally_.arcs;
   const Vec2 centres[3] = {start + ij, start - ij, ij - shift};
   for (int k = 0; k < 3; ++k)
-    if (geometry::arcFromCentre(start, end, centres[k], dir, tolerance_, false).status == geometry::ArcStatus::Ok)
+    if (geometry::centreVerdict(start, end, centres[k], tolerance_) == geometry::ArcStatus::Ok)
       ++tally_.closes[k];
   if (!closedAsUsed && tally_.firstFailLine == 0) tally_.firstFailLine = line;
 }
@@ -93,7 +93,7 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
       record->centreForm = CentreForm::Radius;
       moveCentreWords_ = Vec2(r, 0);
     }
-    build = geometry::arcFromRadius(start, end, r, dir, tolerance_, !deferAngles_);
+    build = geometry::arcFromRadius(start, end, r, dir, tolerance_);
   } else {
     Vec2 ij(0, 0);
     if (const Word* i = w['I']) ij.x() = length(*i);
@@ -115,15 +115,14 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
       moveCentreWords_ = ij;
       record->centreForm = form;
     }
-    build = geometry::arcFromCentre(start, end, centre, dir, tolerance_, !deferAngles_);
-    if (record) tallyArcCentre(start, end, ij, shift, dir, build.status == geometry::ArcStatus::Ok, block.line);
+    build = geometry::arcFromCentre(start, end, centre, dir, tolerance_);
+    if (record) tallyArcCentre(start, end, ij, shift, build.status == geometry::ArcStatus::Ok, block.line);
   }
   if (build.status != geometry::ArcStatus::Ok) {
     reportArc(build, w, block, side);
     return false;
   }
   out = build.arc;
-  anglesDeferred_ = anglesDeferred_ || deferAngles_;
   return true;
 }
 

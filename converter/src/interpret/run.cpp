@@ -2,11 +2,7 @@
 // run, and what is settled after the last block (heights, taper contours).
 #include "interpreter_impl.h"
 
-#include "kerf/geometry/parallel.h"
-#include "kerf/geometry/phase_times.h"
-
 #include "kerf/converter/dialect.h"
-#include "kerf/geometry/memory.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,65 +40,23 @@ Interpretation Interpreter::run() {
   toolpath_.reading.integerUnit = options_.integerUnit;
   toolpath_.reading.arcCentre = options_.arcCentre;
   chooseDialect();
-  deferAngles_ = dialect_ == Dialect::Plain;
   indexLabels();
-  // A program that runs straight through (no subprogram call or return, no macro call) never
-  // comes back to a block it has run: the parse tree behind it may give its memory back.
-  bool straight = true;
-  for (const std::uint32_t k : program_.notPlain) {  // a plain block has no V, M or macro call
-    const Block& b = program_.blocks[k];
-    straight = straight && b.kind != BlockKind::MacroCall;
-    for (const Word& w : program_.wordsOf(b)) {
-      programHasV_ |= w.letter == 'V';
-      if (straight && w.letter == 'M' && w.isNumber())
-        if (const MCodeInfo* info = findMCode(w.value))
-          straight = info->code != MCode::CallSubprogram && info->code != MCode::ReturnFromSubprogram;
-    }
-  }
+  for (const std::uint32_t k : program_.notPlain)  // a plain block has no V
+    for (const Word& w : program_.wordsOf(program_.blocks[k])) programHasV_ |= w.letter == 'V';
   if (machine_.legacyTaperCodes) findLegacyTaperCodes();
-  plainPath_ = true;
-  for (int g = 0; g <= 3; ++g)
-    if (const KnownCode* k = machine_.find('G', g, 0); k && k->number >= 0) plainPath_ = false;
   // Most blocks of a wire program are moves: reserving avoids copying them while growing.
   toolpath_.moves.reserve(std::min(program_.blocks.size(), options_.maxMoves));
   for (const Setting& s : program_.settings) toolpath_.settings.push_back(s);
   toolpath_.blocks = program_.blocks.size();
   warnIntegerUnit();
-  geometry::markPhase("interpreter: set up");
-  const bool release = straight && options_.releaseParsed;
   std::size_t pc = 0;
   const std::size_t n = program_.blocks.size();
-  // Long runs of simple blocks go on every core (simple_runs.cpp): each block is looked at once
-  // to find where its run ends.
-  const std::size_t window = std::max<std::size_t>(options_.parallelRun, options_.parallelWindow);
-  std::size_t runEnd = 0, noWindowBefore = 0;
   while (pc < n) {
-    if (options_.parallelRun > 0 && pc >= noWindowBefore && parallelRunAllowed(straight)) {
-      if (pc >= runEnd)
-        for (runEnd = pc; runEnd < n && simpleBlock(program_.blocks[runEnd]);) ++runEnd;
-      const std::size_t end = std::min(runEnd, pc + window);
-      if (end - pc >= options_.parallelRun && executed_ + (end - pc) <= options_.maxExecutedBlocks &&
-          toolpath_.moves.size() + (end - pc) <= options_.maxMoves) {
-        if (runSimpleWindow(pc, end)) {
-          pc = end;
-          if (release) {
-            releaseParsedBefore(program_, pc);
-            released_ = true;
-          }
-          continue;
-        }
-        noWindowBefore = end;  // the block loop says what the window would not
-      }
-    }
     if (++executed_ > options_.maxExecutedBlocks) {
       diags_.error(Code::ExecutionLimit, src_, program_.blocks[pc].span(),
                    "stopped after " + std::to_string(options_.maxExecutedBlocks) +
                        " executed blocks: the subprogram calls repeat without end or far too often");
       break;
-    }
-    if (release && pc > 0 && pc % 8192 == 0) {
-      releaseParsedBefore(program_, pc);
-      released_ = true;
     }
     const Block& block = program_.blocks[pc];
     std::size_t next = pc + 1;
@@ -126,28 +80,11 @@ Interpretation Interpreter::run() {
   flushUnknown(nullptr);
   if (!toolpath_.endedProperly && !diags_.hasErrors() && n > 0)
     diags_.warning(Code::MissingProgramEnd, src_, program_.blocks.back().span(), "program ends without M02 or M30");
-  geometry::markPhase("interpreter: blocks");
-  if (anglesDeferred_) {  // each arc's own, on every core: the block loop's moves (the windows' have theirs)
-    MoveList& moves = toolpath_.moves;
-    std::vector<std::pair<std::size_t, std::size_t>> loopMoves;  // the ranges between the windows' moves
-    std::size_t from = 0;
-    for (const auto& [begin, end] : windowMoves_) {
-      if (begin > from) loopMoves.emplace_back(from, begin);
-      from = std::max(from, end);
-    }
-    if (moves.size() > from) loopMoves.emplace_back(from, moves.size());
-    for (const auto& [first, last] : loopMoves)
-      geometry::parallelFor(last - first, 8192, [&, first = first](std::size_t begin, std::size_t end) {
-        for (std::size_t i = first + begin; i < first + end; ++i)
-          if (moves[i].lower.anglesPending()) moves[i].lower.completeAngles();
-      });
-  }
-  geometry::markPhase("interpreter: arc angles");
   resolveHeights();
   if (dialect_ == Dialect::XyuvRel) resolveRel();
   if (dialect_ == Dialect::TaperAngle) resolveTaperAngle();
   resolveWireOffsets();
-  return {std::move(toolpath_), tally_, released_, blocksInWindows_};
+  return {std::move(toolpath_), tally_};
 }
 
 void Interpreter::chooseDialect() {
@@ -218,50 +155,6 @@ void Interpreter::indexLabels() {
   }
 }
 
-/// Phase 1 for a plain block: its letters and its motion code, as readWord files them (the profile
-/// names none of them: plainPath_). False when a letter or a motion code comes twice: the general
-/// path reports it.
-bool Interpreter::readPlainBlock(const Block& block, BlockWords& bw) const {
-  constexpr auto motion = static_cast<std::size_t>(ModalGroup::Motion);
-  for (const Word& w : program_.wordsOf(block)) {
-    if (w.letter == 'G') {
-      if (bw.g[motion]) return false;
-      bw.g[motion] = &w;
-      bw.gCode[motion] = static_cast<GCode>(static_cast<int>(w.value));  // G00-G03 are the first codes
-      continue;
-    }
-    const auto li = static_cast<std::size_t>(w.letter - 'A');
-    if (bw.letter[li]) return false;
-    bw.letter[li] = &w;
-  }
-  return true;
-}
-
-/// Phases 2 to 4 for a plain block: no group but the motion, no M or profile code, one side, every
-/// value a number. The plan keeps the modal state; nothing is ignored, refused or checked beyond
-/// the feed and the motion, which go the way of every block.
-void Interpreter::executePlainBlock(const Block& block, const BlockWords& bw) {
-  static const BlockWords kNoUpperSide{};
-  BlockPlan plan;
-  const Word* mw = bw.group(ModalGroup::Motion);
-  plan.motion = mw ? motionOf(bw.code(ModalGroup::Motion)) : motion_;
-  plan.motionWord = mw ? mw : motionWord_.get();
-  plan.incremental = incremental_;
-  plan.inch = inch_;
-  plan.lowerWords = bw.has('X') || bw.has('Y') || bw.has('I') || bw.has('J') || bw.has('R');
-  if (const Word* f = bw['F']) {
-    if (f->value <= 0)
-      diags_.warning(Code::BadFeed, src_, f->span(), "feed F must be positive");
-    else
-      feedIndex_ = toolpath_.feedIndexFor(f->value * (plan.inch ? 25.4 : 1.0));
-  }
-  if (mw) {
-    motion_ = plan.motion;
-    motionWord_.hold(mw);
-  }
-  (void)executeMotion(bw, kNoUpperSide, block, plan);
-}
-
 void Interpreter::warnIntegerUnit() {
   if (options_.integerUnit == IntegerUnit::Millimetre && !program_.anyDecimalPoint &&
       program_.largestInteger > machine_.integerThreshold && !program_.words.empty()) {
@@ -277,15 +170,6 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   const Block& block = program_.blocks[pc];
   if (block.kind == BlockKind::MacroB) return Flow::Continue;  // the parser said it once for the file
   if (block.kind == BlockKind::MacroCall) return executeMacroCall(block);
-  // A plain block (most of a program) with each letter once: what the phases below do with it
-  // comes down to its feed and its motion.
-  if (block.plain && plainPath_) {
-    BlockWords bw;
-    if (readPlainBlock(block, bw)) {
-      executePlainBlock(block, bw);
-      return Flow::Continue;
-    }
-  }
   // Phase 1: read.
   BlockWords bw, ubw;
   if (!readBlock(block, bw, ubw)) return Flow::Continue;

@@ -110,8 +110,7 @@ struct Outcome {
 
 Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
   Outcome o;
-  // The text is needed again only for quotes, except by --trace (it prints each move's words).
-  std::optional<Loaded> in = loadQuietly(a.common, file, {.quoteOnly = !a.trace, .summary = true}, o.failure);
+  std::optional<Loaded> in = loadQuietly(a.common, file, {.summary = true}, o.failure);
   if (!in) {
     o.exit = kExitUsage;
     o.err = "kerf: error: " + o.failure + "\n";
@@ -194,18 +193,12 @@ int runCheck(const CheckArgs& a) {
     reportError("standard input ('-') can be read only once");
     return kExitUsage;
   }
-  // Every file on its own core; each one's output is kept and printed in the files' order.
+  // The files on every core (each file's own checks then run in its thread); each one's output
+  // is kept and printed in the files' order.
   std::vector<Outcome> outcomes(files.size());
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < files.size();) outcomes[i] = checkOne(a, files[i], many);
-  };
-  const std::size_t threads = std::min<std::size_t>(geometry::workerCount(), files.size());
-  {
-    std::vector<std::jthread> pool;
-    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-    work();
-  }
+  geometry::parallelFor(files.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) outcomes[i] = checkOne(a, files[i], many);
+  });
 
   const std::string format = a.json ? "json" : a.format;
   int worst = kExitOk;

@@ -11,29 +11,17 @@
 //     permissions of the file it replaces.
 #pragma once
 
-#include "kerf/converter/source.h"
-
-#include <atomic>
 #include <cstddef>
 #include <functional>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace kerf::cli {
 
-/// The whole file ("-": standard input), or nothing with a message in error (missing, unreadable,
-/// a folder, too big).
+/// The whole file ("-": standard input) with plain read(2), or nothing with a message in error
+/// (missing, unreadable, a folder, larger than maxBytes).
 std::optional<std::string> readTextFile(const std::string& path, std::size_t maxBytes, std::string& error);
-
-/// readTextFile for a program: a regular file is read straight into the bytes a SourceFile keeps
-/// (converter::TextBytes: one copy from the system), or from 256 KiB on mapped where the system
-/// keeps it (no copy; file_io.cpp); anything else (standard input, a pipe, a device) goes through
-/// readTextFile. A mapped file cut short while its text is in use reads as zeros from the cut on,
-/// and *cutShort (when given) turns true then: what was read of it is not the file.
-std::optional<converter::TextBytes> readProgramFile(const std::string& path, std::size_t maxBytes, std::string& error,
-                                                    std::shared_ptr<const std::atomic<bool>>* cutShort = nullptr);
 
 /// The name a file is shown under: "<stdin>" for "-".
 std::string displayName(const std::string& path);

@@ -5,13 +5,14 @@
 
 #include <unistd.h>
 
-#include <atomic>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string_view>
+#include <thread>
 
 namespace kerf::cli {
 
@@ -22,6 +23,15 @@ converter::Diagnostics shownDiagnostics(const converter::Diagnostics& all, const
   for (const converter::Diagnostic& d : all.all())
     if (!options.quiet || d.severity == converter::Severity::Error) shown.report(d);
   return shown;
+}
+
+unsigned threadsFromEnvironment() {
+  if (const char* env = std::getenv("KERF_THREADS"); env && *env) {
+    char* end = nullptr;
+    const unsigned long n = std::strtoul(env, &end, 10);
+    if (*end == '\0' && n >= 1) return static_cast<unsigned>(std::min(n, 64ul));
+  }
+  return std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
 }
 
 bool colourOn(const CheckOptions& options) {
@@ -74,34 +84,17 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
   const bool curve = options.input.curve && file == kCurveInput;
   if (needs.summary) po.summarize = options.sampling.sampling();
   po.centreWords = needs.centreWords;
-  // Only a regular file can be read again: a FIFO would wait for a second writer for ever.
-  std::error_code ec;
-  if (needs.quoteOnly && !curve && file != "-" && std::filesystem::is_regular_file(file, ec)) {
-    po.rereadSource = [file]() -> std::optional<converter::TextBytes> {
-      std::string why;
-      return readProgramFile(file, converter::SourceFile::kMaxSize, why);
-    };
-  }
-  // A mapped file cut short while it was read (file_io.h) was read as zeros past the cut.
-  std::shared_ptr<const std::atomic<bool>> cut, upperCut;
-  std::optional<converter::TextBytes> text =
-      curve ? std::optional<converter::TextBytes>(curveText(options.input))
-            : readProgramFile(file, converter::SourceFile::kMaxSize, failure, &cut);
+  std::optional<std::string> text =
+      curve ? std::optional<std::string>(curveText(options.input))
+            : readTextFile(file, converter::SourceFile::kMaxSize, failure);
   if (!text) return std::nullopt;
   std::optional<converter::SourceText> upper;
   if (options.input.upper) {
-    std::optional<converter::TextBytes> upperText =
-        readProgramFile(*options.input.upper, converter::SourceFile::kMaxSize, failure, &upperCut);
+    std::optional<std::string> upperText = readTextFile(*options.input.upper, converter::SourceFile::kMaxSize, failure);
     if (!upperText) return std::nullopt;
     upper = converter::SourceText{*options.input.upper, std::move(*upperText)};
   }
   Loaded out{converter::runPipeline({curve ? file : displayName(file), std::move(*text)}, po, std::move(upper)), {}};
-  const bool upperCutShort = upperCut && upperCut->load();
-  if ((cut && cut->load()) || upperCutShort) {
-    failure = "'" + (upperCutShort ? *options.input.upper : file) +
-              "' was cut short while it was read: it changed under the check, which says nothing of it";
-    return std::nullopt;
-  }
   // Every command says what check says under the same -W options.
   if (!policy.empty()) out.pipeline.diags = out.pipeline.diags.under(policy);
   if (!out.pipeline.read) return out;

@@ -21,12 +21,13 @@ struct Loaded {
   std::vector<std::string> inputs;  ///< every file read: an output may replace none of them
 };
 
+/// The threads a check may use (geometry::setWorkerCount): KERF_THREADS when it is a whole number
+/// from 1 up (at most 64), else the hardware's count, at most 16.
+unsigned threadsFromEnvironment();
+
 /// What a command needs of the pipeline besides the toolpath and the diagnostics.
 struct LoadNeeds {
-  /// The program's text is needed again only to quote diagnostics, so the pipeline may give its
-  /// memory back (PipelineOptions::rereadSource).
-  bool quoteOnly = false;
-  /// The summary at the options' sampling (Pipeline::summary, made beside the checks).
+  /// The summary at the options' sampling (Pipeline::summary).
   bool summary = false;
   /// How each arc's centre was written (PipelineOptions::centreWords): kerf explain shows it.
   bool centreWords = false;

@@ -5,12 +5,11 @@
 #include "file_io.h"
 #include "load.h"
 
-#include "kerf/geometry/phase_times.h"
+#include "kerf/geometry/parallel.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
@@ -19,13 +18,9 @@
 #include <string_view>
 
 int main(int argc, char** argv) {
-  // KERF_PHASE_TIMES=1: where the time went, on standard error at the end (docs/interpreter.md).
-  const char* phaseTimes = std::getenv("KERF_PHASE_TIMES");
-  const bool timed = phaseTimes && *phaseTimes && std::string_view(phaseTimes) != "0";
-  if (timed) {
-    kerf::geometry::enablePhaseTimes();
-    kerf::geometry::markPhase("main");
-  }
+  // The threads a check may use: the hardware's, at most 16, or KERF_THREADS (1: everything in
+  // one thread). Read once, here: the libraries never read the environment.
+  kerf::geometry::setWorkerCount(kerf::cli::threadsFromEnvironment());
   using namespace kerf::cli;
   CLI::App app{"Kerf: verify, explain and convert wire-EDM NC programs"};
   app.name("kerf");  // the help's usage line, whatever path the program was started by
@@ -44,9 +39,9 @@ int main(int argc, char** argv) {
   ViewArgs view;
   MachinesArgs machines;
   CamArgs cam;
-  // When the first argument names a command, only that command is set up: setting up all eight
-  // took 0.7 ms of every run (CLI11 checks each new option's names against the others'). Anything
-  // else (--help, a misspelt command) sees them all, in this order.
+  // When the first argument names a command, only that command is set up (CLI11 checks each new
+  // option's names against every other's, a cost paid by every run). Anything else (--help, a
+  // misspelt command) sees them all, in this order.
   struct Command {
     std::string_view name;
     std::function<CLI::App*()> add;
@@ -84,21 +79,10 @@ int main(int argc, char** argv) {
   int code = kExitUsage;
   for (const Command& c : commands)
     if (c.app && *c.app) code = c.run();
-  kerf::geometry::markPhase("command");
   // Output lost on the way (a full disk, a closed pipe) is a failure, whatever the verdict.
   if (std::string error; !finishStandardOutput(error)) {
     reportError(error);
     code = std::max(code, kExitUsage);
-  }
-  if (timed) {
-    std::string report =
-        "kerf: phase times (ms since main, page faults so far; a phase's figure is taken where it ends)\n";
-    char line[160];
-    for (const kerf::geometry::PhaseMark& m : kerf::geometry::phaseMarks()) {
-      std::snprintf(line, sizeof line, "%10.3f %8ld  %s\n", m.ms, m.minorFaults, m.what);
-      report += line;
-    }
-    std::cerr << report;
   }
   return code;
 }

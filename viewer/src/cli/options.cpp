@@ -204,17 +204,17 @@ bool diagnosticPolicy(const CheckOptions& options, converter::DiagnosticPolicy& 
     const bool silence = w.starts_with("no-");
     const bool promote = w.starts_with("error=");
     const std::string id = silence ? w.substr(3) : promote ? w.substr(6) : std::string();
-    const auto& codes = converter::diagnosticCodes();
-    const auto known =
-        std::find_if(codes.begin(), codes.end(), [&](const converter::CodeInfo& c) { return c.id == id; });
+    const auto codes = converter::diagnosticCodes();
+    const auto known = std::find_if(codes.begin(), codes.end(),
+                                    [&](const converter::CodeInfo& c) { return converter::codeName(c.code) == id; });
     if ((!silence && !promote) || known == codes.end()) {
       error =
           "-W" + w + ": give -Wno-CODE, -Werror=CODE or -Werror, with a code that docs/diagnostics.md lists (K0604)";
       return false;
     }
-    const auto code = static_cast<Code>(std::stoi(id.substr(1)));
+    const Code code = known->code;
     if (silence && known->severity == converter::Severity::Error) {
-      error = "-W" + w + ": " + id + " (" + known->name + ") is an error, and errors cannot be silenced";
+      error = "-W" + w + ": " + id + " (" + std::string(known->name) + ") is an error, and errors cannot be silenced";
       return false;
     }
     (silence ? out.silenced : out.promoted).push_back(code);

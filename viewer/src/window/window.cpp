@@ -248,11 +248,10 @@ bool runWindow(const WindowRequest& request, std::string& error) {
   State s;
   s.request = &request;
   s.options = request.options;
-  // Drawn in one call: waiting for the rasteriser between pieces of 65,536 cost the full-detail
-  // frame of the 1e6-triangle part a fifth (median 390 -> 480 ms under xvfb, 2026-11-25); glFlush
-  // instead of glFinish cost little (405 ms) and bounded nothing (a 1e5-spike star took 428 MB
-  // either way). So a window on a part whose walls pile up on screen (a star of 1e6 spikes) takes
-  // llvmpipe's memory for the bins; a headless picture does not (RenderOptions::drawChunk).
+  // Drawn in one call: waiting for the rasteriser between pieces slows every frame of a large part
+  // noticeably, and glFlush instead of glFinish bounds nothing. So a window on a part whose walls
+  // pile up on screen (a star of 1e6 spikes) takes llvmpipe's memory for the bins; a headless
+  // picture does not (RenderOptions::drawChunk).
   s.options.drawChunk = std::numeric_limits<std::size_t>::max();
   s.playback = request.playback;
   s.step = static_cast<float>(request.step);

@@ -12,17 +12,6 @@ namespace kerf::converter {
 
 /// One diagnostic code as docs/diagnostics.md gives it (the table is compiled in, so the rules a
 /// report names are the documented ones).
-struct CodeInfo {
-  std::string id;            ///< "K0302"
-  std::string name;          ///< "RadiusTooSmall"
-  Severity severity{};       ///< the usual severity (the first the table names)
-  std::string meaning;       ///< the table's text after the severity, as plain text
-  std::string severityText;  ///< the table's severity words, e.g. "error (warning for a rapid)"
-};
-
-/// Every documented code, in the table's order.
-const std::vector<CodeInfo>& diagnosticCodes();
-
 /// What a report says of one file.
 struct CheckedFile {
   std::string name;                    ///< as given on the command line

@@ -3,145 +3,49 @@
 //   part.nc:12:7: error: arc radius 4.000 is shorter than half the chord 5.000 [K0302]
 //       G02 X10. Y0 R4.
 //                   ^~~
-// Every diagnostic has a stable code (docs/diagnostics.md lists them), a severity and a span.
+// Every diagnostic has a stable code (diagnostic_table.h; docs/diagnostics.md lists them), a
+// severity and a span.
 #pragma once
 
+#include "kerf/converter/diagnostic_table.h"
 #include "kerf/converter/source.h"
 #include "kerf/geometry/vec.h"
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace kerf::converter {
 
 enum class Severity : std::uint8_t { Note, Warning, Error };
 
-/// Stable diagnostic codes. The number is the code users see: K0302 is Code::RadiusTooSmall.
+/// Stable diagnostic codes, from the one table (diagnostic_table.h). The number is the code users
+/// see: K0302 is Code::RadiusTooSmall.
 enum class Code : std::uint16_t {
-  // Lexical and syntax
-  UnterminatedComment = 101,
-  ExpectedNumber = 102,
-  MalformedNumber = 103,
-  ExponentNotation = 104,
-  NumberOutOfRange = 105,
-  UnexpectedCharacter = 106,
-  UnknownWord = 107,
-  RepeatedWord = 108,
-  TooManyMCodes = 111,
-  NestedComment = 109,
-  MalformedSetting = 110,
-  DecimalComma = 112,
-  MacroStatement = 113,
-  BlockTooLong = 114,
-  ThreeBSyntax = 120,
-  DxfSyntax = 121,
-  DxfEntity = 122,
-  DxfSkipped = 123,
-  DxfUnits = 124,
-  ContourOpen = 125,
-  WireCannotReach = 126,
-  InsideCornerRadius = 127,
-  WirePathSplits = 128,
-  WireOffsetRefused = 129,
-  CurveSyntax = 130,
-  CurveFit = 131,
-  // Words and modal state
-  UnknownGCode = 201,
-  UnknownMCode = 202,
-  ModalGroupConflict = 203,
-  PlaneNotSupported = 204,
-  WordIgnored = 205,
-  WordNotInDialect = 206,
-  RadiusAndCentre = 207,
-  DwellWithoutTime = 208,
-  SetPositionWithoutAxis = 209,
-  WireOffsetNotApplied = 210,
-  WireOffsetUnknown = 211,
-  NoMotionMode = 212,
-  WorkOffsetIgnored = 213,
-  BadFeed = 214,
-  // 4-axis taper: dialects, heights, pairing
-  DialectAmbiguous = 215,
-  DialectChosen = 216,
-  HeightsMissing = 217,
-  TaperAngleTooLarge = 218,
-  TaperOnArc = 219,
-  BlockCountMismatch = 220,
-  OffsetCollapses = 221,
-  CentreOnStraightMove = 222,
-  DwellWordsIgnored = 223,
-  TaperAngleTwice = 224,
-  ParameterMissing = 225,
-  UpperSideMissing = 226,
-  TwoFileNotPlain = 227,
-  NegativeDwell = 228,
-  OffsetOnArc = 229,
-  // Machine profiles (machine.h)
-  MachineDetected = 230,
-  MachineCode = 231,
-  CodeNotModelled = 232,
-  PositionUnknown = 233,
-  DirectionWord = 234,
-  UpperAxesNamedUZ = 235,
-  PolarNotSupported = 236,
-  RotaryJump = 237,
-  PolarAxisValue = 238,
-  // Arcs
-  ArcWithoutCentre = 301,
-  RadiusTooSmall = 302,
-  FullCircleWithRadius = 303,
-  ArcEndOffCircle = 304,
-  ZeroRadius = 305,
-  UpperArcOffCircle = 306,
-  CountContradicts = 307,
-  CountPastFullCircle = 308,
-  // Motion
-  ZeroLengthMove = 402,
-  // Program flow and subprograms
-  CallWithoutProgram = 501,
-  SubprogramNotFound = 502,
-  CallTooDeep = 503,
-  ReturnOutsideSubprogram = 504,
-  MissingProgramEnd = 505,
-  BadRepeatCount = 506,
-  ExecutionLimit = 507,
-  DuplicateLabel = 508,
-  // Geometry of the cut path
-  PathCrossesItself = 601,
-  PathTouchesItself = 602,
-  PathOverlapsItself = 603,
-  PathRetraces = 604,
-  PathOpen = 605,
-  NothingCut = 606,
-  RapidInsideCut = 607,
-  LoopClosesInsideMove = 608,
-  TaperSeam = 609,
-  // Geometry of the ruled surface (4-axis taper)
-  TaperTooSteep = 650,
-  SurfaceSelfIntersection = 651,
-  WireCrossing = 652,
-  PatchTwisted = 653,
-  SurfaceFold = 654,
-  ClosureMismatch = 655,
-  UvOutOfRange = 656,
-  SectionsCoarsened = 657,
-  // Numbers
-  IntegerUnitSuspect = 701,
-  // Emitters and options
-  CapacityTooSmall = 801,
-  ProfileError = 802,
-  StartBlockNotFound = 803,
-  TaperFlattened = 804,
-  PolarThroughCentre = 805,
-  NotInOutputFormat = 806,
-  OutputAdjusted = 807,
-  OutputUnsure = 808,
-  MachineProfileError = 810,
-  TooManyDiagnostics = 899,
+#define KERF_CODE_ENUMERATOR(number, name, ...) name = number,
+  KERF_DIAGNOSTIC_TABLE(KERF_CODE_ENUMERATOR)
+#undef KERF_CODE_ENUMERATOR
 };
+
+/// One row of the table (diagnostic_table.h).
+struct CodeInfo {
+  Code code{};
+  std::string_view name;          ///< "RadiusTooSmall"
+  Severity severity{};            ///< the usual severity (a SARIF rule's default level)
+  std::string_view severityText;  ///< as documented: "error", "note/warning", ...
+  std::string_view meaning;       ///< one line of Markdown
+};
+
+/// Every code, in ascending order.
+std::span<const CodeInfo> diagnosticCodes();
+/// The row of a code (every Code has one).
+const CodeInfo& codeInfo(Code code);
+/// docs/diagnostics.md as the table makes it: the prose around it and one row per code.
+std::string diagnosticsMarkdown();
 
 /// "K0302" for Code::RadiusTooSmall.
 std::string codeName(Code code);

@@ -49,27 +49,9 @@ struct InterpreterOptions {
   std::size_t maxCallDepth = 16;     ///< M98 nesting
   std::size_t maxExecutedBlocks = 20'000'000;
   std::size_t maxMoves = 10'000'000;
-  /// The interpreter may give back the parse tree's memory behind it as it runs (program.h,
-  /// releaseParsedBefore) when the program runs straight through: no subprogram call or return
-  /// and no macro call. The Program must then not be read again, except for its sizes; a second
-  /// run needs a new parse.
-  bool releaseParsed = false;
   /// Keep how each arc's centre was written (Toolpath::centreWords, 16 bytes a move): `kerf
   /// explain` shows it; a check does not need it.
   bool recordCentreWords = true;
-  /// Runs of at least this many simple blocks (plain, 2-axis, straight through) are interpreted
-  /// on every core, with the block loop's results (docs/interpreter.md); 0: never.
-  std::size_t parallelRun = 16384;
-  /// Blocks of such a run taken at a time (a window), each cut into stretches, four per worker.
-  /// A window's moves (96 bytes a block) fill the pages its blocks' parse (about 80) gave back
-  /// behind the window before it (releaseParsed): with windows of 131,072 blocks the first alone
-  /// needed 6 fresh 2 MiB pages; with 32,768 kerf check of a 6 MB program faults 2 fewer in all
-  /// and, when those pages come cold from the host, runs in 71 ms instead of 87 (medians of 8 after
-  /// 3 s pauses), as fast as before when they are not.
-  std::size_t parallelWindow = std::size_t{1} << 15;
-  /// Stretches a window is cut into; 0: four per worker (geometry::workerCount()), each taken by
-  /// the first worker free.
-  std::size_t parallelStretches = 0;
 };
 
 /// How the arcs given by I J close under each convention (for detecting the convention).
@@ -83,8 +65,6 @@ struct ArcCentreTally {
 struct Interpretation {
   Toolpath toolpath;
   ArcCentreTally arcs;
-  bool parseReleased = false;       ///< part of the parse tree went back (releaseParsed): parse again to rerun
-  std::size_t blocksInWindows = 0;  ///< blocks interpreted on every core (InterpreterOptions::parallelRun)
 };
 
 Interpretation interpretProgram(const Program& program, const InterpreterOptions& options, Diagnostics& diags);

@@ -33,7 +33,7 @@ namespace kerf::converter {
 /// A named text: a program, a machine profile.
 struct SourceText {
   std::string name;
-  TextBytes text;
+  std::string text;
 };
 
 /// What the program means. Every field is an override: nothing means "as the machine profile
@@ -58,8 +58,6 @@ struct ReadOptions {
   double curveTolerance = 0.001;               ///< drawing curves (SPLINE, ELLIPSE) as biarcs within this, mm
   std::size_t maxExecutedBlocks = 20'000'000;  ///< the interpreter's limits (InterpreterOptions)
   std::size_t maxMoves = 10'000'000;
-  std::size_t parallelRun = InterpreterOptions{}.parallelRun;  ///< InterpreterOptions (the fuzz target lowers them)
-  std::size_t parallelWindow = InterpreterOptions{}.parallelWindow;
 };
 
 /// The checks' settings; nothing: the machine profile's value.
@@ -73,11 +71,7 @@ struct CheckSettings {
 struct PipelineOptions {
   ReadOptions read;
   CheckSettings check;
-  /// When the caller needs the program's text again only to quote diagnostics (kerf check): how
-  /// to read it again. A program (ISO or 3B) then gives the text's memory back once parsed, and
-  /// a quote reads it again (SourceFile::releaseText). Empty: the text is kept.
-  SourceFile::TextSource rereadSource;
-  /// Set: Pipeline::summary at this sampling, made on another core while the checks run.
+  /// Set: Pipeline::summary at this sampling, made after the checks (it reads their measures).
   std::optional<geometry::Sampling> summarize;
   /// Keep how each arc's centre was written (Toolpath::centreWords; `kerf explain` shows it). The
   /// 3B and mill-turn readers always keep it.

@@ -6,7 +6,6 @@
 
 #include "kerf/converter/diagnostics.h"
 #include "kerf/converter/source.h"
-#include "kerf/geometry/memory.h"
 
 #include <cmath>
 #include <cstdint>
@@ -16,8 +15,8 @@
 
 namespace kerf::converter {
 
-/// std::lround without the library call (glibc's is a function of ~30 instructions, and the
-/// readers round every G and M word): the same value for every finite |v| < 2^62, else lround's.
+/// std::lround inline (the readers round every G and M word): the same value for every finite
+/// |v| < 2^62, else lround's.
 inline long roundHalfAway(double v) {
   if (!(v < 4.6e18 && v > -4.6e18)) return std::lround(v);
   long t = static_cast<long>(v);                // towards zero
@@ -43,10 +42,8 @@ struct Word {
   // One byte for both, so that a word stays 16 bytes (a program holds millions of them).
   bool hasPoint : 1 = false;               ///< the number was written with a decimal point
   WordValue kind : 3 = WordValue::Number;  ///< what the value is
-  /// The byte's other bits, unused. Named so that copying a word writes whole bytes: with the bits
-  /// unnamed GCC reads the byte first to keep them, and on a fresh page that read maps the zero
-  /// page, so the write after it faults a second time and makes the kernel flush the other cores'
-  /// TLBs (a third of a parse on two cores went there).
+  /// The byte's other bits, unused; named so that copying a word writes whole bytes (unnamed, GCC
+  /// reads the byte first to keep them).
   std::uint8_t unusedBits : 4 = 0;
   std::uint16_t length = 0;  ///< bytes of the whole word in the source (letter + value)
   std::uint32_t offset = 0;  ///< byte offset of the letter
@@ -122,30 +119,16 @@ struct ParseOptions {
   bool semicolonEndsBlock = false;
   /// The second plane's axes are named U Z: read Z as V (some hot-wire firmware).
   bool upperAxesUZ = false;
-  /// Lines of plain words only (Block::plain, written the usual way) are read by a short way
-  /// that gives the same words and block; false reads every line the general way (for tests).
-  bool plainLines = true;
 
   bool operator==(const ParseOptions&) const = default;
 };
 
-/// The words of a program: storage in whole 2 MiB pages once large, elements made without a value
-/// left unwritten (geometry::FillLaterAllocator), so that the parser can move pages into place.
-using WordList = std::vector<Word, geometry::FillLaterAllocator<Word>>;
-
-/// The blocks of a program (Program::blocks).
-using BlockList = std::vector<Block, geometry::FillLaterAllocator<Block>>;
-
 struct Program {
   const SourceFile* source = nullptr;
-  /// The words of the blocks, in order. Indices no block names may lie between the words of one
-  /// part of a long text and the next (the parser moves a part's pages into place instead of
-  /// copying them: parseProgram); they hold empty words.
-  WordList words;
-  /// Only blocks with at least one word, a macro statement or an error. The parts of a long text
-  /// write their blocks in place (parseProgram), so the list leaves elements made without a value
-  /// unwritten (geometry::FillLaterAllocator).
-  BlockList blocks;
+  /// The words of the blocks, in order.
+  std::vector<Word> words;
+  /// Only blocks with at least one word, a macro statement or an error.
+  std::vector<Block> blocks;
   std::vector<Setting> settings;
   std::vector<HeightWord> heights;
   bool anyDecimalPoint = false;          ///< some length word was written with a decimal point
@@ -174,12 +157,5 @@ struct Program {
 /// interpreter can skip it and go on finding more problems. A UTF-8 byte-order mark is skipped;
 /// lines end at LF, CR LF or a lone CR.
 Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOptions& options = {});
-
-/// Gives the memory of the blocks before `block` (the first excepted: it is written back) and of their words back to
-/// the system, whole pages at a time: a long program that runs straight through needs its parse
-/// tree only where it is. Those blocks and words read as zeros after, so the caller must never
-/// read them again; the vectors keep their sizes and may be destroyed as usual. Linux (madvise);
-/// elsewhere it does nothing.
-void releaseParsedBefore(const Program& program, std::size_t block);
 
 }  // namespace kerf::converter

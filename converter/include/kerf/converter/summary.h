@@ -120,8 +120,7 @@ Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling,
 
 /// summarize in parts: the moves' figures in stretches of a fixed length (pieces(), each made by
 /// makePiece, in any order and on any thread, different ones at once), then added in order
-/// (finish). The figures do not depend on which thread made which stretch. The pipeline makes the
-/// stretches beside the checks, on the core their sweep leaves idle (geometry::runBesideWhenIdle).
+/// (finish). The figures do not depend on which thread made which stretch.
 class SummaryMaker {
  public:
   SummaryMaker(const Toolpath& toolpath, const geometry::Sampling& sampling);

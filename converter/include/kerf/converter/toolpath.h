@@ -2,7 +2,6 @@
 #pragma once
 
 #include "kerf/converter/program.h"
-#include "kerf/geometry/memory.h"
 #include "kerf/geometry/ruled_surface.h"
 #include "kerf/geometry/segment.h"
 
@@ -60,13 +59,8 @@ struct Move {
 };
 static_assert(sizeof(Move) <= 96, "a move is stored for every block: keep it small");
 
-/// The moves of a toolpath. A move made without a value (vector::resize) is left for its maker to
-/// write (geometry::FillLaterAllocator), so the interpreter's windows (interpret/simple_runs.cpp)
-/// write each move once, on the core that computes it, instead of the main thread clearing a
-/// window's moves first (a sixth of the interpreter's time on a long program, with the other cores
-/// idle). A Move is an aggregate with a trivial destructor (an implicit-lifetime type), and the
-/// window assigns it whole before anything reads it. Its storage is in whole 2 MiB pages once large.
-using MoveList = std::vector<Move, geometry::FillLaterAllocator<Move>>;
+/// The moves of a toolpath, in the order the program runs them.
+using MoveList = std::vector<Move>;
 
 enum class LengthUnit : std::uint8_t { Millimetre, Inch };
 

@@ -41,9 +41,8 @@ struct ArcBuild {
 
 /// R form. Positive R takes the arc of at most 180 degrees, negative R the longer one.
 /// When |R| is short of half the chord by no more than tol.radius, the arc is the half circle.
-/// withAngles false: the arc's angles are left to Segment::completeAngles.
 ArcBuild arcFromRadius(const Vec2& start, const Vec2& end, double signedRadius, ArcDirection dir,
-                       const ArcTolerance& tol = {}, bool withAngles = true);
+                       const ArcTolerance& tol = {});
 
 /// The seed paper's formulas (1) and (2) for the centre of an R arc, written as printed, with its
 /// sign factor zn (G2: zn = +1 for R > 0, -1 for R < 0; G3: the opposite). Kept for teaching and
@@ -61,9 +60,15 @@ Vec2 seedCentreFromRadiusSigned(const Vec2& start, const Vec2& end, double signe
 /// The seed's sign factor zn for a direction and signed radius.
 int seedSignFactor(ArcDirection dir, double signedRadius);
 
+/// Whether an arc about `centre` from start to end is accepted (Ok, ZeroRadius or EndOffCircle),
+/// with the signed radius error |end - centre| - |start - centre| when asked: arcFromCentre's
+/// verdict without building the arc.
+ArcStatus centreVerdict(const Vec2& start, const Vec2& end, const Vec2& centre, const ArcTolerance& tol = {},
+                        double* radiusError = nullptr);
+
 /// Centre form: the centre is given (already resolved from I J by the caller's convention).
 /// end == start gives a full circle.
 ArcBuild arcFromCentre(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir,
-                       const ArcTolerance& tol = {}, bool withAngles = true);
+                       const ArcTolerance& tol = {});
 
 }  // namespace kerf::geometry

@@ -37,12 +37,6 @@ struct Segment {
   /// An arc from start to end about centre. When start and end coincide (within 1e-12 of the
   /// radius) the arc is a full circle. The sweep follows the direction.
   static Segment arc(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir);
-  /// The same arc without its angles worked out yet (start, end, centre, radius and direction
-  /// hold; startAngle is NaN): completeAngles() gives it arc()'s angles bit for bit. An
-  /// interpreter leaves a long program's angles (two arc tangents an arc) to a pass on every core.
-  static Segment arcWithoutAngles(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir);
-  [[nodiscard]] bool anglesPending() const { return kind == SegmentKind::Arc && std::isnan(startAngle); }
-  void completeAngles();
 
   [[nodiscard]] bool isArc() const { return kind == SegmentKind::Arc; }
   [[nodiscard]] ArcDirection direction() const {

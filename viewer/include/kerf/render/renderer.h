@@ -31,12 +31,10 @@ struct RenderOptions {
   std::uint32_t background = rgba(250, 250, 250);
   std::optional<std::size_t> selectedMove;  ///< drawn again, thick and yellow
   /// Primitives drawn between two waits for the rasteriser (glFinish). llvmpipe bins every
-  /// primitive into each 64x64 tile it covers and holds the bins until the scene is drawn: a star
-  /// of 1e6 long thin spikes, whose walls each cross many tiles, took 2.8 GB to render in one call,
-  /// 1.04 GB in pieces of 262,144 and 804 MB in pieces of 65,536 (its mesh alone 500 MB), the same
-  /// PNG byte for byte. On the benchmark part (1e6 small triangles) pieces of 65,536 cost a tenth of
-  /// kerf render's time and pieces of 262,144 nothing measurable (medians of 7 interleaved runs,
-  /// 0.79 and 0.72 s against 0.72 s). The window draws in one call (window.cpp).
+  /// primitive into each 64x64 tile it covers and holds the bins until the scene is drawn, so a part
+  /// of long thin walls that cross many tiles needs several times its mesh's memory in one call;
+  /// in pieces the same PNG comes out, byte for byte, with the bins bounded. Smaller pieces cost
+  /// time (docs/rendering.md). The window draws in one call (window.cpp).
   std::size_t drawChunk = std::size_t{1} << 18;
 };
 

@@ -2,19 +2,23 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 namespace kerf::converter {
 
 SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
-  lineStarts_.reserve(static_cast<std::size_t>(std::count(text_.begin(), text_.end(), '\n')) + 1);
+  const char* const data = text_.data();
+  const char* const end = data + text_.size();
+  lineStarts_.reserve(text_.size() / 16 + 1);  // a wire program's lines are longer: one growth at most
   lineStarts_.push_back(0);
-  const char* data = text_.data();
-  const std::size_t size = text_.size();
-  const bool anyReturn = std::memchr(data, '\r', size) != nullptr;
-  for (std::size_t i = 0; i < size; ++i) {
-    if (data[i] == '\n' || (anyReturn && data[i] == '\r' && (i + 1 == size || data[i + 1] != '\n')))
-      lineStarts_.push_back(static_cast<std::uint32_t>(i + 1));
+  if (std::memchr(data, '\r', text_.size()) == nullptr) {  // LF only: memchr finds each
+    for (const char* p = data; (p = static_cast<const char*>(std::memchr(p, '\n', end - p))) != nullptr;)
+      lineStarts_.push_back(static_cast<std::uint32_t>(++p - data));
+    return;
   }
+  for (const char* p = data; p < end; ++p)
+    if (*p == '\n' || (*p == '\r' && (p + 1 == end || p[1] != '\n')))
+      lineStarts_.push_back(static_cast<std::uint32_t>(p + 1 - data));
 }
 
 SourceLocation SourceFile::locate(std::uint32_t offset) const {

@@ -1,7 +1,6 @@
 // The interpreter's state and its phases (interpreter.h gives the order). One class, its member
 // functions defined by phase in the files of this folder:
 //   run.cpp            the block loop, limits, labels; the end of the program
-//   simple_runs.cpp    long runs of simple blocks, on every core
 //   read_block.cpp     phase 1: words -> BlockWords
 //   fill_in.cpp        phase 2: BlockWords + modal state -> BlockPlan
 //   check_block.cpp    phase 3: what cannot mean anything

@@ -11,6 +11,10 @@
 #   memory (GNU time), both reading, interpreting and (Kerf) checking the whole program; then Kerf
 #   once on the same kind of program ten times as long, for the memory's slope (bytes per input
 #   byte without the fixed amount).
+#   kerf check against rs274 -g on issue 39's adversarial program (kerf_bench --shape crossing
+#   --blocks 200000 --write: random lines and arcs, R of both signs and I J, G90/G91 switching,
+#   long moves crossing one another): the same pair on a program that is not regular, and whose
+#   self-intersections must be reported, not only found. KERF_COMPARE_CROSSING=0 skips it.
 #   kerf check of issue 13's 200 MB program (kerf_bench --shape spiral, 10 M modal X Y lines; no peer:
 #   its target is 2 GB of memory), once: wall time and peak memory. KERF_COMPARE_SPIRAL=N sets the
 #   lines (0 skips it).
@@ -21,6 +25,8 @@
 #   kerf check of a folder of 1,000 programs (the real corpus's programs and drawings copied in turn,
 #   KERF_COMPARE_REALWORLD points at it; KERF_COMPARE_BATCH=0 skips it) in one call against 1,000
 #   separate calls (issue 14): wall time.
+# KERF_COMPARE_BASELINE=PATH: another build's kerf program (an earlier commit) timed in the same
+# interleave on both check programs, for a change's before and after.
 # KERF_COMPARE_STARS (a list of sizes, " " for none), KERF_COMPARE_RENDER=0, KERF_COMPARE_READER=0,
 # KERF_COMPARE_SPIRAL=0 and KERF_COMPARE_BATCH=0 leave pairs out.
 set -euo pipefail
@@ -107,12 +113,15 @@ if [[ "${KERF_COMPARE_READER:-1}" != 0 ]] && command -v rs274 > /dev/null; then
   echo "# kerf check against rs274 -g, 6.1 MB program (200,000 blocks): wall s, peak MiB"
   "$build/tests/kerf_bench" --blocks 200000 --write "$work/program.ngc" > /dev/null
   bytes=$(stat -c %s "$work/program.ngc")
-  : > "$work/kt" && : > "$work/km" && : > "$work/rt" && : > "$work/rm"
+  baseline=${KERF_COMPARE_BASELINE:-}
+  : > "$work/kt" && : > "$work/km" && : > "$work/rt" && : > "$work/rm" && : > "$work/bt" && : > "$work/bm"
   for ((r = 0; r < runs; ++r)); do
     clock "$work/kt" "$build/viewer/kerf" check "$work/program.ngc"
     clock "$work/rt" rs274 -g "$work/program.ngc" /dev/null
+    if [[ -n "$baseline" ]]; then clock "$work/bt" "$baseline" check "$work/program.ngc"; fi
     peak "$work/km" "$build/viewer/kerf" check "$work/program.ngc"
     peak "$work/rm" rs274 -g "$work/program.ngc" /dev/null
+    if [[ -n "$baseline" ]]; then peak "$work/bm" "$baseline" check "$work/program.ngc"; fi
   done
   read -r kmin kmed kmax < <(stats 4 < "$work/kt")
   read -r rmin rmed rmax < <(stats 4 < "$work/rt")
@@ -122,6 +131,31 @@ if [[ "${KERF_COMPARE_READER:-1}" != 0 ]] && command -v rs274 > /dev/null; then
     "$bytes" "$kmin" "$kmed" "$kmax" "$(awk -v k="$kmem" 'BEGIN {print k / 1024}')" "$rmin" "$rmed" "$rmax" \
     "$(awk -v k="$rmem" 'BEGIN {print k / 1024}')" "$(awk -v a="$rmed" -v b="$kmed" 'BEGIN {print a / b}')" \
     "$(awk -v k="$kmem" -v b="$bytes" 'BEGIN {print k * 1024 / b}')"
+  if [[ -n "$baseline" ]]; then
+    read -r bmin bmed bmax < <(stats 4 < "$work/bt")
+    read -r _ bmem _ < <(stats < "$work/bm")
+    printf "  baseline %s: %s / %s / %s s, %.0f MiB   kerf/baseline %.2f\n" "$baseline" "$bmin" "$bmed" "$bmax" \
+      "$(awk -v k="$bmem" 'BEGIN {print k / 1024}')" "$(awk -v a="$kmed" -v b="$bmed" 'BEGIN {print a / b}')"
+  fi
+  if [[ "${KERF_COMPARE_CROSSING:-1}" != 0 ]]; then
+    "$build/tests/kerf_bench" --shape crossing --blocks 200000 --write "$work/crossing.ngc" > /dev/null
+    cbytes=$(stat -c %s "$work/crossing.ngc")
+    : > "$work/ct" && : > "$work/crt" && : > "$work/cbt"
+    for ((r = 0; r < runs; ++r)); do
+      clock "$work/ct" "$build/viewer/kerf" check "$work/crossing.ngc"
+      clock "$work/crt" rs274 -g "$work/crossing.ngc" /dev/null
+      if [[ -n "$baseline" ]]; then clock "$work/cbt" "$baseline" check "$work/crossing.ngc"; fi
+    done
+    read -r kmin kmed kmax < <(stats 4 < "$work/ct")
+    read -r rmin rmed rmax < <(stats 4 < "$work/crt")
+    printf "check %d bytes, crossing itself: kerf %s / %s / %s s   rs274 -g %s / %s / %s s   rs274/kerf %.1f\n" \
+      "$cbytes" "$kmin" "$kmed" "$kmax" "$rmin" "$rmed" "$rmax" "$(awk -v a="$rmed" -v b="$kmed" 'BEGIN {print a / b}')"
+    if [[ -n "$baseline" ]]; then
+      read -r bmin bmed bmax < <(stats 4 < "$work/cbt")
+      printf "  baseline: %s / %s / %s s   kerf/baseline %.2f\n" "$bmin" "$bmed" "$bmax" \
+        "$(awk -v a="$kmed" -v b="$bmed" 'BEGIN {print a / b}')"
+    fi
+  fi
   # "Bytes per input byte plus a fixed amount": the slope between this program and one of the
   # same kind ten times as long, so no fixed cost (libraries, tables) is counted in it.
   "$build/tests/kerf_bench" --blocks 2000000 --write "$work/program10.ngc" > /dev/null

@@ -115,13 +115,14 @@ std::string sarifLog(std::span<const CheckedFile> files, const std::string& vers
   for (const CodeInfo& c : diagnosticCodes()) {
     const std::string id = codeName(c.code), name(c.name), words(c.severityText), meaning = plain(c.meaning);
     ruleIndex.emplace(id, rules.size());
-    rules.push_back({{"id", id},
-                     {"name", name},
-                     {"shortDescription", {{"text", meaning}}},
-                     {"fullDescription", {{"text", words + ": " + meaning}}},
-                     {"help", {{"text", id + " (" + name + "), " + words + ": " + meaning +
-                                            ". docs/diagnostics.md lists every code."}}},
-                     {"defaultConfiguration", {{"level", severityName(c.severity)}}}});
+    rules.push_back(
+        {{"id", id},
+         {"name", name},
+         {"shortDescription", {{"text", meaning}}},
+         {"fullDescription", {{"text", words + ": " + meaning}}},
+         {"help",
+          {{"text", id + " (" + name + "), " + words + ": " + meaning + ". docs/diagnostics.md lists every code."}}},
+         {"defaultConfiguration", {{"level", severityName(c.severity)}}}});
   }
   json results = json::array();
   json artifacts = json::array();

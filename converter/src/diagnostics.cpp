@@ -14,8 +14,7 @@ std::string codeName(Code code) {
 namespace {
 
 constexpr CodeInfo kCodes[] = {
-#define KERF_CODE_INFO(number, name, severity, words, meaning) \
-  {Code::name, #name, Severity::severity, words, meaning},
+#define KERF_CODE_INFO(number, name, severity, words, meaning) {Code::name, #name, Severity::severity, words, meaning},
     KERF_DIAGNOSTIC_TABLE(KERF_CODE_INFO)
 #undef KERF_CODE_INFO
 };

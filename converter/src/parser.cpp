@@ -90,8 +90,7 @@ NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit)
   std::size_t digitsEnd = i;
   if (s.hasPoint && text[digitsEnd - 1] == '.') --digitsEnd;
   double v = 0.0;
-  if (digitsEnd > first)
-    std::from_chars(text.data() + first, text.data() + digitsEnd, v, std::chars_format::fixed);
+  if (digitsEnd > first) std::from_chars(text.data() + first, text.data() + digitsEnd, v, std::chars_format::fixed);
   s.value = negative ? -v : v;
   return s;
 }
@@ -170,7 +169,6 @@ struct MacroTally {
   std::size_t count = 0;
   SourceSpan first;
   std::uint32_t firstLine = 0, lastLine = 0;
-
 };
 
 class LineParser {
@@ -187,7 +185,6 @@ class LineParser {
 
   /// The macro B statements of the lines parsed.
   [[nodiscard]] const MacroTally& macros() const { return macros_; }
-
 
  private:
   /// Parses one block from i; returns where the next block on this line starts (or end).

@@ -232,17 +232,18 @@ int main(int argc, char** argv) {
   if (!fs::is_directory(kRealworld)) {
     // The corpus lives beside the project (../shared/realworld), not in it. Under CI (CI set and
     // not "false" or "0") its absence is a failure; elsewhere the real programs are skipped.
-    testing::RegisterTest("realworld_test", "corpus_present", nullptr, nullptr, __FILE__, __LINE__, []() -> testing::Test* {
-      struct Missing : testing::Test {
-        void TestBody() override {
-          const char* ci = std::getenv("CI");
-          if (ci && *ci && std::string_view(ci) != "false" && std::string_view(ci) != "0")
-            FAIL() << kRealworld << " is not there: under CI the real programs must be checked";
-          GTEST_SKIP() << kRealworld << " is not there: the real programs are not checked";
-        }
-      };
-      return new Missing;
-    });
+    testing::RegisterTest("realworld_test", "corpus_present", nullptr, nullptr, __FILE__, __LINE__,
+                          []() -> testing::Test* {
+                            struct Missing : testing::Test {
+                              void TestBody() override {
+                                const char* ci = std::getenv("CI");
+                                if (ci && *ci && std::string_view(ci) != "false" && std::string_view(ci) != "0")
+                                  FAIL() << kRealworld << " is not there: under CI the real programs must be checked";
+                                GTEST_SKIP() << kRealworld << " is not there: the real programs are not checked";
+                              }
+                            };
+                            return new Missing;
+                          });
     return RUN_ALL_TESTS();
   }
   const std::vector<Expectation> expectations = readExpectations();

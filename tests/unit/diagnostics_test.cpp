@@ -54,7 +54,8 @@ TEST(diagnostics_test, the_documented_table_is_made_from_the_code_table) {
   doc << in.rdbuf();
   EXPECT_EQ(doc.str(), made) << path << " differs from the table: KERF_UPDATE_GOLDEN=1 rewrites it";
   for (const CodeInfo& c : diagnosticCodes())
-    EXPECT_NE(doc.str().find("| " + codeName(c.code) + " | " + std::string(c.name) + " |"), std::string::npos) << c.name;
+    EXPECT_NE(doc.str().find("| " + codeName(c.code) + " | " + std::string(c.name) + " |"), std::string::npos)
+        << c.name;
 }
 
 }  // namespace

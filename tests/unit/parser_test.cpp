@@ -484,4 +484,3 @@ TEST(parser_test, the_blocks_that_are_not_plain_are_listed_in_order) {
   EXPECT_LT(expected.size(), p.blocks.size() - 10000);
   EXPECT_EQ(p.notPlain, expected);
 }
-

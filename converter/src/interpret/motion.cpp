@@ -50,8 +50,7 @@ void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2&
   ++tally_.arcs;
   const Vec2 centres[3] = {start + ij, start - ij, ij - shift};
   for (int k = 0; k < 3; ++k)
-    if (geometry::centreVerdict(start, end, centres[k], tolerance_) == geometry::ArcStatus::Ok)
-      ++tally_.closes[k];
+    if (geometry::centreVerdict(start, end, centres[k], tolerance_) == geometry::ArcStatus::Ok) ++tally_.closes[k];
   if (!closedAsUsed && tally_.firstFailLine == 0) tally_.firstFailLine = line;
 }
 

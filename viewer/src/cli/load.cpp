@@ -84,9 +84,8 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
   const bool curve = options.input.curve && file == kCurveInput;
   if (needs.summary) po.summarize = options.sampling.sampling();
   po.centreWords = needs.centreWords;
-  std::optional<std::string> text =
-      curve ? std::optional<std::string>(curveText(options.input))
-            : readTextFile(file, converter::SourceFile::kMaxSize, failure);
+  std::optional<std::string> text = curve ? std::optional<std::string>(curveText(options.input))
+                                          : readTextFile(file, converter::SourceFile::kMaxSize, failure);
   if (!text) return std::nullopt;
   std::optional<converter::SourceText> upper;
   if (options.input.upper) {

@@ -13,6 +13,8 @@
 //   meaning  one line of Markdown: what it says and when (backticks for code, \| for a bar).
 #pragma once
 
+// One row a line, however long, so that a row reads (and diffs) whole.
+// clang-format off
 #define KERF_DIAGNOSTIC_TABLE(X) \
   /* Lexical and syntax; drawings and curves */ \
   X(101, UnterminatedComment, Error, "error", "a `(` comment not closed on its line") \
@@ -134,3 +136,4 @@
   X(808, OutputUnsure, Note, "note", "the 4B layout is unsure") \
   X(810, MachineProfileError, Error, "error", "a wrong line in a machine profile file, or an unknown profile name") \
   X(899, TooManyDiagnostics, Warning, "warning", "more self-intersections than reported")
+// clang-format on

@@ -217,62 +217,45 @@ void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::opti
   runChecks(out, options);
 }
 
-}  // namespace
-
-Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::optional<SourceText> upper) {
-  Pipeline out;
-  out.source = std::make_unique<SourceFile>(std::move(input.name), std::move(input.text));
-  const ReadOptions& ro = options.read;
-
-  // 1. The machine profile: a file, a name, or (after parsing) the evidence.
-  const MachineProfile* given = nullptr;
+/// The profile the options name: a profile file's text (read here, its errors into out.diags) or a
+/// built-in name. profile is null when none is named: the program's evidence then picks one.
+/// failed is set when the file cannot be read or the name is not built in (the error is in
+/// out.diags).
+struct GivenMachine {
+  const MachineProfile* profile = nullptr;
+  bool failed = false;
+};
+GivenMachine givenMachine(Pipeline& out, const ReadOptions& ro) {
   if (ro.machineFile) {
     out.machineSource = std::make_unique<SourceFile>(ro.machineFile->name, ro.machineFile->text);
     std::optional<MachineProfile> parsed = parseMachineProfile(*out.machineSource, out.diags);
-    if (!parsed) return out;
+    if (!parsed) return {nullptr, true};
     out.machine = std::move(*parsed);
-    given = &out.machine;
-  } else if (ro.machine) {
-    given = findBuiltinMachine(*ro.machine);
-    if (!given) {
+    return {&out.machine, false};
+  }
+  if (ro.machine) {
+    const MachineProfile* builtin = findBuiltinMachine(*ro.machine);
+    if (!builtin) {
       out.diags.error(Code::MachineProfileError, nullptr, SourceSpan::wholeFile(),
                       "there is no built-in machine profile named '" + *ro.machine + "'",
                       "kerf machines lists them; --machine also takes a profile file");
-      return out;
+      return {nullptr, true};
     }
-    out.machine = *given;
+    out.machine = *builtin;
+    return {builtin, false};
   }
-  out.read = true;
-  out.format = ro.format ? *ro.format : detectFormat(out.source->text()).format;
-  if (out.format == InputFormat::Dxf || out.format == InputFormat::Curve) {
-    if (!given) out.machine = *findBuiltinMachine("generic");
-    readDrawingPipeline(out, options);
-    return out;
-  }
-  if (out.format == InputFormat::ThreeB) {
-    if (!given) out.machine = *findBuiltinMachine("generic");
-    readThreeBPipeline(out, options, std::move(upper));
-    return out;
-  }
+  return {};
+}
 
-  MachineReading reading = readForMachine(*out.source, given, ro.upperAxesUZ);
-  // The parse tree lives only while the program is interpreted: nothing after needs it (the
-  // source and the toolpath say everything), and the checks then run without its memory.
-  Program program = std::move(reading.program);
-  const MachineDetection& detection = reading.detection;
-  if (!given) {
-    out.machine = *reading.machine;
-    out.machineDetected = true;
-  }
-  const MachineProfile& machine = out.machine;
-  const KnownCode* cCode = machine.find("C");
-  const bool cIsRotary = !cCode || cCode->effect != CodeEffect::Harmless;  // Sodick: C is a condition
-  const bool millTurn = isMillTurnProgram(program) || (cIsRotary && hasRotaryMoves(program));
-
-  // 2. The conventions: the options, the profile, or the evidence.
+/// The interpreter's conventions from the options, else the profile, else the program's own
+/// evidence; an integer unit taken from the program says why in evidence. An upper program of a
+/// two-file taper pair (hasUpper) is read in the plain dialect.
+InterpreterOptions interpreterOptions(const MachineProfile& machine, const PipelineOptions& options,
+                                      const Program& program, bool hasUpper, std::vector<std::string>& evidence) {
+  const ReadOptions& ro = options.read;
   InterpreterOptions io;
   io.machine = &machine;
-  io.dialect = ro.dialect;
+  io.dialect = hasUpper ? Dialect::Plain : ro.dialect;
   io.lowerZ = ro.lowerZ;
   io.upperZ = ro.upperZ;
   io.thickness = ro.thickness;
@@ -281,7 +264,6 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   io.maxExecutedBlocks = ro.maxExecutedBlocks;
   io.maxMoves = ro.maxMoves;
   io.recordCentreWords = options.centreWords;
-  std::vector<std::string> evidence;
   if (ro.integerUnit) {
     io.integerUnit = *ro.integerUnit;
   } else if (machine.integerUnit) {
@@ -290,70 +272,130 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     io.integerUnit = IntegerUnit::Micrometre;
     evidence.push_back(*e);
   }
-  const bool centreFixed = ro.arcCentre || machine.arcCentre;
   io.arcCentre = ro.arcCentre ? *ro.arcCentre : machine.arcCentre.value_or(ArcCentreMode::Incremental);
-  if (upper) io.dialect = Dialect::Plain;
+  return io;
+}
 
-  Diagnostics interpretDiags(100000);
+/// The program interpreted into a toolpath, its diagnostics into diags. A mill-turn face program
+/// goes through its own reader (read.h, docs/polar.md). Otherwise, unless the options or the
+/// profile fix the I J convention, the program is read again with the other one when its arcs'
+/// centres say so (io.arcCentre is then that one); evidence says which convention and why.
+Interpretation interpretProgramText(const Program& program, const MachineProfile& machine, const ReadOptions& ro,
+                                    InterpreterOptions& io, Diagnostics& diags, std::vector<std::string>& evidence) {
+  const KnownCode* cCode = machine.find("C");
+  const bool cIsRotary = !cCode || cCode->effect != CodeEffect::Harmless;  // Sodick: C is a condition
+  const bool millTurn = isMillTurnProgram(program) || (cIsRotary && hasRotaryMoves(program));
   Interpretation in;
-  if (millTurn) {  // a mill-turn face program: its own reader (read.h, docs/polar.md)
+  if (millTurn) {
     MillTurnOptions mt;
     mt.machine = machine.name;
     mt.polarXDiameter = ro.polarXDiameter.value_or(!machine.polarXRadius);
     mt.polarCDiameter = machine.polarCDiameter;
     mt.polarFrameTable = ro.polarFrameTable.value_or(machine.polarFrameTable);
-    in.toolpath = readMillTurn(program, mt, interpretDiags);
-  } else {
-    in = interpretProgram(program, io, interpretDiags);
+    in.toolpath = readMillTurn(program, mt, diags);
+    return in;
   }
-  if (!centreFixed && !millTurn) {
+  in = interpretProgram(program, io, diags);
+  const bool centreFixed = ro.arcCentre || machine.arcCentre;
+  if (!centreFixed) {
     if (const std::optional<ArcCentreMode> better = betterCentre(in.arcs, io.arcCentre)) {
       io.arcCentre = *better;
-      interpretDiags = Diagnostics(100000);
-      in = interpretProgram(program, io, interpretDiags);
+      diags = Diagnostics(100000);
+      in = interpretProgram(program, io, diags);
       evidence.push_back(centreEvidence(in.arcs, *better));
     }
   } else if (machine.arcCentre && !ro.arcCentre && in.arcs.arcs > 0 &&
              *machine.arcCentre != ArcCentreMode::Incremental) {
     evidence.push_back(centreEvidence(in.arcs, *machine.arcCentre));
   }
+  return in;
+}
+
+/// The note that says for which machine, and with which conventions, the program was read, and
+/// why: the detection's first evidence and what the conventions were taken from. None when the
+/// generic profile was taken with nothing to say.
+void noteHowRead(Pipeline& out, const MachineDetection& detection, const std::vector<std::string>& evidence) {
+  const MachineProfile& machine = out.machine;
+  const bool namedMachine = out.machineDetected && machine.name != "generic";
+  if (!namedMachine && evidence.empty()) return;
+  std::string message;
+  SourceSpan span = SourceSpan::wholeFile();
+  if (namedMachine) {
+    message = "read for the " + machine.name + " machine, from ";
+    for (std::size_t k = 0; k < detection.evidence.size() && k < 4; ++k)
+      message += std::string(k ? ", " : "") + detection.evidence[k].what;
+    if (detection.evidence.size() > 4) message += " and " + std::to_string(detection.evidence.size() - 4) + " more";
+    span = detection.evidence.front().span;
+  } else {
+    message = "read with the " + machine.name + " profile";
+  }
+  for (const std::string& e : evidence) message += "; " + e;
+  out.diags.note(
+      Code::MachineDetected, out.source.get(), span, message,
+      "override with --machine NAME or FILE, --integer-unit, --arc-centre (kerf machines lists the profiles)");
+}
+
+/// The upper program of a two-file taper pair, parsed with the lower one's rules and interpreted
+/// with its conventions, paired move by move with the lower toolpath (pairing.h).
+void pairUpperProgram(Pipeline& out, SourceText upper, const InterpreterOptions& io, const ParseOptions& parse) {
+  out.upperSource = std::make_unique<SourceFile>(std::move(upper.name), std::move(upper.text));
+  Diagnostics upperDiags(100000);
+  const Program upperProgram = parseProgram(*out.upperSource, upperDiags, parse);
+  const Toolpath upperPath = interpret(upperProgram, io, upperDiags);
+  out.diags.append(std::move(upperDiags));
+  pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
+}
+
+}  // namespace
+
+Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::optional<SourceText> upper) {
+  Pipeline out;
+  out.source = std::make_unique<SourceFile>(std::move(input.name), std::move(input.text));
+  const ReadOptions& ro = options.read;
+
+  // 1. The machine profile the options name, if any; a drawing or 3B code has its own route.
+  const GivenMachine given = givenMachine(out, ro);
+  if (given.failed) return out;
+  out.read = true;
+  out.format = ro.format ? *ro.format : detectFormat(out.source->text()).format;
+  if (out.format == InputFormat::Dxf || out.format == InputFormat::Curve) {
+    if (!given.profile) out.machine = *findBuiltinMachine("generic");
+    readDrawingPipeline(out, options);
+    return out;
+  }
+  if (out.format == InputFormat::ThreeB) {
+    if (!given.profile) out.machine = *findBuiltinMachine("generic");
+    readThreeBPipeline(out, options, std::move(upper));
+    return out;
+  }
+
+  // 2. The program parsed with its profile's rules (detected from the program when none is named).
+  // The parse tree lives only while the program is interpreted: nothing after needs it (the source
+  // and the toolpath say everything), and the checks then run without its memory.
+  MachineReading reading = readForMachine(*out.source, given.profile, ro.upperAxesUZ);
+  Program program = std::move(reading.program);
+  if (!given.profile) {
+    out.machine = *reading.machine;
+    out.machineDetected = true;
+  }
+
+  // 3. The conventions, then the program interpreted with them.
+  std::vector<std::string> evidence;
+  InterpreterOptions io = interpreterOptions(out.machine, options, program, upper.has_value(), evidence);
+  Diagnostics interpretDiags(100000);
+  Interpretation in = interpretProgramText(program, out.machine, ro, io, interpretDiags, evidence);
   out.toolpath = std::move(in.toolpath);
   out.diags.append(std::move(reading.diags));
-
-  // The note that says how the program was read, and why.
-  const bool namedMachine = out.machineDetected && machine.name != "generic";
-  if (namedMachine || !evidence.empty()) {
-    std::string message;
-    SourceSpan span = SourceSpan::wholeFile();
-    if (namedMachine) {
-      message = "read for the " + machine.name + " machine, from ";
-      for (std::size_t k = 0; k < detection.evidence.size() && k < 4; ++k)
-        message += std::string(k ? ", " : "") + detection.evidence[k].what;
-      if (detection.evidence.size() > 4) message += " and " + std::to_string(detection.evidence.size() - 4) + " more";
-      span = detection.evidence.front().span;
-    } else {
-      message = "read with the " + machine.name + " profile";
-    }
-    for (const std::string& e : evidence) message += "; " + e;
-    out.diags.note(
-        Code::MachineDetected, out.source.get(), span, message,
-        "override with --machine NAME or FILE, --integer-unit, --arc-centre (kerf machines lists the profiles)");
-  }
+  noteHowRead(out, reading.detection, evidence);
   out.diags.append(std::move(interpretDiags));
-
-  if (upper) {
-    out.upperSource = std::make_unique<SourceFile>(std::move(upper->name), std::move(upper->text));
-    Diagnostics upperDiags(100000);
-    const Program upperProgram = parseProgram(*out.upperSource, upperDiags, reading.parse);
-    const Toolpath upperPath = interpret(upperProgram, io, upperDiags);
-    out.diags.append(std::move(upperDiags));
-    pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
-  }
+  if (upper) pairUpperProgram(out, std::move(*upper), io, reading.parse);
 
   if (program.blocks.empty() && !out.diags.hasErrors())  // with errors, those say why nothing was read
     out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},  // where a program would start
                     "the file holds no program (no block of words): nothing to cut");
   program = Program{};  // the checks need the toolpath alone
+
+  // 4. The checks and the summary.
   runChecks(out, options);
   return out;
 }

@@ -237,9 +237,24 @@ void checkContour(const Contour& c, const geometry::SelfIntersectionResult& resu
   }
 }
 
-/// The surface checks of a taper program whose heights are known.
-void checkSurface(const Toolpath& toolpath, const CutView& path, bool closed, const SourceFile* src,
-                  const CheckOptions& options, Diagnostics& diags, const SurfaceMeasures& m, MovePairs& seen) {
+/// What the surface checks of one taper program (heights known) read, and where they report.
+struct SurfaceCheck {
+  const Toolpath& toolpath;
+  const CutView& path;
+  bool closed = false;
+  const SourceFile* src = nullptr;
+  const CheckOptions& options;
+  Diagnostics& diags;
+};
+
+/// Each patch on its own: the wire's slope against --max-taper, the guides' distance against the
+/// U/V range, and an upper side that runs against the lower one (a twist or a crossing).
+void checkPatches(const SurfaceCheck& c, const SurfaceMeasures& m) {
+  const Toolpath& toolpath = c.toolpath;
+  const CutView& path = c.path;
+  const CheckOptions& options = c.options;
+  const SourceFile* src = c.src;
+  Diagnostics& diags = c.diags;
   const auto& moves = toolpath.moves;
   const geometry::Planes& planes = toolpath.heights.planes;
   const double limit = options.maxTaperDegrees / kDegrees;
@@ -279,7 +294,18 @@ void checkSurface(const Toolpath& toolpath, const CutView& path, bool closed, co
                                deg(tw.maxAngle) + ", so the wire turns over and the surface twists through itself"));
     }
   }
-  // Folds at the joints between neighbouring patches: exact.
+}
+
+/// Folds at the joints between neighbouring patches, exact; returns the pairs of moves reported.
+MovePairs checkJoints(const SurfaceCheck& c) {
+  const Toolpath& toolpath = c.toolpath;
+  const CutView& path = c.path;
+  const CheckOptions& options = c.options;
+  const bool closed = c.closed;
+  const auto& moves = toolpath.moves;
+  const geometry::Planes& planes = toolpath.heights.planes;
+  const SourceFile* src = c.src;
+  Diagnostics& diags = c.diags;
   MovePairs reported;
   const std::size_t count = path.moveIndex.size();
   for (std::size_t k = 0; k + 1 < count || (closed && k + 1 == count && count > 2); ++k) {
@@ -303,102 +329,134 @@ void checkSurface(const Toolpath& toolpath, const CutView& path, bool closed, co
                              ": the wire turns round by 180° there (after line " + std::to_string(moves[i].line) +
                              ")"));
   }
-  // Horizontal sections between the planes, each tested exactly: made and swept a few at a time
-  // on every core (a batch of one per worker in memory at once), reported in order of height.
+  return reported;
+}
+
+/// One horizontal section of the surface, with its contacts.
+struct Section {
+  Contour section;  // views of segments and moveIndex
+  std::vector<geometry::Segment> segments;
+  std::vector<std::uint32_t> moveIndex;
+  geometry::SelfIntersectionResult r;
+  std::size_t wanted = 0, share = geometry::kMaxSectionPieces;
+};
+
+/// The section at level / levels of the height, made within the section tolerance (coarser past the
+/// section budget: share is then each twisted patch's pieces) and swept for contacts.
+void makeSection(const SurfaceCheck& c, int level, int levels, Section& out) {
+  const Toolpath& toolpath = c.toolpath;
+  const CutView& path = c.path;
+  const CheckOptions& options = c.options;
+  const auto& moves = toolpath.moves;
+  const geometry::Planes& planes = toolpath.heights.planes;
+  const double s = static_cast<double>(level) / levels;
+  Contour& section = out.section;
+  section.z = planes.lower + s * planes.height();
+  // Count before making: huge twisted arcs ask for thousands of pieces a patch. Past the budget,
+  // each polyline patch gets its share of it (at least 2 pieces), and a note says so once.
+  std::size_t polylines = 0, exact = 0;  // patches made as polylines; single segments
+  for (const std::size_t i : path.moveIndex) {
+    const std::size_t n = geometry::sectionPieces(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance);
+    out.wanted += n;
+    (n == 1 ? exact : polylines) += 1;
+  }
+  if (out.wanted > options.sectionBudget && polylines > 0) {
+    const std::size_t room = options.sectionBudget > exact ? options.sectionBudget - exact : 0;
+    out.share = std::max<std::size_t>(2, room / polylines);
+  }
+  for (std::size_t k = 0; k < path.moveIndex.size(); ++k) {
+    const std::size_t i = path.moveIndex[k];
+    const std::size_t before = out.segments.size();
+    geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, out.segments, out.share);
+    out.moveIndex.insert(out.moveIndex.end(), out.segments.size() - before, static_cast<std::uint32_t>(k));
+  }
+  section.segments = out.segments;
+  section.moveIndex = out.moveIndex;
+  geometry::SelfIntersectionOptions so;
+  so.tolerance = options.tolerance;
+  so.closed = c.closed;
+  so.maxContacts = options.maxContacts;
+  out.r = geometry::findSelfIntersections(section.segments, so);
+}
+
+/// A section's contacts as findings, in order, but for the pairs of moves seen or reported already
+/// (reported grows) and retraces; the first coarsened section says so once (coarsened).
+void reportSection(const SurfaceCheck& c, const Section& level, const MovePairs& seen, MovePairs& reported,
+                   bool& coarsened) {
+  const Toolpath& toolpath = c.toolpath;
+  const CutView& path = c.path;
+  const CheckOptions& options = c.options;
+  const bool closed = c.closed;
+  const auto& moves = toolpath.moves;
+  const geometry::Planes& planes = toolpath.heights.planes;
+  const SourceFile* src = c.src;
+  Diagnostics& diags = c.diags;
+  const Contour& section = level.section;
+  const geometry::SelfIntersectionResult& r = level.r;
+  if (level.share != geometry::kMaxSectionPieces && !coarsened) {
+    coarsened = true;
+    const std::size_t head = path.moveIndex.front();
+    diags.report(finding(Severity::Note, Code::SectionsCoarsened, src, moves[head], head,
+                         at3(moves[head].lower.start, planes.lower),
+                         "the sections of the surface would need " + std::to_string(level.wanted) +
+                             " pieces, more than the budget of " + std::to_string(options.sectionBudget) +
+                             ": the twisted patches are tested as polylines of at most " + std::to_string(level.share) +
+                             " pieces, coarser than the section tolerance, so a wire crossing closer than their "
+                             "chord error may be missed"));
+  }
+  const std::size_t n = path.moveIndex.size();
+  for (const geometry::Contact& x : r.contacts) {
+    const std::size_t ka = section.moveIndex[x.first], kb = section.moveIndex[x.second];
+    const std::size_t mi = path.moveIndex[ka], mj = path.moveIndex[kb];
+    if (seen.count({mi, mj}) || reported.count({mi, mj})) continue;
+    if (x.kind == geometry::ContactKind::Overlap &&
+        isRetrace(section.segments[x.first], section.segments[x.second], x, options.tolerance))
+      continue;
+    reported.insert({mi, mj});
+    const bool neighbours = kb == ka + 1 || (closed && ka == 0 && kb + 1 == n);
+    if (ka != kb && !neighbours && atSeam(toolpath, mi, mj, options.tolerance)) {
+      seamNote(toolpath, src, mi, mj, at3(x.point, section.z), " at z " + formatFixed(section.z, 3), diags);
+      continue;
+    }
+    const geometry::Vec3 p = at3(x.point, section.z);
+    const std::string where = " at z " + formatFixed(section.z, 3) + ", " + at(x.point);
+    if (ka == kb) {
+      diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
+                           "the wire crosses its own path inside this move" + where +
+                               ": two positions of the wire meet between the planes"));
+    } else if (neighbours && x.kind == geometry::ContactKind::Overlap) {
+      diags.report(finding(
+          Severity::Error, Code::SurfaceFold, src, moves[mj], mj, p,
+          "the surface folds back over the previous move (line " + std::to_string(moves[mi].line) + ")" + where));
+    } else if (neighbours) {
+      diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
+                           "the wire of this move crosses the wire of the previous move (line " +
+                               std::to_string(moves[mi].line) + ")" + where));
+    } else {
+      diags.report(finding(Severity::Error, Code::SurfaceSelfIntersection, src, moves[mj], mj, p,
+                           "the surface the wire sweeps meets itself" + where + ": this move meets the move on line " +
+                               std::to_string(moves[mi].line)));
+    }
+  }
+}
+
+/// The surface checks of a taper program whose heights are known: each patch, the joints, then
+/// horizontal sections between the planes, each tested exactly: made and swept a few at a time on
+/// every core (a batch of one per worker in memory at once), reported in order of height.
+void checkSurface(const Toolpath& toolpath, const CutView& path, bool closed, const SourceFile* src,
+                  const CheckOptions& options, Diagnostics& diags, const SurfaceMeasures& m, MovePairs& seen) {
+  const SurfaceCheck c{toolpath, path, closed, src, options, diags};
+  checkPatches(c, m);
+  MovePairs reported = checkJoints(c);
   const int levels = std::max(2, options.surfaceLevels);
-  struct Level {
-    Contour section;  // views of segments and moveIndex
-    std::vector<geometry::Segment> segments;
-    std::vector<std::uint32_t> moveIndex;
-    geometry::SelfIntersectionResult r;
-    std::size_t wanted = 0, share = geometry::kMaxSectionPieces;
-  };
-  auto makeLevel = [&](int level, Level& out) {
-    const double s = static_cast<double>(level) / levels;
-    Contour& section = out.section;
-    section.z = planes.lower + s * planes.height();
-    // Count before making: huge twisted arcs ask for thousands of pieces a patch. Past the budget,
-    // each polyline patch gets its share of it (at least 2 pieces), and a note says so once.
-    std::size_t polylines = 0, exact = 0;  // patches made as polylines; single segments
-    for (const std::size_t i : path.moveIndex) {
-      const std::size_t n = geometry::sectionPieces(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance);
-      out.wanted += n;
-      (n == 1 ? exact : polylines) += 1;
-    }
-    if (out.wanted > options.sectionBudget && polylines > 0) {
-      const std::size_t room = options.sectionBudget > exact ? options.sectionBudget - exact : 0;
-      out.share = std::max<std::size_t>(2, room / polylines);
-    }
-    for (std::size_t k = 0; k < path.moveIndex.size(); ++k) {
-      const std::size_t i = path.moveIndex[k];
-      const std::size_t before = out.segments.size();
-      geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, out.segments, out.share);
-      out.moveIndex.insert(out.moveIndex.end(), out.segments.size() - before, static_cast<std::uint32_t>(k));
-    }
-    section.segments = out.segments;
-    section.moveIndex = out.moveIndex;
-    geometry::SelfIntersectionOptions so;
-    so.tolerance = options.tolerance;
-    so.closed = closed;
-    so.maxContacts = options.maxContacts;
-    out.r = geometry::findSelfIntersections(section.segments, so);
-  };
   bool coarsened = false;
   const int batchSize = static_cast<int>(std::max(1u, geometry::workerCount()));
   for (int first = 1; first < levels; first += batchSize) {
-    std::vector<Level> batch(static_cast<std::size_t>(std::min(batchSize, levels - first)));
+    std::vector<Section> batch(static_cast<std::size_t>(std::min(batchSize, levels - first)));
     geometry::parallelFor(batch.size(), 1, [&](std::size_t b, std::size_t e) {
-      for (std::size_t k = b; k < e; ++k) makeLevel(first + static_cast<int>(k), batch[k]);
+      for (std::size_t k = b; k < e; ++k) makeSection(c, first + static_cast<int>(k), levels, batch[k]);
     });
-    for (Level& level : batch) {
-      const Contour& section = level.section;
-      const geometry::SelfIntersectionResult& r = level.r;
-      if (level.share != geometry::kMaxSectionPieces && !coarsened) {
-        coarsened = true;
-        const std::size_t head = path.moveIndex.front();
-        diags.report(finding(
-            Severity::Note, Code::SectionsCoarsened, src, moves[head], head, at3(moves[head].lower.start, planes.lower),
-            "the sections of the surface would need " + std::to_string(level.wanted) +
-                " pieces, more than the budget of " + std::to_string(options.sectionBudget) +
-                ": the twisted patches are tested as polylines of at most " + std::to_string(level.share) +
-                " pieces, coarser than the section tolerance, so a wire crossing closer than their "
-                "chord error may be missed"));
-      }
-      const std::size_t n = path.moveIndex.size();
-      for (const geometry::Contact& x : r.contacts) {
-        const std::size_t ka = section.moveIndex[x.first], kb = section.moveIndex[x.second];
-        const std::size_t mi = path.moveIndex[ka], mj = path.moveIndex[kb];
-        if (seen.count({mi, mj}) || reported.count({mi, mj})) continue;
-        if (x.kind == geometry::ContactKind::Overlap &&
-            isRetrace(section.segments[x.first], section.segments[x.second], x, options.tolerance))
-          continue;
-        reported.insert({mi, mj});
-        const bool neighbours = kb == ka + 1 || (closed && ka == 0 && kb + 1 == n);
-        if (ka != kb && !neighbours && atSeam(toolpath, mi, mj, options.tolerance)) {
-          seamNote(toolpath, src, mi, mj, at3(x.point, section.z), " at z " + formatFixed(section.z, 3), diags);
-          continue;
-        }
-        const geometry::Vec3 p = at3(x.point, section.z);
-        const std::string where = " at z " + formatFixed(section.z, 3) + ", " + at(x.point);
-        if (ka == kb) {
-          diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
-                               "the wire crosses its own path inside this move" + where +
-                                   ": two positions of the wire meet between the planes"));
-        } else if (neighbours && x.kind == geometry::ContactKind::Overlap) {
-          diags.report(finding(
-              Severity::Error, Code::SurfaceFold, src, moves[mj], mj, p,
-              "the surface folds back over the previous move (line " + std::to_string(moves[mi].line) + ")" + where));
-        } else if (neighbours) {
-          diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
-                               "the wire of this move crosses the wire of the previous move (line " +
-                                   std::to_string(moves[mi].line) + ")" + where));
-        } else {
-          diags.report(finding(Severity::Error, Code::SurfaceSelfIntersection, src, moves[mj], mj, p,
-                               "the surface the wire sweeps meets itself" + where +
-                                   ": this move meets the move on line " + std::to_string(moves[mi].line)));
-        }
-      }
-    }
+    for (const Section& level : batch) reportSection(c, level, seen, reported, coarsened);
   }
 }
 

@@ -250,84 +250,74 @@ struct SurfaceCheck {
 /// Each patch on its own: the wire's slope against --max-taper, the guides' distance against the
 /// U/V range, and an upper side that runs against the lower one (a twist or a crossing).
 void checkPatches(const SurfaceCheck& c, const SurfaceMeasures& m) {
-  const Toolpath& toolpath = c.toolpath;
-  const CutView& path = c.path;
-  const CheckOptions& options = c.options;
-  const SourceFile* src = c.src;
-  Diagnostics& diags = c.diags;
-  const auto& moves = toolpath.moves;
-  const geometry::Planes& planes = toolpath.heights.planes;
-  const double limit = options.maxTaperDegrees / kDegrees;
-  for (std::size_t k = 0; k < path.moveIndex.size(); ++k) {
-    const std::size_t i = path.moveIndex[k];
+  const auto& moves = c.toolpath.moves;
+  const geometry::Planes& planes = c.toolpath.heights.planes;
+  const double limit = c.options.maxTaperDegrees / kDegrees;
+  for (std::size_t k = 0; k < c.path.moveIndex.size(); ++k) {
+    const std::size_t i = c.path.moveIndex[k];
     const geometry::Segment& lo = moves[i].lower;
-    const geometry::Segment& up = toolpath.upper[i];
+    const geometry::Segment& up = c.toolpath.upper[i];
     const geometry::PatchMeasures& pm = m.patches[i];
     if (pm.maxSlope.value > limit) {
-      diags.report(finding(Severity::Error, Code::TaperTooSteep, src, moves[i], i,
-                           at3(lo.pointAt(pm.maxSlope.t), planes.lower),
-                           "the wire leans " + deg(pm.maxSlope.value) + " from vertical here, beyond the machine's " +
-                               formatFixed(options.maxTaperDegrees, 3) + "°",
-                           "the limit is --max-taper (default 30°)"));
+      c.diags.report(finding(Severity::Error, Code::TaperTooSteep, c.src, moves[i], i,
+                             at3(lo.pointAt(pm.maxSlope.t), planes.lower),
+                             "the wire leans " + deg(pm.maxSlope.value) + " from vertical here, beyond the machine's " +
+                                 formatFixed(c.options.maxTaperDegrees, 3) + "°",
+                             "the limit is --max-taper (default 30°)"));
     }
-    if (options.uvRange) {
+    if (c.options.uvRange) {
       const geometry::Extreme& e = pm.maxOffsetX.value >= pm.maxOffsetY.value ? pm.maxOffsetX : pm.maxOffsetY;
-      if (e.value > *options.uvRange)
-        diags.report(finding(Severity::Error, Code::UvOutOfRange, src, moves[i], i, at3(lo.pointAt(e.t), planes.lower),
-                             "the upper guide is " + formatFixed(e.value, 3) + " mm from the lower one along " +
-                                 (&e == &pm.maxOffsetX ? "X" : "Y") + ", beyond the U/V range " +
-                                 formatFixed(*options.uvRange, 3) + " mm"));
+      if (e.value > *c.options.uvRange)
+        c.diags.report(finding(Severity::Error, Code::UvOutOfRange, c.src, moves[i], i,
+                               at3(lo.pointAt(e.t), planes.lower),
+                               "the upper guide is " + formatFixed(e.value, 3) + " mm from the lower one along " +
+                                   (&e == &pm.maxOffsetX ? "X" : "Y") + ", beyond the U/V range " +
+                                   formatFixed(*c.options.uvRange, 3) + " mm"));
     }
     const geometry::TwistMeasure tw = geometry::measureTwist(lo, up);
     if (tw.defined && !lo.isArc() && !up.isArc() && tw.maxAngle >= geometry::kPi - 1e-12) {
       // Opposite lines: every generator passes through one point, at s = |L'| / (|L'| + |U'|).
       const double s = lo.length() / (lo.length() + up.length());
-      diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[i], i,
-                           geometry::surfacePoint(lo, up, planes, 0.0, s),
-                           "the upper side runs exactly against the lower one: every position of the wire in this move "
-                           "passes through one point, at z " +
-                               formatFixed(planes.lower + s * planes.height(), 3)));
+      c.diags.report(finding(
+          Severity::Error, Code::WireCrossing, c.src, moves[i], i, geometry::surfacePoint(lo, up, planes, 0.0, s),
+          "the upper side runs exactly against the lower one: every position of the wire in this move "
+          "passes through one point, at z " +
+              formatFixed(planes.lower + s * planes.height(), 3)));
     } else if (tw.defined && tw.maxAngle > geometry::kPi / 2 + 1e-9) {
-      diags.report(finding(Severity::Error, Code::PatchTwisted, src, moves[i], i,
-                           geometry::surfacePoint(lo, up, planes, tw.t, 0.5),
-                           "the upper contour runs against the lower one here: their directions differ by " +
-                               deg(tw.maxAngle) + ", so the wire turns over and the surface twists through itself"));
+      c.diags.report(finding(Severity::Error, Code::PatchTwisted, c.src, moves[i], i,
+                             geometry::surfacePoint(lo, up, planes, tw.t, 0.5),
+                             "the upper contour runs against the lower one here: their directions differ by " +
+                                 deg(tw.maxAngle) + ", so the wire turns over and the surface twists through itself"));
     }
   }
 }
 
 /// Folds at the joints between neighbouring patches, exact; returns the pairs of moves reported.
 MovePairs checkJoints(const SurfaceCheck& c) {
-  const Toolpath& toolpath = c.toolpath;
-  const CutView& path = c.path;
-  const CheckOptions& options = c.options;
-  const bool closed = c.closed;
-  const auto& moves = toolpath.moves;
-  const geometry::Planes& planes = toolpath.heights.planes;
-  const SourceFile* src = c.src;
-  Diagnostics& diags = c.diags;
+  const auto& moves = c.toolpath.moves;
+  const geometry::Planes& planes = c.toolpath.heights.planes;
   MovePairs reported;
-  const std::size_t count = path.moveIndex.size();
-  for (std::size_t k = 0; k + 1 < count || (closed && k + 1 == count && count > 2); ++k) {
-    const std::size_t i = path.moveIndex[k], j = path.moveIndex[(k + 1) % count];
-    if ((moves[i].lower.end - moves[j].lower.start).norm() > options.tolerance) continue;
+  const std::size_t count = c.path.moveIndex.size();
+  for (std::size_t k = 0; k + 1 < count || (c.closed && k + 1 == count && count > 2); ++k) {
+    const std::size_t i = c.path.moveIndex[k], j = c.path.moveIndex[(k + 1) % count];
+    if ((moves[i].lower.end - moves[j].lower.start).norm() > c.options.tolerance) continue;
     if (k + 1 == count) {
       // The wrap from the lead-out back to the lead-in at a start hole turns round by design.
-      const double sp = programLevel(toolpath);
+      const double sp = programLevel(c.toolpath);
       auto velocity = [](const geometry::Segment& g, double t) { return geometry::Vec2(g.tangentAt(t) * g.length()); };
-      const geometry::Vec2 out = (1.0 - sp) * velocity(moves[i].lower, 1.0) + sp * velocity(toolpath.upper[i], 1.0);
-      const geometry::Vec2 in = (1.0 - sp) * velocity(moves[j].lower, 0.0) + sp * velocity(toolpath.upper[j], 0.0);
+      const geometry::Vec2 out = (1.0 - sp) * velocity(moves[i].lower, 1.0) + sp * velocity(c.toolpath.upper[i], 1.0);
+      const geometry::Vec2 in = (1.0 - sp) * velocity(moves[j].lower, 0.0) + sp * velocity(c.toolpath.upper[j], 0.0);
       if (std::abs(geometry::cross(out, in)) <= 1e-9 * out.norm() * in.norm() && out.dot(in) < 0) continue;
     }
     const std::optional<double> s =
-        geometry::foldAtJoint(moves[i].lower, toolpath.upper[i], moves[j].lower, toolpath.upper[j]);
+        geometry::foldAtJoint(moves[i].lower, c.toolpath.upper[i], moves[j].lower, c.toolpath.upper[j]);
     if (!s) continue;
     reported.insert({std::min(i, j), std::max(i, j)});
-    const geometry::Vec3 p = geometry::surfacePoint(moves[j].lower, toolpath.upper[j], planes, 0.0, *s);
-    diags.report(finding(Severity::Error, Code::SurfaceFold, src, moves[j], j, p,
-                         "the surface folds back at the start of this move, at z " + formatFixed(p.z(), 3) +
-                             ": the wire turns round by 180° there (after line " + std::to_string(moves[i].line) +
-                             ")"));
+    const geometry::Vec3 p = geometry::surfacePoint(moves[j].lower, c.toolpath.upper[j], planes, 0.0, *s);
+    c.diags.report(finding(Severity::Error, Code::SurfaceFold, c.src, moves[j], j, p,
+                           "the surface folds back at the start of this move, at z " + formatFixed(p.z(), 3) +
+                               ": the wire turns round by 180° there (after line " + std::to_string(moves[i].line) +
+                               ")"));
   }
   return reported;
 }
@@ -344,38 +334,36 @@ struct Section {
 /// The section at level / levels of the height, made within the section tolerance (coarser past the
 /// section budget: share is then each twisted patch's pieces) and swept for contacts.
 void makeSection(const SurfaceCheck& c, int level, int levels, Section& out) {
-  const Toolpath& toolpath = c.toolpath;
-  const CutView& path = c.path;
-  const CheckOptions& options = c.options;
-  const auto& moves = toolpath.moves;
-  const geometry::Planes& planes = toolpath.heights.planes;
+  const auto& moves = c.toolpath.moves;
+  const geometry::Planes& planes = c.toolpath.heights.planes;
   const double s = static_cast<double>(level) / levels;
   Contour& section = out.section;
   section.z = planes.lower + s * planes.height();
   // Count before making: huge twisted arcs ask for thousands of pieces a patch. Past the budget,
   // each polyline patch gets its share of it (at least 2 pieces), and a note says so once.
   std::size_t polylines = 0, exact = 0;  // patches made as polylines; single segments
-  for (const std::size_t i : path.moveIndex) {
-    const std::size_t n = geometry::sectionPieces(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance);
+  for (const std::size_t i : c.path.moveIndex) {
+    const std::size_t n = geometry::sectionPieces(moves[i].lower, c.toolpath.upper[i], s, c.options.sectionTolerance);
     out.wanted += n;
     (n == 1 ? exact : polylines) += 1;
   }
-  if (out.wanted > options.sectionBudget && polylines > 0) {
-    const std::size_t room = options.sectionBudget > exact ? options.sectionBudget - exact : 0;
+  if (out.wanted > c.options.sectionBudget && polylines > 0) {
+    const std::size_t room = c.options.sectionBudget > exact ? c.options.sectionBudget - exact : 0;
     out.share = std::max<std::size_t>(2, room / polylines);
   }
-  for (std::size_t k = 0; k < path.moveIndex.size(); ++k) {
-    const std::size_t i = path.moveIndex[k];
+  for (std::size_t k = 0; k < c.path.moveIndex.size(); ++k) {
+    const std::size_t i = c.path.moveIndex[k];
     const std::size_t before = out.segments.size();
-    geometry::appendSection(moves[i].lower, toolpath.upper[i], s, options.sectionTolerance, out.segments, out.share);
+    geometry::appendSection(moves[i].lower, c.toolpath.upper[i], s, c.options.sectionTolerance, out.segments,
+                            out.share);
     out.moveIndex.insert(out.moveIndex.end(), out.segments.size() - before, static_cast<std::uint32_t>(k));
   }
   section.segments = out.segments;
   section.moveIndex = out.moveIndex;
   geometry::SelfIntersectionOptions so;
-  so.tolerance = options.tolerance;
+  so.tolerance = c.options.tolerance;
   so.closed = c.closed;
-  so.maxContacts = options.maxContacts;
+  so.maxContacts = c.options.maxContacts;
   out.r = geometry::findSelfIntersections(section.segments, so);
 }
 
@@ -383,59 +371,53 @@ void makeSection(const SurfaceCheck& c, int level, int levels, Section& out) {
 /// (reported grows) and retraces; the first coarsened section says so once (coarsened).
 void reportSection(const SurfaceCheck& c, const Section& level, const MovePairs& seen, MovePairs& reported,
                    bool& coarsened) {
-  const Toolpath& toolpath = c.toolpath;
-  const CutView& path = c.path;
-  const CheckOptions& options = c.options;
-  const bool closed = c.closed;
-  const auto& moves = toolpath.moves;
-  const geometry::Planes& planes = toolpath.heights.planes;
-  const SourceFile* src = c.src;
-  Diagnostics& diags = c.diags;
+  const auto& moves = c.toolpath.moves;
+  const geometry::Planes& planes = c.toolpath.heights.planes;
   const Contour& section = level.section;
   const geometry::SelfIntersectionResult& r = level.r;
   if (level.share != geometry::kMaxSectionPieces && !coarsened) {
     coarsened = true;
-    const std::size_t head = path.moveIndex.front();
-    diags.report(finding(Severity::Note, Code::SectionsCoarsened, src, moves[head], head,
-                         at3(moves[head].lower.start, planes.lower),
-                         "the sections of the surface would need " + std::to_string(level.wanted) +
-                             " pieces, more than the budget of " + std::to_string(options.sectionBudget) +
-                             ": the twisted patches are tested as polylines of at most " + std::to_string(level.share) +
-                             " pieces, coarser than the section tolerance, so a wire crossing closer than their "
-                             "chord error may be missed"));
+    const std::size_t head = c.path.moveIndex.front();
+    c.diags.report(finding(
+        Severity::Note, Code::SectionsCoarsened, c.src, moves[head], head, at3(moves[head].lower.start, planes.lower),
+        "the sections of the surface would need " + std::to_string(level.wanted) + " pieces, more than the budget of " +
+            std::to_string(c.options.sectionBudget) + ": the twisted patches are tested as polylines of at most " +
+            std::to_string(level.share) +
+            " pieces, coarser than the section tolerance, so a wire crossing closer than their "
+            "chord error may be missed"));
   }
-  const std::size_t n = path.moveIndex.size();
+  const std::size_t n = c.path.moveIndex.size();
   for (const geometry::Contact& x : r.contacts) {
     const std::size_t ka = section.moveIndex[x.first], kb = section.moveIndex[x.second];
-    const std::size_t mi = path.moveIndex[ka], mj = path.moveIndex[kb];
+    const std::size_t mi = c.path.moveIndex[ka], mj = c.path.moveIndex[kb];
     if (seen.count({mi, mj}) || reported.count({mi, mj})) continue;
     if (x.kind == geometry::ContactKind::Overlap &&
-        isRetrace(section.segments[x.first], section.segments[x.second], x, options.tolerance))
+        isRetrace(section.segments[x.first], section.segments[x.second], x, c.options.tolerance))
       continue;
     reported.insert({mi, mj});
-    const bool neighbours = kb == ka + 1 || (closed && ka == 0 && kb + 1 == n);
-    if (ka != kb && !neighbours && atSeam(toolpath, mi, mj, options.tolerance)) {
-      seamNote(toolpath, src, mi, mj, at3(x.point, section.z), " at z " + formatFixed(section.z, 3), diags);
+    const bool neighbours = kb == ka + 1 || (c.closed && ka == 0 && kb + 1 == n);
+    if (ka != kb && !neighbours && atSeam(c.toolpath, mi, mj, c.options.tolerance)) {
+      seamNote(c.toolpath, c.src, mi, mj, at3(x.point, section.z), " at z " + formatFixed(section.z, 3), c.diags);
       continue;
     }
     const geometry::Vec3 p = at3(x.point, section.z);
     const std::string where = " at z " + formatFixed(section.z, 3) + ", " + at(x.point);
     if (ka == kb) {
-      diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
-                           "the wire crosses its own path inside this move" + where +
-                               ": two positions of the wire meet between the planes"));
+      c.diags.report(finding(Severity::Error, Code::WireCrossing, c.src, moves[mj], mj, p,
+                             "the wire crosses its own path inside this move" + where +
+                                 ": two positions of the wire meet between the planes"));
     } else if (neighbours && x.kind == geometry::ContactKind::Overlap) {
-      diags.report(finding(
-          Severity::Error, Code::SurfaceFold, src, moves[mj], mj, p,
+      c.diags.report(finding(
+          Severity::Error, Code::SurfaceFold, c.src, moves[mj], mj, p,
           "the surface folds back over the previous move (line " + std::to_string(moves[mi].line) + ")" + where));
     } else if (neighbours) {
-      diags.report(finding(Severity::Error, Code::WireCrossing, src, moves[mj], mj, p,
-                           "the wire of this move crosses the wire of the previous move (line " +
-                               std::to_string(moves[mi].line) + ")" + where));
+      c.diags.report(finding(Severity::Error, Code::WireCrossing, c.src, moves[mj], mj, p,
+                             "the wire of this move crosses the wire of the previous move (line " +
+                                 std::to_string(moves[mi].line) + ")" + where));
     } else {
-      diags.report(finding(Severity::Error, Code::SurfaceSelfIntersection, src, moves[mj], mj, p,
-                           "the surface the wire sweeps meets itself" + where + ": this move meets the move on line " +
-                               std::to_string(moves[mi].line)));
+      c.diags.report(finding(Severity::Error, Code::SurfaceSelfIntersection, c.src, moves[mj], mj, p,
+                             "the surface the wire sweeps meets itself" + where +
+                                 ": this move meets the move on line " + std::to_string(moves[mi].line)));
     }
   }
 }

@@ -280,8 +280,8 @@ InterpreterOptions interpreterOptions(const MachineProfile& machine, const Pipel
 /// goes through its own reader (read.h, docs/polar.md). Otherwise, unless the options or the
 /// profile fix the I J convention, the program is read again with the other one when its arcs'
 /// centres say so (io.arcCentre is then that one); evidence says which convention and why.
-Interpretation interpretProgramText(const Program& program, const MachineProfile& machine, const ReadOptions& ro,
-                                    InterpreterOptions& io, Diagnostics& diags, std::vector<std::string>& evidence) {
+Interpretation interpretForMachine(const Program& program, const MachineProfile& machine, const ReadOptions& ro,
+                                   InterpreterOptions& io, Diagnostics& diags, std::vector<std::string>& evidence) {
   const KnownCode* cCode = machine.find("C");
   const bool cIsRotary = !cCode || cCode->effect != CodeEffect::Harmless;  // Sodick: C is a condition
   const bool millTurn = isMillTurnProgram(program) || (cIsRotary && hasRotaryMoves(program));
@@ -312,8 +312,8 @@ Interpretation interpretProgramText(const Program& program, const MachineProfile
 }
 
 /// The note that says for which machine, and with which conventions, the program was read, and
-/// why: the detection's first evidence and what the conventions were taken from. None when the
-/// generic profile was taken with nothing to say.
+/// why: up to four pieces of the detection's evidence and what the conventions were taken from.
+/// None when the generic profile was taken with nothing to say.
 void noteHowRead(Pipeline& out, const MachineDetection& detection, const std::vector<std::string>& evidence) {
   const MachineProfile& machine = out.machine;
   const bool namedMachine = out.machineDetected && machine.name != "generic";
@@ -383,7 +383,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   std::vector<std::string> evidence;
   InterpreterOptions io = interpreterOptions(out.machine, options, program, upper.has_value(), evidence);
   Diagnostics interpretDiags(100000);
-  Interpretation in = interpretProgramText(program, out.machine, ro, io, interpretDiags, evidence);
+  Interpretation in = interpretForMachine(program, out.machine, ro, io, interpretDiags, evidence);
   out.toolpath = std::move(in.toolpath);
   out.diags.append(std::move(reading.diags));
   noteHowRead(out, reading.detection, evidence);

@@ -18,10 +18,8 @@
 namespace kerf::converter {
 namespace {
 
-constexpr double kDegrees = 180.0 / geometry::kPi;
-
 std::string at(const geometry::Vec2& p) { return "(" + formatFixed(p.x(), 3) + ", " + formatFixed(p.y(), 3) + ")"; }
-std::string deg(double radians) { return formatFixed(radians * kDegrees, 3) + "°"; }
+std::string deg(double radians) { return formatFixed(radians * geometry::kDegreesPerRadian, 3) + "°"; }
 
 Diagnostic finding(Severity sev, Code code, const SourceFile* src, const Move& move, std::size_t moveIndex,
                    const geometry::Vec3& p, std::string message, std::string help = {}) {
@@ -252,7 +250,7 @@ struct SurfaceCheck {
 void checkPatches(const SurfaceCheck& c, const SurfaceMeasures& m) {
   const auto& moves = c.toolpath.moves;
   const geometry::Planes& planes = c.toolpath.heights.planes;
-  const double limit = c.options.maxTaperDegrees / kDegrees;
+  const double limit = c.options.maxTaperDegrees / geometry::kDegreesPerRadian;
   for (std::size_t k = 0; k < c.path.moveIndex.size(); ++k) {
     const std::size_t i = c.path.moveIndex[k];
     const geometry::Segment& lo = moves[i].lower;

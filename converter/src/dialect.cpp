@@ -38,8 +38,6 @@ struct Evidence {
   }
 };
 
-std::string onLine(const std::string& what, std::uint32_t line) { return what + " on line " + std::to_string(line); }
-
 std::string mm(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f", v);
@@ -204,5 +202,7 @@ DialectDetection detectDialect(const Program& program, const MachineProfile& mac
   }
   return d;
 }
+
+std::string onLine(const std::string& what, std::uint32_t line) { return what + " on line " + std::to_string(line); }
 
 }  // namespace kerf::converter

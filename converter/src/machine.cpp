@@ -356,8 +356,6 @@ std::vector<const MachineProfile*> machinesKnowing(std::string_view key, const M
 
 namespace {
 
-std::string onLine(const std::string& what, std::uint32_t line) { return what + " on line " + std::to_string(line); }
-
 /// Evidence for one profile: each kind of evidence counted once, at its first place.
 struct Tally {
   std::vector<MachineEvidence> items;

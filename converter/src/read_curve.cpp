@@ -13,7 +13,6 @@
 #include <dlfcn.h>
 
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -198,14 +197,6 @@ double eval(Expression& e) {
   return mu.error(e.handle) ? std::nan("") : v;
 }
 
-bool parseNumber(std::string_view s, double& v) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  return ec == std::errc() && end == s.data() + s.size() && std::isfinite(v);
-}
-
 void fillDrawing(Drawing& d, const geometry::BiarcFit& fit, const char* entity, SourceSpan span, std::uint32_t line) {
   d.entities[entity] = 1;
   for (const geometry::Segment& s : fit.segments) {
@@ -285,7 +276,7 @@ Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& dia
         std::size_t cut = s.find(',');
         if (cut == std::string_view::npos) cut = s.find_first_of(" \t");
         double x = 0, y = 0;
-        if (cut == std::string_view::npos || !parseNumber(s.substr(0, cut), x) || !parseNumber(s.substr(cut + 1), y)) {
+        if (cut == std::string_view::npos || !parseNumberField(s.substr(0, cut), x) || !parseNumberField(s.substr(cut + 1), y)) {
           diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
                       "a point is two numbers, X Y or X, Y (mm), not '" + std::string(s) + "'");
           ok = false;

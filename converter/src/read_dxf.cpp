@@ -25,7 +25,7 @@ namespace {
 
 using geometry::Segment;
 using geometry::Vec2;
-constexpr double kPi = geometry::kPi;
+using geometry::kPi;
 
 enum class ValueType { String, Double, Int16, Int32, Int64, Bool, Binary };
 
@@ -57,14 +57,6 @@ std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
   return s;
-}
-
-bool parseNumber(std::string_view s, double& out) {
-  s = trim(s);
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  if (s.empty()) return false;
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(out);
 }
 
 class TagReader {
@@ -129,7 +121,7 @@ class TagReader {
         tag.text = type == ValueType::String ? trim(value) : value;
       } else {
         tag.text = trim(value);
-        if (!parseNumber(value, tag.number)) {
+        if (!parseNumberField(value, tag.number)) {
           error(line, code, false, "'" + std::string(trim(value).substr(0, 40)) + "' is not a number",
                 {valueStart, static_cast<std::uint32_t>(value.size())});
           return false;
@@ -257,7 +249,7 @@ struct Entity {
   }
 };
 
-struct Block {
+struct DxfBlock {  // a BLOCK section entry: its base point and its entities
   Vec2 base{0, 0};
   std::vector<Entity> entities;
 };
@@ -418,7 +410,7 @@ class DrawingReader {
       if (t.code == 0 && (t.text == "ENDSEC" || t.text == "EOF")) return t.text == "ENDSEC" ? i + 1 : i;
       if (t.code == 0 && t.text == "BLOCK") {
         Entity head = collect(tags, i);
-        Block b;
+        DxfBlock b;
         b.base = Vec2(head.number(10), head.number(20));
         i = entities(tags, i, b.entities, false);
         if (i < tags.size() && tags[i].text == "ENDBLK") collect(tags, i);
@@ -752,7 +744,7 @@ class DrawingReader {
       warn(e, "INSERTs nested deeper than " + std::to_string(o_.maxInsertDepth) + " (a block that inserts itself?)");
       return;
     }
-    const Block& b = it->second;
+    const DxfBlock& b = it->second;
     const double sx = e.number(41, 1.0), sy = e.number(42, 1.0), rot = e.number(50) * kPi / 180;
     const int cols = std::max(1, static_cast<int>(e.number(70, 1))),
               rows = std::max(1, static_cast<int>(e.number(71, 1)));
@@ -778,7 +770,7 @@ class DrawingReader {
   bool binary_ = false;
   bool overBudget_ = false;
   double scale_ = 1.0;
-  std::map<std::string, Block> blocks_;
+  std::map<std::string, DxfBlock> blocks_;
 };
 
 }  // namespace

@@ -22,10 +22,9 @@ namespace {
 
 using geometry::Segment;
 using geometry::Vec2;
-constexpr double kDeg = 180.0 / geometry::kPi;
 
 Vec2 rotate(const Vec2& p, double degrees) {
-  const double a = degrees / kDeg, c = std::cos(a), s = std::sin(a);
+  const double a = degrees / geometry::kDegreesPerRadian, c = std::cos(a), s = std::sin(a);
   return {c * p.x() - s * p.y(), s * p.x() + c * p.y()};
 }
 
@@ -224,7 +223,7 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
     if (polarOff && polar) {
       polar = false;
       radius = position.norm();
-      if (radius > 0) c = geometry::unwrapDegrees(std::atan2(position.y(), position.x()) * kDeg, c);
+      if (radius > 0) c = geometry::unwrapDegrees(std::atan2(position.y(), position.x()) * geometry::kDegreesPerRadian, c);
       y = 0.0;
       cKnown = true;
     }

@@ -1,6 +1,9 @@
 #include "kerf/converter/source.h"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
@@ -40,6 +43,15 @@ std::pair<std::uint32_t, std::uint32_t> SourceFile::lineRange(std::uint32_t line
 std::string_view SourceFile::lineText(std::uint32_t line) const {
   const auto [begin, end] = lineRange(line);
   return text().substr(begin, end - begin);
+}
+
+bool parseNumberField(std::string_view s, double& out) {
+  const auto blank = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return !s.empty() && ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
 }
 
 }  // namespace kerf::converter

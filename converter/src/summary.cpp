@@ -86,7 +86,6 @@ void addBounds(geometry::Box& box, const geometry::Segment& s) {
 }
 
 TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) {
-  constexpr double kDegrees = 180.0 / geometry::kPi;
   TaperSummary t;
   t.dialect = toolpath.dialect;
   t.heights = toolpath.heights;
@@ -99,13 +98,13 @@ TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) 
     t.upperLength += toolpath.upper[i].length();
     t.area += m.areas[i];
     const geometry::PatchMeasures& p = m.patches[i];
-    if (first || p.maxSlope.value > t.maxSlopeDegrees / kDegrees) {
-      t.maxSlopeDegrees = p.maxSlope.value * kDegrees;
+    if (first || p.maxSlope.value > t.maxSlopeDegrees / geometry::kDegreesPerRadian) {
+      t.maxSlopeDegrees = p.maxSlope.value * geometry::kDegreesPerRadian;
       t.maxSlopeMove = i;
       t.maxSlopeLine = move.line;
     }
-    if (first || p.minSlope.value < t.minSlopeDegrees / kDegrees) {
-      t.minSlopeDegrees = p.minSlope.value * kDegrees;
+    if (first || p.minSlope.value < t.minSlopeDegrees / geometry::kDegreesPerRadian) {
+      t.minSlopeDegrees = p.minSlope.value * geometry::kDegreesPerRadian;
       t.minSlopeMove = i;
       t.minSlopeLine = move.line;
     }

@@ -5,10 +5,6 @@
 
 namespace kerf::geometry {
 
-namespace {
-constexpr double kDeg = 180.0 / kPi;
-}
-
 double unwrapDegrees(double degrees, double previous) {
   return degrees + 360.0 * std::round((previous - degrees) / 360.0);
 }
@@ -16,11 +12,11 @@ double unwrapDegrees(double degrees, double previous) {
 PolarPoint toPolar(const Vec2& p, double previousC) {
   PolarPoint q;
   q.radius = p.norm();
-  q.c = q.radius == 0.0 ? previousC : unwrapDegrees(std::atan2(p.y(), p.x()) * kDeg, previousC);
+  q.c = q.radius == 0.0 ? previousC : unwrapDegrees(std::atan2(p.y(), p.x()) * kDegreesPerRadian, previousC);
   return q;
 }
 
-Vec2 fromPolar(const PolarPoint& q) { return {q.radius * std::cos(q.c / kDeg), q.radius * std::sin(q.c / kDeg)}; }
+Vec2 fromPolar(const PolarPoint& q) { return {q.radius * std::cos(q.c / kDegreesPerRadian), q.radius * std::sin(q.c / kDegreesPerRadian)}; }
 
 double spiralDeviation(const PolarPoint& a, const PolarPoint& b, const Segment& s, int samples) {
   double worst = 0.0;
@@ -44,7 +40,7 @@ PolarSubdivision subdivideForPolar(const Segment& s, double startC, double toler
   PolarPoint first = toPolar(s.start, startC);
   if (startsAtCentre) {
     const Vec2 d = s.tangentAt(0.0);
-    first = {0.0, unwrapDegrees(std::atan2(d.y(), d.x()) * kDeg, startC)};
+    first = {0.0, unwrapDegrees(std::atan2(d.y(), d.x()) * kDegreesPerRadian, startC)};
     if (std::abs(first.c - startC) > 1e-9) {
       out.leadTurn = true;
       out.lead = first;

@@ -22,10 +22,9 @@ import random
 import subprocess
 import sys
 
-import ezdxf
-from ezdxf import path as dxfpath
+import numpy
+
 from shapely.geometry import LineString, MultiLineString, Polygon
-from shapely.ops import unary_union
 
 # mm: how far the flattened contour may leave its arcs (the buffer's input). Not finer: with points
 # about 0.01 mm apart (2e-6 at R 12) GEOS 3.11's negative buffer came out wrong on random contours
@@ -37,6 +36,7 @@ COARSE = 1e-4  # mm: the flattening and simplification for the Hausdorff distanc
 
 
 def arc_points(e, sagitta=SAGITTA):
+    """The arc's points from its start, at most sagitta from it, without its end: an (n, 2) array."""
     cx, cy = e["centre"]
     r = e["radius"]
     sweep = e["sweep"]
@@ -44,20 +44,20 @@ def arc_points(e, sagitta=SAGITTA):
     a0 = math.atan2(sy - cy, sx - cx)
     step = 2 * math.acos(max(-1.0, 1 - sagitta / r)) if r > sagitta else math.pi
     n = max(2, int(math.ceil(abs(sweep) / step)))
-    return [(cx + r * math.cos(a0 + sweep * k / n), cy + r * math.sin(a0 + sweep * k / n)) for k in range(n)]
+    a = a0 + sweep * numpy.arange(n) / n
+    return numpy.column_stack((cx + r * numpy.cos(a), cy + r * numpy.sin(a)))
 
 
 def flatten(elements, sagitta=SAGITTA):
-    pts = []
-    for e in elements:
-        if e["kind"] == "arc":
-            pts.extend(arc_points(e, sagitta))
-        else:
-            pts.append(tuple(e["start"]))
-    return pts
+    """A closed chain of lines and arcs as its vertices (the first not repeated): an (n, 2) array."""
+    pieces = [arc_points(e, sagitta) if e["kind"] == "arc" else numpy.array([e["start"]], dtype=float)
+              for e in elements]
+    return numpy.vstack(pieces) if pieces else numpy.empty((0, 2))
 
 
 def write_random(file, seed, count):
+    import ezdxf  # only the generated drawings need it: importing it costs a second per run
+    from ezdxf import path as dxfpath
     rng = random.Random(seed)
     doc = ezdxf.new("R2000")
     doc.units = 4  # mm ($INSUNITS; ezdxf's default is metres)
@@ -82,6 +82,7 @@ def write_random(file, seed, count):
 
 
 def write_shape(path, name):
+    import ezdxf
     doc = ezdxf.new("R2000")
     doc.units = 4  # mm ($INSUNITS; ezdxf's default is metres)
     msp = doc.modelspace()
@@ -137,17 +138,19 @@ def main():
                 lines = []
                 flat_loops = 0  # loops of no area: the wire fits a slot exactly (GEOS: nothing)
                 for loop in wire["loops"]:
-                    if abs(Polygon(flatten(loop)).area) <= 1e-6 * sum(
-                            math.dist(p["start"], p["end"]) for p in loop) if len(flatten(loop)) >= 3 else True:
+                    fine = flatten(loop)
+                    if len(fine) < 3 or abs(Polygon(fine).area) <= 1e-6 * sum(
+                            math.dist(p["start"], p["end"]) for p in loop):
                         flat_loops += 1
                         continue
                     pts = flatten(loop, COARSE)
                     if len(pts) >= 2:
-                        lines.append(LineString(pts + [pts[0]]))
+                        lines.append(LineString(numpy.vstack((pts, pts[:1]))))
                 if geos.is_empty:
                     boundary = None
                 else:
-                    boundary = geos.boundary.simplify(COARSE)
+                    # Douglas-Peucker: the distance is all that is measured, so no topology is kept
+                    boundary = geos.boundary.simplify(COARSE, preserve_topology=False)
                 if lines and boundary is not None and not boundary.is_empty:
                     ours = MultiLineString(lines) if len(lines) > 1 else lines[0]
                     hausdorff = ours.hausdorff_distance(boundary)

@@ -1,6 +1,6 @@
 # Every command says what `kerf check` says: the diagnostics explain, convert, render, export and
 # view print for a program are exactly check's, with the same options (the one pipeline).
-#   cmake -DKERF=... -DFILE=... -DOPTIONS="a;b" -DWORK=<scratch> [-DXVFB=xvfb-run] -P same_findings.cmake
+#   cmake -DKERF=... -DFILE=... -DOPTIONS="a;b" -DWORK=<scratch> [-DXVFB=xvfb-run -DDISPLAY_NUMBER=N] -P same_findings.cmake
 file(MAKE_DIRECTORY "${WORK}")
 function(findings out)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
@@ -37,21 +37,20 @@ findings(explain "${KERF}" explain "${FILE}" ${all})
 set(plane "")
 execute_process(COMMAND "${KERF}" check "${FILE}" ${all} --json OUTPUT_VARIABLE json ERROR_QUIET)
 string(JSON dialect ERROR_VARIABLE noDialect GET "${json}" summary dialect)
+string(JSON moves GET "${json}" summary cut_moves)
 if(NOT dialect STREQUAL "plain")
   set(plane --plane lower)
 endif()
 findings(convert "${KERF}" convert "${FILE}" ${all} --to bp95d ${plane} -o "${WORK}/out.txt")
 findings(render ${headless} "${KERF}" render "${FILE}" ${all} -o "${WORK}/out.png" --size 160x120)
 set(commands explain convert render)
-execute_process(COMMAND "${KERF}" check "${FILE}" ${all} --json OUTPUT_VARIABLE json ERROR_QUIET)
-string(JSON moves GET "${json}" summary cut_moves)
 if(moves GREATER 0)
   findings(export "${KERF}" export "${FILE}" ${all} -o "${WORK}/out.vtp")
   list(APPEND commands export)
 endif()
 if(XVFB)
   # Our own auth file: xvfb-run's temporary folder sometimes fails its clean-up (exit 5).
-  findings(view ${XVFB} -a -f "${WORK}/xauthority" "${KERF}" view "${FILE}" ${all} --frames 1 --size 320x240)
+  findings(view ${XVFB} -n ${DISPLAY_NUMBER} -f "${WORK}/xauthority" "${KERF}" view "${FILE}" ${all} --frames 1 --size 320x240)
   list(APPEND commands view)
 endif()
 foreach(c IN LISTS commands)

@@ -19,7 +19,7 @@ struct Read {
   std::string firstError;  ///< "LINE:COL: message"
 };
 
-Read read(const std::string& text, double tolerance = 0.001) {
+Read readCurveText(const std::string& text, double tolerance = 0.001) {
   const SourceFile src("c.curve", text);
   Diagnostics diags(100);
   CurveOptions o;
@@ -41,7 +41,7 @@ Read read(const std::string& text, double tolerance = 0.001) {
 }  // namespace
 
 TEST(curve_test, a_circle_from_its_expressions_is_one_closed_contour_within_the_tolerance) {
-  const Read r = read("# a circle\nx = 7*cos(t)\ny = 7*sin(t)\nt = 0 : 2*pi\n");
+  const Read r = readCurveText("# a circle\nx = 7*cos(t)\ny = 7*sin(t)\nt = 0 : 2*pi\n");
   ASSERT_TRUE(r.firstError.empty()) << r.firstError;
   ASSERT_TRUE(r.drawing.ok);
   ASSERT_TRUE(r.drawing.curve);
@@ -63,7 +63,7 @@ TEST(curve_test, a_circle_from_its_expressions_is_one_closed_contour_within_the_
 }
 
 TEST(curve_test, statements_may_share_a_line_and_the_range_takes_expressions) {
-  const Read r = read("x = t; y = t^2 ; t = -1 : sqrt(4)/2");
+  const Read r = readCurveText("x = t; y = t^2 ; t = -1 : sqrt(4)/2");
   ASSERT_TRUE(r.firstError.empty()) << r.firstError;
   EXPECT_DOUBLE_EQ(r.drawing.curve->t0, -1.0);
   EXPECT_DOUBLE_EQ(r.drawing.curve->t1, 1.0);
@@ -77,7 +77,7 @@ TEST(curve_test, a_point_list_becomes_a_smooth_curve_through_its_points) {
     const double a = std::numbers::pi * k / 12;
     text += std::to_string(10 * std::cos(a)) + ", " + std::to_string(10 * std::sin(a)) + "\n";
   }
-  const Read r = read(text);
+  const Read r = readCurveText(text);
   ASSERT_TRUE(r.firstError.empty()) << r.firstError;
   ASSERT_TRUE(r.drawing.curve && r.drawing.curve->points);
   EXPECT_EQ(r.drawing.entities.at("POINTS"), 1u);
@@ -86,18 +86,18 @@ TEST(curve_test, a_point_list_becomes_a_smooth_curve_through_its_points) {
 }
 
 TEST(curve_test, errors_name_the_line_and_column) {
-  EXPECT_EQ(read("x = t\ny = sin(t\nt = 0:1").firstError, "2:9: y: Missing parenthesis");
-  EXPECT_EQ(read("x = t\ny = foo(t)\nt = 0:1").firstError.substr(0, 5), "2:5: ");
-  EXPECT_EQ(read("x = t\ny = 1/t\nt = 0:1").firstError, "2:5: y is not a finite number at t = 0.000000");
-  EXPECT_EQ(read("x = t\ny = t\nt = 1:1").firstError,
+  EXPECT_EQ(readCurveText("x = t\ny = sin(t\nt = 0:1").firstError, "2:9: y: Missing parenthesis");
+  EXPECT_EQ(readCurveText("x = t\ny = foo(t)\nt = 0:1").firstError.substr(0, 5), "2:5: ");
+  EXPECT_EQ(readCurveText("x = t\ny = 1/t\nt = 0:1").firstError, "2:5: y is not a finite number at t = 0.000000");
+  EXPECT_EQ(readCurveText("x = t\ny = t\nt = 1:1").firstError,
             "3:1: the range 1.000000 : 1.000000 is empty: FROM must be below TO");
-  EXPECT_EQ(read("x = t\ny = t\nt = 0 .. 1").firstError, "3:1: the range is 't = FROM : TO', with a colon");
-  EXPECT_EQ(read("x = t\nz = t\nt = 0:1").firstError,
+  EXPECT_EQ(readCurveText("x = t\ny = t\nt = 0 .. 1").firstError, "3:1: the range is 't = FROM : TO', with a colon");
+  EXPECT_EQ(readCurveText("x = t\nz = t\nt = 0:1").firstError,
             "2:1: a curve statement is 'x = EXPR', 'y = EXPR' or 't = FROM : TO', not 'z = t'");
-  EXPECT_EQ(read("x = t\nx = 2*t\ny = t\nt = 0:1").firstError, "2:1: 'x' is given twice");
-  EXPECT_EQ(read("x = t\nt = 0:1").firstError.rfind("file: the curve has no 'y = EXPR'", 0), 0u);
-  EXPECT_EQ(read("points\n1 2\n3 x").firstError, "3:1: a point is two numbers, X Y or X, Y (mm), not '3 x'");
-  EXPECT_EQ(read("points\n1 2\n1 2").firstError, "1:1: a point list needs at least two distinct points");
+  EXPECT_EQ(readCurveText("x = t\nx = 2*t\ny = t\nt = 0:1").firstError, "2:1: 'x' is given twice");
+  EXPECT_EQ(readCurveText("x = t\nt = 0:1").firstError.rfind("file: the curve has no 'y = EXPR'", 0), 0u);
+  EXPECT_EQ(readCurveText("points\n1 2\n3 x").firstError, "3:1: a point is two numbers, X Y or X, Y (mm), not '3 x'");
+  EXPECT_EQ(readCurveText("points\n1 2\n1 2").firstError, "1:1: a point list needs at least two distinct points");
 }
 
 TEST(curve_test, only_curve_statements_look_like_a_curve) {

@@ -10,11 +10,9 @@ using namespace kerf::geometry;
 
 namespace {
 
-constexpr double kDeg = 180.0 / kPi;
-
 /// The machine's spiral between two polar points at u in [0, 1], computed here on its own.
 Vec2 spiralAt(const PolarPoint& a, const PolarPoint& b, double u) {
-  const double r = a.radius + u * (b.radius - a.radius), c = (a.c + u * (b.c - a.c)) / kDeg;
+  const double r = a.radius + u * (b.radius - a.radius), c = (a.c + u * (b.c - a.c)) / kDegreesPerRadian;
   return {r * std::cos(c), r * std::sin(c)};
 }
 
@@ -47,9 +45,9 @@ TEST(spiral_as_arcs_test, constant_radius_is_exact_arcs_about_the_centre) {
     EXPECT_NEAR(p.radius, 20.0, 1e-9);
     EXPECT_GT(p.sweep, 0.0);  // C increasing: counter-clockwise
   }
-  EXPECT_NEAR(s.pieces.front().start.x(), 20 * std::cos(10 / kDeg), 1e-12);
-  EXPECT_NEAR(s.pieces.back().end.x(), 20 * std::cos(100 / kDeg), 1e-12);
-  EXPECT_NEAR(s.pieces.back().end.y(), 20 * std::sin(100 / kDeg), 1e-12);
+  EXPECT_NEAR(s.pieces.front().start.x(), 20 * std::cos(10 / kDegreesPerRadian), 1e-12);
+  EXPECT_NEAR(s.pieces.back().end.x(), 20 * std::cos(100 / kDegreesPerRadian), 1e-12);
+  EXPECT_NEAR(s.pieces.back().end.y(), 20 * std::sin(100 / kDegreesPerRadian), 1e-12);
   EXPECT_LE(farthest(a, b, s.pieces), 1e-9);
 }
 

@@ -15,8 +15,6 @@ namespace {
 
 using namespace kerf::geometry;
 
-constexpr double kDeg = 180.0 / kPi;
-
 TEST(ruled_surface_test, slope_matches_the_closed_form_to_1e9_degrees) {
   // A constant offset o over a height h: slope = atan(o / h), along the whole patch.
   for (const double o : {0.05, 0.5, 1.0, 3.3, 11.0}) {
@@ -24,18 +22,18 @@ TEST(ruled_surface_test, slope_matches_the_closed_form_to_1e9_degrees) {
       const Planes planes{0.0, h};
       const Segment lo = Segment::line({0, 0}, {10, 3});
       const Segment up = Segment::line({0 + o, 0}, {10 + o, 3});
-      const double expect = std::atan(o / h) * kDeg;
-      for (double t : {0.0, 0.3, 1.0}) EXPECT_NEAR(slopeAt(lo, up, planes, t) * kDeg, expect, 1e-9);
+      const double expect = std::atan(o / h) * kDegreesPerRadian;
+      for (double t : {0.0, 0.3, 1.0}) EXPECT_NEAR(slopeAt(lo, up, planes, t) * kDegreesPerRadian, expect, 1e-9);
       const PatchMeasures m = measurePatch(lo, up, planes);
       EXPECT_TRUE(m.exact);
-      EXPECT_NEAR(m.maxSlope.value * kDeg, expect, 1e-9);
-      EXPECT_NEAR(m.minSlope.value * kDeg, expect, 1e-9);
+      EXPECT_NEAR(m.maxSlope.value * kDegreesPerRadian, expect, 1e-9);
+      EXPECT_NEAR(m.minSlope.value * kDegreesPerRadian, expect, 1e-9);
       // Concentric arcs r and r - o: the same slope, found by sampling and refinement.
       const Segment la = Segment::arc({20, 0}, {0, 20}, {0, 0}, ArcDirection::CounterClockwise);
       const Segment ua = Segment::arc({20 - o, 0}, {0, 20 - o}, {0, 0}, ArcDirection::CounterClockwise);
       const PatchMeasures ma = measurePatch(la, ua, planes);
-      EXPECT_NEAR(ma.maxSlope.value * kDeg, expect, 1e-9);
-      EXPECT_NEAR(ma.minSlope.value * kDeg, expect, 1e-9);
+      EXPECT_NEAR(ma.maxSlope.value * kDegreesPerRadian, expect, 1e-9);
+      EXPECT_NEAR(ma.minSlope.value * kDegreesPerRadian, expect, 1e-9);
     }
   }
 }
@@ -104,16 +102,16 @@ TEST(ruled_surface_test, area_of_a_frustum_and_of_a_wall) {
 TEST(ruled_surface_test, twist_is_found_exactly_and_its_near_miss_is_not) {
   const Segment lo = Segment::line({0, 0}, {10, 0});
   auto rotated = [](double deg) {
-    const Vec2 d = 10.0 * direction(deg / kDeg);
+    const Vec2 d = 10.0 * direction(deg / kDegreesPerRadian);
     return Segment::line({0, 5}, Vec2(Vec2(0, 5) + d));
   };
-  EXPECT_NEAR(measureTwist(lo, rotated(89.0)).maxAngle * kDeg, 89.0, 1e-9);
-  EXPECT_NEAR(measureTwist(lo, rotated(91.0)).maxAngle * kDeg, 91.0, 1e-9);
-  EXPECT_NEAR(measureTwist(lo, rotated(180.0)).maxAngle * kDeg, 180.0, 1e-9);
+  EXPECT_NEAR(measureTwist(lo, rotated(89.0)).maxAngle * kDegreesPerRadian, 89.0, 1e-9);
+  EXPECT_NEAR(measureTwist(lo, rotated(91.0)).maxAngle * kDegreesPerRadian, 91.0, 1e-9);
+  EXPECT_NEAR(measureTwist(lo, rotated(180.0)).maxAngle * kDegreesPerRadian, 180.0, 1e-9);
   // An arc's tangent turns linearly: a half circle against a line turns from 90 to -90 degrees.
   const Segment half = Segment::arc({10, 0}, {-10, 0}, {0, 0}, ArcDirection::CounterClockwise);
   const TwistMeasure tw = measureTwist(Segment::line({10, 0}, {-10, 0}), half);
-  EXPECT_NEAR(tw.maxAngle * kDeg, 90.0, 1e-9);
+  EXPECT_NEAR(tw.maxAngle * kDegreesPerRadian, 90.0, 1e-9);
   // A point has no direction.
   EXPECT_FALSE(measureTwist(lo, Segment::line({1, 1}, {1, 1})).defined);
 }

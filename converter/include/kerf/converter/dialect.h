@@ -33,4 +33,7 @@ DialectDetection detectDialect(const Program& program, const MachineProfile& mac
 /// "auto" gives nothing; an unknown name gives nothing too (the caller checks the list).
 std::optional<Dialect> parseDialect(std::string_view name);
 
+/// Where a piece of evidence is, as the detection notes say it: "G51 on line 12".
+std::string onLine(const std::string& what, std::uint32_t line);
+
 }  // namespace kerf::converter

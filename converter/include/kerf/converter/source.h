@@ -50,4 +50,9 @@ class SourceFile {
   std::vector<std::uint32_t> lineStarts_;  ///< byte offset of each line's first byte
 };
 
+/// A field that holds one decimal number and nothing else but blanks around it and a leading '+'
+/// (std::from_chars's grammar otherwise): true with the value in `out`; false for anything else, and
+/// for a number that is not finite. The drawing and curve readers read their numbers with it.
+bool parseNumberField(std::string_view field, double& out);
+
 }  // namespace kerf::converter

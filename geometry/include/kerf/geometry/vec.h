@@ -16,6 +16,8 @@ using Vec3 = Eigen::Vector3d;
 
 inline constexpr double kPi = std::numbers::pi;
 inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
+/// Degrees per radian: an angle in radians times this is the angle in degrees.
+inline constexpr double kDegreesPerRadian = 180.0 / kPi;
 
 /// z component of the 3D cross product of (a, 0) and (b, 0).
 inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }

@@ -8,7 +8,7 @@
 #                                pre-commit, git and python3-yaml for the CI integration tests)
 # Skips apt entirely when everything is already installed.
 set -euo pipefail
-packages=(g++ cmake make pkg-config dpkg-dev libeigen3-dev libcli11-dev libmuparser-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
+packages=(g++ cmake ninja-build make pkg-config dpkg-dev libeigen3-dev libcli11-dev libmuparser-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libvtk9-dev libglfw3-dev libimgui-dev libstb-dev libgl-dev libosmesa6-dev libegl-dev libegl-mesa0)
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(linuxcnc-uspace python3 python3-ezdxf python3-shapely xvfb xauth pre-commit git python3-yaml)

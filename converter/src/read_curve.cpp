@@ -276,7 +276,8 @@ Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& dia
         std::size_t cut = s.find(',');
         if (cut == std::string_view::npos) cut = s.find_first_of(" \t");
         double x = 0, y = 0;
-        if (cut == std::string_view::npos || !parseNumberField(s.substr(0, cut), x) || !parseNumberField(s.substr(cut + 1), y)) {
+        if (cut == std::string_view::npos || !parseNumberField(s.substr(0, cut), x) ||
+            !parseNumberField(s.substr(cut + 1), y)) {
           diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
                       "a point is two numbers, X Y or X, Y (mm), not '" + std::string(s) + "'");
           ok = false;

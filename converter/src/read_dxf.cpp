@@ -23,9 +23,9 @@ namespace kerf::converter {
 
 namespace {
 
+using geometry::kPi;
 using geometry::Segment;
 using geometry::Vec2;
-using geometry::kPi;
 
 enum class ValueType { String, Double, Int16, Int32, Int64, Bool, Binary };
 

@@ -223,7 +223,8 @@ Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Di
     if (polarOff && polar) {
       polar = false;
       radius = position.norm();
-      if (radius > 0) c = geometry::unwrapDegrees(std::atan2(position.y(), position.x()) * geometry::kDegreesPerRadian, c);
+      if (radius > 0)
+        c = geometry::unwrapDegrees(std::atan2(position.y(), position.x()) * geometry::kDegreesPerRadian, c);
       y = 0.0;
       cKnown = true;
     }

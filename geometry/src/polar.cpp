@@ -16,7 +16,9 @@ PolarPoint toPolar(const Vec2& p, double previousC) {
   return q;
 }
 
-Vec2 fromPolar(const PolarPoint& q) { return {q.radius * std::cos(q.c / kDegreesPerRadian), q.radius * std::sin(q.c / kDegreesPerRadian)}; }
+Vec2 fromPolar(const PolarPoint& q) {
+  return {q.radius * std::cos(q.c / kDegreesPerRadian), q.radius * std::sin(q.c / kDegreesPerRadian)};
+}
 
 double spiralDeviation(const PolarPoint& a, const PolarPoint& b, const Segment& s, int samples) {
   double worst = 0.0;

@@ -53,6 +53,17 @@ TEST(parser_test, numbers_are_correctly_rounded) {
   EXPECT_EQ(p.words[4].value, 5.0);
 }
 
+// The drawing and curve readers' numbers: one finite number with blanks around it, nothing else.
+TEST(parser_test, a_number_field_is_one_finite_number) {
+  double v = 0;
+  EXPECT_TRUE(parseNumberField("  +12.5\t\r", v));
+  EXPECT_EQ(v, 12.5);
+  EXPECT_TRUE(parseNumberField("-1e-3", v));
+  EXPECT_EQ(v, -0.001);
+  for (const char* bad : {"", "  ", "+", "1.5 2", "1,5", "++1", "0x10", "inf", "nan", "1e999"})
+    EXPECT_FALSE(parseNumberField(bad, v)) << "'" << bad << "'";
+}
+
 TEST(parser_test, numbers_agree_with_strtod_up_to_15_significant_digits) {
   // Random numbers in the forms the scanner treats apart: signs, leading zeros before and after
   // the point, no integer part, no fraction, a bare point; strtod (correctly rounded) is the oracle.

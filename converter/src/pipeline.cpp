@@ -1,9 +1,11 @@
 // Sections: 1. the machine profile  2. the conventions from the evidence  3. the pipeline
 #include "kerf/converter/pipeline.h"
 
-#include "kerf/converter/analysis.h"
-#include "kerf/converter/curve.h"
-#include "kerf/converter/points.h"
+#include "kerf/converter/formats/3b/read_3b.h"
+#include "kerf/converter/formats/curve/read_curve.h"
+#include "kerf/converter/formats/polar/read_millturn.h"
+#include "kerf/converter/interpret/analysis.h"
+#include "kerf/converter/nc/number_format.h"
 
 #include <cstdio>
 #include <optional>
@@ -336,7 +338,7 @@ void noteHowRead(Pipeline& out, const MachineDetection& detection, const std::ve
 }
 
 /// The upper program of a two-file taper pair, parsed with the lower one's rules and interpreted
-/// with its conventions, paired move by move with the lower toolpath (pairing.h).
+/// with its conventions, paired move by move with the lower toolpath (interpret/analysis.h).
 void pairUpperProgram(Pipeline& out, SourceText upper, const InterpreterOptions& io, const ParseOptions& parse) {
   out.upperSource = std::make_unique<SourceFile>(std::move(upper.name), std::move(upper.text));
   Diagnostics upperDiags(100000);

@@ -20,9 +20,9 @@
 // every form (R of both signs, I J), G90 and G91 switching every few hundred blocks, and six
 // excursions across the ring and back, whose long chords cross one another (60 crossings): the
 // check must report them, not only find one.
-#include "kerf/converter/analysis.h"
-#include "kerf/converter/checks.h"
-#include "kerf/converter/summary.h"
+#include "kerf/converter/check/checks.h"
+#include "kerf/converter/check/summary.h"
+#include "kerf/converter/interpret/analysis.h"
 #include "kerf/geometry/intersection.h"
 #include "kerf/geometry/parallel.h"
 #include "kerf/geometry/tessellation.h"

@@ -6,7 +6,7 @@
 // xvfb-run measures the window's frame time on the same part (tests/bench/render_bench.sh).
 #include "bench_support.h"
 #include "kerf/converter/pipeline.h"
-#include "kerf/converter/report.h"
+#include "kerf/converter/report/report.h"
 #include "kerf/headless/context.h"
 #include "kerf/headless/png.h"
 #include "kerf/render/gl.h"

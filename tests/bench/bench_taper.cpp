@@ -7,9 +7,9 @@
 // The part: N moves around a circle of radius 5 m, alternating lines and R arcs that bulge out.
 // xyuv-abs: the upper contour is the lower one scaled by 0.999 about the centre (5 mm in, over
 // 50 mm: 5.7 degrees), arcs with their own R. taper-angle: the same lower contour under G51 A3.
-#include "kerf/converter/analysis.h"
-#include "kerf/converter/checks.h"
-#include "kerf/converter/summary.h"
+#include "kerf/converter/check/checks.h"
+#include "kerf/converter/check/summary.h"
+#include "kerf/converter/interpret/analysis.h"
 #include "kerf/geometry/ruled_surface.h"
 
 #include "bench_support.h"

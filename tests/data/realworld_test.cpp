@@ -10,7 +10,7 @@
 //                                 comments, the words of single-motion blocks shuffled, and with its
 //                                 profile given instead of detected: the same toolpath and findings.
 #include "kerf/converter/pipeline.h"
-#include "kerf/converter/report.h"
+#include "kerf/converter/report/report.h"
 
 #include "data_test_support.h"
 

@@ -5,13 +5,14 @@
 // tests/fuzz/corpus so CI replays what the fuzzer found.
 // For a quarter of the inputs the pipeline runs on one worker and on three, and the two readings
 // must be the same bit for bit, diagnostics included (the checks split their passes over threads).
+#include "kerf/converter/check/summary.h"
+#include "kerf/converter/formats/points/points.h"
 #include "kerf/converter/pipeline.h"
-#include "kerf/converter/points.h"
-#include "kerf/converter/report.h"
-#include "kerf/converter/summary.h"
+#include "kerf/converter/report/report.h"
 #include "kerf/geometry/ruled_surface.h"
 
 #include "../unit/test_support.h"
+#include "kerf/converter/formats/emit.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -29,6 +29,46 @@ function(forbid_includes files regex who)
   set(problems "${problems}" PARENT_SCOPE)
 endfunction()
 forbid_includes("${converter_files}" "kerf/(viewer|render|headless|export)|GL|glfw|imgui|vtk" "converter")
+# Inside converter, folders by role, each including only itself and the roles before it:
+#   nc (source text, numbers, diagnostics, parser) < interpret < check < formats < cam < report;
+# the two headers at the top, toolpath.h (data every role shares) and pipeline.h (the one route
+# of the commands), and pipeline.cpp beside them. No other source sits at the top of src/.
+set(converter_roles nc interpret check formats cam report)
+list(LENGTH converter_roles role_count)
+math(EXPR last_role "${role_count} - 1")
+foreach(i RANGE ${last_role})
+  list(GET converter_roles ${i} role)
+  set(later "")
+  foreach(j RANGE ${last_role})
+    if(j GREATER i)
+      list(GET converter_roles ${j} other)
+      list(APPEND later "${other}")
+    endif()
+  endforeach()
+  file(GLOB_RECURSE role_files "${SOURCE}/converter/src/${role}/*" "${SOURCE}/converter/include/kerf/converter/${role}/*")
+  if(later)
+    list(JOIN later "|" later_alternatives)
+    forbid_includes("${role_files}" "kerf/converter/(${later_alternatives})/|kerf/converter/pipeline\\.h" "converter/${role}")
+  else()
+    forbid_includes("${role_files}" "kerf/converter/pipeline\\.h" "converter/${role}")
+  endif()
+endforeach()
+file(GLOB top_sources "${SOURCE}/converter/src/*")
+foreach(f IN LISTS top_sources)
+  if(NOT IS_DIRECTORY "${f}" AND NOT f MATCHES "/pipeline\\.cpp$")
+    string(APPEND problems "${f}: a converter source belongs in its role's folder (${converter_roles})\n")
+  endif()
+endforeach()
+# A public header and its source share a name: include/kerf/converter/<role>/<name>.h is made by
+# src/<role>/<name>.cpp. Header-only: toolpath.h (data) and nc/diagnostic_table.h (the table).
+file(GLOB_RECURSE public_headers RELATIVE "${SOURCE}/converter/include/kerf/converter"
+     "${SOURCE}/converter/include/kerf/converter/*.h")
+foreach(h IN LISTS public_headers)
+  string(REGEX REPLACE "\\.h$" ".cpp" cpp "${h}")
+  if(NOT EXISTS "${SOURCE}/converter/src/${cpp}" AND NOT h MATCHES "^(toolpath|nc/diagnostic_table)\\.h$")
+    string(APPEND problems "converter/include/kerf/converter/${h}: no source of the same name (converter/src/${cpp})\n")
+  endif()
+endforeach()
 # The renderer and the headless contexts know nothing of windows or ImGui (README: layout).
 file(GLOB_RECURSE render_files "${SOURCE}/viewer/include/kerf/*.h" "${SOURCE}/viewer/src/render/*"
      "${SOURCE}/viewer/src/headless/*" "${SOURCE}/viewer/src/export/*" "${SOURCE}/shaders/*")

@@ -1,8 +1,8 @@
 // Helpers for converter tests: run the reading pipeline on a string.
 #pragma once
 
-#include "kerf/converter/analysis.h"
-#include "kerf/converter/checks.h"
+#include "kerf/converter/check/checks.h"
+#include "kerf/converter/interpret/analysis.h"
 
 #include <memory>
 #include <string>

@@ -1,6 +1,6 @@
-// Curves as drawings (converter/curve.h): expressions through muparser and point lists, fitted with
+// Curves as drawings (converter/formats/curve/read_curve.h): expressions through muparser and point lists, fitted with
 // biarcs; their errors at the line and column of what is wrong.
-#include "kerf/converter/curve.h"
+#include "kerf/converter/formats/curve/read_curve.h"
 
 #include "kerf/geometry/chain.h"
 

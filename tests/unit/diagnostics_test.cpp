@@ -1,6 +1,6 @@
 // The table of diagnostic codes (diagnostic_table.h): one row per code, in ascending order, each in
 // its family's hundreds, and docs/diagnostics.md made from it.
-#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/nc/diagnostics.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// The DXF reader (converter/dxf.h) on small drawings whose geometry is known by hand: bulges and
+// The DXF reader (converter/formats/dxf/read_dxf.h) on small drawings whose geometry is known by hand: bulges and
 // their direction, the object coordinate system of a mirrored arc, INSERT transforms, binary DXF
 // and its truncation. The real drawings are compared with ezdxf in tests/data/dxf_test.cpp.
-#include "kerf/converter/dxf.h"
+#include "kerf/converter/formats/dxf/read_dxf.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include "converter_support.h"
-#include "kerf/converter/report.h"
-#include "kerf/converter/summary.h"
+#include "kerf/converter/check/summary.h"
+#include "kerf/converter/report/report.h"
 
 #include <gtest/gtest.h>
 

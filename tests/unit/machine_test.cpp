@@ -1,9 +1,9 @@
 // Machine profiles: the built-ins, the text format, detection from a program's evidence, and what
 // a profile changes in the reading (through the pipeline every command takes).
-#include "kerf/converter/machine.h"
-#include "kerf/converter/emit.h"
+#include "kerf/converter/interpret/machine.h"
+#include "kerf/converter/formats/emit.h"
 #include "kerf/converter/pipeline.h"
-#include "kerf/converter/report.h"
+#include "kerf/converter/report/report.h"
 
 #include "converter_support.h"
 #include "test_support.h"
@@ -370,7 +370,7 @@ TEST(machine_test, the_checks_say_the_same_in_the_same_order_on_one_thread_and_o
 }
 
 // Plain blocks (X Y I J R F and G00-G03 only) take a short way through the interpreter
-// (run.cpp): what it cannot judge goes the general way and is said as before, and a profile that
+// (interpreter.cpp): what it cannot judge goes the general way and is said as before, and a profile that
 // gives G01 a meaning of its own closes the short way.
 TEST(machine_test, plain_blocks_say_what_every_block_says) {
   EXPECT_TRUE(has(read("G92 X0 Y0\nG01 X1. X2.\nM02\n"), Code::RepeatedWord));

@@ -1,4 +1,4 @@
-#include "kerf/converter/program.h"
+#include "kerf/converter/nc/program.h"
 
 #include "converter_support.h"
 #include "test_support.h"

@@ -1,8 +1,8 @@
 // kerf::render, kerf::headless and kerf::export: camera, scene, pixels, PNG, the SSIM error, and
 // mesh files read back with VTK's readers.
-#include "kerf/converter/analysis.h"
-#include "kerf/converter/checks.h"
-#include "kerf/converter/summary.h"
+#include "kerf/converter/check/checks.h"
+#include "kerf/converter/check/summary.h"
+#include "kerf/converter/interpret/analysis.h"
 #include "kerf/export/mesh_export.h"
 #include "kerf/headless/context.h"
 #include "kerf/headless/png.h"

@@ -1,12 +1,13 @@
 // 4-axis taper: dialects, heights, pairing, and every check with a part that trips it and a
 // near miss that must not; metamorphic reruns of the samples.
-#include "kerf/converter/analysis.h"
-#include "kerf/converter/checks.h"
-#include "kerf/converter/dialect.h"
-#include "kerf/converter/points.h"
-#include "kerf/converter/summary.h"
+#include "kerf/converter/check/checks.h"
+#include "kerf/converter/check/summary.h"
+#include "kerf/converter/formats/points/points.h"
+#include "kerf/converter/interpret/analysis.h"
+#include "kerf/converter/interpret/dialect.h"
 
 #include "converter_support.h"
+#include "kerf/converter/formats/emit.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>

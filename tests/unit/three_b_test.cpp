@@ -3,8 +3,8 @@
 // The expected G, Z and J are computed here independently of the writer: Z by the quadrant
 // rules of FORMATS §4 written out as angle ranges, J by summing |d coordinate| over 200,000 steps
 // of the arc. Each record is then read back, and must end where the arc ends.
-#include "kerf/converter/emit.h"
-#include "kerf/converter/read.h"
+#include "kerf/converter/formats/3b/read_3b.h"
+#include "kerf/converter/formats/emit.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 #include "gcode.h"
-#include "kerf/converter/program.h"
+#include "kerf/converter/nc/program.h"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 // The interpreter's state and its phases (interpreter.h gives the order). One class, its member
 // functions defined by phase in the files of this folder:
-//   run.cpp            the block loop, limits, labels; the end of the program
+//   interpreter.cpp    the block loop, limits, labels; the end of the program
 //   read_block.cpp     phase 1: words -> BlockWords
 //   fill_in.cpp        phase 2: BlockWords + modal state -> BlockPlan
 //   check_block.cpp    phase 3: what cannot mean anything
@@ -15,7 +15,7 @@
 #pragma once
 
 #include "gcode.h"
-#include "kerf/converter/interpreter.h"
+#include "kerf/converter/interpret/interpreter.h"
 #include "kerf/geometry/arc.h"
 #include "kerf/geometry/offset.h"
 
@@ -142,7 +142,7 @@ class Interpreter {
   Interpretation run();
 
  private:
-  // run.cpp
+  // interpreter.cpp
   void chooseDialect();
   void indexLabels();
   void findLegacyTaperCodes();

@@ -5,10 +5,10 @@
 #include "file_io.h"
 #include "load.h"
 
-#include "kerf/converter/cam.h"
-#include "kerf/converter/emit.h"
-#include "kerf/converter/points.h"
-#include "kerf/converter/report.h"
+#include "kerf/converter/cam/cam.h"
+#include "kerf/converter/formats/emit.h"
+#include "kerf/converter/nc/number_format.h"
+#include "kerf/converter/report/report.h"
 
 #include <CLI/CLI.hpp>
 

@@ -4,9 +4,9 @@
 #include "file_io.h"
 #include "load.h"
 
-#include "kerf/converter/ci_report.h"
-#include "kerf/converter/report.h"
-#include "kerf/converter/summary.h"
+#include "kerf/converter/check/summary.h"
+#include "kerf/converter/report/ci_report.h"
+#include "kerf/converter/report/report.h"
 #include "kerf/geometry/parallel.h"
 
 #include <CLI/CLI.hpp>

@@ -4,9 +4,9 @@
 #include "file_io.h"
 #include "load.h"
 
-#include "kerf/converter/emit.h"
-#include "kerf/converter/points.h"
-#include "kerf/converter/report.h"
+#include "kerf/converter/formats/emit.h"
+#include "kerf/converter/formats/points/points.h"
+#include "kerf/converter/report/report.h"
 
 #include <CLI/CLI.hpp>
 

@@ -2,7 +2,7 @@
 #include "commands.h"
 #include "load.h"
 
-#include "kerf/converter/report.h"
+#include "kerf/converter/report/report.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,12 +1,12 @@
-// kerf export FILE -o part.dxf: the contours as a drawing (converter/dxf_write.h); -o
+// kerf export FILE -o part.dxf: the contours as a drawing (converter/formats/dxf/write_dxf.h); -o
 // part.vtp|.stl|.ply: the ruled surface for ParaView and CAD, written with VTK by the drawing
-// module (draw/export_mesh.cpp). Its findings are those kerf check reports for the same options.
+// module (draw/export.cpp). Its findings are those kerf check reports for the same options.
 #include "commands.h"
 #include "draw_module.h"
 #include "file_io.h"
 #include "load.h"
 
-#include "kerf/converter/dxf_write.h"
+#include "kerf/converter/formats/dxf/write_dxf.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,7 +1,7 @@
 #include "load.h"
 
 #include "file_io.h"
-#include "kerf/converter/report.h"
+#include "kerf/converter/report/report.h"
 
 #include <unistd.h>
 

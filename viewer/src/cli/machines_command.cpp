@@ -2,7 +2,7 @@
 #include "commands.h"
 #include "load.h"
 
-#include "kerf/converter/machine.h"
+#include "kerf/converter/interpret/machine.h"
 
 #include <CLI/CLI.hpp>
 

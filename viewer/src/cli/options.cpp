@@ -1,10 +1,10 @@
 #include "options.h"
 
-#include "kerf/converter/ci_report.h"
+#include "kerf/converter/report/ci_report.h"
 
 #include "file_io.h"
-#include "kerf/converter/dialect.h"
-#include "kerf/converter/machine.h"
+#include "kerf/converter/interpret/dialect.h"
+#include "kerf/converter/interpret/machine.h"
 
 #include <CLI/CLI.hpp>
 

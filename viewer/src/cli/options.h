@@ -21,7 +21,7 @@ struct InputOptions {
   std::optional<std::string> filesFrom;  ///< --files-from: a list of files, folders or glob patterns ("-": stdin)
   std::optional<std::string> upper;      ///< --upper: two-file input
   std::optional<std::string> machine;    ///< --machine NAME or FILE
-  /// --curve "x=…; y=…" and --t A:B: a curve (converter/curve.h) instead of a file; files then
+  /// --curve "x=…; y=…" and --t A:B: a curve (converter/formats/curve/read_curve.h) instead of a file; files then
   /// holds kCurveInput.
   std::optional<std::string> curve, range;
   bool fileRequired = true;  ///< false: the command runs without one (kerf convert --list)

@@ -1,7 +1,7 @@
 #include "draw.h"
 
 #include "file_io.h"
-#include "kerf/converter/dialect.h"
+#include "kerf/converter/interpret/dialect.h"
 
 namespace kerf::cli {
 

@@ -4,7 +4,7 @@
 #include "file_io.h"
 #include "load.h"
 
-#include "kerf/converter/points.h"
+#include "kerf/converter/nc/number_format.h"
 #include "kerf/headless/context.h"
 #include "kerf/render/scene.h"
 #include "ui/picture.h"

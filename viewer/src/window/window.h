@@ -2,8 +2,8 @@
 // at each other: click a segment to select its block, click a line or a finding to see it.
 #pragma once
 
-#include "kerf/converter/diagnostics.h"
-#include "kerf/converter/source.h"
+#include "kerf/converter/nc/diagnostics.h"
+#include "kerf/converter/nc/source.h"
 #include "kerf/converter/toolpath.h"
 #include "kerf/render/renderer.h"
 #include "kerf/render/scene.h"

@@ -11,16 +11,16 @@
 //        ──interpret──▶ Toolpath ──[two files: pair]──▶ checks ──▶ Findings
 #pragma once
 
-#include "kerf/converter/cam.h"
-#include "kerf/converter/checks.h"
-#include "kerf/converter/diagnostics.h"
-#include "kerf/converter/dxf.h"
-#include "kerf/converter/interpreter.h"
-#include "kerf/converter/machine.h"
-#include "kerf/converter/program.h"
-#include "kerf/converter/read.h"
-#include "kerf/converter/source.h"
-#include "kerf/converter/summary.h"
+#include "kerf/converter/cam/cam.h"
+#include "kerf/converter/check/checks.h"
+#include "kerf/converter/check/summary.h"
+#include "kerf/converter/formats/dxf/read_dxf.h"
+#include "kerf/converter/formats/read.h"
+#include "kerf/converter/interpret/interpreter.h"
+#include "kerf/converter/interpret/machine.h"
+#include "kerf/converter/nc/diagnostics.h"
+#include "kerf/converter/nc/program.h"
+#include "kerf/converter/nc/source.h"
 #include "kerf/converter/toolpath.h"
 #include "kerf/geometry/chain.h"
 
@@ -53,7 +53,7 @@ struct ReadOptions {
   /// --side: a drawing's closed contours get the wire path at --offset on this side (cam.h).
   std::optional<WireSide> side;
   std::optional<bool> upperAxesUZ;             ///< --upper-axes uz
-  std::optional<double> dxfUnit;               ///< --dxf-units: mm per drawing unit; 0 follows $INSUNITS (dxf.h)
+  std::optional<double> dxfUnit;               ///< --dxf-units: mm per drawing unit; 0 follows $INSUNITS (read_dxf.h)
   double chainTolerance = 0.001;               ///< --chain-tolerance: drawing ends this close are joined, mm
   double curveTolerance = 0.001;               ///< drawing curves (SPLINE, ELLIPSE) as biarcs within this, mm
   std::size_t maxExecutedBlocks = 20'000'000;  ///< the interpreter's limits (InterpreterOptions)

@@ -1,7 +1,7 @@
 // Toolpath: what the program makes the wire do, as exact segments, one Move per motion.
 #pragma once
 
-#include "kerf/converter/program.h"
+#include "kerf/converter/nc/program.h"
 #include "kerf/geometry/ruled_surface.h"
 #include "kerf/geometry/segment.h"
 
@@ -18,8 +18,8 @@ namespace kerf::converter {
 enum class InputFormat : std::uint8_t {
   Iso,     ///< ISO 6983 G-code, in any machine's dialect
   ThreeB,  ///< Chinese fast-wire 3B code: `B x B y B J G Z`
-  Dxf,     ///< a DXF drawing (dxf.h): its contours, not a wire path
-  Curve,   ///< a curve (curve.h): an expression or a point list, fitted with biarcs; a drawing too
+  Dxf,     ///< a DXF drawing (read_dxf.h): its contours, not a wire path
+  Curve,   ///< a curve (read_curve.h): an expression or a point list, fitted with biarcs; a drawing too
 };
 
 enum class MoveKind : std::uint8_t { Rapid, Line, Arc };

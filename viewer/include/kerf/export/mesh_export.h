@@ -5,7 +5,7 @@
 // The namespace is kerf::exporter because `export` is a C++ keyword.
 #pragma once
 
-#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/toolpath.h"
 #include "kerf/render/scene.h"
 

@@ -6,7 +6,7 @@
 // contour swept up to a display height (SceneOptions::displayHeight).
 #pragma once
 
-#include "kerf/converter/diagnostics.h"
+#include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/toolpath.h"
 #include "kerf/geometry/ruled_surface.h"
 

@@ -1,0 +1,161 @@
+// Program: the blocks of an ISO (RS-274 / ISO 6983) NC text, word by word, with positions.
+//
+// The parser checks only what one block can tell (syntax, numbers, repeated words); what the
+// words mean is the interpreter's job (interpreter.h). docs/formats.md describes the syntax read.
+#pragma once
+
+#include "kerf/converter/nc/diagnostics.h"
+#include "kerf/converter/nc/source.h"
+
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace kerf::converter {
+
+/// std::lround inline (the readers round every G and M word): the same value for every finite
+/// |v| < 2^62, else lround's.
+inline long roundHalfAway(double v) {
+  if (!(v < 4.6e18 && v > -4.6e18)) return std::lround(v);
+  long t = static_cast<long>(v);                // towards zero
+  const double f = v - static_cast<double>(t);  // exact: |v| < 2^52, or v is whole and f is 0
+  if (f >= 0.5)
+    ++t;
+  else if (f <= -0.5)
+    --t;
+  return t;
+}
+
+/// What stands after a word's letter.
+enum class WordValue : std::uint8_t {
+  Number,     ///< a number: Word::value
+  Bare,       ///< nothing: an axis letter alone after G28 / G30 (`G28 X Y U V`: home these axes)
+  Direction,  ///< a sign alone (`Y+`, Sodick edge sensing): Word::value is +1 or -1
+  Register,   ///< a register expression (`XH111 + H112`, Sodick): known only at the machine
+  Macro,      ///< a macro B value (`X#100`, `X[#1+2]`): known only at the machine
+};
+
+struct Word {
+  char letter = 0;  ///< upper case A-Z
+  // One byte for both, so that a word stays 16 bytes (a program holds millions of them).
+  bool hasPoint : 1 = false;               ///< the number was written with a decimal point
+  WordValue kind : 3 = WordValue::Number;  ///< what the value is
+  /// The byte's other bits, unused; named so that copying a word writes whole bytes (unnamed, GCC
+  /// reads the byte first to keep them).
+  std::uint8_t unusedBits : 4 = 0;
+  std::uint16_t length = 0;  ///< bytes of the whole word in the source (letter + value)
+  std::uint32_t offset = 0;  ///< byte offset of the letter
+  double value = 0.0;        ///< as written (no unit conversion); 0 unless a Number
+
+  [[nodiscard]] SourceSpan span() const { return {offset, length}; }
+  [[nodiscard]] bool isNumber() const { return kind == WordValue::Number; }
+};
+static_assert(sizeof(Word) == 16, "a Word is 16 bytes: a program holds millions of them");
+
+/// A setting line kept verbatim, e.g. a Sodick register `H001 = +000000.1300` or a condition
+/// `C000 = ...`, or SKD `E001= ...`. Kerf stores them; it does not interpret them.
+struct Setting {
+  std::string name;   ///< as written before '=', upper-cased letter + digits
+  std::string value;  ///< text after '=', trimmed
+  SourceSpan span;
+  std::uint32_t line = 0;
+};
+
+enum class BlockKind : std::uint8_t {
+  Words,      ///< an ordinary block of words
+  MacroCall,  ///< a Sodick macro call `QAIC(2,1,...)` or `Q99()LH114`: name and arguments, no words
+  MacroB,     ///< a Fanuc macro B statement (`#100 = ...`, `WHILE[...]DO1`, `END1`, `IF`, `GOTO`)
+};
+
+struct Block {
+  /// Most words a block may hold (wordCount and upperFrom are 16 bits, so that a block stays 24
+  /// bytes: a program holds one per line). The parser reports a longer block (K0114).
+  static constexpr std::size_t kMaxWords = 0xFFFF;
+
+  std::uint32_t firstWord = 0;
+  std::uint32_t offset = 0;  ///< start of the block's text
+  std::uint32_t length = 0;  ///< to the end of the block's text (without the line break)
+  std::uint32_t line = 0;    ///< 1-based
+  std::uint16_t wordCount = 0;
+  /// Words from this index on (relative to firstWord) describe the upper contour. The parser
+  /// orders a block's words so that the lower side's come first: those before a Sodick ':' or a
+  /// second motion word after a coordinate (`G2 X Y I J G1 U V`, cnc3) in the order written;
+  /// otherwise by letter — U V K L, and a second I J or R, belong to the upper side, whatever the
+  /// order (RS274 gives word order no meaning). Equal to wordCount when the block has no upper side.
+  std::uint16_t upperFrom = 0;
+  BlockKind kind = BlockKind::Words;
+  bool colon : 1 = false;          ///< the upper side was opened with ':'
+  bool twoMotions : 1 = false;     ///< the upper side was opened by a second motion word (cnc3)
+  bool blockDelete : 1 = false;    ///< started with '/'
+  bool hasError : 1 = false;       ///< the parser reported an error in this block
+  bool lowerCase : 1 = false;      ///< some word letter was written in lower case
+  bool unusualValues : 1 = false;  ///< some word's value is not a number (WordValue other than Number)
+  /// Words only, every one X Y I J R F or a motion code G00-G03, all numbers, none written in
+  /// lower case, one side: nothing the whole-program scans look for (machine and dialect
+  /// evidence, labels, calls, polar and rotary words), so they pass such a block by. Most blocks
+  /// of a wire program are.
+  bool plain : 1 = false;
+  std::uint8_t unusedBit : 1 = 0;  ///< named so that copying a block writes whole bytes (see Word)
+  [[nodiscard]] SourceSpan span() const { return {offset, length}; }
+};
+static_assert(sizeof(Block) == 24, "a Block is 24 bytes: a program holds one per line");
+
+/// A plane height written in the program outside the word set (docs/taper.md): Sodick `TP` /
+/// `TN` words and LinuxCNC `(AXIS,XY_Z_POS,z)` / `(AXIS,UV_Z_POS,z)` comments.
+struct HeightWord {
+  enum class Kind : std::uint8_t { SodickProgramPlane, SodickLowerPlane, LinuxCncXyPlane, LinuxCncUvPlane } kind{};
+  double value = 0.0;  ///< as written (no unit conversion)
+  bool hasPoint = true;
+  SourceSpan span;
+  std::uint32_t line = 0;
+};
+
+/// How a machine's text is split into blocks (its profile says, machine.h).
+struct ParseOptions {
+  /// true: `;` ends a block and what follows on the line is another block (Sodick);
+  /// false: `;` starts a comment that runs to the end of the line (LinuxCNC, most controls).
+  bool semicolonEndsBlock = false;
+  /// The second plane's axes are named U Z: read Z as V (some hot-wire firmware).
+  bool upperAxesUZ = false;
+
+  bool operator==(const ParseOptions&) const = default;
+};
+
+struct Program {
+  const SourceFile* source = nullptr;
+  /// The words of the blocks, in order.
+  std::vector<Word> words;
+  /// Only blocks with at least one word, a macro statement or an error.
+  std::vector<Block> blocks;
+  std::vector<Setting> settings;
+  std::vector<HeightWord> heights;
+  bool anyDecimalPoint = false;          ///< some length word was written with a decimal point
+  double largestInteger = 0.0;           ///< largest |value| of a length word written without a point
+  std::uint32_t largestIntegerWord = 0;  ///< index of that word in words
+  std::uint32_t integerLengthWords = 0;  ///< length words written without a decimal point
+  /// The blocks that are not plain (Block::plain), in order. A plain block holds no evidence of a
+  /// dialect or a machine, no subprogram call, label or mill-turn code: the scans for those go
+  /// through these alone (a long program's thousands of moves are plain). parseProgram fills it.
+  std::vector<std::uint32_t> notPlain;
+
+  [[nodiscard]] std::span<const Word> wordsOf(const Block& b) const {
+    return {words.data() + b.firstWord, b.wordCount};
+  }
+  [[nodiscard]] std::span<const Word> lowerWordsOf(const Block& b) const {
+    return {words.data() + b.firstWord, b.upperFrom};
+  }
+  [[nodiscard]] std::span<const Word> upperWordsOf(const Block& b) const {
+    return {words.data() + b.firstWord + b.upperFrom, static_cast<std::size_t>(b.wordCount - b.upperFrom)};
+  }
+  /// The block's text as written.
+  [[nodiscard]] std::string_view textOf(const Block& b) const { return source->text().substr(b.offset, b.length); }
+};
+
+/// Parses the whole text. Errors go to diags; a block with an error is kept (hasError) so the
+/// interpreter can skip it and go on finding more problems. A UTF-8 byte-order mark is skipped;
+/// lines end at LF, CR LF or a lone CR.
+Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOptions& options = {});
+
+}  // namespace kerf::converter

@@ -1,0 +1,61 @@
+// Source text and positions in it.
+//
+// The text is kept exactly as read; nothing rewrites it (no in-place lowercasing). Positions are
+// byte offsets; lines and columns are 1-based, columns count bytes. A line ends at LF, at CR LF
+// or at a lone CR (old Mac and some controllers' files), so every reader counts lines alike.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace kerf::converter {
+
+struct SourceSpan {
+  std::uint32_t offset = 0;
+  std::uint32_t length = 0;
+
+  /// A span that stands for the whole file (a finding about the program, not one place).
+  static constexpr SourceSpan wholeFile() { return {0xFFFFFFFFu, 0}; }
+  [[nodiscard]] constexpr bool isWholeFile() const { return offset == 0xFFFFFFFFu; }
+};
+
+struct SourceLocation {
+  std::uint32_t line = 0;    ///< 1-based
+  std::uint32_t column = 0;  ///< 1-based, in bytes
+};
+
+class SourceFile {
+ public:
+  /// Largest text accepted (offsets are 32-bit).
+  static constexpr std::size_t kMaxSize = 1u << 31;
+
+  SourceFile(std::string name, std::string text);
+
+  [[nodiscard]] const std::string& name() const { return name_; }
+  [[nodiscard]] std::string_view text() const { return text_; }
+  [[nodiscard]] SourceLocation locate(std::uint32_t offset) const;
+  /// The text of a 1-based line, without its line break.
+  [[nodiscard]] std::string_view lineText(std::uint32_t line) const;
+  /// Byte offsets [begin, end) of a 1-based line, without its line break.
+  [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> lineRange(std::uint32_t line) const;
+  [[nodiscard]] std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
+
+ private:
+  std::string name_;
+  std::string text_;
+  std::vector<std::uint32_t> lineStarts_;  ///< byte offset of each line's first byte
+};
+
+/// s without the blanks (space, tab, CR, LF, VT, FF) at either end.
+std::string_view trimBlanks(std::string_view s);
+
+/// A field that holds one decimal number and nothing else but blanks around it and a leading '+'
+/// (std::from_chars's grammar otherwise): true with the value in `out`; false for anything else, and
+/// for a number that is not finite. The drawing and curve readers read their numbers with it.
+bool parseNumberField(std::string_view field, double& out);
+
+}  // namespace kerf::converter

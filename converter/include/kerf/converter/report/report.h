@@ -1,0 +1,34 @@
+// Reports: `kerf check` and `kerf explain` as text and as JSON. Strings out, nothing printed.
+#pragma once
+
+#include "kerf/converter/cam/cam.h"
+#include "kerf/converter/check/summary.h"
+#include "kerf/converter/formats/dxf/read_dxf.h"
+#include "kerf/converter/nc/diagnostics.h"
+#include "kerf/converter/toolpath.h"
+
+#include <string>
+
+namespace kerf::converter {
+
+/// Diagnostics, compiler style, in order, with a closing count line.
+std::string formatDiagnosticsText(const Diagnostics& diags);
+
+/// The summary block of `kerf check`.
+std::string formatSummaryText(const std::string& file, const Summary& summary, const Diagnostics& diags);
+
+/// `kerf check --json`: {"file", "verdict", "diagnostics": [...], "summary": {...}}; a drawing adds
+/// "drawing", and with its wire paths (`wires`, per contour) each closed contour's exact elements
+/// and its "wire" (docs/cam.md).
+std::string checkReportJson(const std::string& file, const Summary& summary, const Diagnostics& diags,
+                            const DrawingResult* drawing = nullptr, const std::vector<ContourWire>* wires = nullptr);
+
+/// A stable, fixed-decimal trace of the Toolpath and the diagnostics (golden files).
+std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags);
+
+/// `kerf explain`: each move, how its geometry follows from its words.
+std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling);
+/// `kerf explain --json`: {"file", "sampling", "moves": [{line, kind, start, end, centre, ...}]}.
+std::string explainJson(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling);
+
+}  // namespace kerf::converter

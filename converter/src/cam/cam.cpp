@@ -1,0 +1,314 @@
+// kerf cam: a drawing's contours into a toolpath (cam.h; docs/cam.md).
+#include "kerf/converter/cam/cam.h"
+
+#include "kerf/geometry/intersection.h"
+
+#include "kerf/converter/nc/number_format.h"
+#include "kerf/geometry/chain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace kerf::converter {
+
+using geometry::Segment;
+using geometry::Vec2;
+
+namespace {
+
+std::vector<Segment> reversedPath(std::span<const Segment> path) {
+  std::vector<Segment> r;
+  r.reserve(path.size());
+  for (auto it = path.rbegin(); it != path.rend(); ++it) r.push_back(it->reversed());
+  return r;
+}
+
+/// The loop rotated to begin at element k.
+template <class T>
+std::vector<T> rotated(const std::vector<T>& loop, std::size_t k) {
+  std::vector<T> r(loop.begin() + static_cast<std::ptrdiff_t>(k), loop.end());
+  r.insert(r.end(), loop.begin(), loop.begin() + static_cast<std::ptrdiff_t>(k));
+  return r;
+}
+
+/// The wire loop rotated (and its nearest piece split) so that it begins at its point nearest p.
+std::vector<Segment> loopFrom(const std::vector<geometry::WirePiece>& loop, const Vec2& p, double tol) {
+  std::size_t best = 0;
+  double bestT = 0, bestD = 1e300;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const double t = loop[i].segment.parameterOf(p);
+    const double d = (loop[i].segment.pointAt(t) - p).norm();
+    if (d < bestD) bestD = d, best = i, bestT = t;
+  }
+  std::vector<Segment> segs;
+  for (const geometry::WirePiece& w : loop) segs.push_back(w.segment);
+  const Segment& s = segs[best];
+  const double len = s.length();
+  if (bestT * len <= tol) return rotated(segs, best);
+  if ((1 - bestT) * len <= tol) return rotated(segs, (best + 1) % segs.size());
+  const Segment head = geometry::subSegment(s, 0, bestT), tail = geometry::subSegment(s, bestT, 1);
+  std::vector<Segment> r{tail};
+  for (std::size_t k = 1; k < segs.size(); ++k) r.push_back(segs[(best + k) % segs.size()]);
+  r.push_back(head);
+  r.back().end = r.front().start;
+  return r;
+}
+
+Vec2 rightNormal(const Vec2& t) { return {t.y(), -t.x()}; }
+
+}  // namespace
+
+std::vector<int> nestingDepths(std::span<const geometry::Chain> contours) {
+  std::vector<int> depth(contours.size(), 0);
+  std::vector<std::span<const Segment>> loops;
+  std::vector<Vec2> probes;
+  std::vector<std::size_t> self, of;  // of: the contour each closed loop is
+  for (std::size_t c = 0; c < contours.size(); ++c) {
+    if (!contours[c].closed) continue;
+    self.push_back(loops.size());
+    of.push_back(c);
+    loops.emplace_back(contours[c].path);
+    probes.push_back(contours[c].path.front().pointAt(0.5));
+  }
+  const std::vector<int> around = geometry::loopsAround(loops, probes, self);
+  for (std::size_t k = 0; k < of.size(); ++k) depth[of[k]] = around[k];
+  return depth;
+}
+
+ContourWire offsetContour(std::span<const Segment> contour, double radius, WireSide side) {
+  ContourWire w;
+  const double area = geometry::signedArea(contour);
+  double length = 0.0;
+  for (const Segment& s : contour) length += s.length();
+  if (std::abs(area) <= 1e-6 * length) {  // no inside and no outside: not a part
+    w.degenerate = true;
+    return w;
+  }
+  const bool ccw = area > 0;
+  // Outside of a counter-clockwise contour is right of travel (negative).
+  w.distance = (side == WireSide::Outside) == ccw ? -radius : radius;
+  const geometry::WireOffsetResult r = geometry::wireOffset(contour, w.distance);
+  w.loops = r.paths;
+  w.lost = r.lost;
+  w.refused = r.refused;
+  if (r.tooMuchWork) w.tooMuchWork = r.tests - 1;
+  return w;
+}
+
+void reportContourWire(const ContourWire& wire, std::size_t number, const DrawingResult& drawing,
+                       const geometry::Chain& chain, double radius, const SourceFile* source, Diagnostics& diags) {
+  auto spanOf = [&](std::size_t k) {
+    const DrawingElement& e = drawing.drawing.elements[chain.elements[k]];
+    return e.span.length ? e.span : SourceSpan::wholeFile();
+  };
+  const std::string name = "contour " + std::to_string(number);
+  if (wire.degenerate) {
+    diags.warning(Code::WirePathSplits, source, spanOf(0),
+                  name + " encloses no area: it runs back over itself, so it has no inside or outside to cut",
+                  "the drawing may hold the same lines twice; the wire path leaves it out");
+    return;
+  }
+  if (wire.refused) {
+    diags.error(Code::WireOffsetRefused, source, spanOf(0),
+                wire.tooMuchWork
+                    ? "the wire offset of " + name + " needs more than " + std::to_string(wire.tooMuchWork) +
+                          " exact tests of pieces whose boxes overlap (long elements side by side, as in a star of "
+                          "thin spikes): refused, not computed"
+                    : "the wire offset of " + name + " needs more pieces than the budget allows: not computed");
+    return;
+  }
+  for (const geometry::LostRun& run : wire.lost) {
+    const std::size_t k = run.first;
+    if (run.fillet) {
+      diags.note(Code::InsideCornerRadius, source, spanOf(k),
+                 "the inside corner of " + name + " at " + formatPoint(run.where) + " has radius " +
+                     formatFixed(chain.path[k].radius, 3) + " mm, smaller than the wire offset " +
+                     formatFixed(radius, 3) + " mm: the wire cuts it with radius " + formatFixed(radius, 3) + " mm",
+                 formatFixed(run.uncut, 4) + " mm of material stays in the corner");
+      continue;
+    }
+    diags.warning(Code::WireCannotReach, source, spanOf(k),
+                  "the wire (offset " + formatFixed(radius, 3) + " mm, " + formatFixed(2 * radius, 3) +
+                      " mm wide) cannot reach " + std::to_string(run.count) + " element" + (run.count == 1 ? "" : "s") +
+                      " of " + name + " from element " + std::to_string(k + 1) +
+                      ": a slot or recess narrower than the wire; up to " + formatFixed(run.uncut, 3) +
+                      " mm of material stays at " + formatPoint(run.where),
+                  "a smaller wire, or a second operation, cuts it; the wire path leaves it out");
+  }
+  if (wire.loops.empty()) {
+    diags.error(Code::WirePathSplits, source, spanOf(0),
+                name + " is smaller than the wire: at an offset of " + formatFixed(radius, 3) +
+                    " mm on its inside nothing is left to cut");
+  } else if (wire.loops.size() > 1) {
+    diags.warning(Code::WirePathSplits, source, spanOf(0),
+                  "the wire path of " + name + " splits into " + std::to_string(wire.loops.size()) +
+                      " loops: the contour narrows below the wire's width somewhere between them",
+                  "each loop is cut on its own");
+  }
+}
+
+std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceFile* source, const CamOptions& o,
+                                     Diagnostics& diags) {
+  const std::vector<geometry::Chain>& chains = drawing.contours;
+  // The contours to cut.
+  std::vector<std::size_t> chosen;
+  for (std::size_t c = 0; c < chains.size(); ++c) {
+    if (o.contour && *o.contour != c + 1) continue;
+    if (!chains[c].closed && !o.openPaths) {
+      if (o.contour)
+        diags.error(Code::ContourOpen, source, SourceSpan::wholeFile(),
+                    "contour " + std::to_string(c + 1) + " does not close: a wire cannot cut it as a part");
+      continue;
+    }
+    chosen.push_back(c);
+  }
+  if (o.contour && *o.contour > chains.size()) {
+    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(),
+                "--contour " + std::to_string(*o.contour) + ": the drawing has " + std::to_string(chains.size()) +
+                    " contour" + (chains.size() == 1 ? "" : "s"));
+    return std::nullopt;
+  }
+  if (chosen.empty()) {
+    if (!o.contour)
+      diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "the drawing has no closed contour to cut",
+                  chains.empty() ? std::string() : "--open-paths cuts open contours along the drawing");
+    return std::nullopt;
+  }
+  if (o.entry && chosen.size() > 1) {
+    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(),
+                "--entry gives one start hole, but " + std::to_string(chosen.size()) +
+                    " contours are cut: choose one with --contour");
+    return std::nullopt;
+  }
+  // Shifted paths, and how deep each sits inside the others.
+  std::vector<std::vector<Segment>> paths(chains.size());
+  for (std::size_t c : chosen) {
+    for (Segment s : chains[c].path) {
+      s.start += o.shift;
+      s.end += o.shift;
+      s.centre += o.shift;
+      paths[c].push_back(s);
+    }
+  }
+  const std::vector<int> depth = nestingDepths(chains);
+  // Holes first (deepest first), then in the drawing's order.
+  std::stable_sort(chosen.begin(), chosen.end(), [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
+
+  CamResult result;
+  Toolpath& tp = result.toolpath;
+  tp.format = InputFormat::Iso;
+  bool first = true;
+  Vec2 at = Vec2::Zero();
+  // A rapid from where the wire is to p (the first path starts there).
+  auto travelTo = [&](const Vec2& p) {
+    if (first) {
+      tp.start = p;
+      first = false;
+    } else if ((p - at).norm() > 1e-12) {
+      Move rapid;
+      rapid.kind = MoveKind::Rapid;
+      rapid.lower = Segment::line(at, p);
+      tp.moves.push_back(rapid);
+    }
+    at = p;
+  };
+  // Cuts along the segments; returns their length.
+  auto cut = [&](std::span<const Segment> path, WireOffset code) {
+    double length = 0.0;
+    for (const Segment& s : path) {
+      Move m;
+      m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
+      m.lower = s;
+      m.wireOffset = code;
+      tp.moves.push_back(m);
+      length += s.length();
+    }
+    if (!path.empty()) at = path.back().end;
+    result.cutLength += length;
+    return length;
+  };
+  for (std::size_t c : chosen) {
+    CamContour info;
+    info.number = c + 1;
+    info.depth = depth[c];
+    info.side = sideAtDepth(o.side, depth[c]);
+    std::vector<Segment> contour = paths[c];
+    info.elements = contour.size();
+    if (!chains[c].closed) {  // --open-paths: as drawn, from its first end
+      info.open = true;
+      for (const Segment& s : contour) info.contourLength += s.length();
+      if (o.offset > 0 && !o.controllerOffset) {
+        const DrawingElement& e = drawing.drawing.elements[chains[c].elements.front()];
+        diags.warning(Code::ContourOpen, source, e.span.length ? e.span : SourceSpan::wholeFile(),
+                      "contour " + std::to_string(c + 1) +
+                          " is open: cut along it as drawn, the wire centre on the line, without the offset",
+                      "an open contour has no inside or outside; close it to cut a part");
+      }
+      travelTo(contour.front().start);
+      info.wireLength += cut(contour, WireOffset::Off);
+      result.contours.push_back(info);
+      continue;
+    }
+    // Orientation: the wire right of travel unless asked for the left; outside that is counter-clockwise.
+    const bool left = o.wireOnLeft.value_or(false);
+    const bool wantCcw = (info.side == WireSide::Outside) != left;
+    if ((geometry::signedArea(contour) > 0) != wantCcw) contour = reversedPath(contour);
+    info.area = std::abs(geometry::signedArea(contour));
+    for (const Segment& s : contour) info.contourLength += s.length();
+    // Start: the vertex nearest the point asked for (or the start hole).
+    const std::optional<Vec2> near = o.start ? o.start : o.entry;
+    if (near) {
+      std::size_t best = 0;
+      for (std::size_t k = 1; k < contour.size(); ++k)
+        if ((contour[k].start - *near).norm() < (contour[best].start - *near).norm()) best = k;
+      contour = rotated(contour, best);
+    }
+    const Vec2 startVertex = contour.front().start;
+    // The wire path.
+    std::vector<std::vector<Segment>> loops;
+    if (o.controllerOffset || o.offset <= 0) {
+      loops.push_back(contour);
+    } else {
+      const ContourWire wire = offsetContour(contour, o.offset, info.side);
+      reportContourWire(wire, c + 1, drawing, chains[c], o.offset, source, diags);
+      for (const auto& loop : wire.loops) loops.push_back(loopFrom(loop, startVertex, o.tolerance));
+    }
+    // The start hole: given, or lead-in mm out from the start vertex on the wire's side.
+    const Vec2 tIn = contour.back().tangentAt(1), tOut = contour.front().tangentAt(0);
+    Vec2 n = rightNormal(tIn) + rightNormal(tOut);
+    if (left) n = -n;
+    if (n.norm() < 1e-9) n = left ? -rightNormal(tOut) : rightNormal(tOut);
+    n.normalize();
+    const WireOffset offsetCode = !o.controllerOffset ? WireOffset::Off : left ? WireOffset::Left : WireOffset::Right;
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      const std::vector<Segment>& loop = loops[l];
+      const Vec2 begin = loop.front().start;
+      // The lead-in stays inside what it starts from: where the scrap is narrower than the lead-in
+      // (a small hole), the start hole goes halfway to the wire path's other side.
+      double leadLength = o.leadIn;
+      if (!(o.entry && l == 0) && leadLength > 0) {
+        const Segment ray = Segment::line(begin + 1e-6 * n, begin + (2 * leadLength + 1e-6) * n);
+        double nearest = 2 * leadLength;
+        for (const Segment& s : loop) {
+          const geometry::SegmentIntersection x = geometry::intersect(ray, s, 1e-9);
+          for (int k = 0; k < x.count; ++k) nearest = std::min(nearest, (x.points[k] - begin).norm());
+        }
+        leadLength = std::min(leadLength, 0.5 * nearest);
+      }
+      const Vec2 entry = o.entry && l == 0 ? *o.entry : begin + leadLength * n;
+      travelTo(entry);
+      if ((begin - entry).norm() > 1e-12) {
+        const Segment lead = Segment::line(entry, begin);
+        cut(std::span<const Segment>(&lead, 1), offsetCode);
+      }
+      info.wireLength += cut(loop, offsetCode);
+    }
+    result.contours.push_back(info);
+  }
+  tp.endedProperly = true;
+  tp.blocks = tp.moves.size();
+  return result;
+}
+
+}  // namespace kerf::converter

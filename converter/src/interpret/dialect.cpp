@@ -1,0 +1,206 @@
+#include "kerf/converter/interpret/dialect.h"
+
+#include "kerf/converter/nc/number_format.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace kerf::converter {
+
+const char* dialectName(Dialect d) {
+  switch (d) {
+    case Dialect::Plain: return "plain";
+    case Dialect::XyuvAbs: return "xyuv-abs";
+    case Dialect::XyuvRel: return "xyuv-rel";
+    case Dialect::XyuvLinuxCnc: return "xyuv-linuxcnc";
+    case Dialect::SodickColon: return "sodick-colon";
+    case Dialect::TaperAngle: return "taper-angle";
+    case Dialect::TwoFile: return "two-file";
+  }
+  return "plain";
+}
+
+std::optional<Dialect> parseDialect(std::string_view name) {
+  for (Dialect d : {Dialect::Plain, Dialect::XyuvAbs, Dialect::XyuvRel, Dialect::XyuvLinuxCnc, Dialect::SodickColon,
+                    Dialect::TaperAngle})
+    if (name == dialectName(d)) return d;
+  return std::nullopt;
+}
+
+namespace {
+
+struct Evidence {
+  std::string what;
+  SourceSpan span;
+  [[nodiscard]] bool found() const { return !what.empty(); }
+  void set(std::string w, SourceSpan s) {
+    if (found()) return;
+    what = std::move(w);
+    span = s;
+  }
+};
+
+std::string mm(double v) { return formatFixed(v, 3); }
+
+/// Absolute U V track X Y: |U - X| is small against |U|. Relative U V are small deviations:
+/// |U| is small against |U - X|. Compared over every U/V word of the motion blocks, with X Y
+/// (and U V) modal in G90 and per block in G91.
+struct NumberEvidence {
+  double deviation = 0.0;  ///< sum of |U - X| and |V - Y|
+  double magnitude = 0.0;  ///< sum of |U| and |V|
+  std::size_t samples = 0;
+  SourceSpan first;
+  std::uint32_t firstLine = 0;
+};
+
+NumberEvidence compareNumbers(const Program& program) {
+  NumberEvidence e;
+  bool incremental = false;
+  double x = 0, y = 0;
+  for (const Block& b : program.blocks) {
+    bool setPosition = false;
+    const Word *u = nullptr, *v = nullptr, *wx = nullptr, *wy = nullptr;
+    for (const Word& w : program.wordsOf(b)) {
+      if (!w.isNumber()) continue;
+      if (w.letter == 'G') {
+        if (w.value == 90) incremental = false;
+        if (w.value == 91) incremental = true;
+        if (w.value == 92) setPosition = true;
+      }
+      if (w.letter == 'U' && !u) u = &w;
+      if (w.letter == 'V' && !v) v = &w;
+      if (w.letter == 'X' && !wx) wx = &w;
+      if (w.letter == 'Y' && !wy) wy = &w;
+    }
+    if (incremental) {
+      x = wx ? wx->value : 0.0;
+      y = wy ? wy->value : 0.0;
+    } else {
+      if (wx) x = wx->value;
+      if (wy) y = wy->value;
+    }
+    if (setPosition || (!u && !v)) continue;
+    auto add = [&](const Word* w, double along) {
+      if (!w) return;
+      const double dev = std::abs(w->value - along), mag = std::abs(w->value);
+      if (dev < 1e-9 && mag < 1e-9) return;  // zero against zero tells nothing
+      e.deviation += dev;
+      e.magnitude += mag;
+      if (e.samples++ == 0) {
+        e.first = b.span();
+        e.firstLine = b.line;
+      }
+    };
+    add(u, x);
+    add(v, y);
+  }
+  return e;
+}
+
+}  // namespace
+
+DialectDetection detectDialect(const Program& program, const MachineProfile& machine) {
+  Evidence colon, taperAngle, colonMode, uv, abs, rel, linuxcnc;
+  for (const std::uint32_t index : program.notPlain) {  // a plain block holds no evidence
+    const Block& b = program.blocks[index];
+    if (b.colon) colon.set(onLine("':'", b.line), b.span());
+    bool setPosition = false, hasUv = false, upperCentre = false, kl = false, g92ij = false;
+    const auto words = program.wordsOf(b);
+    for (std::size_t k = 0; k < words.size(); ++k) {
+      const Word& w = words[k];
+      const bool upperSide = k >= b.upperFrom;
+      if (w.letter == 'G' && w.isNumber()) {
+        const long tenths = roundHalfAway(w.value * 10);
+        if (tenths == 510 || tenths == 520) taperAngle.set(onLine(tenths == 510 ? "G51" : "G52", b.line), w.span());
+        if (tenths >= 1400 && tenths <= 1420 && tenths % 10 == 0)
+          colonMode.set(onLine("G" + std::to_string(tenths / 10), b.line), w.span());
+        if (tenths == 920) setPosition = true;
+      } else if (w.letter == 'M' && w.isNumber()) {
+        const long m = roundHalfAway(w.value);
+        if (m == 100 || m == 101) abs.set(onLine("M" + std::to_string(m), b.line), w.span());
+      } else if (w.letter == 'U' || w.letter == 'V') {
+        hasUv = true;
+      } else if (upperSide && (w.letter == 'I' || w.letter == 'J' || w.letter == 'R')) {
+        upperCentre = true;
+      } else if (w.letter == 'K' || w.letter == 'L') {
+        kl = true;
+      }
+      if (setPosition && (w.letter == 'I' || w.letter == 'J')) g92ij = true;
+    }
+    if (hasUv && !setPosition) {
+      uv.set(onLine("U/V", b.line), b.span());
+      if (b.twoMotions) abs.set(onLine("a second motion word for U V", b.line), b.span());
+      if (upperCentre) abs.set(onLine("a second I J / R for the upper arc", b.line), b.span());
+      if (kl && !upperCentre) rel.set(onLine("K L with U V", b.line), b.span());
+    }
+    if (g92ij) rel.set(onLine("G92 with I J (NCVC plane heights)", b.line), b.span());
+  }
+  for (const HeightWord& h : program.heights)
+    if (h.kind == HeightWord::Kind::LinuxCncUvPlane || h.kind == HeightWord::Kind::LinuxCncXyPlane)
+      linuxcnc.set(onLine(h.kind == HeightWord::Kind::LinuxCncUvPlane ? "(AXIS,UV_Z_POS)" : "(AXIS,XY_Z_POS)", h.line),
+                   h.span);
+
+  DialectDetection d;
+  auto choose = [&](Dialect dialect, const Evidence& e) {
+    d.dialect = dialect;
+    d.reason = e.what;
+    d.span = e.span;
+  };
+  if (colon.found()) {
+    choose(Dialect::SodickColon, colon);
+  } else if (taperAngle.found()) {
+    choose(Dialect::TaperAngle, taperAngle);
+  } else if (colonMode.found()) {
+    choose(Dialect::SodickColon, colonMode);
+  } else if (uv.found()) {
+    const int kinds = (abs.found() ? 1 : 0) + (rel.found() ? 1 : 0) + (linuxcnc.found() ? 1 : 0);
+    if (kinds == 1) {
+      if (abs.found()) choose(Dialect::XyuvAbs, abs);
+      if (rel.found()) choose(Dialect::XyuvRel, rel);
+      if (linuxcnc.found()) choose(Dialect::XyuvLinuxCnc, linuxcnc);
+      return d;
+    }
+    if (kinds == 0 && machine.uvDialect) {
+      choose(*machine.uvDialect, uv);
+      d.reason = uv.what + ", which the " + machine.name + " profile reads as " + dialectName(*machine.uvDialect);
+      return d;
+    }
+    if (kinds == 0) {
+      const NumberEvidence n = compareNumbers(program);
+      const double count = static_cast<double>(std::max<std::size_t>(n.samples, 1));
+      const std::string numbers = "mean |U - X|, |V - Y| " + mm(n.deviation / count) + " against mean |U|, |V| " +
+                                  mm(n.magnitude / count) + " over " + std::to_string(n.samples) + " words";
+      if (n.samples > 0 && n.deviation <= 0.5 * n.magnitude) {
+        choose(Dialect::XyuvAbs, uv);
+        d.reason = uv.what + " and the numbers: U V follow X Y, so they are the upper contour itself (" + numbers + ")";
+        return d;
+      }
+      if (n.samples > 0 && n.magnitude <= 0.5 * n.deviation) {
+        choose(Dialect::XyuvRel, uv);
+        d.reason = uv.what +
+                   " and the numbers: U V stay small against X Y, so they are the upper contour's deviation (" +
+                   numbers + ")";
+        return d;
+      }
+      choose(Dialect::XyuvAbs, uv);
+      d.reason = uv.what + " with nothing that tells whether U V are absolute or relative" +
+                 (n.samples > 0 ? " (" + numbers + ")" : std::string{});
+      d.candidates = {Dialect::XyuvAbs, Dialect::XyuvRel};
+      return d;
+    }
+    choose(Dialect::XyuvAbs, uv);
+    std::string list;
+    if (abs.found()) list += abs.what + " (xyuv-abs)";
+    if (rel.found()) list += std::string(list.empty() ? "" : ", ") + rel.what + " (xyuv-rel)";
+    if (linuxcnc.found()) list += std::string(list.empty() ? "" : ", ") + linuxcnc.what + " (xyuv-linuxcnc)";
+    d.reason = uv.what + ", with " + list;
+    if (abs.found()) d.candidates.push_back(Dialect::XyuvAbs);
+    if (rel.found()) d.candidates.push_back(Dialect::XyuvRel);
+    if (linuxcnc.found()) d.candidates.push_back(Dialect::XyuvLinuxCnc);
+  }
+  return d;
+}
+
+std::string onLine(const std::string& what, std::uint32_t line) { return what + " on line " + std::to_string(line); }
+
+}  // namespace kerf::converter

@@ -1,0 +1,541 @@
+// Machine profiles: the text format, the built-in profiles (converter/machines/, compiled in) and
+// detection from a program's evidence, and reading a program with its profile.
+//
+// Sections: 1. names  2. the profile file  3. built-ins  4. detection  5. reading for a machine
+#include "kerf/converter/interpret/machine.h"
+
+#include "kerf/converter/interpret/dialect.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+namespace kerf::converter {
+
+namespace machines {
+struct EmbeddedFile {
+  const char* name;
+  const char* text;
+};
+extern const EmbeddedFile kFiles[];
+extern const std::size_t kFileCount;
+}  // namespace machines
+
+// ---- 1. names -----------------------------------------------------------------------------------
+
+const char* integerUnitName(IntegerUnit u) { return u == IntegerUnit::Micrometre ? "um" : "mm"; }
+
+const char* arcCentreName(ArcCentreMode m) {
+  switch (m) {
+    case ArcCentreMode::Incremental: return "incremental";
+    case ArcCentreMode::Reversed: return "reversed";
+    case ArcCentreMode::Absolute: return "absolute";
+  }
+  return "incremental";
+}
+
+std::optional<ArcCentreMode> parseArcCentre(std::string_view name) {
+  for (ArcCentreMode m : {ArcCentreMode::Incremental, ArcCentreMode::Reversed, ArcCentreMode::Absolute})
+    if (name == arcCentreName(m)) return m;
+  return std::nullopt;
+}
+
+const char* codeEffectName(CodeEffect e) {
+  switch (e) {
+    case CodeEffect::Harmless: return "harmless";
+    case CodeEffect::NotModelled: return "not-modelled";
+    case CodeEffect::Position: return "position";
+    case CodeEffect::NoMotion: return "no-motion";
+    case CodeEffect::Thickness: return "thickness";
+    case CodeEffect::Guides: return "guides";
+    case CodeEffect::ProgramEnd: return "program-end";
+    case CodeEffect::Rethread: return "rethread";
+  }
+  return "harmless";
+}
+
+const KnownCode* MachineProfile::find(std::string_view key) const {
+  for (const KnownCode& c : codes)
+    if (c.key == key) return &c;
+  return nullptr;
+}
+
+const KnownCode* MachineProfile::find(char letter, int number, int fraction) const {
+  const KnownCode* any = nullptr;
+  for (const KnownCode& c : codes) {
+    if (c.letter != letter) continue;
+    if (c.number == number && c.fraction == fraction) return &c;
+    if (c.number == -1) any = &c;
+  }
+  return any;
+}
+
+// ---- 2. the profile file ------------------------------------------------------------------------
+
+namespace {
+
+std::string trim(std::string_view s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r')) ++b;
+  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
+  return std::string(s.substr(b, e - b));
+}
+
+std::string upperCase(std::string s) {
+  for (char& c : s)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return s;
+}
+
+/// "G02" -> "G2", "g12.1" -> "G12.1", "qaic" -> "QAIC", "c" -> "C". Empty when it is no code.
+std::string normaliseKey(std::string_view raw) {
+  const std::string key = upperCase(trim(raw));
+  if (key.empty() || key[0] < 'A' || key[0] > 'Z') return {};
+  if (key.size() == 1) return key;
+  if (key[0] == 'Q' &&
+      std::all_of(key.begin() + 1, key.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); }))
+    return key;  // a Sodick macro call name
+  const std::string number = key.substr(1);
+  if (number.find_first_not_of("0123456789.") != std::string::npos || number.front() == '.' ||
+      std::count(number.begin(), number.end(), '.') > 1)
+    return {};
+  const double v = std::strtod(number.c_str(), nullptr);
+  const long tenths = roundHalfAway(v * 10);
+  if (std::abs(v * 10 - static_cast<double>(tenths)) > 1e-9) return {};
+  std::string out(1, key[0]);
+  out += std::to_string(tenths / 10);
+  if (tenths % 10) out += "." + std::to_string(tenths % 10);
+  return out;
+}
+
+std::optional<double> number(const std::string& value) {
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::string baseName(const std::string& path) {
+  std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  if (const auto dot = name.find('.'); dot != std::string::npos && dot > 0) name.resize(dot);
+  return name;
+}
+
+}  // namespace
+
+std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagnostics& diags) {
+  MachineProfile p;
+  p.name = baseName(file.name());
+  p.text = std::string(file.text());
+  bool ok = true;
+  for (std::uint32_t line = 1; line <= file.lineCount(); ++line) {
+    const auto range = file.lineRange(line);
+    const std::uint32_t begin = range.first, end = range.second;
+    const std::string_view text = file.text().substr(begin, end - begin);
+    const std::string t = trim(text);
+    if (t.empty() || t[0] == '#') continue;
+    const std::size_t lead = text.find_first_not_of(" \t");
+    auto fail = [&](std::size_t at, std::size_t length, std::string message, std::string help = {}) {
+      diags.error(
+          Code::MachineProfileError, &file,
+          {static_cast<std::uint32_t>(begin + at), static_cast<std::uint32_t>(std::max<std::size_t>(1, length))},
+          std::move(message), std::move(help));
+      ok = false;
+    };
+    const std::size_t eq = text.find('=');
+    if (eq == std::string_view::npos) {
+      fail(lead, text.size() - lead, "expected 'key = value'");
+      continue;
+    }
+    std::string key = trim(text.substr(0, eq));
+    const std::string value = trim(text.substr(eq + 1));
+    const std::size_t valueAt = std::min(text.size(), text.find_first_not_of(" \t", eq + 1));
+    auto badValue = [&](const std::string& allowed) {
+      fail(valueAt, value.size(), "'" + value + "' is not a value of " + key, "allowed: " + allowed);
+    };
+    // A key with two values: `off` sets the flag false, `on` sets it true.
+    auto either = [&](bool& flag, const char* off, const char* on) {
+      if (value == off || value == on)
+        flag = value == on;
+      else
+        badValue(std::string(off) + " or " + on);
+    };
+    if (key.rfind("code ", 0) == 0 || key.rfind("code\t", 0) == 0) {
+      KnownCode c;
+      c.key = normaliseKey(key.substr(5));
+      if (c.key.empty()) {
+        fail(lead, eq - lead, "'" + trim(key.substr(5)) + "' is not a code", "write G60, M28, T84, C or QAIC");
+        continue;
+      }
+      c.letter = c.key[0];
+      if (c.key.size() > 1 && c.key[0] == 'Q' && (c.key[1] < '0' || c.key[1] > '9')) {
+        c.number = -2;  // a macro call's name
+      } else if (c.key.size() > 1) {
+        const double v = std::strtod(c.key.c_str() + 1, nullptr);
+        c.number = static_cast<int>(v);
+        c.fraction = static_cast<int>(std::lround((v - c.number) * 10));
+      }
+      const std::size_t colon = value.find(':');
+      const std::string effect = trim(value.substr(0, colon));
+      c.note = colon == std::string::npos ? std::string{} : trim(value.substr(colon + 1));
+      bool known = false;
+      for (CodeEffect e : {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
+                           CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread})
+        if (effect == codeEffectName(e)) {
+          c.effect = e;
+          known = true;
+        }
+      if (!known) {
+        badValue(
+            "harmless, not-modelled, position, no-motion, thickness, guides, program-end or rethread, then ': note'");
+        continue;
+      }
+      if (c.note.empty()) {
+        fail(valueAt, value.size(), "code " + c.key + " needs a note: what it does on this machine",
+             "write 'harmless: meaning not modelled' when it is not known");
+        continue;
+      }
+      if (p.find(c.key)) {
+        fail(lead, eq - lead, "code " + c.key + " is listed twice");
+        continue;
+      }
+      p.codes.push_back(std::move(c));
+      continue;
+    }
+    if (key == "name") {
+      if (value.empty() || value.find_first_of(" \t/") != std::string::npos)
+        badValue("one word");
+      else
+        p.name = value;
+    } else if (key == "summary") {
+      p.summary = value;
+    } else if (key == "source") {
+      p.sources.push_back(value);
+    } else if (key == "arc_centre") {
+      if (value == "auto")
+        p.arcCentre.reset();
+      else if (auto m = parseArcCentre(value))
+        p.arcCentre = m;
+      else
+        badValue("incremental, reversed, absolute or auto");
+    } else if (key == "integer_unit") {
+      if (value == "auto")
+        p.integerUnit.reset();
+      else if (value == "mm")
+        p.integerUnit = IntegerUnit::Millimetre;
+      else if (value == "um")
+        p.integerUnit = IntegerUnit::Micrometre;
+      else
+        badValue("mm, um or auto");
+    } else if (key == "integer_threshold") {
+      if (auto v = number(value); v && *v >= 0)
+        p.integerThreshold = *v;
+      else
+        badValue("a number of 0 or more");
+    } else if (key == "uv_words") {
+      const auto d = parseDialect(value);
+      if (value == "auto")
+        p.uvDialect.reset();
+      else if (d && (*d == Dialect::XyuvAbs || *d == Dialect::XyuvRel || *d == Dialect::XyuvLinuxCnc))
+        p.uvDialect = d;
+      else
+        badValue("xyuv-abs, xyuv-rel, xyuv-linuxcnc or auto");
+    } else if (key == "write_unit") {
+      either(p.writeMicrometres, "mm", "um");
+    } else if (key == "line_end") {
+      either(p.crlf, "lf", "crlf");
+    } else if (key == "write_decimals") {
+      if (auto v = number(value); v && *v >= 0 && *v <= 6 && *v == std::floor(*v))
+        p.writeDecimals = static_cast<int>(*v);
+      else
+        badValue("a whole number from 0 to 6");
+    } else if (key == "write_comment") {
+      either(p.writeComment, "no", "yes");
+    } else if (key == "write_g") {
+      either(p.writeShortG, "G01", "G1");
+    } else if (key == "write_start" || key == "write_offset" || key == "write_cancel" || key == "write_end" ||
+               key == "write_wire_cut" || key == "write_wire_thread") {
+      std::vector<std::string>& blocks = key == "write_start"      ? p.writeStart
+                                         : key == "write_offset"   ? p.writeOffset
+                                         : key == "write_cancel"   ? p.writeCancel
+                                         : key == "write_wire_cut" ? p.writeWireCut
+                                         : key == "write_end"      ? p.writeEnd
+                                                                   : p.writeWireThread;
+      blocks.clear();
+      std::size_t from = 0;
+      while (from <= value.size()) {
+        const std::size_t bar = value.find('|', from);
+        const std::string b = trim(value.substr(from, bar == std::string::npos ? std::string::npos : bar - from));
+        if (!b.empty()) blocks.push_back(b);
+        if (bar == std::string::npos) break;
+        from = bar + 1;
+      }
+    } else if (key == "write_taper") {
+      bool colon = false;
+      either(colon, "xyuv-abs", "sodick-colon");
+      p.writeTaper = colon ? Dialect::SodickColon : Dialect::XyuvAbs;
+    } else if (key == "polar_x") {
+      either(p.polarXRadius, "diameter", "radius");
+    } else if (key == "polar_c") {
+      either(p.polarCDiameter, "linear", "diameter");
+    } else if (key == "polar_frame") {
+      either(p.polarFrameTable, "tool", "table");
+    } else if (key == "semicolon") {
+      either(p.semicolonEndsBlock, "comment", "end-of-block");
+    } else if (key == "upper_axes") {
+      either(p.upperAxesUZ, "uv", "uz");
+    } else if (key == "bare_g92") {
+      either(p.bareSetPositionIsOrigin, "error", "origin");
+    } else if (key == "legacy_taper_codes") {
+      either(p.legacyTaperCodes, "no", "detect");
+    } else if (key == "max_taper") {
+      if (auto v = number(value); v && *v >= 0 && *v <= 89)
+        p.maxTaperDegrees = *v;
+      else
+        badValue("degrees from 0 to 89");
+    } else if (key == "uv_range" || key == "thickness") {
+      std::optional<double>& slot = key == "uv_range" ? p.uvRange : p.thickness;
+      if (value == "none")
+        slot.reset();
+      else if (auto v = number(value); v && *v > 0)
+        slot = v;
+      else
+        badValue("none or a length in mm above 0");
+    } else {
+      fail(lead, eq - lead, "unknown key '" + key + "'",
+           "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
+           "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, write_unit, line_end, "
+           "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "
+           "write_end, polar_x, polar_c, polar_frame, code <CODE>");
+    }
+  }
+  if (!ok) return std::nullopt;
+  return p;
+}
+
+// ---- 3. built-ins ---------------------------------------------------------------------------------
+
+const std::vector<MachineProfile>& builtinMachines() {
+  static const std::vector<MachineProfile> all = [] {
+    static constexpr std::array<const char*, 7> kOrder = {"generic", "robofil", "sodick", "linuxcnc",
+                                                          "cnc3",    "ncvc",    "fanuc"};
+    std::vector<MachineProfile> out;
+    for (const char* name : kOrder) {
+      for (std::size_t k = 0; k < machines::kFileCount; ++k) {
+        if (std::string(machines::kFiles[k].name) != std::string(name) + ".profile") continue;
+        const SourceFile file(machines::kFiles[k].name, machines::kFiles[k].text);
+        Diagnostics diags;
+        // The built-in files are tested (machine_test.cpp): a profile that does not parse is
+        // left out rather than half read.
+        if (std::optional<MachineProfile> p = parseMachineProfile(file, diags)) out.push_back(std::move(*p));
+      }
+    }
+    return out;
+  }();
+  return all;
+}
+
+const MachineProfile* findBuiltinMachine(std::string_view name) {
+  for (const MachineProfile& m : builtinMachines())
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+std::vector<const MachineProfile*> machinesKnowing(std::string_view key, const MachineProfile* except) {
+  std::vector<const MachineProfile*> out;
+  for (const MachineProfile& m : builtinMachines()) {
+    if (&m == except || (except && m.name == except->name)) continue;
+    if (key == "bare G92" ? m.bareSetPositionIsOrigin : m.find(key) != nullptr) out.push_back(&m);
+  }
+  return out;
+}
+
+// ---- 4. detection ---------------------------------------------------------------------------------
+
+namespace {
+
+/// Evidence for one profile: each kind of evidence counted once, at its first place.
+struct Tally {
+  std::vector<MachineEvidence> items;
+  std::vector<std::string> seen;
+  /// Counts `kind` once, at its first place; `what` is only built then.
+  template <typename What>
+  void add(const std::string& kind, What&& what, SourceSpan span, int weight) {
+    if (std::find(seen.begin(), seen.end(), kind) != seen.end()) return;
+    seen.push_back(kind);
+    items.push_back({what(), span, weight});
+  }
+  [[nodiscard]] int score() const {
+    int s = 0;
+    for (const MachineEvidence& e : items) s += e.weight;
+    return s;
+  }
+};
+
+}  // namespace
+
+MachineDetection detectMachine(const Program& program) {
+  std::map<std::string, Tally> t;
+  const std::string_view text = program.source->text();
+  // Robofil names the program in its first line: % (MEM:F17A15.ISO)
+  const std::string_view first = program.source->lineText(1);
+  if (const auto at = first.find("(MEM:"); at != std::string_view::npos)
+    t["robofil"].add(
+        "mem", [] { return std::string("the (MEM:...) header on line 1"); }, {static_cast<std::uint32_t>(at), 5}, 3);
+  for (const Setting& s : program.settings) {
+    if (s.name[0] == 'C')
+      t["sodick"].add(
+          "conditions", [&] { return onLine("the condition table (" + s.name + " = ...)", s.line); }, s.span, 3);
+    if (s.name[0] == 'H')
+      t["sodick"].add(
+          "offsets", [&] { return onLine("the offset table (" + s.name + " = ...)", s.line); }, s.span, 1);
+  }
+  for (const HeightWord& h : program.heights) {
+    if (h.kind == HeightWord::Kind::SodickProgramPlane || h.kind == HeightWord::Kind::SodickLowerPlane)
+      t["sodick"].add(
+          "tp", [&] { return onLine("TP/TN plane heights", h.line); }, h.span, 2);
+    else
+      t["linuxcnc"].add(
+          "axis", [&] { return onLine("an (AXIS,..._Z_POS,z) comment", h.line); }, h.span, 3);
+  }
+  for (const std::uint32_t k : program.notPlain) {  // a plain block holds no evidence
+    const Block& b = program.blocks[k];
+    if (b.kind == BlockKind::MacroCall) {
+      const std::string_view call = program.textOf(b).substr(0, program.textOf(b).find('('));
+      t["sodick"].add(
+          "call", [&] { return onLine("the macro call " + std::string(call) + "(...)", b.line); }, b.span(), 3);
+      continue;
+    }
+    if (b.kind == BlockKind::MacroB) {
+      t["fanuc"].add(
+          "macro", [&] { return onLine("macro B", b.line); }, b.span(), 2);
+      continue;
+    }
+    if (b.twoMotions)
+      t["cnc3"].add(
+          "two", [&] { return onLine("two motion words in one block", b.line); }, b.span(), 3);
+    if (b.lowerCase)
+      t["linuxcnc"].add(
+          "lower", [&] { return onLine("lower-case words", b.line); }, b.span(), 1);
+    std::uint32_t letters = 0;  // a bit per letter the block has
+    for (const Word& w : program.wordsOf(b)) letters |= 1u << (w.letter - 'A');
+    auto has = [&](char c) { return (letters & (1u << (c - 'A'))) != 0; };
+    const bool p = has('P'), uv = has('U') || has('V'), kl = has('K') || has('L'), ij = has('I') || has('J');
+    const bool tWord = has('T');
+    bool g92 = false, taper = false;
+    if (b.unusualValues)
+      for (const Word& w : program.wordsOf(b)) {
+        if (w.kind == WordValue::Macro)
+          t["fanuc"].add(
+              "macro", [&] { return onLine("a macro B value", b.line); }, w.span(), 2);
+        if (w.kind == WordValue::Register)
+          t["sodick"].add(
+              "register", [&] { return onLine("a register value", b.line); }, w.span(), 2);
+      }
+    for (const Word& w : program.wordsOf(b)) {
+      if (!w.isNumber() || (w.letter != 'G' && w.letter != 'M' && w.letter != 'T')) continue;
+      // The common codes (G00-G03, G90-G92, M02 ...) are no evidence: out before any arithmetic.
+      if (w.value < 28 || (w.value >= 90 && w.value <= 95 && w.letter == 'G')) {
+        if (!(w.letter == 'G' && (std::abs(w.value - 12.1) < 1e-9 || std::abs(w.value - 13.1) < 1e-9)))
+          if (!(w.letter == 'G' && w.value == 92)) continue;
+      }
+      const long n = roundHalfAway(w.value);
+      const bool whole = std::abs(w.value - static_cast<double>(n)) < 1e-9;
+      if (w.letter == 'G') {
+        const long tenths = roundHalfAway(w.value * 10);
+        if (whole && (n == 60 || n == 38 || n == 39))
+          t["robofil"].add(
+              "G" + std::to_string(n), [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
+        if (whole && n >= 140 && n <= 142)
+          t["sodick"].add(
+              "colon", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
+        if ((whole && (n == 112 || n == 113)) || tenths == 121 || tenths == 131)
+          t["fanuc"].add(
+              "polar",
+              [&] {
+                return onLine("polar interpolation (" + std::string(text.substr(w.offset, w.length)) + ")", b.line);
+              },
+              w.span(), 3);
+        if (whole && (n == 98 || n == 99))
+          t["fanuc"].add(
+              "g98", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 1);
+        if (whole && (n == 61 || n == 64))
+          t["linuxcnc"].add(
+              "path", [&] { return onLine("G" + std::to_string(n) + " path control", b.line); }, w.span(), 1);
+        g92 |= whole && n == 92;
+        taper |= whole && (n == 51 || n == 52);
+      } else if (w.letter == 'M' && whole) {
+        if (n == 28)
+          t["robofil"].add(
+              "M28", [&] { return onLine("M28", b.line); }, w.span(), 2);
+        if ((n == 100 || n == 101) && p)
+          t["cnc3"].add(
+              "geometry", [&] { return onLine("M" + std::to_string(n) + " P (taper geometry)", b.line); }, w.span(), 3);
+        if (n >= 105 && n <= 107 && p)
+          t["cnc3"].add(
+              "generator", [&] { return onLine("M" + std::to_string(n) + " P (generator and wire settings)", b.line); },
+              w.span(), 2);
+        if (n == 40 || n == 41 || (n >= 82 && n <= 85))
+          t["cnc3"].add(
+              "M" + std::to_string(n), [&] { return onLine("M" + std::to_string(n), b.line); }, w.span(), 1);
+        if (n == 199)
+          t["sodick"].add(
+              "M199", [&] { return onLine("M199", b.line); }, w.span(), 1);
+      } else if (w.letter == 'T' && whole && (n == 84 || n == 85 || n == 94)) {
+        t["sodick"].add(
+            "T" + std::to_string(n), [&] { return onLine("T" + std::to_string(n), b.line); }, w.span(), 1);
+      }
+    }
+    if (g92 && ij)
+      t["ncvc"].add(
+          "g92ij", [&] { return onLine("G92 with I J (plane heights)", b.line); }, b.span(), 3);
+    if (uv && kl)
+      t["ncvc"].add(
+          "kl", [&] { return onLine("K L beside U V", b.line); }, b.span(), 2);
+    if (taper && tWord)
+      t["ncvc"].add(
+          "t", [&] { return onLine("G51/G52 with a T angle", b.line); }, b.span(), 2);
+  }
+  MachineDetection d;
+  d.profile = findBuiltinMachine("generic");
+  int best = 1;  // a single weak hint is not enough
+  for (const MachineProfile& m : builtinMachines()) {
+    const auto it = t.find(m.name);
+    if (it == t.end() || it->second.score() <= best) continue;
+    best = it->second.score();
+    d.profile = &m;
+    d.evidence = it->second.items;
+  }
+  std::stable_sort(d.evidence.begin(), d.evidence.end(),
+                   [](const MachineEvidence& a, const MachineEvidence& b) { return a.weight > b.weight; });
+  return d;
+}
+
+// ---- 5. reading a program for its machine ---------------------------------------------------------
+
+ParseOptions parseOptionsFor(const MachineProfile& machine, std::optional<bool> upperAxesUZ) {
+  ParseOptions p;
+  p.semicolonEndsBlock = machine.semicolonEndsBlock;
+  p.upperAxesUZ = upperAxesUZ.value_or(machine.upperAxesUZ);
+  return p;
+}
+
+MachineReading readForMachine(const SourceFile& source, const MachineProfile* given, std::optional<bool> upperAxesUZ) {
+  MachineReading r;
+  r.machine = given ? given : findBuiltinMachine("generic");
+  r.parse = parseOptionsFor(*r.machine, upperAxesUZ);
+  r.program = parseProgram(source, r.diags, r.parse);
+  if (given) return r;
+  r.detection = detectMachine(r.program);
+  r.machine = r.detection.profile;
+  if (const ParseOptions again = parseOptionsFor(*r.machine, upperAxesUZ); again != r.parse) {
+    r.diags = Diagnostics(r.diags.cap());
+    r.parse = again;
+    r.program = parseProgram(source, r.diags, r.parse);
+  }
+  return r;
+}
+
+}  // namespace kerf::converter

@@ -1,0 +1,20 @@
+#include "kerf/converter/nc/number_format.h"
+
+#include <charconv>
+
+namespace kerf::converter {
+
+std::string formatFixed(double v, int decimals) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+  std::string s(buf, r.ptr);
+  // "-0.000" (a negative number that rounds to zero) is written as "0.000".
+  if (!s.empty() && s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+  return s;
+}
+
+std::string formatPoint(const geometry::Vec2& p, int decimals) {
+  return "(" + formatFixed(p.x(), decimals) + ", " + formatFixed(p.y(), decimals) + ")";
+}
+
+}  // namespace kerf::converter

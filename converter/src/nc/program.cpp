@@ -1,0 +1,754 @@
+// ISO block parser.
+//
+// Sections: 1. character classes and number scanning
+//           2. values that are not numbers: registers, macro variables
+//           3. one block: settings, macro statements, comments, words
+//           4. the sides of a 4-axis block
+//           5. the whole text: byte-order mark, lines, '%' frame
+#include "kerf/converter/nc/program.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace kerf::converter {
+namespace {
+
+// ---- 1. characters and numbers --------------------------------------------------------------
+
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isLowerLetter(char c) { return c >= 'a' && c <= 'z'; }
+char upper(char c) { return isLowerLetter(c) ? static_cast<char>(c - 'a' + 'A') : c; }
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+/// Letters that are words in ISO wire programs. B is not: it belongs to 3B code.
+bool isWordLetter(char u) { return u != 'B'; }
+
+/// A word Block::plain allows: X Y I J R F, or G00-G03 written as a whole number.
+bool isPlainWord(char letter, WordValue kind, double value) {
+  if (kind != WordValue::Number) return false;
+  if (letter == 'G') return value == 0 || value == 1 || value == 2 || value == 3;
+  return letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'F';
+}
+
+/// Letters whose numbers are lengths: they decide --integer-unit evidence.
+bool isLengthLetter(char u) { return u == 'X' || u == 'Y' || u == 'U' || u == 'V' || u == 'I' || u == 'J' || u == 'R'; }
+
+/// Axis letters that may stand alone after G28 / G30 (home these axes).
+bool isAxisLetter(char u) {
+  return u == 'X' || u == 'Y' || u == 'Z' || u == 'U' || u == 'V' || u == 'W' || u == 'A' || u == 'C';
+}
+
+/// Numbers larger than this are refused (K0105): no wire machine travels a kilometre.
+constexpr double kLargestNumber = 1e9;
+/// At most this many significant digits before the point.
+constexpr int kMaxDigits = 18;
+
+struct NumberScan {
+  enum Status { Ok, Missing, TooManyDigits } status = Missing;
+  bool hasPoint = false;
+  std::size_t end = 0;  ///< one past the last character used
+  double value = 0.0;
+};
+
+/// [sign] digits [. digits] in text[pos, limit) — no exponent, no spaces inside. Leading zeros are
+/// not significant; more than 18 significant digits before the point are refused. The value is
+/// std::from_chars's: correctly rounded, whatever the number of digits.
+NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit) {
+  NumberScan s;
+  std::size_t i = pos;
+  const bool negative = i < limit && text[i] == '-';
+  if (i < limit && (text[i] == '+' || text[i] == '-')) ++i;
+  const std::size_t first = i;
+  while (i < limit && text[i] == '0') ++i;  // leading zeros
+  const std::size_t significant = i;
+  while (i < limit && isDigit(text[i])) ++i;
+  const bool tooMany = i - significant > static_cast<std::size_t>(kMaxDigits);
+  bool anyDigit = i > first;
+  if (i < limit && text[i] == '.') {
+    s.hasPoint = true;
+    const std::size_t point = ++i;
+    while (i < limit && isDigit(text[i])) ++i;
+    anyDigit = anyDigit || i > point;
+  }
+  s.end = i;
+  if (!anyDigit) return s;  // Missing
+  if (tooMany) {
+    s.status = NumberScan::TooManyDigits;
+    return s;
+  }
+  s.status = NumberScan::Ok;
+  // from_chars takes no '+' and no lone '.' after the digits in every library: the digits alone.
+  std::size_t digitsEnd = i;
+  if (s.hasPoint && text[digitsEnd - 1] == '.') --digitsEnd;
+  double v = 0.0;
+  if (digitsEnd > first) std::from_chars(text.data() + first, text.data() + digitsEnd, v, std::chars_format::fixed);
+  s.value = negative ? -v : v;
+  return s;
+}
+
+std::string describeChar(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  if (u < 0x20 || u >= 0x7f) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "0x%02X", u);
+    return std::string("byte ") + buf;
+  }
+  return std::string("'") + c + "'";
+}
+
+/// Does text[i, limit) start with the keyword (case-insensitive)?
+bool startsWithKeyword(std::string_view text, std::size_t i, std::size_t limit, std::string_view keyword) {
+  if (limit - i < keyword.size()) return false;
+  for (std::size_t k = 0; k < keyword.size(); ++k)
+    if (upper(text[i + k]) != keyword[k]) return false;
+  return true;
+}
+
+// ---- 2. values known only at the machine --------------------------------------------------------
+
+/// `H111`, `H111 + H112`, `H104 / 2`: a Sodick register reference and arithmetic on it. Returns
+/// the end of the expression, or pos when there is none at pos.
+std::size_t scanRegisterExpression(std::string_view text, std::size_t pos, std::size_t limit) {
+  auto registerAt = [&](std::size_t i) { return i + 1 < limit && upper(text[i]) == 'H' && isDigit(text[i + 1]); };
+  std::size_t i = pos;
+  if (i < limit && (text[i] == '+' || text[i] == '-')) ++i;
+  if (!registerAt(i)) return pos;
+  i += 1;
+  while (i < limit && isDigit(text[i])) ++i;
+  for (;;) {
+    std::size_t j = i;
+    while (j < limit && isBlank(text[j])) ++j;
+    if (j >= limit || (text[j] != '+' && text[j] != '-' && text[j] != '*' && text[j] != '/')) return i;
+    ++j;
+    while (j < limit && isBlank(text[j])) ++j;
+    if (registerAt(j)) {
+      j += 1;
+      while (j < limit && isDigit(text[j])) ++j;
+    } else {
+      const NumberScan n = scanNumber(text, j, limit);
+      if (n.status == NumberScan::Missing) return i;
+      j = n.end;
+    }
+    i = j;
+  }
+}
+
+/// `#100`, `-#5`, `[#1 + 2.5]`: a macro B value. Returns its end, or pos when there is none.
+std::size_t scanMacroValue(std::string_view text, std::size_t pos, std::size_t limit) {
+  std::size_t i = pos;
+  if (i < limit && (text[i] == '+' || text[i] == '-')) ++i;
+  if (i < limit && text[i] == '#') {
+    ++i;
+    const std::size_t digits = i;
+    while (i < limit && isDigit(text[i])) ++i;
+    return i > digits ? i : pos;
+  }
+  if (i < limit && text[i] == '[') {
+    int depth = 0;
+    for (; i < limit; ++i) {
+      if (text[i] == '[') ++depth;
+      if (text[i] == ']' && --depth == 0) return i + 1;
+    }
+  }
+  return pos;
+}
+
+// ---- 3. one block ----------------------------------------------------------------------------
+
+/// The macro B statements of some lines: how many, the first one, and the lines they span.
+struct MacroTally {
+  std::size_t count = 0;
+  SourceSpan first;
+  std::uint32_t firstLine = 0, lastLine = 0;
+};
+
+class LineParser {
+ public:
+  LineParser(const SourceFile& src, Program& program, Diagnostics& diags, const ParseOptions& options)
+      : src_(src), text_(src.text()), program_(program), diags_(diags), options_(options) {}
+
+  /// Parses [begin, end) — one line without its line break: one block, or several when `;` ends
+  /// blocks (ParseOptions::semicolonEndsBlock).
+  void parseLine(std::size_t begin, std::size_t end, std::uint32_t line) {
+    std::size_t i = begin;
+    while (i < end) i = parseBlock(i, end, line);
+  }
+
+  /// The macro B statements of the lines parsed.
+  [[nodiscard]] const MacroTally& macros() const { return macros_; }
+
+ private:
+  /// Parses one block from i; returns where the next block on this line starts (or end).
+  std::size_t parseBlock(std::size_t i, std::size_t end, std::uint32_t line) {
+    while (i < end && isBlank(text_[i])) ++i;
+    if (i >= end) return end;
+    if (trySetting(i, end, line)) return end;
+
+    Block block;
+    block.firstWord = static_cast<std::uint32_t>(program_.words.size());
+    block.offset = static_cast<std::uint32_t>(i);
+    block.line = line;
+    if (text_[i] == '/') {
+      block.blockDelete = true;
+      ++i;
+      while (i < end && isBlank(text_[i])) ++i;
+    }
+    std::size_t blockEnd = end;  // the block's text ends here (';' or the end of the line)
+    std::size_t next = end;      // the next block starts here
+    if (isMacroStatement(i, end)) {
+      block.kind = BlockKind::MacroB;
+      blockEnd = findBlockEnd(i, end, next);
+      noteMacroStatement(i, blockEnd, line);
+      finish(block, blockEnd);
+      return next;
+    }
+    if (const std::size_t callEnd = scanMacroCall(i, end); callEnd != i) {
+      block.kind = BlockKind::MacroCall;
+      blockEnd = findBlockEnd(callEnd, end, next);
+      finish(block, blockEnd);
+      return next;
+    }
+
+    upperLetters_ = false;
+    splitAt_ = -1;
+    colon_ = false;
+    sawCoordinate_ = false;
+    sawMotion_ = false;
+    homing_ = false;
+    while (i < end) {
+      const char c = text_[i];
+      if (isBlank(c)) {
+        ++i;
+        continue;
+      }
+      if (c == '(') {
+        const std::size_t close = text_.find(')', i);
+        const std::size_t inner = text_.find('(', i + 1);
+        if (inner < end && (close == std::string_view::npos || inner < close)) {
+          error(block, Code::NestedComment, inner, 1, "'(' inside a comment: comments cannot nest",
+                "use [ ] or another character inside the comment");
+          break;
+        }
+        if (close == std::string_view::npos || close >= end) {
+          error(block, Code::UnterminatedComment, i, 1, "comment is not closed on its line",
+                "add ')' — a comment cannot span lines");
+          break;
+        }
+        readHeightComment(i, close, line);
+        i = close + 1;
+        continue;
+      }
+      if (c == ';') {  // end of block; the rest of the line is a comment, or the next block
+        blockEnd = i;
+        if (options_.semicolonEndsBlock && startsBlock(i + 1, end)) next = i + 1;
+        break;
+      }
+      if (c == ':') {  // Sodick: the lower contour before, the upper after (docs/taper.md)
+        if (splitAt_ >= 0) {
+          error(block, Code::UnexpectedCharacter, i, 1,
+                colon_ ? "a second ':' in one block" : "':' after the upper contour's words have begun");
+          break;
+        }
+        splitAt_ = wordsSoFar(block);
+        colon_ = true;
+        ++i;
+        continue;
+      }
+      if (!isLetter(c)) {
+        if (c == ')') {
+          error(block, Code::UnexpectedCharacter, i, 1, "')' without an opening '('");
+        } else if (isDigit(c) || c == '.' || c == '-' || c == '+') {
+          const NumberScan n = scanNumber(text_, i, end);
+          const std::size_t len = std::max<std::size_t>(1, n.end - i);
+          error(block, Code::UnexpectedCharacter, i, len,
+                "number without a letter: every value needs an address letter",
+                "write it as a word, e.g. X" + std::string(text_.substr(i, len)));
+        } else {
+          error(block, Code::UnexpectedCharacter, i, 1, "unexpected " + describeChar(c) + " in a block");
+        }
+        break;
+      }
+      if (isLowerLetter(c)) block.lowerCase = true;
+      if (static_cast<std::size_t>(wordsSoFar(block)) >= Block::kMaxWords) {
+        error(block, Code::BlockTooLong, i, 1,
+              "a block of more than " + std::to_string(Block::kMaxWords) + " words: the rest of the line is not read",
+              "split the line into blocks");
+        break;
+      }
+      i = parseWord(block, i, end);
+      if (block.hasError) break;  // one error per block: what follows is likely noise from it
+    }
+    if (!block.hasError) assignSides(block);
+    finish(block, blockEnd);
+    return next;
+  }
+
+  /// Trims the block's text span, counts its words and keeps it when it has content.
+  void finish(Block& block, std::size_t blockEnd) {
+    std::size_t last = blockEnd;
+    while (last > block.offset && isBlank(text_[last - 1])) --last;
+    block.length = static_cast<std::uint32_t>(last - block.offset);
+    // At most Block::kMaxWords: the word loop stops there, and the sides' reordering adds none.
+    block.wordCount = static_cast<std::uint16_t>(program_.words.size() - block.firstWord);
+    if (block.kind == BlockKind::Words && block.upperFrom == 0 && block.wordCount > 0 && !hasUpper_)
+      block.upperFrom = block.wordCount;
+    hasUpper_ = false;
+    block.plain = block.kind == BlockKind::Words && block.wordCount > 0 && plainWords_ && !block.colon &&
+                  !block.twoMotions && !block.lowerCase && !block.unusualValues && block.upperFrom == block.wordCount;
+    plainWords_ = true;
+    if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) {
+      if (!block.plain) program_.notPlain.push_back(static_cast<std::uint32_t>(program_.blocks.size()));
+      program_.blocks.push_back(block);
+    }
+  }
+
+  /// Does a block start after a ';' that ends blocks? Only words, a comment or '/' do; other text
+  /// after ';' (`; a remark`) stays a comment, as on controls where ';' starts one.
+  bool startsBlock(std::size_t i, std::size_t end) const {
+    while (i < end && isBlank(text_[i])) ++i;
+    if (i >= end) return false;
+    if (text_[i] == '(' || text_[i] == '/' || text_[i] == '#') return true;
+    if (!isLetter(text_[i])) return false;
+    std::size_t k = i + 1;
+    while (k < end && isBlank(text_[k])) ++k;  // "X 10." is a word
+    return k < end && (isDigit(text_[k]) || text_[k] == '-' || text_[k] == '+' || text_[k] == '.');
+  }
+
+  /// Where the block that runs from `from` ends: a ';' (then `next` is after it when ';' ends
+  /// blocks, else the end of the line) or the end of the line.
+  std::size_t findBlockEnd(std::size_t from, std::size_t end, std::size_t& next) const {
+    for (std::size_t k = from; k < end; ++k) {
+      if (text_[k] == '(') {
+        const std::size_t close = text_.find(')', k);
+        if (close == std::string_view::npos || close >= end) break;
+        k = close;
+        continue;
+      }
+      if (text_[k] == ';') {
+        next = options_.semicolonEndsBlock && startsBlock(k + 1, end) ? k + 1 : end;
+        return k;
+      }
+    }
+    next = end;
+    return end;
+  }
+
+  /// Fanuc macro B: `#100 = ...`, `WHILE[...]DO1`, `END1`, `IF[...]GOTO10`, `GOTO10`, `DO1`.
+  bool isMacroStatement(std::size_t i, std::size_t end) const {
+    // One keyword at most starts with the block's first letter: the common block (G, M, N, X ...)
+    // is out after one comparison, a G block after one more.
+    auto numbered = [&](std::string_view kw) {  // END1, DO1
+      return startsWithKeyword(text_, i, end, kw) && i + kw.size() < end && isDigit(text_[i + kw.size()]);
+    };
+    switch (upper(text_[i])) {
+      case '#': return true;
+      case 'W': return startsWithKeyword(text_, i, end, "WHILE");
+      case 'G': return i + 1 < end && upper(text_[i + 1]) == 'O' && startsWithKeyword(text_, i, end, "GOTO");
+      case 'E': return numbered("END");
+      case 'D': return numbered("DO");
+      case 'I': {
+        if (!startsWithKeyword(text_, i, end, "IF")) return false;
+        std::size_t k = i + 2;
+        while (k < end && isBlank(text_[k])) ++k;
+        return k < end && text_[k] == '[';
+      }
+      default: return false;
+    }
+  }
+
+  void noteMacroStatement(std::size_t begin, std::size_t blockEnd, std::uint32_t line) {
+    if (macros_.count++ == 0) {
+      std::size_t last = blockEnd;
+      while (last > begin && isBlank(text_[last - 1])) --last;
+      macros_.first = {static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(last - begin)};
+      macros_.firstLine = line;
+    }
+    macros_.lastLine = line;
+  }
+
+  /// A Sodick macro call: Q, a name of letters and digits, '(' arguments ')', and an optional L
+  /// repeat (`QAIC(2,1,0.1250);`, `Q99()LH114;`). Returns its end, or i when there is none.
+  std::size_t scanMacroCall(std::size_t i, std::size_t end) const {
+    if (upper(text_[i]) != 'Q') return i;
+    std::size_t k = i + 1;
+    while (k < end && (isLetter(text_[k]) || isDigit(text_[k]))) ++k;
+    if (k >= end || text_[k] != '(') return i;
+    const std::size_t close = text_.find(')', k);
+    if (close == std::string_view::npos || close >= end) return i;
+    k = close + 1;
+    while (k < end && isBlank(text_[k])) ++k;
+    if (k < end && upper(text_[k]) == 'L') {
+      ++k;
+      std::size_t r = scanRegisterExpression(text_, k, end);
+      if (r == k) r = scanNumber(text_, k, end).end;
+      k = r;
+    }
+    return k;
+  }
+
+  /// LinuxCNC's `(AXIS,XY_Z_POS,z)` and `(AXIS,UV_Z_POS,z)`: the heights of the two planes.
+  void readHeightComment(std::size_t open, std::size_t close, std::uint32_t line) {
+    std::string inner;
+    for (std::size_t k = open + 1; k < close; ++k)
+      if (!isBlank(text_[k])) inner += upper(text_[k]);
+    HeightWord h;
+    if (inner.starts_with("AXIS,XY_Z_POS,"))
+      h.kind = HeightWord::Kind::LinuxCncXyPlane;
+    else if (inner.starts_with("AXIS,UV_Z_POS,"))
+      h.kind = HeightWord::Kind::LinuxCncUvPlane;
+    else
+      return;
+    const std::string number = inner.substr(14);
+    const NumberScan n = scanNumber(number, 0, number.size());
+    h.span = {static_cast<std::uint32_t>(open), static_cast<std::uint32_t>(close + 1 - open)};
+    h.line = line;
+    if (n.status != NumberScan::Ok || n.end != number.size()) {
+      diags_.error(Code::ExpectedNumber, &src_, h.span, "the height in this AXIS comment is not a number");
+      return;
+    }
+    h.value = n.value;
+    program_.heights.push_back(h);
+  }
+
+  /// Sodick `TP<z>` (program plane) and `TN<z>` (lower plane).
+  bool tryHeightWord(Block& block, std::size_t start, std::size_t i, std::size_t end, std::size_t& next) {
+    if (i >= end || (upper(text_[i]) != 'P' && upper(text_[i]) != 'N')) return false;
+    const NumberScan n = scanNumber(text_, i + 1, end);
+    if (n.status != NumberScan::Ok) return false;
+    HeightWord h;
+    h.kind = upper(text_[i]) == 'P' ? HeightWord::Kind::SodickProgramPlane : HeightWord::Kind::SodickLowerPlane;
+    h.value = n.value;
+    h.hasPoint = n.hasPoint;
+    h.span = {static_cast<std::uint32_t>(start), static_cast<std::uint32_t>(n.end - start)};
+    h.line = block.line;
+    program_.heights.push_back(h);
+    next = n.end;
+    return true;
+  }
+
+  void error(Block& block, Code code, std::size_t at, std::size_t length, std::string message, std::string help = {}) {
+    block.hasError = true;
+    diags_.error(code, &src_, {static_cast<std::uint32_t>(at), static_cast<std::uint32_t>(length)}, std::move(message),
+                 std::move(help));
+  }
+
+  /// `H001 = +0.13`, `C000 = ...`, `E001= ...`: letter, digits, blanks, '='.
+  bool trySetting(std::size_t i, std::size_t end, std::uint32_t line) {
+    const std::size_t start = i;
+    if (!isLetter(text_[i])) return false;
+    ++i;
+    std::size_t digitsFrom = i;
+    while (i < end && isDigit(text_[i])) ++i;
+    if (i == digitsFrom) return false;
+    const std::size_t nameEnd = i;
+    while (i < end && isBlank(text_[i])) ++i;
+    if (i >= end || text_[i] != '=') return false;
+    ++i;
+    std::size_t valueEnd = text_.find(';', i);
+    if (valueEnd == std::string_view::npos || valueEnd > end) valueEnd = end;
+    std::size_t vb = i, ve = valueEnd;
+    while (vb < ve && isBlank(text_[vb])) ++vb;
+    while (ve > vb && isBlank(text_[ve - 1])) --ve;
+    Setting s;
+    s.name = std::string(1, upper(text_[start])) + std::string(text_.substr(start + 1, nameEnd - start - 1));
+    s.value = std::string(text_.substr(vb, ve - vb));
+    s.span = {static_cast<std::uint32_t>(start), static_cast<std::uint32_t>(ve - start)};
+    s.line = line;
+    if (s.value.empty()) {
+      diags_.error(Code::MalformedSetting, &src_,
+                   {static_cast<std::uint32_t>(start), static_cast<std::uint32_t>(i - start)},
+                   "setting " + s.name + " has no value after '='");
+      return true;
+    }
+    program_.settings.push_back(std::move(s));
+    return true;
+  }
+
+  /// Appends a word of the block being read to the program, keeping the integer-unit evidence.
+  void push(Block& block, std::size_t start, std::size_t stop, char letter, WordValue kind, double value,
+            bool hasPoint) {
+    upperLetters_ |= letter == 'U' || letter == 'V' || letter == 'K' || letter == 'L';
+    plainWords_ = plainWords_ && isPlainWord(letter, kind, value);
+    block.unusualValues |= kind != WordValue::Number;
+    Word w;
+    w.letter = letter;
+    w.kind = kind;
+    w.hasPoint = hasPoint;
+    w.offset = static_cast<std::uint32_t>(start);
+    w.length = static_cast<std::uint16_t>(std::min<std::size_t>(stop - start, 0xFFFF));
+    w.value = value;
+    if (isLengthLetter(letter) && kind == WordValue::Number) {
+      if (hasPoint) {
+        program_.anyDecimalPoint = true;
+      } else {
+        ++program_.integerLengthWords;
+        if (std::abs(value) > program_.largestInteger) {
+          program_.largestInteger = std::abs(value);
+          program_.largestIntegerWord = static_cast<std::uint32_t>(program_.words.size());
+        }
+      }
+    }
+    program_.words.push_back(w);
+  }
+
+  /// How many words the block being read has so far.
+  [[nodiscard]] int wordsSoFar(const Block& block) const {
+    return static_cast<int>(program_.words.size() - block.firstWord);
+  }
+
+  std::size_t parseWord(Block& block, std::size_t i, std::size_t end) {
+    const std::size_t start = i;
+    char letter = upper(text_[i]);
+    if (letter == 'Z' && options_.upperAxesUZ) letter = 'V';
+    ++i;
+    while (i < end && isBlank(text_[i])) ++i;  // "X 10." is accepted
+    if (!isWordLetter(letter)) {
+      // Skip the number that follows, if any, so one bad word is one diagnostic.
+      const NumberScan n = scanNumber(text_, i, end);
+      const std::size_t stop = n.status == NumberScan::Missing ? start + 1 : n.end;
+      error(block, Code::UnknownWord, start, stop - start, std::string("unknown word letter '") + letter + "'",
+            letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code" : std::string{});
+      return std::max(stop, start + 1);
+    }
+    if (std::size_t next = 0; letter == 'T' && tryHeightWord(block, start, i, end, next)) return next;
+    // Values known only at the machine (a register H.., a macro value # or [..]).
+    const char lead = i < end && (text_[i] == '+' || text_[i] == '-') && i + 1 < end ? text_[i + 1]
+                      : i < end                                                      ? text_[i]
+                                                                                     : 0;
+    if (lead == 'H' || lead == 'h') {
+      if (const std::size_t r = scanRegisterExpression(text_, i, end); r != i) {
+        push(block, start, r, letter, WordValue::Register, 0.0, false);
+        return r;
+      }
+    } else if (lead == '#' || lead == '[') {
+      if (const std::size_t m = scanMacroValue(text_, i, end); m != i) {
+        push(block, start, m, letter, WordValue::Macro, 0.0, false);
+        return m;
+      }
+    }
+    const NumberScan n = scanNumber(text_, i, end);
+    if (n.status == NumberScan::Missing) {
+      // `Y+` / `X-`: a direction (edge sensing); an axis alone after G28/G30: home it.
+      if (i < end && (text_[i] == '+' || text_[i] == '-') && (i + 1 >= end || !isDigit(text_[i + 1]))) {
+        push(block, start, i + 1, letter, WordValue::Direction, text_[i] == '-' ? -1.0 : 1.0, false);
+        return i + 1;
+      }
+      if (homing_ && isAxisLetter(letter)) {
+        push(block, start, start + 1, letter, WordValue::Bare, 0.0, false);
+        return start + 1;
+      }
+      std::string read = i < end ? describeChar(text_[i]) : std::string("the end of the line");
+      std::string help;
+      if (i < end && (text_[i] == 'O' || text_[i] == 'o') && (letter == 'G' || letter == 'M'))
+        help = std::string("did you mean ") + letter + "0" + std::string(text_.substr(i + 1, 1)) +
+               "? (the digit zero, not the letter O)";
+      else if ((text_[start] == 'l' || text_[start] == 'I' || text_[start] == 'O' || text_[start] == 'o') &&
+               start > 0 && isDigit(text_[start - 1]))
+        help = std::string("did you mean the digit ") + (text_[start] == 'l' || text_[start] == 'I' ? "1" : "0") +
+               " instead of the letter '" + text_[start] + "'?";
+      else if (i + 2 < end && upper(text_[i]) == 'N' && upper(text_[i + 1]) == 'A' && upper(text_[i + 2]) == 'N')
+        help = "NaN is not a number an NC control accepts";
+      error(block, Code::ExpectedNumber, start, 1,
+            std::string("expected a number after '") + letter + "', read " + read, help);
+      return start + 1;
+    }
+    std::size_t stop = n.end;
+    if (n.status == NumberScan::TooManyDigits) {
+      error(block, Code::NumberOutOfRange, start, stop - start, "number has more than 18 digits");
+      return stop;
+    }
+    if (stop < end && text_[stop] == '.') {
+      std::size_t j = stop;
+      while (j < end && (isDigit(text_[j]) || text_[j] == '.')) ++j;
+      error(block, Code::MalformedNumber, start, j - start, "number has a second decimal point");
+      return j;
+    }
+    if (stop + 1 < end && text_[stop] == ',' && isDigit(text_[stop + 1]) && !n.hasPoint) {
+      std::size_t j = stop + 1;
+      while (j < end && isDigit(text_[j])) ++j;
+      const std::string written(text_.substr(start, j - start));
+      std::string meant = written;
+      meant[stop - start] = '.';
+      meant[0] = letter;
+      error(block, Code::DecimalComma, start, j - start,
+            "'" + written + "' has a comma where a decimal point belongs: NC numbers take a point",
+            "did you mean " + meant + "?");
+      return j;
+    }
+    if (stop < end && (text_[stop] == 'e' || text_[stop] == 'E')) {
+      std::size_t j = stop + 1;
+      if (j < end && (text_[j] == '+' || text_[j] == '-')) ++j;
+      if (j < end && isDigit(text_[j])) {
+        while (j < end && isDigit(text_[j])) ++j;
+        error(block, Code::ExponentNotation, start, j - start, "exponent notation is not allowed in NC words",
+              "write the number out in full with a decimal point");
+        return j;
+      }
+    }
+    if (stop < end && (text_[stop] == '+' || text_[stop] == '-') && stop + 1 < end && isDigit(text_[stop + 1])) {
+      error(block, Code::MalformedNumber, start, stop + 1 - start, "sign inside a number");
+      NumberScan rest = scanNumber(text_, stop + 1, end);
+      return rest.end;
+    }
+    if (std::abs(n.value) >= kLargestNumber) {
+      error(block, Code::NumberOutOfRange, start, stop - start, "number is out of range (limit 1e9)");
+      return stop;
+    }
+    // A second motion word after a coordinate opens the upper side (`G2 X Y I J G1 U V`, cnc3); a
+    // single motion word may stand anywhere (`X10 Y5 G1`).
+    const bool motionG = letter == 'G' && n.value >= 0 && n.value <= 3 && n.value == std::floor(n.value);
+    if (splitAt_ < 0 && motionG && sawCoordinate_ && sawMotion_) splitAt_ = wordsSoFar(block);
+    sawMotion_ |= motionG;
+    if (letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'U' ||
+        letter == 'V')
+      sawCoordinate_ = true;
+    if (letter == 'G' && (n.value == 28 || n.value == 30)) homing_ = true;
+    push(block, start, stop, letter, WordValue::Number, n.value, n.hasPoint);
+    return stop;
+  }
+
+  // ---- 4. the sides of a 4-axis block ----------------------------------------------------------
+
+  /// Orders the block's words lower side first and reports a letter written twice on one side.
+  /// Positional sides after ':' or a second motion word; otherwise by letter.
+  void assignSides(Block& block) {
+    Word* words = program_.words.data() + block.firstWord;
+    const std::size_t n = program_.words.size() - block.firstWord;
+    std::vector<std::uint8_t>& side = sides_;  // 0 lower, 1 upper (kept between blocks: no allocation)
+    side.assign(n, 0);
+    if (splitAt_ >= 0) {
+      for (std::size_t k = static_cast<std::size_t>(splitAt_); k < n; ++k) side[k] = 1;
+      block.colon = colon_;
+      block.twoMotions = !colon_;
+    } else if (upperLetters_) {
+      std::uint32_t seenLower = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const char c = words[k].letter;
+        const std::uint32_t bit = 1u << (c - 'A');
+        if (c == 'U' || c == 'V' || c == 'K' || c == 'L') {
+          side[k] = 1;
+        } else if ((c == 'I' || c == 'J' || c == 'R') && (seenLower & bit)) {
+          side[k] = 1;  // a second centre for the upper arc: `G2 X Y I J U V I J`
+        } else {
+          seenLower |= bit;
+        }
+      }
+    }
+    // A letter twice on one side (G and M may repeat).
+    std::uint32_t seen[2] = {0, 0};
+    std::uint32_t placed = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const Word& w = words[k];
+      const std::uint32_t bit = 1u << (w.letter - 'A');
+      if ((seen[side[k]] & bit) && w.letter != 'G' && w.letter != 'M') {
+        error(block, Code::RepeatedWord, w.offset, w.length,
+              std::string("word '") + w.letter + "' appears twice in one block");
+        return;
+      }
+      seen[side[k]] |= bit;
+      placed += side[k] == 0;
+    }
+    block.upperFrom = static_cast<std::uint16_t>(placed);  // at most the block's words
+    hasUpper_ = true;
+    if (splitAt_ >= 0 || !upperLetters_) return;  // already in order
+    // By letter: the lower side first, each side in the order written.
+    const std::uint32_t largest = program_.largestIntegerWord;
+    const bool largestHere = largest >= block.firstWord && largest < block.firstWord + n;
+    const std::uint32_t largestOffset = largestHere ? program_.words[largest].offset : 0;
+    scratch_.assign(words, words + n);
+    std::size_t at = 0;
+    for (int s = 0; s < 2; ++s)
+      for (std::size_t k = 0; k < n; ++k)
+        if (side[k] == s) words[at++] = scratch_[k];
+    if (largestHere)
+      for (std::size_t k = 0; k < n; ++k)
+        if (words[k].offset == largestOffset)
+          program_.largestIntegerWord = block.firstWord + static_cast<std::uint32_t>(k);
+  }
+
+  const SourceFile& src_;
+  std::string_view text_;
+  Program& program_;
+  Diagnostics& diags_;
+  const ParseOptions& options_;
+  std::vector<std::uint8_t> sides_;  ///< assignSides' side of each of the block's words
+  std::vector<Word> scratch_;        ///< assignSides' copy of a block it reorders
+  bool upperLetters_ = false;        ///< U V K L among the block's words
+  bool plainWords_ = true;           ///< every word of the block so far is plain (Block::plain)
+  int splitAt_ = -1;                 ///< index in the block's words where a positional upper side starts
+  bool colon_ = false;               ///< that split was a ':'
+  bool sawCoordinate_ = false;       ///< X Y I J R U V seen in this block
+  bool sawMotion_ = false;           ///< a motion word (G00-G03) seen in this block
+  bool homing_ = false;              ///< G28 or G30 seen in this block: bare axis letters allowed
+  bool hasUpper_ = false;            ///< assignSides set upperFrom for this block
+  MacroTally macros_;
+};
+
+}  // namespace
+
+// ---- 5. the whole text ------------------------------------------------------------------------
+
+namespace {
+
+/// The macro B statements of the file: one diagnostic at the first, naming how many there are.
+void reportMacroStatements(const MacroTally& macros, const SourceFile& src, Diagnostics& diags) {
+  if (macros.count == 0) return;
+  std::string where;
+  if (macros.count > 1)
+    where = " (" + std::to_string(macros.count) + " macro lines, on lines " + std::to_string(macros.firstLine) +
+            " to " + std::to_string(macros.lastLine) + ")";
+  diags.error(Code::MacroStatement, &src, macros.first,
+              "macro B statement: variables, loops and jumps (#, WHILE, IF, GOTO) are evaluated by the control, "
+              "and Kerf does not run them" +
+                  where,
+              "the blocks around them are read once, in order, as if the macro lines were absent; a value "
+              "written as #n is known only at the machine");
+}
+
+}  // namespace
+
+Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOptions& options) {
+  Program program;
+  program.source = &source;
+  const std::string_view text = source.text();
+  // A NUL byte near the start means a binary file, not NC text: one diagnostic, not thousands.
+  if (const std::size_t nul = text.substr(0, 4096).find('\0'); nul != std::string_view::npos) {
+    diags.error(Code::UnexpectedCharacter, &source, {static_cast<std::uint32_t>(nul), 1},
+                "the file contains NUL bytes: it is not an NC text file");
+    return program;
+  }
+  // Room for what a typical wire program holds: a block of about 24 bytes and a word of about 6.
+  program.words.reserve(text.size() / 6);
+  program.blocks.reserve(text.size() / 24);
+  // A UTF-8 byte-order mark (some Windows editors write one) is not part of the program.
+  const std::size_t bom = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+  LineParser parser(source, program, diags, options);
+  bool sawContent = false;  // a block or a setting was read, so a '%' line closes the program
+  for (std::uint32_t line = 1; line <= source.lineCount(); ++line) {
+    auto [begin, end] = source.lineRange(line);
+    if (line == 1) begin = static_cast<std::uint32_t>(std::min<std::size_t>(bom, end));
+    // A '%' line opens the program; a '%' line after content closes it (the rest is ignored).
+    std::size_t at = begin;
+    while (at < end && isBlank(text[at])) ++at;
+    if (at < end && text[at] == '%') {
+      if (sawContent) break;
+      continue;
+    }
+    const std::size_t before = program.blocks.size() + program.settings.size();
+    parser.parseLine(begin, end, line);
+    sawContent = sawContent || program.blocks.size() + program.settings.size() != before;
+  }
+  reportMacroStatements(parser.macros(), source, diags);
+  return program;
+}
+
+}  // namespace kerf::converter

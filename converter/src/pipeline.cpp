@@ -3,8 +3,8 @@
 
 #include "kerf/converter/formats/3b/read_3b.h"
 #include "kerf/converter/formats/curve/read_curve.h"
-#include "kerf/converter/formats/polar/read_millturn.h"
 #include "kerf/converter/interpret/analysis.h"
+#include "kerf/converter/interpret/mill_turn.h"
 #include "kerf/converter/nc/number_format.h"
 
 #include <cstdio>
@@ -278,8 +278,8 @@ InterpreterOptions interpreterOptions(const MachineProfile& machine, const Pipel
   return io;
 }
 
-/// The program interpreted into a toolpath, its diagnostics into diags. A mill-turn face program
-/// goes through its own reader (read.h, docs/polar.md). Otherwise, unless the options or the
+/// The program interpreted into a toolpath, its diagnostics into diags; a mill-turn face program
+/// (mill_turn.h, docs/polar.md) with the face's words. Unless the options or the
 /// profile fix the I J convention, the program is read again with the other one when its arcs'
 /// centres say so (io.arcCentre is then that one); evidence says which convention and why.
 Interpretation interpretForMachine(const Program& program, const MachineProfile& machine, const ReadOptions& ro,
@@ -287,17 +287,14 @@ Interpretation interpretForMachine(const Program& program, const MachineProfile&
   const KnownCode* cCode = machine.find("C");
   const bool cIsRotary = !cCode || cCode->effect != CodeEffect::Harmless;  // Sodick: C is a condition
   const bool millTurn = isMillTurnProgram(program) || (cIsRotary && hasRotaryMoves(program));
-  Interpretation in;
   if (millTurn) {
     MillTurnOptions mt;
-    mt.machine = machine.name;
     mt.polarXDiameter = ro.polarXDiameter.value_or(!machine.polarXRadius);
     mt.polarCDiameter = machine.polarCDiameter;
     mt.polarFrameTable = ro.polarFrameTable.value_or(machine.polarFrameTable);
-    in.toolpath = readMillTurn(program, mt, diags);
-    return in;
+    io.millTurn = mt;
   }
-  in = interpretProgram(program, io, diags);
+  Interpretation in = interpretProgram(program, io, diags);
   const bool centreFixed = ro.arcCentre || machine.arcCentre;
   if (!centreFixed) {
     if (const std::optional<ArcCentreMode> better = betterCentre(in.arcs, io.arcCentre)) {

@@ -1,4 +1,4 @@
-; 4:10: error: this arc cannot be built: the arc's radius is 0 [K0305]
+; 4:10: error: arc radius is zero [K0305]
 G112
 G1 X0 C0
 G3 X1 C0 R0

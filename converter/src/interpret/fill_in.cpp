@@ -29,7 +29,8 @@ BlockPlan Interpreter::fillIn(const Block& block, const BlockWords& bw, const Bl
   p.dwell = bw.hasCode(GCode::Dwell);
   p.homing =
       bw.hasCode(GCode::ReferenceReturn) || bw.hasCode(GCode::SecondReference) || bw.hasCode(GCode::MachineCoordinates);
-  p.lowerWords = bw.has('X') || bw.has('Y') || bw.has('I') || bw.has('J') || bw.has('R');
+  p.lowerWords =
+      bw.has('X') || bw.has('Y') || bw.has('I') || bw.has('J') || bw.has('R') || (options_.millTurn && bw.has('C'));
   p.upperWords = bw.has('U') || bw.has('V');
   if (block.upperFrom < block.wordCount)
     for (char c : {'U', 'V', 'X', 'Y', 'I', 'J', 'R', 'K', 'L'}) p.upperWords |= ubw.has(c);

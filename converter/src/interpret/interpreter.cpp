@@ -39,7 +39,7 @@ Interpretation Interpreter::run() {
   toolpath_.reading.machine = machine_.name;
   toolpath_.reading.integerUnit = options_.integerUnit;
   toolpath_.reading.arcCentre = options_.arcCentre;
-  chooseDialect();
+  if (!options_.millTurn) chooseDialect();  // a face program is read in the plane: Plain
   indexLabels();
   for (const std::uint32_t k : program_.notPlain)  // a plain block has no V
     for (const Word& w : program_.wordsOf(program_.blocks[k])) programHasV_ |= w.letter == 'V';
@@ -80,6 +80,7 @@ Interpretation Interpreter::run() {
   flushUnknown(nullptr);
   if (!toolpath_.endedProperly && !diags_.hasErrors() && n > 0)
     diags_.warning(Code::MissingProgramEnd, src_, program_.blocks.back().span(), "program ends without M02 or M30");
+  if (options_.millTurn) finishFace();
   resolveHeights();
   if (dialect_ == Dialect::XyuvRel) resolveRel();
   if (dialect_ == Dialect::TaperAngle) resolveTaperAngle();
@@ -202,16 +203,18 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
                          " selects a work offset stored in the controller; Kerf takes it as zero");
     }
   }
+  if (options_.millTurn) {
+    holdMotion(bw);
+    executeFaceBlock(bw, block, plan);
+    return executeProgramFlow(bw, pc, next);
+  }
   if (const Word* p = bw.group(ModalGroup::Polar); p && bw.code(ModalGroup::Polar) == GCode::PolarOn) {
     skipPolarSection(pc, next, *p);
     return Flow::Continue;
   }
   if (executeMachineCodes(bw, block) == Flow::Stop) return Flow::Stop;
   if (plan.setPosition && !executeSetPosition(bw, ubw, block)) return Flow::Continue;
-  if (const Word* mw = bw.group(ModalGroup::Motion)) {
-    motion_ = motionOf(bw.code(ModalGroup::Motion));
-    motionWord_.hold(mw);
-  }
+  holdMotion(bw);
   if (plan.homing || plan.positionCode) {
     const Word* w = plan.positionCodeWord ? plan.positionCodeWord : bw.group(ModalGroup::NonModal);
     const std::string what =
@@ -229,7 +232,17 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   } else if (!plan.dwell && !plan.setPosition && !plan.noMotion) {
     if (!executeMotion(bw, ubw, block, plan)) return Flow::Continue;
   }
-  // Program flow.
+  return executeProgramFlow(bw, pc, next);
+}
+
+void Interpreter::holdMotion(const BlockWords& bw) {
+  if (const Word* mw = bw.group(ModalGroup::Motion)) {
+    motion_ = motionOf(bw.code(ModalGroup::Motion));
+    motionWord_.hold(mw);
+  }
+}
+
+Flow Interpreter::executeProgramFlow(const BlockWords& bw, std::size_t pc, std::size_t& next) {
   for (std::size_t k = 0; k < bw.mCount; ++k) {
     const Flow f = executeM(*bw.m[k], bw, pc, next);
     if (f == Flow::Stop) return f;

@@ -10,14 +10,17 @@
 //   wire_offset.cpp    G40/G41/G42 with D/H
 //   program_flow.cpp   M codes, M98/M99
 //   machine_codes.cpp  codes the machine profile knows; positions known only at the machine
+//   mill_turn.cpp      a mill-turn face program: X/C, polar interpolation
 //   heights.cpp        the plane heights, after the last block
 //   taper_offsets.cpp  taper-angle and xyuv-rel contours, after the last block
 #pragma once
 
 #include "gcode.h"
 #include "kerf/converter/interpret/interpreter.h"
+#include "kerf/converter/interpret/mill_turn.h"
 #include "kerf/geometry/arc.h"
 #include "kerf/geometry/offset.h"
+#include "kerf/geometry/polar.h"
 
 #include <algorithm>
 #include <array>
@@ -148,6 +151,9 @@ class Interpreter {
   void findLegacyTaperCodes();
   void warnIntegerUnit();
   Flow executeBlock(std::size_t pc, std::size_t& next);
+  void holdMotion(const BlockWords& bw);
+  /// M codes in order (M98/M99 calls, the end), then the profile's program ends.
+  Flow executeProgramFlow(const BlockWords& bw, std::size_t pc, std::size_t& next);
   // read_block.cpp (phase 1)
   bool readBlock(const Block& block, BlockWords& bw, BlockWords& ubw);
   void readWord(const Word& w, BlockWords& bw);
@@ -174,6 +180,12 @@ class Interpreter {
   bool buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
                  const std::string& side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
                  Move* record);
+  /// The line or arc from start to end with the block's I J or R; I J are turned by centreTurn
+  /// degrees (a mill-turn polar frame; 0 elsewhere). False, with the error reported, when it
+  /// cannot be built.
+  bool buildSegment(const BlockWords& w, Motion motion, const Vec2& start, const Vec2& end, const Vec2& shift,
+                    double centreTurn, const std::string& side, const Block& block, const Word* motionWord,
+                    Segment& out, Move* record);
   void tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift, bool closedAsUsed,
                       std::uint32_t line);
   void reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block, const std::string& side);
@@ -201,6 +213,20 @@ class Interpreter {
   void positionKnownAgain(const Block& block);
   void flushUnknown(const Block* knownAgain);
   bool skipPolarSection(std::size_t pc, std::size_t& next, const Word& polarWord);
+  // mill_turn.cpp (a face program: InterpreterOptions::millTurn)
+  /// Phase 1: true when the word is done with (noted, warned or not a face word).
+  bool readFaceWord(const Word& w);
+  /// Phase 4: dwell, the table homed, polar interpolation on or off, the move.
+  void executeFaceBlock(const BlockWords& bw, const Block& block, const BlockPlan& plan);
+  void startPolar(const Block& block);
+  void endPolar();
+  /// The face point the block's X Y C reach; newC the table angle after it, startRadius before.
+  Vec2 faceTarget(const BlockWords& bw, double& newC, double& startRadius);
+  void faceMove(const BlockWords& bw, const Block& block);
+  /// An X/C cutting move as its spiral's pieces; false (nothing pushed) to draw it as its chord.
+  bool pushSpiral(const Move& move, const geometry::PolarPoint& from, const geometry::PolarPoint& to,
+                  const BlockWords& bw, const Vec2& target);
+  void finishFace();
   // heights.cpp
   Height heightOf(const HeightWord& w) const;
   void resolveHeights();
@@ -252,6 +278,18 @@ class Interpreter {
   };
   std::vector<OffsetRun> offsetRuns_;
   bool programHasV_ = false;  // some word is V (for the U Z diagnostic)
+
+  // A mill-turn face program's axes (mill_turn.cpp). position_ is the face point.
+  struct FaceAxes {
+    bool polar = false;                     // inside G12.1/G112
+    double radius = 0.0, y = 0.0, c = 0.0;  // outside: mm, mm, degrees (unwrapped)
+    bool cKnown = false;
+    double frame = 0.0;  // degrees: the polar frame's turn against the table's at C 0
+    Vec2 inPolar{0, 0};  // the tool in the polar frame
+    std::size_t spiralPieces = 0;
+    double worstSpiral = 0.0;        // mm
+    std::vector<std::string> noted;  // T, S and M codes said once
+  } face_;
 
   // 4-axis state.
   Vec2 upperPosition_{0, 0};  // xyuv-abs, xyuv-linuxcnc, sodick-colon: where the upper contour is

@@ -57,12 +57,18 @@ void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2&
 bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
                             const std::string& side, const Block& block, const Word* motionWord, Segment& out,
                             Vec2& end, Move* record) {
-  const bool hasCentre = w.has('I') || w.has('J');
-  const bool hasRadius = w.has('R');
   Vec2 endProgram = start + shift;  // in program coordinates; unwritten axes stay
   if (const Word* x = w[xl]) endProgram.x() = incremental_ ? endProgram.x() + length(*x) : length(*x);
   if (const Word* y = w[yl]) endProgram.y() = incremental_ ? endProgram.y() + length(*y) : length(*y);
   end = endProgram - shift;
+  return buildSegment(w, motion, start, end, shift, 0.0, side, block, motionWord, out, record);
+}
+
+bool Interpreter::buildSegment(const BlockWords& w, Motion motion, const Vec2& start, const Vec2& end,
+                               const Vec2& shift, double centreTurn, const std::string& side, const Block& block,
+                               const Word* motionWord, Segment& out, Move* record) {
+  const bool hasCentre = w.has('I') || w.has('J');
+  const bool hasRadius = w.has('R');
   if (motion == Motion::Rapid || motion == Motion::Line) {
     if (hasCentre || hasRadius) {
       const Word* c = hasRadius ? w['R'] : w.has('I') ? w['I'] : w['J'];
@@ -97,6 +103,10 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
     Vec2 ij(0, 0);
     if (const Word* i = w['I']) ij.x() = length(*i);
     if (const Word* j = w['J']) ij.y() = length(*j);
+    if (centreTurn != 0.0) {
+      const double a = centreTurn / geometry::kDegreesPerRadian, c = std::cos(a), s = std::sin(a);
+      ij = Vec2(c * ij.x() - s * ij.y(), s * ij.x() + c * ij.y());
+    }
     Vec2 centre;
     CentreForm form = CentreForm::Incremental;
     switch (options_.arcCentre) {

@@ -44,6 +44,7 @@ bool Interpreter::splitsBlocks() const {
 }
 
 void Interpreter::readWord(const Word& w, BlockWords& bw) {
+  if (options_.millTurn && readFaceWord(w)) return;
   auto addMachine = [&](const KnownCode* k) {
     if (bw.machineCount == bw.machine.size()) {
       diags_.error(Code::TooManyMCodes, src_, w.span(),
@@ -102,7 +103,9 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
   }
   // In a taper-angle program A and T are the angle (execute.cpp), whatever else a profile says.
   const bool taperAngleWord = (w.letter == 'A' || w.letter == 'T') && dialect_ == Dialect::TaperAngle;
-  if (profileMayName(w.letter) && !taperAngleWord) {
+  // In a face program C is the table's axis, whatever a profile says C is.
+  const bool faceAxis = options_.millTurn && w.letter == 'C';
+  if (profileMayName(w.letter) && !taperAngleWord && !faceAxis) {
     if (const KnownCode* k = profileCode(machine_, w)) {
       addMachine(k);
       return;

@@ -18,10 +18,12 @@
 // taper-angle and xyuv-rel programs get their upper (and, with a program plane above the lower
 // plane, lower) contours after the last block, once the plane heights are known (heights.cpp,
 // taper_offsets.cpp). Codes a machine knows beyond the standard set come from its profile
-// (machine_codes.cpp).
+// (machine_codes.cpp). A mill-turn face program (mill_turn.h) takes the same phases with its own
+// words: X/C and polar interpolation on the lathe's face (mill_turn.cpp).
 #pragma once
 
 #include "kerf/converter/interpret/machine.h"
+#include "kerf/converter/interpret/mill_turn.h"
 #include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/nc/program.h"
 #include "kerf/converter/toolpath.h"
@@ -52,6 +54,9 @@ struct InterpreterOptions {
   /// Keep how each arc's centre was written (Toolpath::centreWords, 16 bytes a move): `kerf
   /// explain` shows it; a check does not need it.
   bool recordCentreWords = true;
+  /// A mill-turn face program (mill_turn.h): X a diameter and C the table angle, G12.1/G112
+  /// polar interpolation; nothing: a wire program.
+  std::optional<MillTurnOptions> millTurn;
 };
 
 /// How the arcs given by I J close under each convention (for detecting the convention).

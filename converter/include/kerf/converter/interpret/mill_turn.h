@@ -1,18 +1,23 @@
-// The mill-turn reader (docs/polar.md): X/C face programs and G12.1/G112 polar interpolation, read
-// into the Cartesian face plane.
+// Mill-turn face programs (docs/polar.md, seed 002, FORMATS §5): a program for a lathe's face,
+// read by the one interpreter into the Cartesian face plane. Which programs are mill-turn is
+// decided here; how they are read is the interpreter's (InterpreterOptions::millTurn).
+//
+// The face plane is the table's frame at C = 0: the tool at radius r and table angle C is
+// r (cos C, sin C) [sourced: seed 002, O31's X64.404 C-115.769 is O30's X-28. Y-29.]. Outside polar
+// mode X is a diameter, Y a linear axis, C the table angle in degrees. Inside G12.1/G112 ...
+// G13.1/G113 the program is Cartesian in a frame whose x axis passes through the tool when G12.1
+// is commanded (FORMATS §5: C is 0 there): X is a radius or a diameter (--polar-x, the profile's
+// polar_x), C the virtual linear axis in mm (a diameter on Star machines: the profile's polar_c).
+// Z (depth), S, T and most M words do not move the face point.
 #pragma once
 
-#include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/nc/program.h"
-#include "kerf/converter/toolpath.h"
 
 #include <cstddef>
-#include <string>
 
 namespace kerf::converter {
 
 struct MillTurnOptions {
-  std::string machine = "fanuc";      ///< the profile's name, for the summary
   bool polarXDiameter = false;        ///< X inside G12.1 is a diameter (--polar-x diameter)
   bool polarCDiameter = false;        ///< C inside G12.1 is a diameter (Star machines)
   bool polarFrameTable = false;       ///< the G12.1 frame is the table's at C 0, not turned with C (--polar-frame)
@@ -22,14 +27,9 @@ struct MillTurnOptions {
 
 /// The program uses polar coordinate interpolation (G12.1 or G112).
 bool isMillTurnProgram(const Program& program);
+
 /// Some block moves X and C together without Y (an explicit X/C face program, seed 002's O31), or
 /// homes the table (`G28 C0.`, seed 002's O30): a mill-turn lathe, where X is a diameter.
 bool hasRotaryMoves(const Program& program);
-
-/// Reads a mill-turn face program (docs/polar.md) into the Cartesian face plane: X/C moves outside
-/// polar mode (X a diameter, C the table angle; a C step longer than the shortest way is an error,
-/// K0237), Cartesian X/C inside G12.1/G112 ... G13.1/G113. Z (depth), S, T, M words do not move
-/// the face point. Macro B statements are left to the parser's diagnostics.
-Toolpath readMillTurn(const Program& program, const MillTurnOptions& options, Diagnostics& diags);
 
 }  // namespace kerf::converter

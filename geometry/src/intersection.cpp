@@ -19,6 +19,7 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 namespace kerf::geometry {
@@ -385,212 +386,269 @@ struct StopAtContact {
   [[nodiscard]] bool full() const { return true; }
 };
 
-/// True when no pair of the live segments (isLive) touches (`touches` decides a pair exactly); tested counts
-/// the pairs it asked about.
+/// The decision sweep, in its stages: the events (makeEvents), then each event's pieces entering
+/// (enter) and leaving (leave) the order along the sweep line, each new pair of neighbours tested.
 ///
-/// With kDrop, a pair that touches does not end the sweep: drop(a, b) is told (it lists the
-/// contacts of one of the two segments with every other, and makes it not live) and names the
-/// segment it dropped; that segment's pieces leave the order at the end of the event, as if they
-/// ended there, and the sweep goes on. It stops when drop.full() (enough contacts listed). The
-/// order may then be wrong past a contact the sweep did not see: a sweep that dropped something
-/// proves nothing, and findSelfIntersections sweeps again until one drops nothing.
-template <bool kDrop = false, typename IsLive, typename Touches, typename Drop = StopAtContact>
-bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, Touches&& touches, double near,
-                         std::size_t& tested, Drop&& drop = Drop{}) {
-  // The pieces are not kept: each is made again from its segment when it enters, and the sweep
-  // holds only those it crosses. Per piece, what stays is its segment (4 bytes, none for a path
-  // of lines), its place in the order (8) and its share of an event (24): at most 36 bytes, not
-  // the 104 a list of pieces cost.
+/// run() is true when no pair of the live segments (isLive) touches (`touches` decides a pair
+/// exactly); tested counts the pairs it asked about. With kDrop, a pair that touches does not end
+/// the sweep: drop(a, b) is told (it lists the contacts of one of the two segments with every
+/// other, and makes it not live) and names the segment it dropped; that segment's pieces leave the
+/// order at the end of the event (leaveDropped), as if they ended there, and the sweep goes on. It
+/// stops when drop.full() (enough contacts listed). The order may then be wrong past a contact the
+/// sweep did not see: a sweep that dropped something proves nothing, and findSelfIntersections
+/// sweeps again until one drops nothing.
+///
+/// The pieces are not kept: each is made again from its segment when it enters, and the sweep
+/// holds only those it crosses. Per piece, what stays is its segment (4 bytes, none for a path of
+/// lines), its place in the order (8) and its share of an event (24): at most 36 bytes.
+template <bool kDrop, typename IsLive, typename Touches, typename Drop>
+class DecisionSweep {
+ public:
+  DecisionSweep(SegmentView path, std::size_t live, IsLive& isLive, Touches& touches, double near, std::size_t& tested,
+                Drop& drop)
+      : path_(path), live_(live), isLive_(isLive), touches_(touches), near_(near), tested_(tested), drop_(drop) {}
+
+  bool run() {
+    makeEvents();
+    probe_.seg = std::numeric_limits<std::uint32_t>::max();
+    probe_.index = probeIndex_;
+    where_.assign(pieces_, order_.end());
+    for (std::size_t g = 0; g < events_.size();) {
+      const Vec2 at(events_[g].x, events_[g].y);
+      std::size_t h = g + 1;
+      while (h < events_.size() && events_[h].x == at.x() && events_[h].y == at.y()) ++h;
+      sweepX_ = at.x();
+      if (sweepX_ != verticalsX_) {
+        verticals_.clear();
+        verticalsX_ = sweepX_;
+      }
+      // At one point the pieces enter before any leaves, so that everything meeting there is in
+      // the order at once.
+      for (std::size_t e = g; e < h; ++e)
+        for (const std::uint32_t entry : events_[e].entry)
+          if (entry != kNone && (entry & 1u) && !enter(entry >> 3, (entry >> 1) & 3u, at)) return false;
+      for (std::size_t e = g; e < h; ++e)
+        for (const std::uint32_t entry : events_[e].entry)
+          if (entry != kNone && !(entry & 1u) && !leave(entry >> 3, at)) return false;
+      if constexpr (kDrop)
+        if (!leaveDropped()) return false;
+      g = h;
+    }
+    return true;
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   // An event: a point where one or two pieces enter or leave the sweep. Neighbouring pieces of a
   // path share their joint, so one event serves both and a closed path of n pieces sorts about n
   // events, not 2n. An entry is piece << 3 | sub-piece of its segment << 1 | enters.
-  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   struct Event {
     double x, y;  // plain doubles: 24 bytes, not the 32 an aligned Vec2 would make it
     std::uint32_t entry[2];
   };
-  // Piece -> its segment; not kept when every segment is live and a line (then piece k is
-  // segment k: 4 bytes a piece saved).
-  bool identity = live == path.size();
-  for (std::size_t i = 0; i < path.size() && identity; ++i) identity = !path[i].isArc();
-  std::vector<std::uint32_t> pieceSeg;
-  if (!identity) pieceSeg.reserve(live + live / 8 + 16);
-  std::size_t pieces = 0;
-  auto segOf = [&](std::uint32_t piece) { return identity ? piece : pieceSeg[piece]; };
-  std::vector<Event> events;
-  events.reserve(live + live / 8 + 16);
-  std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
-  for (std::uint32_t i = 0; i < path.size(); ++i) {
-    if (!isLive(i)) continue;
-    unsigned sub = 0;
-    forEachPiece(path[i], i, [&](const Piece& piece) {
-      const std::size_t k = pieces++;
-      if (k >= (std::size_t{1} << 29)) throw std::length_error("findSelfIntersections: more than 2^29 pieces");
-      if (!identity) pieceSeg.push_back(i);
-      std::size_t mine[2];
-      for (int end = 0; end < 2; ++end) {
-        const Vec2& at = end == 0 ? piece.left : piece.right;
-        const std::uint32_t entry = static_cast<std::uint32_t>(k) << 3 | sub << 1 | (end == 0 ? 1u : 0u);
-        mine[end] = SIZE_MAX;
-        for (const std::size_t e : previous)
-          if (e != SIZE_MAX && events[e].entry[1] == kNone && events[e].x == at.x() && events[e].y == at.y()) {
-            events[e].entry[1] = entry;
-            mine[end] = e;
-            break;
-          }
-        if (mine[end] == SIZE_MAX) {
-          events.push_back({at.x(), at.y(), {entry, kNone}});
-          mine[end] = events.size() - 1;
-        }
-      }
-      previous[0] = mine[0];
-      previous[1] = mine[1];
-      ++sub;
-    });
+
+  [[nodiscard]] std::uint32_t segOf(std::uint32_t piece) const { return identity_ ? piece : pieceSeg_[piece]; }
+  // The probe is a line: its segment unused.
+  double yNow(const Piece& p) const {
+    return p.vertical() ? p.left.y() : yAt(p, p.arc ? path_[p.seg] : path_[0], sweepX_);
   }
-  // By x, then y. At one point the pieces enter before any leaves (below), so that everything
-  // meeting there is in the order at once.
-  geometry::parallelSort(events.begin(), events.end(),
-                         [](const Event& a, const Event& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
-  const auto probeIndex = static_cast<std::uint32_t>(pieces++);
-  if (!identity) pieceSeg.push_back(std::numeric_limits<std::uint32_t>::max());
-  Piece probe;  // a flat piece, to find where a vertical line's range starts
-  probe.seg = std::numeric_limits<std::uint32_t>::max();
-  probe.index = probeIndex;
-  double sweepX = 0.0;
-  // A piece entering is found with its own place computed once (heterogeneous lookup), not again
-  // at every node it passes.
-  auto yNow = [&](const Piece& p) {  // the probe is a line: its segment unused
-    return p.vertical() ? p.left.y() : yAt(p, p.arc ? path[p.seg] : path[0], sweepX);
-  };
-  auto slopeNow = [&](const Piece& p) {
-    return p.vertical() ? 1e300 : slopeAt(p, p.arc ? path[p.seg] : path[0], sweepX);
-  };
-  // The nodes come from one arena: a million inserts and erases without a million allocations.
-  std::pmr::unsynchronized_pool_resource arena;
-  using Less = OrderAtSweep<decltype(yNow), decltype(slopeNow)>;
-  std::pmr::set<Piece, Less> order(Less{yNow, slopeNow}, &arena);
-  std::vector<typename decltype(order)::iterator> where(pieces, order.end());
-  std::vector<Piece> verticals;  // the vertical pieces at sweepX
-  double verticalsX = -std::numeric_limits<double>::infinity();
-  std::vector<std::uint32_t> leaving;  // kDrop: pieces of dropped segments, to leave the order
-  bool stop = false;                   // kDrop: drop is full
-  auto test = [&](std::uint32_t a, std::uint32_t b) {
+  double slopeNow(const Piece& p) const {
+    return p.vertical() ? 1e300 : slopeAt(p, p.arc ? path_[p.seg] : path_[0], sweepX_);
+  }
+
+  /// Every live segment's pieces, their ends as events sorted by x, then y.
+  void makeEvents() {
+    // Piece -> its segment; not kept when every segment is live and a line (then piece k is
+    // segment k: 4 bytes a piece saved).
+    identity_ = live_ == path_.size();
+    for (std::size_t i = 0; i < path_.size() && identity_; ++i) identity_ = !path_[i].isArc();
+    if (!identity_) pieceSeg_.reserve(live_ + live_ / 8 + 16);
+    events_.reserve(live_ + live_ / 8 + 16);
+    std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
+    for (std::uint32_t i = 0; i < path_.size(); ++i) {
+      if (!isLive_(i)) continue;
+      unsigned sub = 0;
+      forEachPiece(path_[i], i, [&](const Piece& piece) {
+        const std::size_t k = pieces_++;
+        if (k >= (std::size_t{1} << 29)) throw std::length_error("findSelfIntersections: more than 2^29 pieces");
+        if (!identity_) pieceSeg_.push_back(i);
+        std::size_t mine[2];
+        for (int end = 0; end < 2; ++end) {
+          const Vec2& at = end == 0 ? piece.left : piece.right;
+          const std::uint32_t entry = static_cast<std::uint32_t>(k) << 3 | sub << 1 | (end == 0 ? 1u : 0u);
+          mine[end] = SIZE_MAX;
+          for (const std::size_t e : previous)
+            if (e != SIZE_MAX && events_[e].entry[1] == kNone && events_[e].x == at.x() && events_[e].y == at.y()) {
+              events_[e].entry[1] = entry;
+              mine[end] = e;
+              break;
+            }
+          if (mine[end] == SIZE_MAX) {
+            events_.push_back({at.x(), at.y(), {entry, kNone}});
+            mine[end] = events_.size() - 1;
+          }
+        }
+        previous[0] = mine[0];
+        previous[1] = mine[1];
+        ++sub;
+      });
+    }
+    geometry::parallelSort(events_.begin(), events_.end(),
+                           [](const Event& a, const Event& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+    probeIndex_ = static_cast<std::uint32_t>(pieces_++);
+    if (!identity_) pieceSeg_.push_back(std::numeric_limits<std::uint32_t>::max());
+  }
+
+  /// Whether the pieces a and b touch (with kDrop: whether the sweep must stop).
+  bool test(std::uint32_t a, std::uint32_t b) {
     if (segOf(a) == segOf(b)) return false;  // two pieces of one arc meet where it turns
     if constexpr (kDrop) {
-      if (stop) return true;
-      if (!isLive(segOf(a)) || !isLive(segOf(b))) return false;  // dropped during this event
+      if (stop_) return true;
+      if (!isLive_(segOf(a)) || !isLive_(segOf(b))) return false;  // dropped during this event
     }
-    ++tested;
-    if (!touches(segOf(a), segOf(b))) return false;
+    ++tested_;
+    if (!touches_(segOf(a), segOf(b))) return false;
     if constexpr (kDrop) {
-      const std::optional<std::uint32_t> gone = drop(segOf(a), segOf(b));
-      if (drop.full()) {
-        stop = true;
+      const std::optional<std::uint32_t> gone = drop_(segOf(a), segOf(b));
+      if (drop_.full()) {
+        stop_ = true;
         return true;
       }
-      if (gone) leaving.push_back(*gone == segOf(a) ? a : b);
+      if (gone) leaving_.push_back(*gone == segOf(a) ? a : b);
       return false;
     } else {
       return true;
     }
-  };
-  // A piece leaves at `at`: its neighbours become neighbours. False when they touch. A neighbour
-  // within `near` of the point (another piece through it) may have hidden a piece beyond it that
-  // touches this one there: those are tested too, up to the first piece farther away.
-  auto leave = [&](std::uint32_t piece, const Vec2& at) {
-    const auto it = where[piece];
-    if (it == order.end()) return true;  // a vertical piece: never in the order
-    if (it != order.begin()) {
+  }
+
+  /// A piece leaves at `at`: its neighbours become neighbours. False when they touch. A neighbour
+  /// within `near` of the point (another piece through it) may have hidden a piece beyond it that
+  /// touches this one there: those are tested too, up to the first piece farther away.
+  bool leave(std::uint32_t piece, const Vec2& at) {
+    const auto it = where_[piece];
+    if (it == order_.end()) return true;  // a vertical piece: never in the order
+    if (it != order_.begin()) {
       auto q = std::prev(it);
-      while (q != order.begin() && yNow(*q) >= at.y() - near) {
+      while (q != order_.begin() && yNow(*q) >= at.y() - near_) {
         --q;
         if (test(q->index, piece)) return false;
       }
     }
-    for (auto q = std::next(it); q != order.end() && yNow(*q) <= at.y() + near;) {
-      if (++q == order.end()) break;
+    for (auto q = std::next(it); q != order_.end() && yNow(*q) <= at.y() + near_;) {
+      if (++q == order_.end()) break;
       if (test(piece, q->index)) return false;
     }
-    if (it != order.begin() && std::next(it) != order.end() && test(std::prev(it)->index, std::next(it)->index))
+    if (it != order_.begin() && std::next(it) != order_.end() && test(std::prev(it)->index, std::next(it)->index))
       return false;
-    order.erase(it);
-    if constexpr (kDrop) where[piece] = order.end();  // it may be dropped, or leave, later again
+    order_.erase(it);
+    if constexpr (kDrop) where_[piece] = order_.end();  // it may be dropped, or leave, later again
     return true;
-  };
-  // A piece enters at `at`: tested against its new neighbours. False when one touches it.
-  auto enter = [&](std::uint32_t piece, unsigned sub, const Vec2& at) {
+  }
+
+  /// A vertical piece enters: everything the sweep holds within its y range at this x.
+  bool enterVertical(const Piece& p, std::uint32_t piece) {
+    for (const Piece& v : verticals_)
+      if (test(v.index, piece)) return false;
+    // The probe at the range's foot finds where it starts.
+    probe_.left = Vec2(sweepX_, p.left.y() - 1e-9);
+    probe_.right = Vec2(sweepX_ + 1.0, p.left.y() - 1e-9);
+    for (auto q = order_.lower_bound(probe_); q != order_.end(); ++q) {
+      if (yNow(*q) > p.right.y() + 1e-9) break;
+      if (test(q->index, piece)) return false;
+    }
+    verticals_.push_back(p);
+    return true;
+  }
+
+  /// A piece enters at `at`: tested against its new neighbours. False when one touches it.
+  bool enter(std::uint32_t piece, unsigned sub, const Vec2& at) {
     if constexpr (kDrop)
-      if (!isLive(segOf(piece))) return true;  // dropped before it entered
-    Piece p = pieceOf(path[segOf(piece)], segOf(piece), sub);
+      if (!isLive_(segOf(piece))) return true;  // dropped before it entered
+    Piece p = pieceOf(path_[segOf(piece)], segOf(piece), sub);
     p.index = piece;
     // A point arriving at this x inside a vertical line there. Points arrive by y, so a line that
     // ends below this one is done with (a long vertical drawn in many pieces stays a short list).
-    std::erase_if(verticals, [&](const Piece& v) { return v.right.y() < at.y() - 1e-9; });
-    for (const Piece& v : verticals)
+    std::erase_if(verticals_, [&](const Piece& v) { return v.right.y() < at.y() - 1e-9; });
+    for (const Piece& v : verticals_)
       if (at.y() >= v.left.y() - 1e-9 && at.y() <= v.right.y() + 1e-9 && test(v.index, piece)) return false;
-    if (p.vertical()) {
-      // Everything the sweep holds within the line's y range at this x.
-      for (const Piece& v : verticals)
-        if (test(v.index, piece)) return false;
-      // The probe at the range's foot finds where it starts.
-      probe.left = Vec2(sweepX, p.left.y() - 1e-9);
-      probe.right = Vec2(sweepX + 1.0, p.left.y() - 1e-9);
-      for (auto q = order.lower_bound(probe); q != order.end(); ++q) {
-        if (yNow(*q) > p.right.y() + 1e-9) break;
-        if (test(q->index, piece)) return false;
-      }
-      verticals.push_back(p);
-      return true;
-    }
-    const auto it = order.emplace_hint(order.lower_bound(Place{yNow(p), slopeNow(p), p.index}), p);
-    where[piece] = it;
+    if (p.vertical()) return enterVertical(p, piece);
+    // Found with its own place computed once (heterogeneous lookup), not again at every node.
+    const auto it = order_.emplace_hint(order_.lower_bound(Place{yNow(p), slopeNow(p), p.index}), p);
+    where_[piece] = it;
     // Its neighbours, and past them every piece still within `near` of the point: pieces that
     // pass through one point (a shared vertex) must not hide from it a piece that touches it
     // within the tolerance (their own contact with that piece may be excused: a joint).
-    for (auto q = it; q != order.begin();) {
+    for (auto q = it; q != order_.begin();) {
       --q;
       if (test(q->index, piece)) return false;
-      if (yNow(*q) < at.y() - near) break;
+      if (yNow(*q) < at.y() - near_) break;
     }
-    for (auto q = std::next(it); q != order.end(); ++q) {
+    for (auto q = std::next(it); q != order_.end(); ++q) {
       if (test(piece, q->index)) return false;
-      if (yNow(*q) > at.y() + near) break;
+      if (yNow(*q) > at.y() + near_) break;
     }
     return true;
-  };
-  for (std::size_t g = 0; g < events.size();) {
-    const Vec2 at(events[g].x, events[g].y);
-    std::size_t h = g + 1;
-    while (h < events.size() && events[h].x == at.x() && events[h].y == at.y()) ++h;
-    sweepX = at.x();
-    if (sweepX != verticalsX) {
-      verticals.clear();
-      verticalsX = sweepX;
-    }
-    for (std::size_t e = g; e < h; ++e)
-      for (const std::uint32_t entry : events[e].entry)
-        if (entry != kNone && (entry & 1u) && !enter(entry >> 3, (entry >> 1) & 3u, at)) return false;
-    for (std::size_t e = g; e < h; ++e)
-      for (const std::uint32_t entry : events[e].entry)
-        if (entry != kNone && !(entry & 1u) && !leave(entry >> 3, at)) return false;
-    if constexpr (kDrop) {
-      // The dropped segments' pieces in the order (an arc's pieces are numbered in a row) leave
-      // it here; their neighbours, now next to each other, are tested (and may drop more).
-      while (!leaving.empty()) {
-        const std::uint32_t piece = leaving.back();
-        leaving.pop_back();
-        const std::uint32_t seg = segOf(piece);
-        std::uint32_t first = piece, last = piece;
-        while (first > 0 && segOf(first - 1) == seg) --first;
-        while (last + 1 < probeIndex && segOf(last + 1) == seg) ++last;
-        for (std::uint32_t q = first; q <= last; ++q)
-          if (where[q] != order.end() && !leave(q, Vec2(sweepX, yNow(*where[q])))) return false;
-      }
-    }
-    g = h;
   }
-  return true;
+
+  /// kDrop: the dropped segments' pieces in the order (an arc's pieces are numbered in a row)
+  /// leave it here; their neighbours, now next to each other, are tested (and may drop more).
+  bool leaveDropped() {
+    while (!leaving_.empty()) {
+      const std::uint32_t piece = leaving_.back();
+      leaving_.pop_back();
+      const std::uint32_t seg = segOf(piece);
+      std::uint32_t first = piece, last = piece;
+      while (first > 0 && segOf(first - 1) == seg) --first;
+      while (last + 1 < probeIndex_ && segOf(last + 1) == seg) ++last;
+      for (std::uint32_t q = first; q <= last; ++q)
+        if (where_[q] != order_.end() && !leave(q, Vec2(sweepX_, yNow(*where_[q])))) return false;
+    }
+    return true;
+  }
+
+  struct YNow {
+    const DecisionSweep* sweep;
+    double operator()(const Piece& p) const { return sweep->yNow(p); }
+  };
+  struct SlopeNow {
+    const DecisionSweep* sweep;
+    double operator()(const Piece& p) const { return sweep->slopeNow(p); }
+  };
+  using Less = OrderAtSweep<const YNow, const SlopeNow>;
+
+  SegmentView path_;
+  std::size_t live_;
+  IsLive& isLive_;
+  Touches& touches_;
+  double near_;
+  std::size_t& tested_;
+  Drop& drop_;
+  bool identity_ = true;
+  std::vector<std::uint32_t> pieceSeg_;
+  std::size_t pieces_ = 0;
+  std::uint32_t probeIndex_ = 0;
+  std::vector<Event> events_;
+  Piece probe_;  // a flat piece, to find where a vertical line's range starts
+  double sweepX_ = 0.0;
+  const YNow yNow_{this};
+  const SlopeNow slopeNow_{this};
+  // The nodes come from one arena: a million inserts and erases without a million allocations.
+  std::pmr::unsynchronized_pool_resource arena_;
+  std::pmr::set<Piece, Less> order_{Less{yNow_, slopeNow_}, &arena_};
+  std::vector<typename std::pmr::set<Piece, Less>::iterator> where_;
+  std::vector<Piece> verticals_;  // the vertical pieces at sweepX_
+  double verticalsX_ = -std::numeric_limits<double>::infinity();
+  std::vector<std::uint32_t> leaving_;  // kDrop: pieces of dropped segments, to leave the order
+  bool stop_ = false;                   // kDrop: drop is full
+};
+
+/// True when no pair of the live segments touches (DecisionSweep, above).
+template <bool kDrop = false, typename IsLive, typename Touches, typename Drop = StopAtContact>
+bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, Touches&& touches, double near,
+                         std::size_t& tested, Drop&& drop = Drop{}) {
+  return DecisionSweep<kDrop, std::remove_reference_t<IsLive>, std::remove_reference_t<Touches>,
+                       std::remove_reference_t<Drop>>(path, live, isLive, touches, near, tested, drop)
+      .run();
 }
 
 }  // namespace
@@ -782,271 +840,316 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
 
 }  // namespace
 
-SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfIntersectionOptions& options) {
-  SelfIntersectionResult result;
-  const double tol = options.tolerance;
-  const std::size_t n = path.size();
-  if (n >= kDead) throw std::length_error("findSelfIntersections: more than 2^32 - 2 segments");
-  // Neighbours skip over zero-length segments (reported elsewhere): they share a vertex just the
-  // same. A segment's rank is its place among the live segments, kDead for the others; the ranks
-  // are kept only when some segment is dead (else rank i is i: 4 bytes a segment saved). Which
-  // are dead the extent's pass finds, on every core.
-  std::vector<std::uint32_t> ranks;
-  auto rank = [&](std::size_t i) { return ranks.empty() ? static_cast<std::uint32_t>(i) : ranks[i]; };
-  auto isLive = [&](std::size_t i) { return ranks.empty() || ranks[i] != kDead; };
-  auto alive = [&](std::size_t i) { return path[i].length() > tol; };
-  // Sorting (min x, index) pairs directly is much faster than sorting indices through boxes. Only
-  // the box sweep needs them; they are made with the extent's figures, from one box each, in the
-  // order of the segments (the dead ones' places closed up after). The boxes themselves are kept
-  // only up to a million segments (below); past that a segment's box is made again when it enters
-  // the sweep. Either way it lives in the active list while it is there.
-  XKeys byMinX;
-  const bool boxesFirst = options.method == SweepMethod::Boxes || options.method == SweepMethod::Auto;
-  if (boxesFirst) byMinX.resize(n);
-  // Up to a million segments (16 MiB) the sweep's boxes are made here too, in the segments' order
-  // from the box just computed, and kept: the sweep then reads each from this list instead of
-  // making it again from its segment, fetched out of order. Past that the memory would grow with
-  // the path, so they are made in the sweep.
+namespace {
+
+/// findSelfIntersections in its stages, each a member: measure (one pass over the segments: the
+/// extent, the dead ones, the sweep's keys and boxes), the box sweep (every pair whose boxes
+/// overlap, within a budget of work), the decision sweep (does any pair touch at all), and the
+/// dropping sweeps that list the contacts where the box sweep would take too long. run() chooses.
+class SelfIntersectionSearch {
+ public:
+  SelfIntersectionSearch(SegmentView path, const SelfIntersectionOptions& options)
+      : path_(path), options_(options), tol_(options.tolerance), n_(path.size()) {}
+
+  SelfIntersectionResult run();
+
+ private:
+  void measure();
+  void sortByMinX();
+  /// Every pair whose boxes overlap, tested exactly; nothing when the work (entries of the active
+  /// list visited) passes a budget that is not 0.
+  std::optional<SelfIntersectionResult> boxSweep(std::size_t budget);
+  void fillBoxBlock(std::vector<SweepBox>& boxes, std::size_t base) const;
+  /// Tests the pending pairs into r; true when maxContacts is reached (r is then final).
+  bool flush(std::vector<std::pair<std::uint32_t, std::uint32_t>>& pending, SelfIntersectionResult& r);
+  /// Whether a and b touch, for the decision sweep.
+  bool touches(std::size_t a, std::size_t b);
+  SelfIntersectionResult withLoop(SelfIntersectionResult r);
+
+  // A segment's rank is its place among the live segments, kDead for the others (zero-length,
+  // reported elsewhere); the ranks are kept only when some segment is dead (else rank i is i).
+  [[nodiscard]] std::uint32_t rank(std::size_t i) const {
+    return ranks_.empty() ? static_cast<std::uint32_t>(i) : ranks_[i];
+  }
+  [[nodiscard]] bool isLive(std::size_t i) const { return ranks_.empty() || ranks_[i] != kDead; }
+  [[nodiscard]] bool alive(std::size_t i) const { return path_[i].length() > tol_; }
+  /// Neighbours skip over dead segments: they share a vertex just the same.
+  [[nodiscard]] bool isForward(std::size_t i, std::size_t j) const {
+    return isLive(i) && rank(j) == rank(i) + 1 && near(path_[i].end, path_[j].start, tol_);
+  }
+  [[nodiscard]] bool isWrap(std::size_t i, std::size_t j) const {
+    return options_.closed && live_ > 2 && rank(i) == 0 && rank(j) == live_ - 1 &&
+           near(path_[j].end, path_[i].start, tol_);
+  }
+  [[nodiscard]] bool boxesFirst() const {
+    return options_.method == SweepMethod::Boxes || options_.method == SweepMethod::Auto;
+  }
+  [[nodiscard]] std::size_t linearBudget() const { return 16 * std::size_t{live_} + 100000; }
+
+  SegmentView path_;
+  const SelfIntersectionOptions& options_;
+  const double tol_;
+  const std::size_t n_;
+  std::vector<std::uint32_t> ranks_;
+  std::uint32_t live_ = 0;
+  double lowX_ = 0.0, highX_ = 0.0, widths_ = 0.0;  // the live boxes' extent in x, their widths' sum
+  std::size_t selfLoop_ = SIZE_MAX;                 // the first segment that ends on its own start
+  // Sorting (min x, index) pairs directly is much faster than sorting indices through boxes; only
+  // the box sweep needs them. Up to a million segments (16 MiB) the sweep's boxes are kept too,
+  // in the segments' order; past that the memory would grow with the path, so each is made again
+  // when its segment enters the sweep.
+  XKeys byMinX_;
+  bool sorted_ = false;
+  std::vector<SweepBox> keptBoxes_;
+  // The first loop (findLoop): the least (k, v), v < k, whose end of k lies within tol of the start
+  // of v, as k << 32 | v, among the pairs the box sweep tested.
+  std::uint64_t loop_ = UINT64_MAX;
+  std::vector<Contact> scratch_;
+};
+
+void SelfIntersectionSearch::measure() {
+  if (boxesFirst()) byMinX_.resize(n_);
   constexpr std::size_t kKeptBoxesMost = std::size_t{1} << 20;
-  std::vector<SweepBox> keptBoxes;
-  if (boxesFirst && n <= kKeptBoxesMost) keptBoxes.resize(n);
-  const bool keepBoxes = !keptBoxes.empty();
+  if (boxesFirst() && n_ <= kKeptBoxesMost) keptBoxes_.resize(n_);
+  const bool keepBoxes = !keptBoxes_.empty();
   // On every core, in stretches of a fixed length whose sums are added in order: the figures do
   // not depend on the number of threads.
   constexpr std::size_t kStretch = 4096;
-  const std::size_t stretches = (n + kStretch - 1) / kStretch;
+  const std::size_t stretches = (n_ + kStretch - 1) / kStretch;
   struct Extent {
     double lowX = std::numeric_limits<double>::infinity(), highX = -std::numeric_limits<double>::infinity();
     double widths = 0.0;
-    std::size_t selfLoop = SIZE_MAX;  // the first segment that ends on its own start (a full circle)
+    std::size_t selfLoop = SIZE_MAX;
     std::size_t dead = 0;
   };
   std::vector<Extent> extents(stretches);
   geometry::parallelFor(stretches, 2, [&](std::size_t sb, std::size_t se) {
     for (std::size_t st = sb; st < se; ++st) {
       Extent e;
-      for (std::size_t i = st * kStretch; i < std::min(n, (st + 1) * kStretch); ++i) {
+      for (std::size_t i = st * kStretch; i < std::min(n_, (st + 1) * kStretch); ++i) {
         if (!alive(i)) {
           ++e.dead;
-          if (boxesFirst) byMinX[i] = {0.0f, kDead};
+          if (boxesFirst()) byMinX_[i] = {0.0f, kDead};
           continue;
         }
-        const Box b = path[i].bounds();
+        const Box b = path_[i].bounds();
         e.lowX = std::min(e.lowX, b.min.x());
         e.highX = std::max(e.highX, b.max.x());
-        e.widths += b.max.x() - b.min.x() + 2 * tol;
-        if (boxesFirst) byMinX[i] = {LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i)};
-        if (keepBoxes) keptBoxes[i] = SweepBox::of(LooseBox::around(b), tol);
-        if (options.findLoop && e.selfLoop == SIZE_MAX && near(path[i].end, path[i].start, tol)) e.selfLoop = i;
+        e.widths += b.max.x() - b.min.x() + 2 * tol_;
+        if (boxesFirst()) byMinX_[i] = {LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i)};
+        if (keepBoxes) keptBoxes_[i] = SweepBox::of(LooseBox::around(b), tol_);
+        if (options_.findLoop && e.selfLoop == SIZE_MAX && near(path_[i].end, path_[i].start, tol_)) e.selfLoop = i;
       }
       extents[st] = e;
     }
   });
-  double lowX = std::numeric_limits<double>::infinity(), highX = -lowX, widths = 0.0;
-  std::size_t selfLoop = SIZE_MAX, dead = 0;
+  lowX_ = std::numeric_limits<double>::infinity();
+  highX_ = -lowX_;
+  std::size_t dead = 0;
   for (const Extent& e : extents) {
-    lowX = std::min(lowX, e.lowX);
-    highX = std::max(highX, e.highX);
-    widths += e.widths;
-    selfLoop = std::min(selfLoop, e.selfLoop);
+    lowX_ = std::min(lowX_, e.lowX);
+    highX_ = std::max(highX_, e.highX);
+    widths_ += e.widths;
+    selfLoop_ = std::min(selfLoop_, e.selfLoop);
     dead += e.dead;
   }
-  std::vector<Extent>().swap(extents);
-  const auto live = static_cast<std::uint32_t>(n - dead);
-  if (dead > 0) {
-    ranks.assign(n, kDead);
-    std::uint32_t r = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (alive(i)) ranks[i] = r++;
-    if (boxesFirst)
-      byMinX.erase(std::remove_if(byMinX.begin(), byMinX.end(), [](const XKey& p) { return p.seg == kDead; }),
-                   byMinX.end());
-  }
-  bool sorted = false;
-  auto sortByMinX = [&] {
-    if (byMinX.empty()) {  // not made yet, or given back for the decision sweep
-      byMinX.reserve(live);
-      for (std::size_t i = 0; i < n; ++i)
-        if (isLive(i)) byMinX.push_back({LooseBox::below(path[i].bounds().min.x()), static_cast<std::uint32_t>(i)});
-    }
-    if (!sorted) sortByX(byMinX);  // byMinX comes in the order of the segments
-    sorted = true;
-  };
-  auto isForward = [&](std::size_t i, std::size_t j) {
-    return isLive(i) && rank(j) == rank(i) + 1 && near(path[i].end, path[j].start, tol);
-  };
-  auto isWrap = [&](std::size_t i, std::size_t j) {
-    return options.closed && live > 2 && rank(i) == 0 && rank(j) == live - 1 && near(path[j].end, path[i].start, tol);
-  };
+  live_ = static_cast<std::uint32_t>(n_ - dead);
+  if (dead == 0) return;
+  ranks_.assign(n_, kDead);
+  std::uint32_t r = 0;
+  for (std::size_t i = 0; i < n_; ++i)
+    if (alive(i)) ranks_[i] = r++;
+  if (boxesFirst())
+    byMinX_.erase(std::remove_if(byMinX_.begin(), byMinX_.end(), [](const XKey& k) { return k.seg == kDead; }),
+                  byMinX_.end());
+}
 
-  // The first loop (findLoop): the least (k, v), v < k, whose end of k lies within tol of the start
-  // of v, as k << 32 | v, among the pairs the box sweep tested; with the first segment that closes
-  // on its own start, when every pair was met, it is analyseClosure's answer.
-  std::uint64_t loop = UINT64_MAX;
-  auto withLoop = [&](SelfIntersectionResult r) {
-    if (!options.findLoop || r.truncated || live < n) return r;
-    r.loopKnown = true;
-    if (selfLoop != SIZE_MAX) loop = std::min(loop, std::uint64_t{selfLoop} << 32 | selfLoop);
-    if (loop != UINT64_MAX) {
-      r.loopTo = static_cast<std::size_t>(loop >> 32);
-      r.loopFrom = static_cast<std::size_t>(loop & 0xFFFFFFFFU);
+void SelfIntersectionSearch::sortByMinX() {
+  if (byMinX_.empty()) {  // not made yet, or given back for the decision sweep
+    byMinX_.reserve(live_);
+    for (std::size_t i = 0; i < n_; ++i)
+      if (isLive(i)) byMinX_.push_back({LooseBox::below(path_[i].bounds().min.x()), static_cast<std::uint32_t>(i)});
+  }
+  if (!sorted_) sortByX(byMinX_);  // byMinX_ comes in the order of the segments
+  sorted_ = true;
+}
+
+SelfIntersectionResult SelfIntersectionSearch::withLoop(SelfIntersectionResult r) {
+  if (!options_.findLoop || r.truncated || live_ < n_) return r;
+  r.loopKnown = true;
+  if (selfLoop_ != SIZE_MAX) loop_ = std::min(loop_, std::uint64_t{selfLoop_} << 32 | selfLoop_);
+  if (loop_ != UINT64_MAX) {
+    r.loopTo = static_cast<std::size_t>(loop_ >> 32);
+    r.loopFrom = static_cast<std::size_t>(loop_ & 0xFFFFFFFFU);
+  }
+  return r;
+}
+
+// The sweep itself only finds the pairs; their exact tests, most of its time, run on every core in
+// batches. A batch's contacts join the result in the order of its pairs, so the result, its
+// truncation at maxContacts and the pairs counted up to there are the same as testing each pair
+// as it is found.
+bool SelfIntersectionSearch::flush(std::vector<std::pair<std::uint32_t, std::uint32_t>>& pending,
+                                   SelfIntersectionResult& r) {
+  if (pending.empty()) return false;
+  std::mutex mutex;
+  std::vector<std::pair<std::size_t, std::vector<Contact>>> parts;  // (first pair, its contacts)
+  geometry::parallelFor(pending.size(), 2048, [&](std::size_t b, std::size_t e) {
+    std::vector<Contact> found;
+    std::uint64_t first = UINT64_MAX;
+    for (std::size_t k = b; k < e; ++k) {
+      const auto [i, j] = pending[k];
+      classifyPair(path_, i, j, isForward(i, j), isWrap(i, j), tol_, found);
+      if (options_.findLoop && near(path_[j].end, path_[i].start, tol_))
+        first = std::min(first, std::uint64_t{j} << 32 | i);
     }
-    return r;
-  };
-  // The box sweep: every pair whose boxes overlap, tested exactly. With a budget of work (entries
-  // of the active list visited), it gives up past it and says so (nothing: not finished).
-  //
-  // The sweep itself only finds the pairs; their exact tests, most of its time, run on every core
-  // in batches of kBatch pairs (8 bytes each: the memory stays fixed). A batch's contacts join
-  // the result in the order of its pairs, so the result, its truncation at maxContacts and the
-  // pairs counted up to there are the same as testing each pair as it is found.
-  auto boxSweep = [&](std::size_t budget) -> std::optional<SelfIntersectionResult> {
-    constexpr std::size_t kBatch = std::size_t{1} << 15;
-    SelfIntersectionResult r;
-    std::size_t work = 0;
-    struct Active {
-      SweepBox box;
-      std::uint32_t idx;
-    };
-    std::vector<Active> active;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending;  // (i, j), i < j, in the sweep's order
-    pending.reserve(std::min<std::size_t>(kBatch, live));
-    // Tests the pending pairs; true when maxContacts is reached (r is then final).
-    loop = UINT64_MAX;
-    auto flush = [&]() -> bool {
-      if (pending.empty()) return false;
-      std::mutex mutex;
-      std::vector<std::pair<std::size_t, std::vector<Contact>>> parts;  // (first pair, its contacts)
-      geometry::parallelFor(pending.size(), 2048, [&](std::size_t b, std::size_t e) {
-        std::vector<Contact> found;
-        std::uint64_t first = UINT64_MAX;
-        for (std::size_t k = b; k < e; ++k) {
-          const auto [i, j] = pending[k];
-          classifyPair(path, i, j, isForward(i, j), isWrap(i, j), tol, found);
-          if (options.findLoop && near(path[j].end, path[i].start, tol))
-            first = std::min(first, std::uint64_t{j} << 32 | i);
-        }
-        const std::lock_guard<std::mutex> lock(mutex);
-        parts.emplace_back(b, std::move(found));
-        loop = std::min(loop, first);
-      });
-      std::sort(parts.begin(), parts.end(), [](const auto& l, const auto& x) { return l.first < x.first; });
-      const std::size_t before = r.contacts.size();
-      for (auto& part : parts) r.contacts.insert(r.contacts.end(), part.second.begin(), part.second.end());
-      if (r.contacts.size() < options.maxContacts) {
-        r.candidatePairs += pending.size();
-        pending.clear();
-        return false;
+    const std::lock_guard<std::mutex> lock(mutex);
+    parts.emplace_back(b, std::move(found));
+    loop_ = std::min(loop_, first);
+  });
+  std::sort(parts.begin(), parts.end(), [](const auto& l, const auto& x) { return l.first < x.first; });
+  const std::size_t before = r.contacts.size();
+  for (auto& part : parts) r.contacts.insert(r.contacts.end(), part.second.begin(), part.second.end());
+  if (r.contacts.size() < options_.maxContacts) {
+    r.candidatePairs += pending.size();
+    pending.clear();
+    return false;
+  }
+  // The pairs up to the one whose contact was the last kept: a pair's contacts are consecutive
+  // and name it. (With maxContacts 0 the first pair tested ends the sweep.)
+  std::size_t pair = 0;
+  for (std::size_t c = before; c < options_.maxContacts; ++c)
+    while (pending[pair].first != r.contacts[c].first || pending[pair].second != r.contacts[c].second) ++pair;
+  r.candidatePairs += pair + 1;
+  r.truncated = true;
+  r.contacts.resize(options_.maxContacts);
+  std::sort(r.contacts.begin(), r.contacts.end(), byPair);
+  return true;
+}
+
+// The boxes in the sweep's order from `base`, made a block at a time on every core before the
+// sweep reads them in turn (rather than fetching the segments one by one out of order).
+void SelfIntersectionSearch::fillBoxBlock(std::vector<SweepBox>& boxes, std::size_t base) const {
+  const std::size_t count = std::min(boxes.size(), byMinX_.size() - base);
+  geometry::parallelFor(count, 4096, [&](std::size_t b, std::size_t e) {
+    constexpr std::size_t kAhead = 8;
+    if (!keptBoxes_.empty()) {
+      for (std::size_t q = b; q < e; ++q) {
+        if (q + kAhead < e) __builtin_prefetch(&keptBoxes_[byMinX_[base + q + kAhead].seg]);
+        boxes[q] = keptBoxes_[byMinX_[base + q].seg];
       }
-      // The pairs up to the one whose contact was the last kept: a pair's contacts are
-      // consecutive and name it. (With maxContacts 0 the first pair tested ends the sweep.)
-      std::size_t pair = 0;
-      for (std::size_t c = before; c < options.maxContacts; ++c)
-        while (pending[pair].first != r.contacts[c].first || pending[pair].second != r.contacts[c].second) ++pair;
-      r.candidatePairs += pair + 1;
-      r.truncated = true;
-      r.contacts.resize(options.maxContacts);
-      std::sort(r.contacts.begin(), r.contacts.end(), byPair);
-      return true;
-    };
-    // The boxes in the sweep's order, made a block at a time on every core before the sweep
-    // reads them in turn (rather than fetching the segments one by one out of order): 1 MB however
-    // long the path.
-    constexpr std::size_t kBoxBlock = std::size_t{1} << 16;
-    std::vector<SweepBox> boxes(std::min(byMinX.size(), kBoxBlock));
-    for (std::size_t k = 0; k < byMinX.size(); ++k) {
-      if (k % kBoxBlock == 0) {
-        const std::size_t base = k, count = std::min(kBoxBlock, byMinX.size() - k);
-        geometry::parallelFor(count, 4096, [&](std::size_t b, std::size_t e) {
-          constexpr std::size_t kAhead = 8;
-          if (!keptBoxes.empty()) {  // given back before a decision sweep, never read after
-            for (std::size_t q = b; q < e; ++q) {
-              if (q + kAhead < e) __builtin_prefetch(&keptBoxes[byMinX[base + q + kAhead].seg]);
-              boxes[q] = keptBoxes[byMinX[base + q].seg];
-            }
-            return;
-          }
-          for (std::size_t q = b; q < e; ++q) {
-            if (q + kAhead < e) __builtin_prefetch(&path[byMinX[base + q + kAhead].seg]);
-            boxes[q] = SweepBox::of(LooseBox::around(path[byMinX[base + q].seg].bounds()), tol);
-          }
-        });
-      }
-      const std::uint32_t idx = byMinX[k].seg;
-      const SweepBox box = boxes[k % kBoxBlock];
-      work += active.size();
-      if (budget && work > budget) {
-        // Pairs found before the budget ran out may already reach maxContacts: then the sweep
-        // did finish, as it would have testing them one by one.
-        if (flush()) return r;
-        return std::nullopt;
-      }
-      std::size_t w = 0;
-      for (std::size_t a = 0; a < active.size(); ++a) {
-        const Active entry = active[a];
-        if (entry.box.reachX < box.minX) continue;  // leaves the sweep
-        active[w++] = entry;
-        if (!entry.box.meets(box)) continue;
-        const std::uint32_t other = entry.idx;
-        pending.emplace_back(std::min(idx, other), std::max(idx, other));
-        if (pending.size() == kBatch && flush()) return r;
-      }
-      active.resize(w);
-      active.push_back({box, idx});
+      return;
     }
-    if (flush()) return r;
-    std::sort(r.contacts.begin(), r.contacts.end(), byPair);
-    return r;
+    for (std::size_t q = b; q < e; ++q) {
+      if (q + kAhead < e) __builtin_prefetch(&path_[byMinX_[base + q + kAhead].seg]);
+      boxes[q] = SweepBox::of(LooseBox::around(path_[byMinX_[base + q].seg].bounds()), tol_);
+    }
+  });
+}
+
+std::optional<SelfIntersectionResult> SelfIntersectionSearch::boxSweep(std::size_t budget) {
+  constexpr std::size_t kBatch = std::size_t{1} << 15;     // pairs tested at a time: 8 bytes each
+  constexpr std::size_t kBoxBlock = std::size_t{1} << 16;  // boxes made at a time: 1 MB
+  SelfIntersectionResult r;
+  std::size_t work = 0;
+  struct Active {
+    SweepBox box;
+    std::uint32_t idx;
   };
-  if (options.method == SweepMethod::Boxes) {
+  std::vector<Active> active;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pending;  // (i, j), i < j, in the sweep's order
+  pending.reserve(std::min<std::size_t>(kBatch, live_));
+  loop_ = UINT64_MAX;
+  std::vector<SweepBox> boxes(std::min(byMinX_.size(), kBoxBlock));
+  for (std::size_t k = 0; k < byMinX_.size(); ++k) {
+    if (k % kBoxBlock == 0) fillBoxBlock(boxes, k);
+    const std::uint32_t idx = byMinX_[k].seg;
+    const SweepBox box = boxes[k % kBoxBlock];
+    work += active.size();
+    if (budget && work > budget) {
+      // Pairs found before the budget ran out may already reach maxContacts: then the sweep did
+      // finish, as it would have testing them one by one.
+      if (flush(pending, r)) return r;
+      return std::nullopt;
+    }
+    std::size_t w = 0;
+    for (std::size_t a = 0; a < active.size(); ++a) {
+      const Active entry = active[a];
+      if (entry.box.reachX < box.minX) continue;  // leaves the sweep
+      active[w++] = entry;
+      if (!entry.box.meets(box)) continue;
+      pending.emplace_back(std::min(idx, entry.idx), std::max(idx, entry.idx));
+      if (pending.size() == kBatch && flush(pending, r)) return r;
+    }
+    active.resize(w);
+    active.push_back({box, idx});
+  }
+  if (flush(pending, r)) return r;
+  std::sort(r.contacts.begin(), r.contacts.end(), byPair);
+  return r;
+}
+
+bool SelfIntersectionSearch::touches(std::size_t a, std::size_t b) {
+  const std::size_t i = std::min(a, b), j = std::max(a, b);
+  // Most neighbours along the sweep line are two lines far apart: one lies wholly on one side of
+  // the other's line, farther than the tolerance. Two cross products say so; the full test is
+  // left for the rest.
+  if (!path_[i].isArc() && !path_[j].isArc() &&
+      (strictlyOneSide(path_[i], path_[j], tol_) || strictlyOneSide(path_[j], path_[i], tol_)))
+    return false;
+  scratch_.clear();
+  classifyPair(path_, i, j, isForward(i, j), isWrap(i, j), tol_, scratch_);
+  return !scratch_.empty();
+}
+
+SelfIntersectionResult SelfIntersectionSearch::run() {
+  if (n_ >= kDead) throw std::length_error("findSelfIntersections: more than 2^32 - 2 segments");
+  measure();
+  if (options_.method == SweepMethod::Boxes) {
     sortByMinX();
     return withLoop(*boxSweep(0));
   }
-
   // On the shapes wire programs have, few boxes overlap and the box sweep is the fastest answer:
   // tried first with work linear in the path. Where boxes pile up (long spikes of a star), the
   // decision sweep shows in O(n log n) that the path does not meet itself — what a program that can
-  // be cut needs; only a path that does meet itself is then swept by boxes in full to list where.
-  // The box sweep's work is about the number of boxes times the boxes a vertical line meets on
-  // average (their widths over the extent): past the budget already on average, it is not tried.
-  if (options.method == SweepMethod::Auto) {
-    const std::size_t budget = 16 * live + 100000;
-    const double meets = widths / std::max(highX - lowX, 1e-300);
-    if (meets * static_cast<double>(live) <= static_cast<double>(budget)) {
+  // be cut needs; only a path that does meet itself is then listed. The box sweep's work is about
+  // the number of boxes times the boxes a vertical line meets on average (their widths over the
+  // extent): past the budget already on average, it is not tried.
+  if (options_.method == SweepMethod::Auto) {
+    const double meets = widths_ / std::max(highX_ - lowX_, 1e-300);
+    if (meets * static_cast<double>(live_) <= static_cast<double>(linearBudget())) {
       sortByMinX();
-      if (std::optional<SelfIntersectionResult> quick = boxSweep(budget)) return withLoop(std::move(*quick));
+      if (std::optional<SelfIntersectionResult> quick = boxSweep(linearBudget())) return withLoop(std::move(*quick));
     }
   }
   // The decision sweep does not need the boxes' order: its memory goes back first (8 bytes a
-  // segment: 80 MB at 1e7), and the box sweep after it, if any, sorts again.
-  XKeys().swap(byMinX);
-  decltype(keptBoxes)().swap(keptBoxes);
-  sorted = false;
-  std::vector<Contact> scratch;
-  auto touches = [&](std::size_t a, std::size_t b) {
-    const std::size_t i = std::min(a, b), j = std::max(a, b);
-    // Most neighbours along the sweep line are two lines far apart: one lies wholly on one side
-    // of the other's line, farther than the tolerance. Two cross products say so; the full test
-    // is left for the rest.
-    if (!path[i].isArc() && !path[j].isArc() &&
-        (strictlyOneSide(path[i], path[j], tol) || strictlyOneSide(path[j], path[i], tol)))
-      return false;
-    scratch.clear();
-    classifyPair(path, i, j, isForward(i, j), isWrap(i, j), tol, scratch);
-    return !scratch.empty();
-  };
+  // segment: 80 MB at 1e7), and a box sweep after it sorts again.
+  XKeys().swap(byMinX_);
+  std::vector<SweepBox>().swap(keptBoxes_);
+  sorted_ = false;
+  auto isLiveSegment = [this](std::size_t i) { return isLive(i); };
+  auto touchesPair = [this](std::size_t a, std::size_t b) { return touches(a, b); };
   std::size_t tested = 0;
-  if (sweepFindsNoContact(path, live, isLive, touches, tol, tested)) {
-    result.candidatePairs = tested;
-    return result;
+  if (sweepFindsNoContact(path_, live_, isLiveSegment, touchesPair, tol_, tested)) {
+    SelfIntersectionResult clean;
+    clean.candidatePairs = tested;
+    return clean;
   }
   // The path meets itself. Its contacts are listed by the box sweep while its work stays linear
   // (the decision method tries it here; the automatic one already ran out of it, or knew it would).
-  if (options.method == SweepMethod::Decision) {
+  if (options_.method == SweepMethod::Decision) {
     sortByMinX();
-    if (std::optional<SelfIntersectionResult> quick = boxSweep(16 * live + 100000)) return withLoop(std::move(*quick));
+    if (std::optional<SelfIntersectionResult> quick = boxSweep(linearBudget())) return withLoop(std::move(*quick));
   }
-  return dropAndSweep(path, options, n, live, isLive, isForward, isWrap, touches, tested);
+  auto forward = [this](std::size_t i, std::size_t j) { return isForward(i, j); };
+  auto wrap = [this](std::size_t i, std::size_t j) { return isWrap(i, j); };
+  return dropAndSweep(path_, options_, n_, live_, isLiveSegment, forward, wrap, touchesPair, tested);
+}
+
+}  // namespace
+
+SelfIntersectionResult findSelfIntersections(SegmentView path, const SelfIntersectionOptions& options) {
+  return SelfIntersectionSearch(path, options).run();
 }
 
 }  // namespace kerf::geometry

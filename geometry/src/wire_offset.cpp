@@ -160,59 +160,100 @@ std::vector<int> loopsAround(std::span<const std::span<const Segment>> loops, st
   return count;
 }
 
-WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const WireOffsetOptions& options) {
-  WireOffsetResult result;
-  const double tol = options.tolerance;
-  const double dist = std::abs(d);
-  // Elements with a length: a zero-length move has no direction to offset from.
-  std::vector<std::size_t> kept;
-  for (std::size_t i = 0; i < contour.size(); ++i)
-    if (contour[i].length() > tol) kept.push_back(i);
-  if (kept.empty() || dist <= tol) {
-    if (!kept.empty()) {  // no offset: the contour itself
-      std::vector<WirePiece> path;
-      for (std::size_t i : kept) path.push_back({contour[i], i, false});
-      result.paths.push_back(std::move(path));
-    }
-    return result;
-  }
-  if (kept.size() * 3 > options.maxPieces) {
-    result.refused = true;
-    return result;
-  }
-  const std::size_t n = kept.size();
+namespace {
 
-  // 1 and 2: offsets and joins.
-  std::vector<Segment> off(n);
-  for (std::size_t k = 0; k < n; ++k) off[k] = exactOffset(contour[kept[k]], d, tol);
-  std::vector<Raw> raw;
-  raw.reserve(3 * n);
-  std::vector<std::optional<Segment>> joins(n);  // joins[k]: between k and k + 1
-  const std::size_t joints = options.closed ? n : n - 1;
+/// wireOffset in its stages (docs/geometry.md, "The wire offset"): each element offset exactly and
+/// the corners joined (offsetAndJoin), the raw path split where it meets itself (split), the pieces
+/// at least |d| from the contour kept (keep), linked head to tail into paths (link), and the runs
+/// of elements the wire cannot reach (findLost). A stage that runs past the budgets sets refused.
+class WireOffsetBuilder {
+ public:
+  WireOffsetBuilder(std::span<const Segment> contour, double d, const WireOffsetOptions& options)
+      : contour_(contour), d_(d), options_(options), tol_(options.tolerance), dist_(std::abs(d)) {}
+
+  WireOffsetResult run() {
+    // Elements with a length: a zero-length move has no direction to offset from.
+    for (std::size_t i = 0; i < contour_.size(); ++i)
+      if (contour_[i].length() > tol_) kept_.push_back(i);
+    if (kept_.empty() || dist_ <= tol_) {
+      if (!kept_.empty()) {  // no offset: the contour itself
+        std::vector<WirePiece> path;
+        for (std::size_t i : kept_) path.push_back({contour_[i], i, false});
+        result_.paths.push_back(std::move(path));
+      }
+      return result_;
+    }
+    if (kept_.size() * 3 > options_.maxPieces) {
+      result_.refused = true;
+      return result_;
+    }
+    n_ = kept_.size();
+    offsetAndJoin();
+    maxTests_ = options_.maxTests ? options_.maxTests : 8 * raw_.size() + 20'000'000;
+    if (!split() || !keep()) return result_;
+    link();
+    findLost();
+    return result_;
+  }
+
+ private:
+  void offsetAndJoin();
+  bool split();
+  bool keep();
+  void link();
+  void findLost();
+  /// One exact test, counted against the budget: past it the offset is refused, after bounded work.
+  bool overBudget() {
+    if (++result_.tests <= maxTests_) return false;
+    result_.refused = result_.tooMuchWork = true;
+    return true;
+  }
+
+  std::span<const Segment> contour_;
+  const double d_;
+  const WireOffsetOptions& options_;
+  const double tol_, dist_;
+  std::size_t maxTests_ = 0;
+  WireOffsetResult result_;
+  std::vector<std::size_t> kept_;                           // the elements with a length
+  std::size_t n_ = 0;                                       // kept_.size()
+  std::vector<Raw> raw_;                                    // offsets and joins, in order
+  std::size_t m_ = 0;                                       // raw_.size()
+  std::vector<std::vector<std::pair<double, Vec2>>> cuts_;  // per raw piece: where the path meets it
+  std::vector<Sub> subs_;                                   // the pieces kept
+  std::vector<bool> alive_;                                 // per element: some of its offset was kept
+};
+
+void WireOffsetBuilder::offsetAndJoin() {
+  std::vector<Segment> off(n_);
+  for (std::size_t k = 0; k < n_; ++k) off[k] = exactOffset(contour_[kept_[k]], d_, tol_);
+  raw_.reserve(3 * n_);
+  std::vector<std::optional<Segment>> joins(n_);  // joins[k]: between k and k + 1
+  const std::size_t joints = options_.closed ? n_ : n_ - 1;
   for (std::size_t k = 0; k < joints; ++k) {
-    const std::size_t next = (k + 1) % n;
+    const std::size_t next = (k + 1) % n_;
     Segment& a = off[k];
     Segment& b = off[next];
     const Vec2 p = a.end, q = b.start;
-    if ((p - q).norm() <= tol) {
+    if ((p - q).norm() <= tol_) {
       b.start = p;  // exactly shared, for the linking below
       if (b.isArc()) b.startAngle = angleOf(p - b.centre);
       continue;
     }
-    const Vec2 v = contour[kept[k]].end;
+    const Vec2 v = contour_[kept_[k]].end;
     double sweep = wrapSigned(angleOf(q - v) - angleOf(p - v));
-    const double convexSign = d > 0 ? -1.0 : 1.0;  // a left offset rolls clockwise round a corner
+    const double convexSign = d_ > 0 ? -1.0 : 1.0;  // a left offset rolls clockwise round a corner
     if (std::abs(std::abs(sweep) - kPi) < 1e-9) sweep = convexSign * kPi;  // a reversal: the round cap
     if (sweep * convexSign > 0) {
       joins[k] = joinArc(v, p, q, sweep);
       continue;
     }
     // Concave: trim both at their intersection nearest the corner, when they meet.
-    const SegmentIntersection x = intersect(a, b, tol);
+    const SegmentIntersection x = intersect(a, b, tol_);
     std::optional<Vec2> best;
     for (int c = 0; c < x.count; ++c)
       if (!best || (x.points[c] - v).norm() < (*best - v).norm()) best = x.points[c];
-    if (best && a.length() > tol && b.length() > tol) {
+    if (best && a.length() > tol_ && b.length() > tol_) {
       const double ta = a.parameterOf(*best), tb = b.parameterOf(*best);
       if (ta > 0.0 && tb < 1.0) {
         a = subSegment(a, 0.0, ta);
@@ -224,101 +265,102 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
     }
     joins[k] = joinArc(v, p, q, sweep);  // the short reversed arc: removed as interference below
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    if (off[k].length() > tol * 0.01) raw.push_back({off[k], kept[k], false});
-    if (joins[k]) raw.push_back({*joins[k], kept[k], true});
+  for (std::size_t k = 0; k < n_; ++k) {
+    if (off[k].length() > tol_ * 0.01) raw_.push_back({off[k], kept_[k], false});
+    if (joins[k]) raw_.push_back({*joins[k], kept_[k], true});
   }
-  result.rawPieces = raw.size();
+  result_.rawPieces = raw_.size();
+}
 
-  // Exact tests, counted against the budget: past it the offset is refused, after bounded work.
-  const std::size_t maxTests = options.maxTests ? options.maxTests : 8 * raw.size() + 20'000'000;
-  auto overBudget = [&] {
-    if (++result.tests <= maxTests) return false;
-    result.refused = result.tooMuchWork = true;
-    return true;
-  };
-
-  // 3: split where the raw path meets itself.
-  std::vector<Box> boxes(raw.size());
-  for (std::size_t i = 0; i < raw.size(); ++i) boxes[i] = raw[i].seg.bounds();
+bool WireOffsetBuilder::split() {
+  // 3: split where the raw_ path meets itself.
+  std::vector<Box> boxes(raw_.size());
+  for (std::size_t i = 0; i < raw_.size(); ++i) boxes[i] = raw_[i].seg.bounds();
   const detail::BoxTree pieces(boxes);
-  std::vector<std::vector<std::pair<double, Vec2>>> cuts(raw.size());
-  const std::size_t m = raw.size();
+  cuts_.assign(raw_.size(), {});
+  m_ = raw_.size();
   std::size_t splitCount = 0;
-  for (std::size_t i = 0; i < m && !result.refused; ++i) {
-    pieces.visitOverlapping(boxes[i], tol, [&](std::size_t j) {
-      if (j <= i || result.refused || overBudget()) return;
-      const SegmentIntersection x = intersect(raw[i].seg, raw[j].seg, tol);
-      const bool neighbours = j == i + 1 || (options.closed && i == 0 && j == m - 1);
+  for (std::size_t i = 0; i < m_ && !result_.refused; ++i) {
+    pieces.visitOverlapping(boxes[i], tol_, [&](std::size_t j) {
+      if (j <= i || result_.refused || overBudget()) return;
+      const SegmentIntersection x = intersect(raw_[i].seg, raw_[j].seg, tol_);
+      const bool neighbours = j == i + 1 || (options_.closed && i == 0 && j == m_ - 1);
       for (int c = 0; c < x.count; ++c) {
         const Vec2 pt = x.points[c];
         if (neighbours) {
-          const Vec2 shared = j == i + 1 ? raw[i].seg.end : raw[i].seg.start;
-          if ((pt - shared).norm() <= 10 * tol) continue;
+          const Vec2 shared = j == i + 1 ? raw_[i].seg.end : raw_[i].seg.start;
+          if ((pt - shared).norm() <= 10 * tol_) continue;
         }
-        cuts[i].push_back({raw[i].seg.parameterOf(pt), pt});
-        cuts[j].push_back({raw[j].seg.parameterOf(pt), pt});
-        if (++splitCount > options.maxPieces) result.refused = true;
+        cuts_[i].push_back({raw_[i].seg.parameterOf(pt), pt});
+        cuts_[j].push_back({raw_[j].seg.parameterOf(pt), pt});
+        if (++splitCount > options_.maxPieces) result_.refused = true;
       }
     });
   }
-  if (result.refused) return result;
-  result.splitPoints = splitCount;
+  if (result_.refused) return false;
+  result_.splitPoints = splitCount;
+  return true;
+}
 
-  // Keep the pieces whose middle is at least |d| from the contour.
-  std::vector<Box> elementBoxes(contour.size());
-  for (std::size_t i = 0; i < contour.size(); ++i) elementBoxes[i] = contour[i].bounds();
+bool WireOffsetBuilder::keep() {
+  // Keep the pieces whose middle is at least |d_| from the contour_.
+  std::vector<Box> elementBoxes(contour_.size());
+  for (std::size_t i = 0; i < contour_.size(); ++i) elementBoxes[i] = contour_[i].bounds();
   const detail::BoxTree elements(elementBoxes);
-  // A closed contour: the side of the offset is also a winding number (a piece of an offset that
-  // has passed through a thin part of the contour to its far side is |d| away, but on the wrong side).
-  const double area = options.closed ? signedArea(contour) : 0.0;
-  const int sideWinding = d > 0 ? (area > 0 ? 1 : 0) : (area > 0 ? 0 : -1);
+  // A closed contour_: the side of the offset is also a winding number (a piece of an offset that
+  // has passed through a thin part of the contour_ to its far side is |d_| away, but on the wrong side).
+  const double area = options_.closed ? signedArea(contour_) : 0.0;
+  const int sideWinding = d_ > 0 ? (area > 0 ? 1 : 0) : (area > 0 ? 0 : -1);
   auto valid = [&](const Vec2& p) {
-    if (options.closed) {
-      // windingNumber(contour, p), from the elements whose boxes meet the ray from p (within the
+    if (options_.closed) {
+      // windingNumber(contour_, p), from the elements whose boxes meet the ray from p (within the
       // tolerance, so that rounding cannot leave one out): the same sum, not a pass over the whole
-      // contour for every piece (80,000 vertices: 26.9 s of kerf cam, 89% of it here).
+      // contour_ for every piece (80,000 vertices: 26.9 s of kerf cam, 89% of it here).
       int w = 0;
-      elements.visitOverlapping(rayFrom(p), tol, [&](std::size_t e) { w += windingOf(contour[e], p); });
+      elements.visitOverlapping(rayFrom(p), tol_, [&](std::size_t e) { w += windingOf(contour_[e], p); });
       if (w != sideWinding) return false;
     }
     bool ok = true;
     Box b;
     b.add(p);
-    elements.visitOverlapping(b, dist, [&](std::size_t e) {
-      if (ok && !result.refused && !overBudget() && contour[e].length() > tol && contour[e].distanceTo(p) < dist - tol)
+    elements.visitOverlapping(b, dist_, [&](std::size_t e) {
+      if (ok && !result_.refused && !overBudget() && contour_[e].length() > tol_ &&
+          contour_[e].distanceTo(p) < dist_ - tol_)
         ok = false;
     });
     return ok;
   };
-  std::vector<Sub> subs;
-  std::vector<bool> alive(contour.size(), false);
-  for (std::size_t i = 0; i < m; ++i) {
-    auto& c = cuts[i];
+  alive_.assign(contour_.size(), false);
+  for (std::size_t i = 0; i < m_; ++i) {
+    auto& c = cuts_[i];
     std::sort(c.begin(), c.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    const double len = raw[i].seg.length();
-    std::vector<std::pair<double, Vec2>> at{{0.0, raw[i].seg.start}};
+    const double len = raw_[i].seg.length();
+    std::vector<std::pair<double, Vec2>> at{{0.0, raw_[i].seg.start}};
     for (const auto& [t, pt] : c) {
-      if (t * len <= tol || (1.0 - t) * len <= tol) continue;
-      if ((pt - at.back().second).norm() <= tol) continue;
+      if (t * len <= tol_ || (1.0 - t) * len <= tol_) continue;
+      if ((pt - at.back().second).norm() <= tol_) continue;
       at.push_back({t, pt});
     }
-    at.push_back({1.0, raw[i].seg.end});
+    at.push_back({1.0, raw_[i].seg.end});
     for (std::size_t s = 0; s + 1 < at.size(); ++s) {
-      Segment piece = subSegment(raw[i].seg, at[s].first, at[s + 1].first);
+      Segment piece = subSegment(raw_[i].seg, at[s].first, at[s + 1].first);
       piece.start = at[s].second;
       piece.end = at[s + 1].second;
       if (piece.isArc()) piece.startAngle = angleOf(piece.start - piece.centre);
-      if (piece.length() <= tol * 0.01) continue;
+      if (piece.length() <= tol_ * 0.01) continue;
       if (!valid(piece.pointAt(0.5))) continue;
-      subs.push_back({piece, i, at[s].first, at[s + 1].first});
-      if (!raw[i].corner) alive[raw[i].element] = true;
+      subs_.push_back({piece, i, at[s].first, at[s + 1].first});
+      if (!raw_[i].corner) alive_[raw_[i].element] = true;
     }
-    if (result.refused) return result;
+    if (result_.refused) return false;
   }
 
-  // Link the kept pieces head to tail (they run in the raw path's order except across a split).
-  const double link = 100 * tol;  // ends this close are one point (offset ends of arcs off their circle)
+  return true;
+}
+
+void WireOffsetBuilder::link() {
+  // Link the kept_ pieces head to tail (they run in the raw_ path's order except across a split).
+  const double link = 100 * tol_;  // ends this close are one point (offset ends of arcs off their circle)
   auto key = [&](const Vec2& p) {
     const auto gx = static_cast<std::int64_t>(std::floor(p.x() / (4 * link)));
     const auto gy = static_cast<std::int64_t>(std::floor(p.y() / (4 * link)));
@@ -330,11 +372,11 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
     }
   };
   std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>, PairHash> starts;
-  for (std::size_t s = 0; s < subs.size(); ++s) starts[key(subs[s].seg.start)].push_back(s);
-  std::vector<bool> used(subs.size(), false);
+  for (std::size_t s = 0; s < subs_.size(); ++s) starts[key(subs_[s].seg.start)].push_back(s);
+  std::vector<bool> used(subs_.size(), false);
   auto following = [&](std::size_t s) -> std::optional<std::size_t> {
-    const Vec2 e = subs[s].seg.end;
-    if (s + 1 < subs.size() && !used[s + 1] && (subs[s + 1].seg.start - e).norm() <= link) return s + 1;
+    const Vec2 e = subs_[s].seg.end;
+    if (s + 1 < subs_.size() && !used[s + 1] && (subs_[s + 1].seg.start - e).norm() <= link) return s + 1;
     const auto [gx, gy] = key(e);
     std::optional<std::size_t> best;
     std::size_t bestAhead = 0;
@@ -343,66 +385,67 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
         const auto it = starts.find({gx + dx, gy + dy});
         if (it == starts.end()) continue;
         for (std::size_t c : it->second) {
-          if (used[c] || (subs[c].seg.start - e).norm() > link) continue;
-          const std::size_t ahead = (c + subs.size() - s) % subs.size();  // nearest along the raw path
+          if (used[c] || (subs_[c].seg.start - e).norm() > link) continue;
+          const std::size_t ahead = (c + subs_.size() - s) % subs_.size();  // nearest along the raw_ path
           if (!best || ahead < bestAhead) best = c, bestAhead = ahead;
         }
       }
     return best;
   };
-  // The same raw piece continuing across a split point that removed nothing becomes one element.
+  // The same raw_ piece continuing across a split point that removed nothing becomes one element.
   auto append = [&](std::vector<WirePiece>& path, const Sub& sub, std::size_t& lastRaw, double& lastT0,
                     double& lastT1) {
     if (!path.empty() && lastRaw == sub.raw && lastT1 == sub.t0) {
-      Segment merged = subSegment(raw[sub.raw].seg, lastT0, sub.t1);
+      Segment merged = subSegment(raw_[sub.raw].seg, lastT0, sub.t1);
       merged.start = path.back().segment.start;
       merged.end = sub.seg.end;
       if (merged.isArc()) merged.startAngle = angleOf(merged.start - merged.centre);
       path.back().segment = merged;
     } else {
-      path.push_back({sub.seg, raw[sub.raw].element, raw[sub.raw].corner});
+      path.push_back({sub.seg, raw_[sub.raw].element, raw_[sub.raw].corner});
       lastT0 = sub.t0;
     }
     lastRaw = sub.raw;
     lastT1 = sub.t1;
   };
-  for (std::size_t first = 0; first < subs.size(); ++first) {
+  for (std::size_t first = 0; first < subs_.size(); ++first) {
     if (used[first]) continue;
     std::vector<WirePiece> path;
     std::size_t lastRaw = std::numeric_limits<std::size_t>::max();
     double lastT0 = 0, lastT1 = -1;
     std::size_t cur = first;
     used[cur] = true;
-    append(path, subs[cur], lastRaw, lastT0, lastT1);
+    append(path, subs_[cur], lastRaw, lastT0, lastT1);
     for (;;) {
       const std::optional<std::size_t> next = following(cur);
       // Close the loop where it came round, unless a piece starts nearer the end than the loop's
       // own start does (a corner arc shorter than the link tolerance would otherwise be left
       // over as a loop of its own).
-      if (options.closed && path.size() > 1) {
-        const double home = (subs[cur].seg.end - subs[first].seg.start).norm();
-        if (home <= link && (!next || home <= (subs[*next].seg.start - subs[cur].seg.end).norm())) break;
+      if (options_.closed && path.size() > 1) {
+        const double home = (subs_[cur].seg.end - subs_[first].seg.start).norm();
+        if (home <= link && (!next || home <= (subs_[*next].seg.start - subs_[cur].seg.end).norm())) break;
       }
       if (!next) break;
       cur = *next;
       used[cur] = true;
-      append(path, subs[cur], lastRaw, lastT0, lastT1);
+      append(path, subs_[cur], lastRaw, lastT0, lastT1);
     }
-    result.paths.push_back(std::move(path));
+    result_.paths.push_back(std::move(path));
   }
+}
 
-  // What the wire cannot reach: runs of elements none of whose offset survived.
+void WireOffsetBuilder::findLost() {
   std::vector<std::size_t> dead;
-  for (std::size_t k = 0; k < n; ++k)
-    if (!alive[kept[k]]) dead.push_back(k);
-  if (dead.empty()) return result;
+  for (std::size_t k = 0; k < n_; ++k)
+    if (!alive_[kept_[k]]) dead.push_back(k);
+  if (dead.empty()) return;
   std::vector<Segment> cut;
-  for (const auto& path : result.paths)
+  for (const auto& path : result_.paths)
     for (const WirePiece& p : path) cut.push_back(p.segment);
   std::vector<Box> cutBoxes(cut.size());
   for (std::size_t i = 0; i < cut.size(); ++i) cutBoxes[i] = cut[i].bounds();
   const detail::BoxTree cutTree(std::move(cutBoxes));
-  // The least distance from p to what the wire cuts: the pieces whose boxes come within r of p,
+  // The least distance from p to what the wire cuts_: the pieces whose boxes come within r of p,
   // r doubled until one of them lies within r (then no piece farther out can be nearer). The same
   // minimum as over every piece, without a pass over all of them for each point of a lost element.
   auto nearestCut = [&](const Vec2& p) {
@@ -410,7 +453,7 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
     if (cut.empty()) return nearest;
     Box at;
     at.add(p);
-    for (double r = std::max(dist, 1e-3);; r *= 2) {
+    for (double r = std::max(dist_, 1e-3);; r *= 2) {
       cutTree.visitOverlapping(at, r, [&](std::size_t c) { nearest = std::min(nearest, cut[c].distanceTo(p)); });
       if (nearest <= r || !std::isfinite(r)) return nearest;
     }
@@ -418,16 +461,16 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
   auto farthest = [&](std::size_t element, Vec2& where) {
     double worst = -1;
     for (int s = 0; s <= 8; ++s) {
-      const Vec2 p = contour[element].pointAt(s / 8.0);
+      const Vec2 p = contour_[element].pointAt(s / 8.0);
       const double nearest = nearestCut(p);
       if (nearest > worst) worst = nearest, where = p;
     }
     return worst;
   };
   std::size_t r = 0;
-  // On a closed contour a run may wrap from the last element to the first: start after a live one.
+  // On a closed contour_ a run may wrap from the last element to the first: start after a live one.
   std::size_t begin = 0;
-  if (options.closed && dead.size() < n) {
+  if (options_.closed && dead.size() < n_) {
     while (begin < dead.size() && dead[begin] == begin) ++begin;
     if (begin == dead.size()) begin = 0;
   }
@@ -435,23 +478,28 @@ WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const Wi
   order.insert(order.end(), dead.begin(), dead.begin() + static_cast<std::ptrdiff_t>(begin));
   while (r < order.size()) {
     std::size_t e = r + 1;
-    while (e < order.size() && order[e] == (order[e - 1] + 1) % n) ++e;
+    while (e < order.size() && order[e] == (order[e - 1] + 1) % n_) ++e;
     LostRun run;
-    run.first = kept[order[r]];
+    run.first = kept_[order[r]];
     run.count = e - r;
     run.uncut = -1;
     for (std::size_t q = r; q < e; ++q) {
       Vec2 where = Vec2::Zero();
-      const double far = farthest(kept[order[q]], where);
-      if (far - dist > run.uncut) run.uncut = far - dist, run.where = where;
+      const double far = farthest(kept_[order[q]], where);
+      if (far - dist_ > run.uncut) run.uncut = far - dist_, run.where = where;
     }
     if (!std::isfinite(run.uncut)) run.uncut = 0;
-    const Segment& s0 = contour[run.first];
-    run.fillet = run.count == 1 && s0.isArc() && s0.radius < dist && (d > 0) == (s0.sweep > 0);
-    result.lost.push_back(run);
+    const Segment& s0 = contour_[run.first];
+    run.fillet = run.count == 1 && s0.isArc() && s0.radius < dist_ && (d_ > 0) == (s0.sweep > 0);
+    result_.lost.push_back(run);
     r = e;
   }
-  return result;
+}
+
+}  // namespace
+
+WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const WireOffsetOptions& options) {
+  return WireOffsetBuilder(contour, d, options).run();
 }
 
 }  // namespace kerf::geometry

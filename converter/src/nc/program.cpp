@@ -505,22 +505,46 @@ class LineParser {
     return static_cast<int>(program_.words.size() - block.firstWord);
   }
 
+  /// One word from text_[i] (its letter) to at most `end`: pushed, or reported; the index after it.
   std::size_t parseWord(Block& block, std::size_t i, std::size_t end) {
     const std::size_t start = i;
     char letter = upper(text_[i]);
     if (letter == 'Z' && options_.upperAxesUZ) letter = 'V';
     ++i;
     while (i < end && isBlank(text_[i])) ++i;  // "X 10." is accepted
-    if (!isWordLetter(letter)) {
-      // Skip the number that follows, if any, so one bad word is one diagnostic.
-      const NumberScan n = scanNumber(text_, i, end);
-      const std::size_t stop = n.status == NumberScan::Missing ? start + 1 : n.end;
-      error(block, Code::UnknownWord, start, stop - start, std::string("unknown word letter '") + letter + "'",
-            letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code" : std::string{});
-      return std::max(stop, start + 1);
-    }
+    if (!isWordLetter(letter)) return unknownLetter(block, start, i, end, letter);
     if (std::size_t next = 0; letter == 'T' && tryHeightWord(block, start, i, end, next)) return next;
-    // Values known only at the machine (a register H.., a macro value # or [..]).
+    if (const std::size_t next = valueAtMachine(block, start, i, end, letter); next != i) return next;
+    const NumberScan n = scanNumber(text_, i, end);
+    if (n.status == NumberScan::Missing) return noNumber(block, start, i, end, letter);
+    const std::size_t stop = n.end;
+    if (n.status == NumberScan::TooManyDigits) {
+      error(block, Code::NumberOutOfRange, start, stop - start, "number has more than 18 digits");
+      return stop;
+    }
+    if (const std::size_t next = malformedEnd(block, start, n, end, letter); next != stop) return next;
+    if (std::abs(n.value) >= kLargestNumber) {
+      error(block, Code::NumberOutOfRange, start, stop - start, "number is out of range (limit 1e9)");
+      return stop;
+    }
+    noteForSides(block, letter, n.value);
+    push(block, start, stop, letter, WordValue::Number, n.value, n.hasPoint);
+    return stop;
+  }
+
+  /// A letter that is no word: one diagnostic for it and the number after it.
+  std::size_t unknownLetter(Block& block, std::size_t start, std::size_t i, std::size_t end, char letter) {
+    // Skip the number that follows, if any, so one bad word is one diagnostic.
+    const NumberScan n = scanNumber(text_, i, end);
+    const std::size_t stop = n.status == NumberScan::Missing ? start + 1 : n.end;
+    error(block, Code::UnknownWord, start, stop - start, std::string("unknown word letter '") + letter + "'",
+          letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code" : std::string{});
+    return std::max(stop, start + 1);
+  }
+
+  /// A value known only at the machine (a register H.., a macro value # or [..]) at i: pushed;
+  /// the index after it, or i when there is none.
+  std::size_t valueAtMachine(Block& block, std::size_t start, std::size_t i, std::size_t end, char letter) {
     const char lead = i < end && (text_[i] == '+' || text_[i] == '-') && i + 1 < end ? text_[i + 1]
                       : i < end                                                      ? text_[i]
                                                                                      : 0;
@@ -535,37 +559,41 @@ class LineParser {
         return m;
       }
     }
-    const NumberScan n = scanNumber(text_, i, end);
-    if (n.status == NumberScan::Missing) {
-      // `Y+` / `X-`: a direction (edge sensing); an axis alone after G28/G30: home it.
-      if (i < end && (text_[i] == '+' || text_[i] == '-') && (i + 1 >= end || !isDigit(text_[i + 1]))) {
-        push(block, start, i + 1, letter, WordValue::Direction, text_[i] == '-' ? -1.0 : 1.0, false);
-        return i + 1;
-      }
-      if (homing_ && isAxisLetter(letter)) {
-        push(block, start, start + 1, letter, WordValue::Bare, 0.0, false);
-        return start + 1;
-      }
-      std::string read = i < end ? describeChar(text_[i]) : std::string("the end of the line");
-      std::string help;
-      if (i < end && (text_[i] == 'O' || text_[i] == 'o') && (letter == 'G' || letter == 'M'))
-        help = std::string("did you mean ") + letter + "0" + std::string(text_.substr(i + 1, 1)) +
-               "? (the digit zero, not the letter O)";
-      else if ((text_[start] == 'l' || text_[start] == 'I' || text_[start] == 'O' || text_[start] == 'o') &&
-               start > 0 && isDigit(text_[start - 1]))
-        help = std::string("did you mean the digit ") + (text_[start] == 'l' || text_[start] == 'I' ? "1" : "0") +
-               " instead of the letter '" + text_[start] + "'?";
-      else if (i + 2 < end && upper(text_[i]) == 'N' && upper(text_[i + 1]) == 'A' && upper(text_[i + 2]) == 'N')
-        help = "NaN is not a number an NC control accepts";
-      error(block, Code::ExpectedNumber, start, 1,
-            std::string("expected a number after '") + letter + "', read " + read, help);
+    return i;
+  }
+
+  /// No number after the letter: a direction (`Y+`), a bare axis after G28/G30, or an error with
+  /// a hint at what was meant.
+  std::size_t noNumber(Block& block, std::size_t start, std::size_t i, std::size_t end, char letter) {
+    // `Y+` / `X-`: a direction (edge sensing); an axis alone after G28/G30: home it.
+    if (i < end && (text_[i] == '+' || text_[i] == '-') && (i + 1 >= end || !isDigit(text_[i + 1]))) {
+      push(block, start, i + 1, letter, WordValue::Direction, text_[i] == '-' ? -1.0 : 1.0, false);
+      return i + 1;
+    }
+    if (homing_ && isAxisLetter(letter)) {
+      push(block, start, start + 1, letter, WordValue::Bare, 0.0, false);
       return start + 1;
     }
-    std::size_t stop = n.end;
-    if (n.status == NumberScan::TooManyDigits) {
-      error(block, Code::NumberOutOfRange, start, stop - start, "number has more than 18 digits");
-      return stop;
-    }
+    std::string read = i < end ? describeChar(text_[i]) : std::string("the end of the line");
+    std::string help;
+    if (i < end && (text_[i] == 'O' || text_[i] == 'o') && (letter == 'G' || letter == 'M'))
+      help = std::string("did you mean ") + letter + "0" + std::string(text_.substr(i + 1, 1)) +
+             "? (the digit zero, not the letter O)";
+    else if ((text_[start] == 'l' || text_[start] == 'I' || text_[start] == 'O' || text_[start] == 'o') && start > 0 &&
+             isDigit(text_[start - 1]))
+      help = std::string("did you mean the digit ") + (text_[start] == 'l' || text_[start] == 'I' ? "1" : "0") +
+             " instead of the letter '" + text_[start] + "'?";
+    else if (i + 2 < end && upper(text_[i]) == 'N' && upper(text_[i + 1]) == 'A' && upper(text_[i + 2]) == 'N')
+      help = "NaN is not a number an NC control accepts";
+    error(block, Code::ExpectedNumber, start, 1, std::string("expected a number after '") + letter + "', read " + read,
+          help);
+    return start + 1;
+  }
+
+  /// What follows a number that makes it no number: a second point, a decimal comma, an exponent,
+  /// a sign inside. Reported; the index after the malformed text, or n.end when it is well formed.
+  std::size_t malformedEnd(Block& block, std::size_t start, const NumberScan& n, std::size_t end, char letter) {
+    const std::size_t stop = n.end;
     if (stop < end && text_[stop] == '.') {
       std::size_t j = stop;
       while (j < end && (isDigit(text_[j]) || text_[j] == '.')) ++j;
@@ -599,21 +627,19 @@ class LineParser {
       NumberScan rest = scanNumber(text_, stop + 1, end);
       return rest.end;
     }
-    if (std::abs(n.value) >= kLargestNumber) {
-      error(block, Code::NumberOutOfRange, start, stop - start, "number is out of range (limit 1e9)");
-      return stop;
-    }
-    // A second motion word after a coordinate opens the upper side (`G2 X Y I J G1 U V`, cnc3); a
-    // single motion word may stand anywhere (`X10 Y5 G1`).
-    const bool motionG = letter == 'G' && n.value >= 0 && n.value <= 3 && n.value == std::floor(n.value);
+    return stop;
+  }
+
+  /// A second motion word after a coordinate opens the upper side (`G2 X Y I J G1 U V`, cnc3); a
+  /// single motion word may stand anywhere (`X10 Y5 G1`). G28/G30 let axes stand bare after them.
+  void noteForSides(const Block& block, char letter, double value) {
+    const bool motionG = letter == 'G' && value >= 0 && value <= 3 && value == std::floor(value);
     if (splitAt_ < 0 && motionG && sawCoordinate_ && sawMotion_) splitAt_ = wordsSoFar(block);
     sawMotion_ |= motionG;
     if (letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'U' ||
         letter == 'V')
       sawCoordinate_ = true;
-    if (letter == 'G' && (n.value == 28 || n.value == 30)) homing_ = true;
-    push(block, start, stop, letter, WordValue::Number, n.value, n.hasPoint);
-    return stop;
+    if (letter == 'G' && (value == 28 || value == 30)) homing_ = true;
   }
 
   // ---- 4. the sides of a 4-axis block ----------------------------------------------------------

@@ -12,11 +12,13 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <optional>
 
 namespace kerf::window {
 
@@ -221,14 +223,13 @@ void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
   ImGui::End();
 }
 
-}  // namespace
-
-bool runWindow(const WindowRequest& request, std::string& error) {
+/// Opens the window with an OpenGL 3.3 core context, made current; null with the reason in error.
+GLFWwindow* openWindow(const WindowRequest& request, std::string& error) {
   glfwSetErrorCallback(&onGlfwError);
   if (!glfwInit()) {
     error = "kerf view needs a display (" + glfwMessage +
             "): run it on a desktop or under xvfb-run; for a picture without a display use kerf render";
-    return false;
+    return nullptr;
   }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -239,13 +240,15 @@ bool runWindow(const WindowRequest& request, std::string& error) {
   if (!window) {
     error = "cannot open an OpenGL 3.3 core window: " + glfwMessage;
     glfwTerminate();
-    return false;
+    return nullptr;
   }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(request.benchmark || request.frames > 0 ? 0 : 1);
-  bool ok = render::loadGl(&glfwLoader, error);
+  return window;
+}
 
-  State s;
+/// The state a window starts with: the request's options, playback, step and selected line.
+void startState(State& s, const WindowRequest& request) {
   s.request = &request;
   s.options = request.options;
   // Drawn in one call: waiting for the rasteriser between pieces slows every frame of a large part
@@ -266,6 +269,287 @@ bool runWindow(const WindowRequest& request, std::string& error) {
     selectMove(s, s.firstMoveOfLine[*request.selectLine]);
     s.followPlayback = false;
   }
+}
+
+/// What the offscreen target holds: while the view, its options, the playback wire and the level
+/// stay the same, a frame shows it again (a resolve) instead of drawing the scene, so the panels
+/// answer at once at rest even with 1e6 triangles. --benchmark always draws. (drawChunk is not
+/// among them: it changes how the picture is drawn, not the picture.)
+struct Drawn {
+  render::Camera camera;
+  std::array<bool, 9> switches{};  // RenderOptions' switches, in switchesOf's order
+  float lineWidth = 0.0f;
+  std::uint32_t background = 0;
+  std::size_t selected = SIZE_MAX;
+  double playback = -2;
+  bool coarse = false;
+  bool valid = false;
+};
+static_assert(sizeof(render::RenderOptions) == 48, "a new RenderOptions field must join Drawn and switchesOf");
+std::array<bool, 9> switchesOf(const render::RenderOptions& o) {
+  return {o.surface, o.contours, o.generators,    o.rapids,           o.reference,
+          o.markers, o.triad,    o.colourBySlope, o.highlightFindings};
+}
+
+/// Where the three parts of a frame lie, in framebuffer pixels: text panel, 3D view, side panel.
+struct Layout {
+  int fbW = 0, fbH = 0;
+  float textW = 0, sideW = 0;
+  int viewX = 0, viewW = 0, viewH = 0;
+};
+
+/// The frame loop's resources and what one frame keeps for the next.
+class FrameLoop {
+ public:
+  FrameLoop(const WindowRequest& request, GLFWwindow* window, State& s) : request_(request), window_(window), s_(s) {}
+
+  /// The renderer, with the font as its overlay texture and the scene uploaded.
+  bool init(std::string& error);
+  /// One frame; false when the loop must stop (an error in `error`, or the last frame asked for).
+  bool frame(std::string& error, bool& failed);
+  /// --benchmark: the frame times (the first frame, which uploads, left out).
+  void reportFrameTimes() const;
+
+ private:
+  Layout layout() const;
+  /// On a new view size: the camera fitted to it, the offscreen target, and the coarse level.
+  bool fitView(const Layout& l, std::string& error);
+  /// Orbit, pan, zoom and pick; true while the view moves.
+  bool handleMouse(const Layout& l);
+  void advancePlayback();
+  void annotate(const render::RenderOptions& options, const Layout& l);
+  render::Renderer& drawView(const render::RenderOptions& options, bool moving, const Layout& l);
+  bool saveScreenshot(const Layout& l, bool last, std::string& error);
+
+  const WindowRequest& request_;
+  GLFWwindow* window_;
+  State& s_;
+  render::Renderer renderer_, coarseRenderer_;
+  std::optional<render::Scene> coarse_;
+  render::OffscreenTarget target_;
+  unsigned char* fontPixels_ = nullptr;
+  int fontW_ = 0, fontH_ = 0;
+  int targetW_ = 0, targetH_ = 0;
+  bool fittedOnce_ = false;
+  std::vector<double> frameSeconds_;
+  int frame_ = 0;
+  double lastPlaybackDrawn_ = -2;
+  Drawn shown_;
+  bool dragging_ = false;
+  Eigen::Vector2d pressAt_{0, 0};
+};
+
+bool FrameLoop::init(std::string& error) {
+  if (!renderer_.init(error)) return false;
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->GetTexDataAsRGBA32(&fontPixels_, &fontW_, &fontH_);
+  io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
+  renderer_.setOverlayTexture(fontW_, fontH_, fontPixels_);
+  renderer_.setScene(*request_.scene);
+  return true;
+}
+
+Layout FrameLoop::layout() const {
+  Layout l;
+  glfwGetFramebufferSize(window_, &l.fbW, &l.fbH);
+  l.textW = std::floor(kTextPanel * static_cast<float>(l.fbW));
+  l.sideW = std::min(kSidePanel, 0.3f * static_cast<float>(l.fbW));
+  l.viewX = static_cast<int>(l.textW);
+  l.viewW = std::max(16, l.fbW - static_cast<int>(l.textW) - static_cast<int>(l.sideW));
+  l.viewH = l.fbH;
+  return l;
+}
+
+bool FrameLoop::fitView(const Layout& l, std::string& error) {
+  const render::Scene& scene = *request_.scene;
+  // Fitted below the title, and clear of the triad in the bottom-left corner.
+  s_.fitted = render::clearOfTriad(
+      render::fitCamera(scene.boundsMin, scene.boundsMax, render::View::Iso, l.viewW, l.viewH, 0.08, 36),
+      scene.boundsMin, scene.boundsMax, l.viewW, l.viewH);
+  if (!target_.create(l.viewW, l.viewH, ui::autoSamples(scene, l.viewW, l.viewH, s_.fitted.mmPerPixel(l.viewH)), error))
+    return false;
+  targetW_ = l.viewW;
+  targetH_ = l.viewH;
+  shown_.valid = false;
+  if (!fittedOnce_) s_.camera = s_.fitted;
+  fittedOnce_ = true;
+  if (coarse_ || scene.triangles() <= kCoarseAbove) return true;
+  render::SceneOptions so = request_.sceneOptions;
+  so.tolerance = std::max(so.tolerance, 0.5 * s_.fitted.mmPerPixel(l.viewH));
+  so.mergeTolerance = 0.5 * s_.fitted.mmPerPixel(l.viewH);
+  so.minTaperPieces = 1;
+  coarse_ = render::buildScene(*request_.toolpath, request_.findings, so, request_.reference);
+  if (!coarseRenderer_.init(error)) return false;
+  coarseRenderer_.setScene(*coarse_);
+  coarseRenderer_.setOverlayTexture(fontW_, fontH_, fontPixels_);
+  std::fprintf(stderr, "kerf view: %zu triangles; %zu drawn while the view moves\n", scene.triangles(),
+               coarse_->triangles());
+  return true;
+}
+
+bool FrameLoop::handleMouse(const Layout& l) {
+  // Drag left to orbit, right or middle to pan, wheel to zoom, click to pick.
+  const ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 mouse = io.MousePos;
+  const Eigen::Vector2d local(mouse.x - static_cast<float>(l.viewX), mouse.y);
+  const bool inView =
+      !io.WantCaptureMouse && local.x() >= 0 && local.x() < l.viewW && local.y() >= 0 && local.y() < l.viewH;
+  if (inView && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    pressAt_ = local;
+    dragging_ = true;
+  }
+  if (dragging_ && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
+    const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;
+    s_.camera.yaw -= 0.01 * dx;
+    s_.camera.pitch = std::clamp(s_.camera.pitch + 0.01 * dy, -0.5 * geometry::kPi, 0.5 * geometry::kPi);
+  }
+  if (dragging_ && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+    dragging_ = false;
+    if ((local - pressAt_).norm() < 3.0)
+      if (auto m = pick(*request_.scene, s_.camera, local, l.viewW, l.viewH)) selectMove(s_, *m);
+  }
+  const bool panning =
+      ImGui::IsMouseDragging(ImGuiMouseButton_Right, 1.0f) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 1.0f);
+  if (inView && panning) {
+    const double mm = s_.camera.mmPerPixel(l.viewH);
+    const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;
+    s_.camera.target += -mm * dx * s_.camera.right() + mm * dy * s_.camera.up();
+  }
+  const bool moving = request_.coarseFrames || s_.playing ||
+                      (dragging_ && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) ||
+                      (inView && (panning || io.MouseWheel != 0.0f));
+  if (inView && io.MouseWheel != 0.0f) s_.camera.halfHeight *= std::pow(0.85, static_cast<double>(io.MouseWheel));
+  return moving;
+}
+
+void FrameLoop::advancePlayback() {
+  if (s_.playing) {
+    s_.playback += 0.002;
+    if (s_.playback > 1.0) s_.playback = 0.0;
+  }
+  if (s_.playback == lastPlaybackDrawn_) return;
+  const converter::Toolpath& toolpath = *request_.toolpath;
+  renderer_.setExtraLines(wireAt(toolpath, request_.scene->planes, s_.playback), 3.0f);
+  if (coarse_) coarseRenderer_.setExtraLines(wireAt(toolpath, request_.scene->planes, s_.playback), 3.0f);
+  lastPlaybackDrawn_ = s_.playback;
+  if (s_.playback >= 0 && s_.followPlayback && !toolpath.moves.empty()) {
+    const auto m = std::min(toolpath.moves.size() - 1,
+                            static_cast<std::size_t>(s_.playback * static_cast<double>(toolpath.moves.size())));
+    if (!s_.selected || *s_.selected != m) {
+      s_.selected = m;
+      s_.scrollText = s_.playing;
+    }
+  }
+}
+
+void FrameLoop::annotate(const render::RenderOptions& options, const Layout& l) {
+  // Drawn in the view's own coordinates (ImGui culls text against the clip rectangle as it draws),
+  // then moved right by the text panel's width, clip rectangles included.
+  ImDrawList* fg = ImGui::GetForegroundDrawList();
+  fg->PushClipRect(ImVec2(0, 0), ImVec2(static_cast<float>(l.viewW), static_cast<float>(l.viewH)));
+  const int vtxStart = fg->VtxBuffer.Size;
+  const int cmdStart = fg->CmdBuffer.Size - 1;
+  ui::drawAnnotations(*fg, *request_.scene, s_.camera, options, request_.annotation, l.viewW, l.viewH);
+  for (int v = vtxStart; v < fg->VtxBuffer.Size; ++v) fg->VtxBuffer[v].pos.x += static_cast<float>(l.viewX);
+  for (int c = std::max(0, cmdStart); c < fg->CmdBuffer.Size; ++c) {
+    fg->CmdBuffer[c].ClipRect.x += static_cast<float>(l.viewX);
+    fg->CmdBuffer[c].ClipRect.z += static_cast<float>(l.viewX);
+  }
+  fg->PopClipRect();
+}
+
+render::Renderer& FrameLoop::drawView(const render::RenderOptions& options, bool moving, const Layout& l) {
+  target_.bind();
+  render::Renderer& drawing = moving && coarse_ ? coarseRenderer_ : renderer_;
+  const bool coarseNow = &drawing == &coarseRenderer_;
+  const std::size_t selectedNow = options.selectedMove ? *options.selectedMove : SIZE_MAX;
+  if (request_.benchmark || !shown_.valid || !(shown_.camera == s_.camera) || shown_.switches != switchesOf(options) ||
+      shown_.lineWidth != options.lineWidth || shown_.background != options.background ||
+      shown_.selected != selectedNow || shown_.playback != lastPlaybackDrawn_ || shown_.coarse != coarseNow) {
+    drawing.render(s_.camera, options, l.viewW, l.viewH);
+    shown_ = {s_.camera,   switchesOf(options), options.lineWidth, options.background,
+              selectedNow, lastPlaybackDrawn_,  coarseNow,         true};
+  }
+  return drawing;
+}
+
+bool FrameLoop::saveScreenshot(const Layout& l, bool last, std::string& error) {
+  const render::GlApi& g = render::gl();
+  g.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  g.ReadBuffer(GL_BACK);
+  const std::string png = headless::encodePng(render::readFramebufferRgba(l.fbW, l.fbH), l.fbW, l.fbH);
+  const std::string path = last && request_.screenshot ? *request_.screenshot : "kerf-screenshot.png";
+  std::string writeError;
+  if (png.empty() || !cli::writeOutput(path, request_.inputs, png, writeError)) {
+    error = "cannot write the screenshot '" + path + "': " + (png.empty() ? "PNG encoding failed" : writeError);
+    return false;
+  }
+  std::cerr << "kerf: wrote the window (" << l.fbW << "x" << l.fbH << ") to " << path << "\n";
+  return true;
+}
+
+bool FrameLoop::frame(std::string& error, bool& failed) {
+  const auto t0 = std::chrono::steady_clock::now();
+  glfwPollEvents();
+  const Layout l = layout();
+  if (l.fbW <= 0 || l.fbH <= 0) return true;
+  if ((l.viewW != targetW_ || l.viewH != targetH_) && !fitView(l, error)) {
+    failed = true;
+    return false;
+  }
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  bool screenshot = false;
+  textPanel(s_, l.textW, static_cast<float>(l.fbH));
+  sidePanel(s_, static_cast<float>(l.fbW) - l.sideW, l.sideW, static_cast<float>(l.fbH), screenshot);
+  const bool moving = handleMouse(l);
+  advancePlayback();
+  render::RenderOptions options = s_.options;
+  options.selectedMove = s_.selected;
+  annotate(options, l);  // the annotations of the picture, in the view's area
+  ImGui::Render();
+
+  render::Renderer& drawing = drawView(options, moving, l);
+  const render::GlApi& g = render::gl();
+  g.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  g.Viewport(0, 0, l.fbW, l.fbH);
+  g.ClearColor(0.94f, 0.94f, 0.94f, 1.0f);
+  g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  target_.resolveTo(0, l.viewX, 0);
+  drawing.drawOverlay(ui::convertDrawData(*ImGui::GetDrawData()), l.fbW, l.fbH);
+  ++frame_;
+  const bool last = request_.frames > 0 && frame_ >= request_.frames;
+  if ((screenshot || (last && request_.screenshot)) && !saveScreenshot(l, last, error)) failed = true;
+  if (request_.benchmark) g.Finish();
+  glfwSwapBuffers(window_);
+  frameSeconds_.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return !last && !failed;
+}
+
+void FrameLoop::reportFrameTimes() const {
+  if (!request_.benchmark || frameSeconds_.size() <= 1) return;
+  std::vector<double> sorted(frameSeconds_.begin() + 1, frameSeconds_.end());  // the first frame uploads
+  std::sort(sorted.begin(), sorted.end());
+  double sum = 0;
+  for (double v : sorted) sum += v;
+  const double mean = sum / static_cast<double>(sorted.size());
+  const double median = sorted[sorted.size() / 2], worst = sorted[sorted.size() - 1];
+  const bool coarseShown = coarse_.has_value() && request_.coarseFrames;
+  const std::size_t drawn = coarseShown ? coarse_.value().triangles() : request_.scene->triangles();
+  std::fprintf(
+      stderr,
+      "kerf view: %zu frames, %zu triangles%s, frame time mean %.1f ms, median %.1f ms, max %.1f ms (%.1f fps)\n",
+      sorted.size(), drawn, coarseShown ? " (coarse level)" : "", mean * 1e3, median * 1e3, worst * 1e3, 1.0 / mean);
+}
+
+}  // namespace
+
+bool runWindow(const WindowRequest& request, std::string& error) {
+  GLFWwindow* window = openWindow(request, error);
+  if (!window) return false;
+  bool ok = render::loadGl(&glfwLoader, error);
+  State s;
+  startState(s, request);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -275,228 +559,14 @@ bool runWindow(const WindowRequest& request, std::string& error) {
   io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
   ImGui::StyleColorsLight();
   ImGui_ImplGlfw_InitForOpenGL(window, true);
-
   {
-    render::Renderer renderer;
-    render::Renderer coarseRenderer;
-    std::optional<render::Scene> coarse;
-    render::OffscreenTarget target;
-    unsigned char* fontPixels = nullptr;
-    int fontW = 0, fontH = 0;
-    if (ok) ok = renderer.init(error);
-    if (ok) {
-      unsigned char* pixels = nullptr;
-      int fw = 0, fh = 0;
-      io.Fonts->GetTexDataAsRGBA32(&pixels, &fw, &fh);
-      io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
-      renderer.setOverlayTexture(fw, fh, pixels);
-      renderer.setScene(*request.scene);
-      fontPixels = pixels;
-      fontW = fw;
-      fontH = fh;
+    FrameLoop loop(request, window, s);  // its GL objects go before the context
+    if (ok) ok = loop.init(error);
+    bool failed = false;
+    while (ok && !glfwWindowShouldClose(window) && loop.frame(error, failed)) {
     }
-    int targetW = 0, targetH = 0;
-    bool fittedOnce = false;
-    std::vector<double> frameSeconds;
-    int frame = 0;
-    double lastPlaybackDrawn = -2;
-    // What the offscreen target holds: while the view, its options, the playback wire and the
-    // level stay the same, a frame shows it again (a resolve) instead of drawing the scene, so
-    // the panels answer at once at rest even with 1e6 triangles. --benchmark always draws.
-    struct Drawn {
-      render::Camera camera;
-      std::array<bool, 9> switches{};  // RenderOptions' switches, in sameSwitches' order
-      float lineWidth = 0.0f;
-      std::uint32_t background = 0;
-      std::size_t selected = SIZE_MAX;
-      double playback = -2;
-      bool coarse = false;
-      bool valid = false;
-    } shown;
-    // (drawChunk is not among them: it changes how the picture is drawn, not the picture.)
-    static_assert(sizeof(render::RenderOptions) == 48, "a new RenderOptions field must join Drawn and switchesOf");
-    auto switchesOf = [](const render::RenderOptions& o) {
-      return std::array<bool, 9>{o.surface, o.contours, o.generators,    o.rapids,           o.reference,
-                                 o.markers, o.triad,    o.colourBySlope, o.highlightFindings};
-    };
-    bool dragging = false;
-    Eigen::Vector2d pressAt{0, 0};
-    while (ok && !glfwWindowShouldClose(window)) {
-      const auto t0 = std::chrono::steady_clock::now();
-      glfwPollEvents();
-      int fbW = 0, fbH = 0;
-      glfwGetFramebufferSize(window, &fbW, &fbH);
-      if (fbW <= 0 || fbH <= 0) continue;
-      const float textW = std::floor(kTextPanel * static_cast<float>(fbW));
-      const float sideW = std::min(kSidePanel, 0.3f * static_cast<float>(fbW));
-      const int viewX = static_cast<int>(textW);
-      const int viewW = std::max(16, fbW - static_cast<int>(textW) - static_cast<int>(sideW));
-      const int viewH = fbH;
-      if (viewW != targetW || viewH != targetH) {
-        // Fitted below the title, and clear of the triad in the bottom-left corner.
-        s.fitted = render::clearOfTriad(render::fitCamera(request.scene->boundsMin, request.scene->boundsMax,
-                                                          render::View::Iso, viewW, viewH, 0.08, 36),
-                                        request.scene->boundsMin, request.scene->boundsMax, viewW, viewH);
-        if (!target.create(viewW, viewH, ui::autoSamples(*request.scene, viewW, viewH, s.fitted.mmPerPixel(viewH)),
-                           error)) {
-          ok = false;
-          break;
-        }
-        targetW = viewW;
-        targetH = viewH;
-        shown.valid = false;
-        if (!fittedOnce) s.camera = s.fitted;
-        fittedOnce = true;
-        if (!coarse && request.scene->triangles() > kCoarseAbove) {
-          render::SceneOptions so = request.sceneOptions;
-          so.tolerance = std::max(so.tolerance, 0.5 * s.fitted.mmPerPixel(viewH));
-          so.mergeTolerance = 0.5 * s.fitted.mmPerPixel(viewH);
-          so.minTaperPieces = 1;
-          coarse = render::buildScene(*request.toolpath, request.findings, so, request.reference);
-          if (!coarseRenderer.init(error)) {
-            ok = false;
-            break;
-          }
-          coarseRenderer.setScene(*coarse);
-          coarseRenderer.setOverlayTexture(fontW, fontH, fontPixels);
-          std::fprintf(stderr, "kerf view: %zu triangles; %zu drawn while the view moves\n", request.scene->triangles(),
-                       coarse->triangles());
-        }
-      }
-
-      ImGui_ImplGlfw_NewFrame();
-      ImGui::NewFrame();
-      bool screenshot = false;
-      textPanel(s, textW, static_cast<float>(fbH));
-      sidePanel(s, static_cast<float>(fbW) - sideW, sideW, static_cast<float>(fbH), screenshot);
-
-      // Mouse in the 3D view: drag left to orbit, right or middle to pan, wheel to zoom, click to pick.
-      const ImVec2 mouse = io.MousePos;
-      const Eigen::Vector2d local(mouse.x - static_cast<float>(viewX), mouse.y);
-      const bool inView =
-          !io.WantCaptureMouse && local.x() >= 0 && local.x() < viewW && local.y() >= 0 && local.y() < viewH;
-      if (inView && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-        pressAt = local;
-        dragging = true;
-      }
-      if (dragging && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
-        const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;
-        s.camera.yaw -= 0.01 * dx;
-        s.camera.pitch = std::clamp(s.camera.pitch + 0.01 * dy, -0.5 * geometry::kPi, 0.5 * geometry::kPi);
-      }
-      if (dragging && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
-        dragging = false;
-        if ((local - pressAt).norm() < 3.0)
-          if (auto m = pick(*request.scene, s.camera, local, viewW, viewH)) selectMove(s, *m);
-      }
-      if (inView && (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 1.0f) ||
-                     ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 1.0f))) {
-        const double mm = s.camera.mmPerPixel(viewH);
-        const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;
-        s.camera.target += -mm * dx * s.camera.right() + mm * dy * s.camera.up();
-      }
-      const bool moving = request.coarseFrames || s.playing ||
-                          (dragging && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) ||
-                          (inView && (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 1.0f) ||
-                                      ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 1.0f) || io.MouseWheel != 0.0f));
-      if (inView && io.MouseWheel != 0.0f) s.camera.halfHeight *= std::pow(0.85, static_cast<double>(io.MouseWheel));
-
-      if (s.playing) {
-        s.playback += 0.002;
-        if (s.playback > 1.0) s.playback = 0.0;
-      }
-      if (s.playback != lastPlaybackDrawn) {
-        renderer.setExtraLines(wireAt(*request.toolpath, request.scene->planes, s.playback), 3.0f);
-        if (coarse) coarseRenderer.setExtraLines(wireAt(*request.toolpath, request.scene->planes, s.playback), 3.0f);
-        lastPlaybackDrawn = s.playback;
-        if (s.playback >= 0 && s.followPlayback && !request.toolpath->moves.empty()) {
-          const auto m =
-              std::min(request.toolpath->moves.size() - 1,
-                       static_cast<std::size_t>(s.playback * static_cast<double>(request.toolpath->moves.size())));
-          if (!s.selected || *s.selected != m) {
-            s.selected = m;
-            s.scrollText = s.playing;
-          }
-        }
-      }
-
-      // The annotations of the picture, in the view's area.
-      // Drawn in the view's own coordinates (ImGui culls text against the clip rectangle as it
-      // draws), then moved right by the text panel's width, clip rectangles included.
-      ImDrawList* fg = ImGui::GetForegroundDrawList();
-      fg->PushClipRect(ImVec2(0, 0), ImVec2(static_cast<float>(viewW), static_cast<float>(viewH)));
-      const int vtxStart = fg->VtxBuffer.Size;
-      const int cmdStart = fg->CmdBuffer.Size - 1;
-      render::RenderOptions options = s.options;
-      options.selectedMove = s.selected;
-      ui::drawAnnotations(*fg, *request.scene, s.camera, options, request.annotation, viewW, viewH);
-      for (int v = vtxStart; v < fg->VtxBuffer.Size; ++v) fg->VtxBuffer[v].pos.x += static_cast<float>(viewX);
-      for (int c = std::max(0, cmdStart); c < fg->CmdBuffer.Size; ++c) {
-        fg->CmdBuffer[c].ClipRect.x += static_cast<float>(viewX);
-        fg->CmdBuffer[c].ClipRect.z += static_cast<float>(viewX);
-      }
-      fg->PopClipRect();
-      ImGui::Render();
-
-      target.bind();
-      render::Renderer& drawing = moving && coarse ? coarseRenderer : renderer;
-      const bool coarseNow = &drawing == &coarseRenderer;
-      const std::size_t selectedNow = options.selectedMove ? *options.selectedMove : SIZE_MAX;
-      if (request.benchmark || !shown.valid || !(shown.camera == s.camera) || shown.switches != switchesOf(options) ||
-          shown.lineWidth != options.lineWidth || shown.background != options.background ||
-          shown.selected != selectedNow || shown.playback != lastPlaybackDrawn || shown.coarse != coarseNow) {
-        drawing.render(s.camera, options, viewW, viewH);
-        shown.camera = s.camera;
-        shown.switches = switchesOf(options);
-        shown.lineWidth = options.lineWidth;
-        shown.background = options.background;
-        shown.selected = selectedNow;
-        shown.playback = lastPlaybackDrawn;
-        shown.coarse = coarseNow;
-        shown.valid = true;
-      }
-      const render::GlApi& g = render::gl();
-      g.BindFramebuffer(GL_FRAMEBUFFER, 0);
-      g.Viewport(0, 0, fbW, fbH);
-      g.ClearColor(0.94f, 0.94f, 0.94f, 1.0f);
-      g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      target.resolveTo(0, viewX, 0);
-      drawing.drawOverlay(ui::convertDrawData(*ImGui::GetDrawData()), fbW, fbH);
-      ++frame;
-      const bool last = request.frames > 0 && frame >= request.frames;
-      if (screenshot || (last && request.screenshot)) {
-        g.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-        g.ReadBuffer(GL_BACK);
-        const std::string png = headless::encodePng(render::readFramebufferRgba(fbW, fbH), fbW, fbH);
-        const std::string path = last && request.screenshot ? *request.screenshot : "kerf-screenshot.png";
-        std::string writeError;
-        if (png.empty() || !cli::writeOutput(path, request.inputs, png, writeError)) {
-          error = "cannot write the screenshot '" + path + "': " + (png.empty() ? "PNG encoding failed" : writeError);
-          ok = false;
-        } else {
-          std::cerr << "kerf: wrote the window (" << fbW << "x" << fbH << ") to " << path << "\n";
-        }
-      }
-      if (request.benchmark) g.Finish();
-      glfwSwapBuffers(window);
-      frameSeconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      if (last) break;
-    }
-    if (request.benchmark && frameSeconds.size() > 1) {
-      std::vector<double> sorted(frameSeconds.begin() + 1, frameSeconds.end());  // the first frame uploads
-      std::sort(sorted.begin(), sorted.end());
-      double sum = 0;
-      for (double v : sorted) sum += v;
-      const double mean = sum / static_cast<double>(sorted.size());
-      const double median = sorted[sorted.size() / 2], worst = sorted[sorted.size() - 1];
-      const bool coarseShown = coarse.has_value() && request.coarseFrames;
-      const std::size_t drawn = coarseShown ? coarse.value().triangles() : request.scene->triangles();
-      std::fprintf(
-          stderr,
-          "kerf view: %zu frames, %zu triangles%s, frame time mean %.1f ms, median %.1f ms, max %.1f ms (%.1f fps)\n",
-          sorted.size(), drawn, coarseShown ? " (coarse level)" : "", mean * 1e3, median * 1e3, worst * 1e3,
-          1.0 / mean);
-    }
+    if (failed) ok = false;
+    loop.reportFrameTimes();
   }
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();

@@ -125,6 +125,199 @@ std::string baseName(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+/// One `key = value` line of a profile, with what reports a problem at it.
+struct ProfileLine {
+  const SourceFile& file;
+  Diagnostics& diags;
+  bool& ok;
+  std::uint32_t begin = 0;  // the line's offset in the file
+  std::size_t lead = 0, eq = 0, valueAt = 0;
+  std::string key, value;
+
+  void fail(std::size_t at, std::size_t length, std::string message, std::string help = {}) const {
+    diags.error(Code::MachineProfileError, &file,
+                {static_cast<std::uint32_t>(begin + at), static_cast<std::uint32_t>(std::max<std::size_t>(1, length))},
+                std::move(message), std::move(help));
+    ok = false;
+  }
+  void badValue(const std::string& allowed) const {
+    fail(valueAt, value.size(), "'" + value + "' is not a value of " + key, "allowed: " + allowed);
+  }
+  /// A key with two values: `off` sets the flag false, `on` sets it true.
+  void either(bool& flag, const char* off, const char* on) const {
+    if (value == off || value == on)
+      flag = value == on;
+    else
+      badValue(std::string(off) + " or " + on);
+  }
+};
+
+/// `code G60 = effect: note`.
+void readCode(const ProfileLine& l, MachineProfile& p) {
+  KnownCode c;
+  c.key = normaliseKey(l.key.substr(5));
+  if (c.key.empty()) {
+    l.fail(l.lead, l.eq - l.lead, "'" + trim(l.key.substr(5)) + "' is not a code", "write G60, M28, T84, C or QAIC");
+    return;
+  }
+  c.letter = c.key[0];
+  if (c.key.size() > 1 && c.key[0] == 'Q' && (c.key[1] < '0' || c.key[1] > '9')) {
+    c.number = -2;  // a macro call's name
+  } else if (c.key.size() > 1) {
+    const double v = std::strtod(c.key.c_str() + 1, nullptr);
+    c.number = static_cast<int>(v);
+    c.fraction = static_cast<int>(std::lround((v - c.number) * 10));
+  }
+  const std::size_t colon = l.value.find(':');
+  const std::string effect = trim(l.value.substr(0, colon));
+  c.note = colon == std::string::npos ? std::string{} : trim(l.value.substr(colon + 1));
+  bool known = false;
+  for (CodeEffect e : {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
+                       CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread})
+    if (effect == codeEffectName(e)) {
+      c.effect = e;
+      known = true;
+    }
+  if (!known) {
+    l.badValue(
+        "harmless, not-modelled, position, no-motion, thickness, guides, program-end or rethread, then ': note'");
+    return;
+  }
+  if (c.note.empty()) {
+    l.fail(l.valueAt, l.value.size(), "code " + c.key + " needs a note: what it does on this machine",
+           "write 'harmless: meaning not modelled' when it is not known");
+    return;
+  }
+  if (p.find(c.key)) {
+    l.fail(l.lead, l.eq - l.lead, "code " + c.key + " is listed twice");
+    return;
+  }
+  p.codes.push_back(std::move(c));
+}
+
+/// The keys of what the machine means by its words; false for a key that is none of them.
+bool readReadingKey(const ProfileLine& l, MachineProfile& p) {
+  const std::string& key = l.key;
+  const std::string& value = l.value;
+  if (key == "name") {
+    if (value.empty() || value.find_first_of(" \t/") != std::string::npos)
+      l.badValue("one word");
+    else
+      p.name = value;
+  } else if (key == "summary") {
+    p.summary = value;
+  } else if (key == "source") {
+    p.sources.push_back(value);
+  } else if (key == "arc_centre") {
+    if (value == "auto")
+      p.arcCentre.reset();
+    else if (auto m = parseArcCentre(value))
+      p.arcCentre = m;
+    else
+      l.badValue("incremental, reversed, absolute or auto");
+  } else if (key == "integer_unit") {
+    if (value == "auto")
+      p.integerUnit.reset();
+    else if (value == "mm")
+      p.integerUnit = IntegerUnit::Millimetre;
+    else if (value == "um")
+      p.integerUnit = IntegerUnit::Micrometre;
+    else
+      l.badValue("mm, um or auto");
+  } else if (key == "integer_threshold") {
+    if (auto v = number(value); v && *v >= 0)
+      p.integerThreshold = *v;
+    else
+      l.badValue("a number of 0 or more");
+  } else if (key == "uv_words") {
+    const auto d = parseDialect(value);
+    if (value == "auto")
+      p.uvDialect.reset();
+    else if (d && (*d == Dialect::XyuvAbs || *d == Dialect::XyuvRel || *d == Dialect::XyuvLinuxCnc))
+      p.uvDialect = d;
+    else
+      l.badValue("xyuv-abs, xyuv-rel, xyuv-linuxcnc or auto");
+  } else if (key == "polar_x") {
+    l.either(p.polarXRadius, "diameter", "radius");
+  } else if (key == "polar_c") {
+    l.either(p.polarCDiameter, "linear", "diameter");
+  } else if (key == "polar_frame") {
+    l.either(p.polarFrameTable, "tool", "table");
+  } else if (key == "semicolon") {
+    l.either(p.semicolonEndsBlock, "comment", "end-of-block");
+  } else if (key == "upper_axes") {
+    l.either(p.upperAxesUZ, "uv", "uz");
+  } else if (key == "bare_g92") {
+    l.either(p.bareSetPositionIsOrigin, "error", "origin");
+  } else if (key == "legacy_taper_codes") {
+    l.either(p.legacyTaperCodes, "no", "detect");
+  } else if (key == "max_taper") {
+    if (auto v = number(value); v && *v >= 0 && *v <= 89)
+      p.maxTaperDegrees = *v;
+    else
+      l.badValue("degrees from 0 to 89");
+  } else if (key == "uv_range" || key == "thickness") {
+    std::optional<double>& slot = key == "uv_range" ? p.uvRange : p.thickness;
+    if (value == "none")
+      slot.reset();
+    else if (auto v = number(value); v && *v > 0)
+      slot = v;
+    else
+      l.badValue("none or a length in mm above 0");
+  } else {
+    return false;
+  }
+  return true;
+}
+
+/// The keys of how `kerf convert --to iso --for` writes for the machine; false for another key.
+bool readWritingKey(const ProfileLine& l, MachineProfile& p) {
+  const std::string& key = l.key;
+  const std::string& value = l.value;
+  if (key == "write_unit") {
+    l.either(p.writeMicrometres, "mm", "um");
+  } else if (key == "line_end") {
+    l.either(p.crlf, "lf", "crlf");
+  } else if (key == "write_decimals") {
+    if (auto v = number(value); v && *v >= 0 && *v <= 6 && *v == std::floor(*v))
+      p.writeDecimals = static_cast<int>(*v);
+    else
+      l.badValue("a whole number from 0 to 6");
+  } else if (key == "write_comment") {
+    l.either(p.writeComment, "no", "yes");
+  } else if (key == "write_g") {
+    l.either(p.writeShortG, "G01", "G1");
+  } else if (key == "write_start" || key == "write_offset" || key == "write_cancel" || key == "write_end" ||
+             key == "write_wire_cut" || key == "write_wire_thread") {
+    std::vector<std::string>& blocks = key == "write_start"      ? p.writeStart
+                                       : key == "write_offset"   ? p.writeOffset
+                                       : key == "write_cancel"   ? p.writeCancel
+                                       : key == "write_wire_cut" ? p.writeWireCut
+                                       : key == "write_end"      ? p.writeEnd
+                                                                 : p.writeWireThread;
+    blocks.clear();
+    std::size_t from = 0;
+    while (from <= value.size()) {
+      const std::size_t bar = value.find('|', from);
+      const std::string b = trim(value.substr(from, bar == std::string::npos ? std::string::npos : bar - from));
+      if (!b.empty()) blocks.push_back(b);
+      if (bar == std::string::npos) break;
+      from = bar + 1;
+    }
+  } else if (key == "write_taper") {
+    bool colon = false;
+    l.either(colon, "xyuv-abs", "sodick-colon");
+    p.writeTaper = colon ? Dialect::SodickColon : Dialect::XyuvAbs;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagnostics& diags) {
   MachineProfile p;
   p.name = baseName(file.name());
@@ -132,184 +325,26 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
   bool ok = true;
   for (std::uint32_t line = 1; line <= file.lineCount(); ++line) {
     const auto range = file.lineRange(line);
-    const std::uint32_t begin = range.first, end = range.second;
-    const std::string_view text = file.text().substr(begin, end - begin);
-    const std::string t = trim(text);
-    if (t.empty() || t[0] == '#') continue;
-    const std::size_t lead = text.find_first_not_of(" \t");
-    auto fail = [&](std::size_t at, std::size_t length, std::string message, std::string help = {}) {
-      diags.error(
-          Code::MachineProfileError, &file,
-          {static_cast<std::uint32_t>(begin + at), static_cast<std::uint32_t>(std::max<std::size_t>(1, length))},
-          std::move(message), std::move(help));
-      ok = false;
-    };
-    const std::size_t eq = text.find('=');
-    if (eq == std::string_view::npos) {
-      fail(lead, text.size() - lead, "expected 'key = value'");
+    const std::string_view text = file.text().substr(range.first, range.second - range.first);
+    if (const std::string t = trim(text); t.empty() || t[0] == '#') continue;
+    ProfileLine l{file, diags, ok, range.first, 0, 0, 0, {}, {}};
+    l.lead = text.find_first_not_of(" \t");
+    l.eq = text.find('=');
+    if (l.eq == std::string_view::npos) {
+      l.fail(l.lead, text.size() - l.lead, "expected 'key = value'");
       continue;
     }
-    std::string key = trim(text.substr(0, eq));
-    const std::string value = trim(text.substr(eq + 1));
-    const std::size_t valueAt = std::min(text.size(), text.find_first_not_of(" \t", eq + 1));
-    auto badValue = [&](const std::string& allowed) {
-      fail(valueAt, value.size(), "'" + value + "' is not a value of " + key, "allowed: " + allowed);
-    };
-    // A key with two values: `off` sets the flag false, `on` sets it true.
-    auto either = [&](bool& flag, const char* off, const char* on) {
-      if (value == off || value == on)
-        flag = value == on;
-      else
-        badValue(std::string(off) + " or " + on);
-    };
-    if (key.rfind("code ", 0) == 0 || key.rfind("code\t", 0) == 0) {
-      KnownCode c;
-      c.key = normaliseKey(key.substr(5));
-      if (c.key.empty()) {
-        fail(lead, eq - lead, "'" + trim(key.substr(5)) + "' is not a code", "write G60, M28, T84, C or QAIC");
-        continue;
-      }
-      c.letter = c.key[0];
-      if (c.key.size() > 1 && c.key[0] == 'Q' && (c.key[1] < '0' || c.key[1] > '9')) {
-        c.number = -2;  // a macro call's name
-      } else if (c.key.size() > 1) {
-        const double v = std::strtod(c.key.c_str() + 1, nullptr);
-        c.number = static_cast<int>(v);
-        c.fraction = static_cast<int>(std::lround((v - c.number) * 10));
-      }
-      const std::size_t colon = value.find(':');
-      const std::string effect = trim(value.substr(0, colon));
-      c.note = colon == std::string::npos ? std::string{} : trim(value.substr(colon + 1));
-      bool known = false;
-      for (CodeEffect e : {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
-                           CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread})
-        if (effect == codeEffectName(e)) {
-          c.effect = e;
-          known = true;
-        }
-      if (!known) {
-        badValue(
-            "harmless, not-modelled, position, no-motion, thickness, guides, program-end or rethread, then ': note'");
-        continue;
-      }
-      if (c.note.empty()) {
-        fail(valueAt, value.size(), "code " + c.key + " needs a note: what it does on this machine",
-             "write 'harmless: meaning not modelled' when it is not known");
-        continue;
-      }
-      if (p.find(c.key)) {
-        fail(lead, eq - lead, "code " + c.key + " is listed twice");
-        continue;
-      }
-      p.codes.push_back(std::move(c));
-      continue;
-    }
-    if (key == "name") {
-      if (value.empty() || value.find_first_of(" \t/") != std::string::npos)
-        badValue("one word");
-      else
-        p.name = value;
-    } else if (key == "summary") {
-      p.summary = value;
-    } else if (key == "source") {
-      p.sources.push_back(value);
-    } else if (key == "arc_centre") {
-      if (value == "auto")
-        p.arcCentre.reset();
-      else if (auto m = parseArcCentre(value))
-        p.arcCentre = m;
-      else
-        badValue("incremental, reversed, absolute or auto");
-    } else if (key == "integer_unit") {
-      if (value == "auto")
-        p.integerUnit.reset();
-      else if (value == "mm")
-        p.integerUnit = IntegerUnit::Millimetre;
-      else if (value == "um")
-        p.integerUnit = IntegerUnit::Micrometre;
-      else
-        badValue("mm, um or auto");
-    } else if (key == "integer_threshold") {
-      if (auto v = number(value); v && *v >= 0)
-        p.integerThreshold = *v;
-      else
-        badValue("a number of 0 or more");
-    } else if (key == "uv_words") {
-      const auto d = parseDialect(value);
-      if (value == "auto")
-        p.uvDialect.reset();
-      else if (d && (*d == Dialect::XyuvAbs || *d == Dialect::XyuvRel || *d == Dialect::XyuvLinuxCnc))
-        p.uvDialect = d;
-      else
-        badValue("xyuv-abs, xyuv-rel, xyuv-linuxcnc or auto");
-    } else if (key == "write_unit") {
-      either(p.writeMicrometres, "mm", "um");
-    } else if (key == "line_end") {
-      either(p.crlf, "lf", "crlf");
-    } else if (key == "write_decimals") {
-      if (auto v = number(value); v && *v >= 0 && *v <= 6 && *v == std::floor(*v))
-        p.writeDecimals = static_cast<int>(*v);
-      else
-        badValue("a whole number from 0 to 6");
-    } else if (key == "write_comment") {
-      either(p.writeComment, "no", "yes");
-    } else if (key == "write_g") {
-      either(p.writeShortG, "G01", "G1");
-    } else if (key == "write_start" || key == "write_offset" || key == "write_cancel" || key == "write_end" ||
-               key == "write_wire_cut" || key == "write_wire_thread") {
-      std::vector<std::string>& blocks = key == "write_start"      ? p.writeStart
-                                         : key == "write_offset"   ? p.writeOffset
-                                         : key == "write_cancel"   ? p.writeCancel
-                                         : key == "write_wire_cut" ? p.writeWireCut
-                                         : key == "write_end"      ? p.writeEnd
-                                                                   : p.writeWireThread;
-      blocks.clear();
-      std::size_t from = 0;
-      while (from <= value.size()) {
-        const std::size_t bar = value.find('|', from);
-        const std::string b = trim(value.substr(from, bar == std::string::npos ? std::string::npos : bar - from));
-        if (!b.empty()) blocks.push_back(b);
-        if (bar == std::string::npos) break;
-        from = bar + 1;
-      }
-    } else if (key == "write_taper") {
-      bool colon = false;
-      either(colon, "xyuv-abs", "sodick-colon");
-      p.writeTaper = colon ? Dialect::SodickColon : Dialect::XyuvAbs;
-    } else if (key == "polar_x") {
-      either(p.polarXRadius, "diameter", "radius");
-    } else if (key == "polar_c") {
-      either(p.polarCDiameter, "linear", "diameter");
-    } else if (key == "polar_frame") {
-      either(p.polarFrameTable, "tool", "table");
-    } else if (key == "semicolon") {
-      either(p.semicolonEndsBlock, "comment", "end-of-block");
-    } else if (key == "upper_axes") {
-      either(p.upperAxesUZ, "uv", "uz");
-    } else if (key == "bare_g92") {
-      either(p.bareSetPositionIsOrigin, "error", "origin");
-    } else if (key == "legacy_taper_codes") {
-      either(p.legacyTaperCodes, "no", "detect");
-    } else if (key == "max_taper") {
-      if (auto v = number(value); v && *v >= 0 && *v <= 89)
-        p.maxTaperDegrees = *v;
-      else
-        badValue("degrees from 0 to 89");
-    } else if (key == "uv_range" || key == "thickness") {
-      std::optional<double>& slot = key == "uv_range" ? p.uvRange : p.thickness;
-      if (value == "none")
-        slot.reset();
-      else if (auto v = number(value); v && *v > 0)
-        slot = v;
-      else
-        badValue("none or a length in mm above 0");
-    } else {
-      fail(lead, eq - lead, "unknown key '" + key + "'",
-           "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
-           "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, write_unit, line_end, "
-           "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "
-           "write_end, polar_x, polar_c, polar_frame, code <CODE>");
-    }
+    l.key = trim(text.substr(0, l.eq));
+    l.value = trim(text.substr(l.eq + 1));
+    l.valueAt = std::min(text.size(), text.find_first_not_of(" \t", l.eq + 1));
+    if (l.key.rfind("code ", 0) == 0 || l.key.rfind("code\t", 0) == 0)
+      readCode(l, p);
+    else if (!readReadingKey(l, p) && !readWritingKey(l, p))
+      l.fail(l.lead, l.eq - l.lead, "unknown key '" + l.key + "'",
+             "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
+             "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, write_unit, line_end, "
+             "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "
+             "write_end, polar_x, polar_c, polar_frame, code <CODE>");
   }
   if (!ok) return std::nullopt;
   return p;

@@ -91,7 +91,8 @@ bool Interpreter::executeTaperAngle(const BlockWords& bw) {
   if (angle && angle->isNumber()) {
     if (std::abs(angle->value) > 45.0) {
       diags_.error(Code::TaperAngleTooLarge, src_, angle->span(),
-                   "taper angle " + fmt3(angle->value) + " degrees is beyond 45 degrees, the limit NC controls accept");
+                   "taper angle " + formatFixed(angle->value, 3) +
+                       " degrees is beyond 45 degrees, the limit NC controls accept");
       return false;
     }
     taperDegrees_ = angle->value;

@@ -54,12 +54,12 @@ void Interpreter::resolveHeights() {
   if (upper && upper->value > lower.value) {
     h.planes.upper = upper->value;
     h.known = true;
-    h.source = "lower z " + fmt3(lower.value) + " (" + lower.source + "), upper z " + fmt3(upper->value) + " (" +
-               upper->source + ")";
+    h.source = "lower z " + formatFixed(lower.value, 3) + " (" + lower.source + "), upper z " +
+               formatFixed(upper->value, 3) + " (" + upper->source + ")";
   } else if (upper) {
     diags_.error(Code::HeightsMissing, src_, where,
-                 "the upper plane (z " + fmt3(upper->value) + ", " + upper->source +
-                     ") is not above the lower plane (z " + fmt3(lower.value) + ", " + lower.source + ")");
+                 "the upper plane (z " + formatFixed(upper->value, 3) + ", " + upper->source +
+                     ") is not above the lower plane (z " + formatFixed(lower.value, 3) + ", " + lower.source + ")");
   } else if (dialect_ != Dialect::Plain && !warnedUz_) {  // with U Z unresolved the upper side is unread
     // On a hot-wire foam cutter the two planes are the carriages: the part's "thickness" is the
     // machine's width, written in a header comment if anywhere, never in a word.

@@ -10,13 +10,6 @@
 
 namespace kerf::converter::interp {
 
-std::string fmt3(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3f", v);
-  if (std::string_view(buf) == "-0.000") return "0.000";
-  return buf;
-}
-
 Motion motionOf(GCode code) {
   switch (code) {
     case GCode::Rapid: return Motion::Rapid;
@@ -161,7 +154,7 @@ void Interpreter::warnIntegerUnit() {
       program_.largestInteger > machine_.integerThreshold && !program_.words.empty()) {
     const Word& w = program_.words[program_.largestIntegerWord];
     diags_.warning(Code::IntegerUnitSuspect, src_, w.span(),
-                   "no coordinate has a decimal point and this one is " + fmt3(w.value) +
+                   "no coordinate has a decimal point and this one is " + formatFixed(w.value, 3) +
                        " mm: the file may be written in micrometres",
                    "if so, run with --integer-unit um");
   }

@@ -18,6 +18,7 @@
 #include "gcode.h"
 #include "kerf/converter/interpret/interpreter.h"
 #include "kerf/converter/interpret/mill_turn.h"
+#include "kerf/converter/nc/number_format.h"
 #include "kerf/geometry/arc.h"
 #include "kerf/geometry/offset.h"
 #include "kerf/geometry/polar.h"
@@ -35,8 +36,6 @@ namespace kerf::converter::interp {
 
 using geometry::Segment;
 using geometry::Vec2;
-
-std::string fmt3(double v);
 
 enum class Motion : std::uint8_t { None, Rapid, Line, Clockwise, CounterClockwise };
 Motion motionOf(GCode code);

@@ -12,8 +12,8 @@ void Interpreter::reportArc(const geometry::ArcBuild& build, const BlockWords& b
   switch (build.status) {
     case geometry::ArcStatus::RadiusTooSmall:
       diags_.error(Code::RadiusTooSmall, src_, bw['R']->span(),
-                   side + "arc radius " + fmt3(std::abs(length(*bw['R'])) / unit) + " is shorter than half the chord " +
-                       fmt3(build.halfChord / unit) + u);
+                   side + "arc radius " + formatFixed(std::abs(length(*bw['R'])) / unit, 3) +
+                       " is shorter than half the chord " + formatFixed(build.halfChord / unit, 3) + u);
       break;
     case geometry::ArcStatus::FullCircleWithRadius:
       diags_.error(Code::FullCircleWithRadius, src_, bw['R']->span(),
@@ -33,8 +33,9 @@ void Interpreter::reportArc(const geometry::ArcBuild& build, const BlockWords& b
       break;
     case geometry::ArcStatus::EndOffCircle:
       diags_.error(Code::ArcEndOffCircle, src_, spanOf(bw.has('I') ? bw['I'] : bw['J'], block),
-                   side + "arc end point is " + fmt3(std::abs(build.radiusError) / unit) + u +
-                       " off the circle through the start (limit " + fmt3(tolerance_.centreAbsolute / unit) + u + ")",
+                   side + "arc end point is " + formatFixed(std::abs(build.radiusError) / unit, 3) + u +
+                       " off the circle through the start (limit " + formatFixed(tolerance_.centreAbsolute / unit, 3) +
+                       u + ")",
                    options_.arcCentre == ArcCentreMode::Incremental
                        ? "if the post writes I J as start minus centre or as absolute centres, use --arc-centre "
                          "reversed|absolute"

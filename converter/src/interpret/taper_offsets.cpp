@@ -14,13 +14,13 @@ void Interpreter::reportOffsetIssues(const geometry::OffsetChainResult& r, const
     std::string message;
     switch (issue.problem) {
       case geometry::OffsetProblem::Collapsed:
-        message = std::string("the taper offset of ") + fmt3(std::abs(distance[issue.index])) + " mm on the " + plane +
-                  " plane is larger than this arc's radius " + fmt3(m.lower.radius) +
+        message = std::string("the taper offset of ") + formatFixed(std::abs(distance[issue.index]), 3) +
+                  " mm on the " + plane + " plane is larger than this arc's radius " + formatFixed(m.lower.radius, 3) +
                   " mm: there the arc shrinks to a sharp corner";
         break;
       case geometry::OffsetProblem::Reversed:
-        message = std::string("the taper offset of ") + fmt3(std::abs(distance[issue.index])) + " mm on the " + plane +
-                  " plane swallows this move: between its corners it would run backwards";
+        message = std::string("the taper offset of ") + formatFixed(std::abs(distance[issue.index]), 3) +
+                  " mm on the " + plane + " plane swallows this move: between its corners it would run backwards";
         break;
       case geometry::OffsetProblem::NoCorner:
         message = std::string("on the ") + plane +
@@ -98,7 +98,7 @@ void Interpreter::resolveRel() {
         geometry::arcFromCentre(us, ue, p.centre + g * r.centreShift, p.direction(), r.tolerance);
     if (upper.status != geometry::ArcStatus::Ok) {
       diags_.error(Code::UpperArcOffCircle, src_, m.span,
-                   "the upper arc (from U V and K L) ends " + fmt3(std::abs(upper.radiusError)) +
+                   "the upper arc (from U V and K L) ends " + formatFixed(std::abs(upper.radiusError), 3) +
                        " mm off the circle through its start",
                    "K L give the vector from the lower arc's centre to the upper arc's centre");
       toolpath_.upper[r.index] = Segment::line(us, ue);

@@ -102,7 +102,7 @@ void Interpreter::resolveWireOffsets() {
                              " exact tests of pieces whose boxes overlap (long moves side by side, as in a "
                              "star of thin spikes): refused"
                    : r.refused ? std::string("the wire offset of this run of moves needs more pieces than the budget")
-                               : "at an offset of " + fmt3(*run.value) + " mm the wire path of these " +
+                               : "at an offset of " + formatFixed(*run.value, 3) + " mm the wire path of these " +
                                      std::to_string(chain.size()) + " moves breaks into " +
                                      std::to_string(r.paths.size()) + " pieces: the wire cannot follow them",
                    "the moves keep their programmed geometry");
@@ -146,15 +146,16 @@ void Interpreter::resolveWireOffsets() {
       const Move& m = moves[run.first + 1 + lost.first];
       if (lost.fillet)
         diags_.note(Code::InsideCornerRadius, src_, m.span,
-                    "this arc's radius " + fmt3(m.lower.radius) + " mm is smaller than the wire offset " +
-                        fmt3(*run.value) + " mm: the wire cuts the corner with radius " + fmt3(*run.value) + " mm");
+                    "this arc's radius " + formatFixed(m.lower.radius, 3) + " mm is smaller than the wire offset " +
+                        formatFixed(*run.value, 3) + " mm: the wire cuts the corner with radius " +
+                        formatFixed(*run.value, 3) + " mm");
       else
         diags_.warning(Code::WireCannotReach, src_, m.span,
-                       "the wire (offset " + fmt3(*run.value) + " mm) cannot reach " + std::to_string(lost.count) +
-                           (lost.count == 1 ? " move" : " moves") +
+                       "the wire (offset " + formatFixed(*run.value, 3) + " mm) cannot reach " +
+                           std::to_string(lost.count) + (lost.count == 1 ? " move" : " moves") +
                            " from here: a slot or recess narrower than the "
                            "wire; up to " +
-                           fmt3(lost.uncut) + " mm of material stays",
+                           formatFixed(lost.uncut, 3) + " mm of material stays",
                        "the wire path leaves it out");
     }
     applied = true;
@@ -178,7 +179,7 @@ void Interpreter::resolveWireOffsets() {
   const OffsetRun& first = runs.front();
   diags_.note(Code::WireOffsetNotApplied, src_, toolpath_.moves.empty() ? SourceSpan::wholeFile() : moves[0].span,
               std::string("wire offset applied (") + (first.side == WireOffset::Left ? "G41" : "G42") + ", " +
-                  fmt3(*first.value) + " mm" + (runs.size() > 1 ? " first" : "") +
+                  formatFixed(*first.value, 3) + " mm" + (runs.size() > 1 ? " first" : "") +
                   "): checks, pictures and outputs use the wire-centre path",
               "kerf explain shows each move's programmed geometry beside it");
 }

@@ -8,7 +8,8 @@
 
 namespace kerf::converter {
 
-/// Fixed-decimal text of v, rounded to nearest, never "-0.000".
+/// Fixed-decimal text of v, rounded to nearest, never "-0.000"; whole for any finite v (up to 1e308)
+/// and decimals up to 60, "inf" or "nan" for those.
 std::string formatFixed(double v, int decimals);
 
 /// "(x, y)" with formatFixed's digits, for messages.

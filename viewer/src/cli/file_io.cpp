@@ -122,7 +122,10 @@ std::optional<std::string> readTextFile(const std::string& path, std::size_t max
     ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   }
   for (;;) {
-    const std::size_t room = std::max<std::size_t>(text.capacity() - text.size(), sizeof buf);
+    // The room already reserved, down to the one byte that lets a regular file's last read say end
+    // of file without growing the text; a buffer's worth more only when that is used up.
+    const std::size_t spare = text.capacity() - text.size();
+    const std::size_t room = spare > 0 ? spare : sizeof buf;
     const std::size_t at = text.size();
     text.resize(at + room);
     const ssize_t n = ::read(fd, text.data() + at, room);

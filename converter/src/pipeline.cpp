@@ -63,7 +63,9 @@ namespace {
 
 /// The summary, when the caller asked for one.
 void summarizeInto(Pipeline& out, const PipelineOptions& options) {
-  if (options.summarize) out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
+  if (!options.summarize) return;
+  out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
+  out.summary->structure = findStructure(out.toolpath, out.checkOptions.tolerance);
 }
 
 /// The checks, with the machine's limits unless the user gave others, then the summary (it reads

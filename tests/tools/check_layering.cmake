@@ -30,10 +30,10 @@ function(forbid_includes files regex who)
 endfunction()
 forbid_includes("${converter_files}" "kerf/(viewer|render|headless|export)|GL|glfw|imgui|vtk" "converter")
 # Inside converter, folders by role, each including only itself and the roles before it:
-#   nc (source text, numbers, diagnostics, parser) < interpret < check < formats < cam < report;
+#   nc (source text, numbers, diagnostics, parser) < interpret < structure < check < formats < cam < report;
 # the two headers at the top, toolpath.h (data every role shares) and pipeline.h (the one route
 # of the commands), and pipeline.cpp beside them. No other source sits at the top of src/.
-set(converter_roles nc interpret check formats cam report)
+set(converter_roles nc interpret structure check formats cam report)
 list(LENGTH converter_roles role_count)
 math(EXPR last_role "${role_count} - 1")
 foreach(i RANGE ${last_role})

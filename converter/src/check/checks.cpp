@@ -1,5 +1,7 @@
 #include "kerf/converter/check/checks.h"
 
+#include "kerf/converter/structure/passes.h"
+
 #include "kerf/converter/check/summary.h"
 #include "kerf/converter/nc/number_format.h"
 #include "kerf/geometry/contour.h"
@@ -108,10 +110,10 @@ void seamNote(const Toolpath& tp, const SourceFile* src, std::size_t mi, std::si
 /// One plane's contour: the segments of the cut moves in order and each one's move.
 /// One contour to test: views of segments and their moves held elsewhere (the cut path is not
 /// copied again for it).
-struct Contour {
+struct PlaneContour {
   geometry::SegmentView segments;
   MoveIndex moveIndex;
-  const char* name = "the cut path";  ///< how messages name it
+  std::string name = "the cut path";  ///< how messages name it
   double z = 0.0;
   bool upperPlane = false;
   bool seamAllowed = false;  ///< a taper program: contacts at the taper's seam are notes
@@ -124,7 +126,7 @@ struct ContourTest {
   geometry::ClosureReport closure;
 };
 
-ContourTest testContour(const Contour& c, const CheckOptions& options) {
+ContourTest testContour(const PlaneContour& c, const CheckOptions& options) {
   ContourTest t;
   const geometry::SegmentView& s = c.segments;
   t.closure.gap = (s.back().end - s.front().start).norm();
@@ -145,7 +147,7 @@ ContourTest testContour(const Contour& c, const CheckOptions& options) {
 }
 
 /// Reports the self-intersections of one contour. The pairs found go to seen.
-void checkContour(const Contour& c, const geometry::SelfIntersectionResult& result, const Toolpath& toolpath,
+void checkContour(const PlaneContour& c, const geometry::SelfIntersectionResult& result, const Toolpath& toolpath,
                   const SourceFile* src, const CheckOptions& options, Diagnostics& diags, MovePairs& seen) {
   const auto& moves = toolpath.moves;
   const std::string name = c.name;
@@ -324,7 +326,7 @@ MovePairs checkJoints(const SurfaceCheck& c) {
 
 /// One horizontal section of the surface, with its contacts.
 struct Section {
-  Contour section;  // views of segments and moveIndex
+  PlaneContour section;  // views of segments and moveIndex
   std::vector<geometry::Segment> segments;
   std::vector<std::uint32_t> moveIndex;
   geometry::SelfIntersectionResult r;
@@ -337,7 +339,7 @@ void makeSection(const SurfaceCheck& c, int level, int levels, Section& out) {
   const auto& moves = c.toolpath.moves;
   const geometry::Planes& planes = c.toolpath.heights.planes;
   const double s = static_cast<double>(level) / levels;
-  Contour& section = out.section;
+  PlaneContour& section = out.section;
   section.z = planes.lower + s * planes.height();
   // Count before making: huge twisted arcs ask for thousands of pieces a patch. Past the budget,
   // each polyline patch gets its share of it (at least 2 pieces), and a note says so once.
@@ -373,7 +375,7 @@ void reportSection(const SurfaceCheck& c, const Section& level, const MovePairs&
                    bool& coarsened) {
   const auto& moves = c.toolpath.moves;
   const geometry::Planes& planes = c.toolpath.heights.planes;
-  const Contour& section = level.section;
+  const PlaneContour& section = level.section;
   const geometry::SelfIntersectionResult& r = level.r;
   if (level.share != geometry::kMaxSectionPieces && !coarsened) {
     coarsened = true;
@@ -442,6 +444,77 @@ void checkSurface(const Toolpath& toolpath, const CutView& path, bool closed, co
   }
 }
 
+/// A run of cut moves checked as one path: the program's cuts, or one pass of a contour.
+struct CutRun {
+  const CutView& path;
+  std::string lowerName;  ///< how messages name its lower contour (its only one on a 2-axis program)
+  std::string upperName;
+  bool warnOpen = true;  ///< warn when the lower contour closes no loop (K0605)
+};
+
+/// The lower contour's self-intersections and closure; on a taper program the upper contour's,
+/// their closures against each other and, with the heights known, the surface's.
+void checkCutRun(const CutRun& run, const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options,
+                 Diagnostics& diags, const SurfaceMeasures* measures) {
+  // The lower contour's self-intersections and closure.
+  const CutView& path = run.path;
+  const auto& moves = toolpath.moves;
+  const bool taper = toolpath.isTaper();
+  const double zLower = taper ? toolpath.heights.planes.lower : 0.0;
+  PlaneContour lower{path.segments, path.moveIndex, run.lowerName, zLower, false, taper};
+  ContourTest lowerTest = testContour(lower, options);
+  const geometry::ClosureReport& closure = lowerTest.closure;
+  if (!closure.loopFrom && run.warnOpen) {
+    const Move& last = moves[path.moveIndex.back()];
+    diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(),
+                         at3(last.lower.end, zLower),
+                         "the cut path never closes a loop: the part stays attached (the end is " +
+                             formatFixed(closure.gap, 3) + " mm from the start)"));
+  }
+
+  MovePairs seen;
+  checkContour(lower, lowerTest.result, toolpath, src, options, diags, seen);
+  lowerTest.result = {};
+  if (!taper) return;
+
+  PlaneContour upper;
+  upper.name = run.upperName;
+  upper.upperPlane = true;
+  upper.seamAllowed = true;
+  upper.z = toolpath.heights.known ? toolpath.heights.planes.upper : 0.0;
+  upper.moveIndex = path.moveIndex;
+  // In place when the cuts are contiguous, like the lower contour.
+  std::vector<geometry::Segment> upperSegments;
+  if (path.copy.empty()) {
+    upper.segments =
+        std::span<const geometry::Segment>(toolpath.upper).subspan(path.moveIndex.front(), path.moveIndex.size());
+  } else {
+    upperSegments.reserve(path.moveIndex.size());
+    for (std::size_t i : path.moveIndex) upperSegments.push_back(toolpath.upper[i]);
+    upper.segments = upperSegments;
+  }
+  ContourTest upperTest = testContour(upper, options);
+  const geometry::ClosureReport& upperClosure = upperTest.closure;
+  if (closure.loopFrom.has_value() != upperClosure.loopFrom.has_value()) {
+    const std::size_t i = path.moveIndex.back();
+    const bool lowerClosed = closure.loopFrom.has_value();
+    diags.report(
+        finding(Severity::Error, Code::ClosureMismatch, src, moves[i], i,
+                at3(lowerClosed ? upper.segments.back().end : moves[i].lower.end, lowerClosed ? upper.z : zLower),
+                std::string("the ") + (lowerClosed ? "lower" : "upper") + " contour closes a loop but the " +
+                    (lowerClosed ? "upper" : "lower") + " one does not (it ends " +
+                    formatFixed(lowerClosed ? upperClosure.gap : closure.gap, 3) +
+                    " mm from its start): the wire cannot release the part on both planes"));
+  }
+  checkContour(upper, upperTest.result, toolpath, src, options, diags, seen);
+  upperTest.result = {};
+  if (!toolpath.heights.known) return;
+  const SurfaceMeasures own =
+      measures && measures->patches.size() == moves.size() ? SurfaceMeasures{} : measureSurface(toolpath);
+  const SurfaceMeasures& m = own.patches.empty() ? *measures : own;
+  checkSurface(toolpath, path, closure.endsAtStart && upperClosure.endsAtStart, src, options, diags, m, seen);
+}
+
 }  // namespace
 
 void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options, Diagnostics& diags,
@@ -485,59 +558,36 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "wire programs usually thread the wire again (M-code) at a new start hole"));
   }
 
-  // The lower contour's self-intersections and closure.
-  Contour lower{path.segments, path.moveIndex, taper ? "the lower contour" : "the cut path", zLower, false, taper};
-  ContourTest lowerTest = testContour(lower, options);
-  const geometry::ClosureReport& closure = lowerTest.closure;
-  if (!closure.loopFrom) {
-    const Move& last = moves[path.moveIndex.back()];
-    diags.report(finding(Severity::Warning, Code::PathOpen, src, last, path.moveIndex.back(),
-                         at3(last.lower.end, zLower),
-                         "the cut path never closes a loop: the part stays attached (the end is " +
-                             formatFixed(closure.gap, 3) + " mm from the start)"));
+  const Structure structure = findStructure(toolpath, options.tolerance);
+  if (!structure.multiPass()) {
+    checkCutRun({path, taper ? "the lower contour" : "the cut path", "the upper contour", true}, toolpath, src, options,
+                diags, measures);
+    return;
   }
-
-  MovePairs seen;
-  checkContour(lower, lowerTest.result, toolpath, src, options, diags, seen);
-  lowerTest.result = {};
-  if (!taper) return;
-
-  Contour upper;
-  upper.name = "the upper contour";
-  upper.upperPlane = true;
-  upper.seamAllowed = true;
-  upper.z = toolpath.heights.known ? toolpath.heights.planes.upper : 0.0;
-  upper.moveIndex = path.moveIndex;
-  // In place when the cuts are contiguous, like the lower contour.
-  std::vector<geometry::Segment> upperSegments;
-  if (path.copy.empty()) {
-    upper.segments =
-        std::span<const geometry::Segment>(toolpath.upper).subspan(path.moveIndex.front(), path.moveIndex.size());
-  } else {
-    upperSegments.reserve(path.moveIndex.size());
-    for (std::size_t i : path.moveIndex) upperSegments.push_back(toolpath.upper[i]);
-    upper.segments = upperSegments;
+  // Several passes over one contour: each pass is tested alone (a skim retraces its rough cut, it
+  // does not meet itself), and a contour must close in some pass.
+  for (std::size_t ci = 0; ci < structure.contours.size(); ++ci) {
+    const Contour& contour = structure.contours[ci];
+    const std::string of = structure.contours.size() > 1 ? " of contour " + std::to_string(ci + 1) : "";
+    for (std::size_t pi = 0; pi < contour.passes.size(); ++pi) {
+      const Pass& pass = contour.passes[pi];
+      CutView view;
+      view.segments = geometry::SegmentView::members(
+          std::span<const Move>(moves).subspan(pass.first, pass.end - pass.first), &Move::lower);
+      view.moveIndex = MoveIndex(static_cast<std::uint32_t>(pass.first), pass.end - pass.first);
+      const std::string name = "pass " + std::to_string(pi + 1) + of;
+      checkCutRun({view, taper ? name + " (lower contour)" : name, name + " (upper contour)", false}, toolpath, src,
+                  options, diags, measures);
+    }
+    if (!cutsFree(contour, options.tolerance)) {
+      const std::size_t last = contour.end - 1;
+      diags.report(finding(Severity::Warning, Code::PathOpen, src, moves[last], last,
+                           at3(moves[last].lower.end, zLower),
+                           "no pass of this contour closes it and none cuts off what the others leave: the part "
+                           "stays attached (the last pass ends " +
+                               formatFixed(contour.passes.back().gap, 3) + " mm from where it started)"));
+    }
   }
-  ContourTest upperTest = testContour(upper, options);
-  const geometry::ClosureReport& upperClosure = upperTest.closure;
-  if (closure.loopFrom.has_value() != upperClosure.loopFrom.has_value()) {
-    const std::size_t i = path.moveIndex.back();
-    const bool lowerClosed = closure.loopFrom.has_value();
-    diags.report(
-        finding(Severity::Error, Code::ClosureMismatch, src, moves[i], i,
-                at3(lowerClosed ? upper.segments.back().end : moves[i].lower.end, lowerClosed ? upper.z : zLower),
-                std::string("the ") + (lowerClosed ? "lower" : "upper") + " contour closes a loop but the " +
-                    (lowerClosed ? "upper" : "lower") + " one does not (it ends " +
-                    formatFixed(lowerClosed ? upperClosure.gap : closure.gap, 3) +
-                    " mm from its start): the wire cannot release the part on both planes"));
-  }
-  checkContour(upper, upperTest.result, toolpath, src, options, diags, seen);
-  upperTest.result = {};
-  if (!toolpath.heights.known) return;
-  const SurfaceMeasures own =
-      measures && measures->patches.size() == moves.size() ? SurfaceMeasures{} : measureSurface(toolpath);
-  const SurfaceMeasures& m = own.patches.empty() ? *measures : own;
-  checkSurface(toolpath, path, closure.endsAtStart && upperClosure.endsAtStart, src, options, diags, m, seen);
 }
 
 }  // namespace kerf::converter

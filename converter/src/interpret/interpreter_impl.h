@@ -196,6 +196,7 @@ class Interpreter {
   bool buildUpper(const BlockWords& bw, const BlockWords& ubw, const Block& block, Move& move, Segment& upper);
   // wire_offset.cpp
   void executeWireOffset(const BlockWords& bw, const Word& o);
+  void recordOffsetSpans();
   // program_flow.cpp
   Flow executeM(const Word& m, const BlockWords& bw, std::size_t pc, std::size_t& next);
   Flow call(const Word& m, const BlockWords& bw, std::size_t pc, std::size_t& next);
@@ -269,11 +270,12 @@ class Interpreter {
   UnknownPosition unknown_;
   HeldWord pendingOffset_;             // G40/G41/G42 not yet carried out by a move
   std::optional<double> offsetValue_;  // the wire offset in force (D/H register or --offset), mm
+  std::string offsetRegister_;         // the register that gave it ("H001"); empty: none named
   struct OffsetRun {
     std::size_t first = 0, end = 0;  // moves [first, end) carry the offset; first starts it up
     WireOffset side = WireOffset::Off;
     std::optional<double> value;
-    const Word* word = nullptr;
+    std::string offsetRegister;
   };
   std::vector<OffsetRun> offsetRuns_;
   bool programHasV_ = false;  // some word is V (for the U Z diagnostic)

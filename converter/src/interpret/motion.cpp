@@ -231,11 +231,11 @@ void Interpreter::noteOffsetRun(const Move& m, std::size_t index) {
   if (m.wireOffset == WireOffset::Off) return;
   const bool extends = !offsetRuns_.empty() && offsetRuns_.back().end == index &&
                        offsetRuns_.back().side == m.wireOffset && offsetRuns_.back().value == offsetValue_ &&
-                       m.kind != MoveKind::Rapid;
+                       offsetRuns_.back().offsetRegister == offsetRegister_ && m.kind != MoveKind::Rapid;
   if (extends)
     ++offsetRuns_.back().end;
   else
-    offsetRuns_.push_back({index, index + 1, m.wireOffset, offsetValue_, nullptr});
+    offsetRuns_.push_back({index, index + 1, m.wireOffset, offsetValue_, offsetRegister_});
 }
 
 }  // namespace kerf::converter::interp

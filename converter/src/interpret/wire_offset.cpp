@@ -23,9 +23,11 @@ void Interpreter::executeWireOffset(const BlockWords& bw, const Word& o) {
   if (code == GCode::OffsetCancel) return;
   const Word* reg = bw.has('D') ? bw['D'] : bw['H'];
   offsetValue_.reset();
+  offsetRegister_.clear();
   if (reg && reg->isNumber()) {
     char name[16];
     std::snprintf(name, sizeof name, "%c%03ld", reg->letter, std::lround(reg->value));
+    offsetRegister_ = name;
     const auto it = std::find_if(toolpath_.settings.begin(), toolpath_.settings.end(),
                                  [&](const Setting& s) { return s.name == name; });
     if (it != toolpath_.settings.end()) {
@@ -51,7 +53,26 @@ void Interpreter::executeWireOffset(const BlockWords& bw, const Word& o) {
   }
 }
 
+/// Every offset run as an OffsetSpan of the moves read (applyWireOffsets renumbers them): the
+/// cancelling G40 move, when it is a line, belongs to the run it ends.
+void Interpreter::recordOffsetSpans() {
+  const MoveList& moves = toolpath_.moves;
+  for (const OffsetRun& r : offsetRuns_) {
+    OffsetSpan s;
+    s.first = static_cast<std::uint32_t>(r.first);
+    const bool cancelled =
+        r.end < moves.size() && moves[r.end].kind == MoveKind::Line && moves[r.end].wireOffset == WireOffset::Off;
+    s.end = static_cast<std::uint32_t>(cancelled ? r.end + 1 : r.end);
+    s.side = r.side;
+    s.offsetRegister = r.offsetRegister;
+    s.value = r.value;
+    s.cancelled = cancelled;
+    toolpath_.offsetSpans.push_back(std::move(s));
+  }
+}
+
 void Interpreter::resolveWireOffsets() {
+  recordOffsetSpans();
   std::vector<OffsetRun> runs;
   for (const OffsetRun& r : offsetRuns_)
     if (r.value && *r.value > 0) runs.push_back(r);
@@ -172,6 +193,10 @@ void Interpreter::resolveWireOffsets() {
     if (firstOut[k] == SIZE_MAX) firstOut[k] = firstOut[k + 1];
   for (std::uint32_t& s : toolpath_.stops)
     s = static_cast<std::uint32_t>(firstOut[std::min<std::size_t>(s, moves.size())]);
+  for (OffsetSpan& s : toolpath_.offsetSpans) {
+    s.first = static_cast<std::uint32_t>(firstOut[s.first]);
+    s.end = static_cast<std::uint32_t>(firstOut[s.end]);
+  }
   moves = std::move(out);
   if (!centres.empty()) toolpath_.centreWords = std::move(outCentres);
   toolpath_.offsetRole = std::move(role);

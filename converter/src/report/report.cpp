@@ -29,7 +29,7 @@ std::string sci(double v) {
 }
 std::string plural(std::size_t n, const char* word) {
   const std::string_view w(word);
-  const char* ending = w.ends_with("ch") ? "es" : "s";
+  const char* ending = w.ends_with("ch") || w.ends_with("ss") ? "es" : "s";
   return std::to_string(n) + " " + word + (n == 1 ? "" : ending);
 }
 json vec(const Vec2& p) { return json::array({p.x(), p.y()}); }
@@ -147,6 +147,37 @@ std::string formatDiagnosticsText(const Diagnostics& diags) {
   return out;
 }
 
+namespace {
+
+/// "G41 H001 = 0.180 mm", "G42 (offset at the machine)", "no offset".
+std::string offsetText(const Pass& p) {
+  if (p.side == WireOffset::Off) return "no offset";
+  std::string t = p.side == WireOffset::Left ? "G41" : "G42";
+  if (!p.offsetRegister.empty()) t += " " + p.offsetRegister;
+  if (p.offset) return t + (p.offsetRegister.empty() ? " " : " = ") + mm(*p.offset) + " mm";
+  return t + " (offset at the machine)";
+}
+
+/// The contours and their passes, one line each, for a program cut in several passes.
+std::string structureText(const Structure& st) {
+  std::string out;
+  for (std::size_t ci = 0; ci < st.contours.size(); ++ci) {
+    const Contour& c = st.contours[ci];
+    out += "  contour " + std::to_string(ci + 1) + " from " + formatPoint(c.startHole) + ": " +
+           plural(c.passes.size(), "pass") + "\n";
+    for (std::size_t pi = 0; pi < c.passes.size(); ++pi) {
+      const Pass& p = c.passes[pi];
+      out += "    pass " + std::to_string(pi + 1) + ": lines " + std::to_string(p.firstLine) + "-" +
+             std::to_string(p.lastLine) + ", " + offsetText(p) + ", " + directionName(p.direction) + ", " +
+             (p.closes ? std::string("closes") : "leaves a tab of " + mm(p.gap) + " mm") + ", " + mm(p.length) +
+             " mm\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string formatSummaryText(const std::string& file, const Summary& s, const Diagnostics& diags) {
   std::string out;
   out += file + ": " + plural(diags.errorCount(), "error") + ", " + plural(diags.warningCount(), "warning") + "\n";
@@ -182,6 +213,7 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
     out += "  lower length " + mm(t.lowerLength) + " mm, upper length " + mm(t.upperLength) + " mm, surface " +
            mm(t.area) + " mm² in " + plural(t.patches, "patch") + "\n";
   }
+  if (s.structure.multiPass()) out += structureText(s.structure);
   out += std::string("verdict: ") + (diags.hasErrors() ? "errors — do not cut" : "ok") + "\n";
   return out;
 }

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -104,6 +105,18 @@ struct Reading {
   ArcCentreMode arcCentre = ArcCentreMode::Incremental;
 };
 
+/// A run of moves cut under one G41/G42 (a side, a register, a value): the moves that start it,
+/// carry it and, when the program cancels it with a line, the G40 move that leaves it. Indices are
+/// into Toolpath::moves as the checks see them (after the wire offset was applied).
+struct OffsetSpan {
+  std::uint32_t first = 0;  ///< the move that starts the offset (the G41/G42 block's move)
+  std::uint32_t end = 0;    ///< one past the last move under it, the cancelling move included
+  WireOffset side = WireOffset::Left;
+  std::string offsetRegister;   ///< "H001", "D12" as the program names it; empty: none named
+  std::optional<double> value;  ///< mm: the register's value from the program's table or --offset
+  bool cancelled = false;       ///< its last move is the G40 line that leaves the offset
+};
+
 struct Toolpath {
   MoveList moves;
   InputFormat format = InputFormat::Iso;
@@ -128,6 +141,7 @@ struct Toolpath {
   /// moves). Empty when no offset was applied.
   std::vector<OffsetRole> offsetRole;
   std::vector<geometry::Segment> programmed;
+  std::vector<OffsetSpan> offsetSpans;  ///< every G41/G42 run, in order (applied or not)
 
   /// The feeds programmed, in the order they came into force (Move::feedIndex counts from 1), mm/min.
   std::vector<double> feeds;

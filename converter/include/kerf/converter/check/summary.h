@@ -1,6 +1,7 @@
 // Numbers about a program: what `kerf check` prints after the diagnostics.
 #pragma once
 
+#include "kerf/converter/structure/passes.h"
 #include "kerf/converter/toolpath.h"
 #include "kerf/geometry/tessellation.h"
 
@@ -113,6 +114,7 @@ struct Summary {
   geometry::Sampling sampling;
   geometry::PathSampleStats points;   ///< the cut path sampled at `sampling`
   std::optional<TaperSummary> taper;  ///< taper programs whose heights are known
+  Structure structure;                ///< its contours and their passes (the pipeline fills it)
 };
 
 Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling,

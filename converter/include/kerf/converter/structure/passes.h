@@ -1,0 +1,65 @@
+// The structure of a wire program as a shop writes it: contours, each cut from a start hole in
+// one or more passes (a rough cut, skims, a cut-off), found from the toolpath's geometry and its
+// G41/G42 runs, never from comments (docs/passes.md).
+#pragma once
+
+#include "kerf/converter/toolpath.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kerf::converter {
+
+/// One pass over a contour: from the start hole (or where the last pass left off) along the
+/// contour and back. Indices are into Toolpath::moves; every move of a pass is a cut.
+struct Pass {
+  std::size_t first = 0, end = 0;  ///< its moves [first, end), lead-in and lead-out included
+  /// Its moves along the contour itself, [alongFirst, alongEnd): without the lead-in (a first
+  /// move from the start hole) and the lead-out (a last move back to it).
+  std::size_t alongFirst = 0, alongEnd = 0;
+  WireOffset side = WireOffset::Off;  ///< the G41/G42 in force along the contour (Off: none)
+  std::string offsetRegister;         ///< "H001" as the program names it; empty: none named
+  std::optional<double> offset;       ///< mm, when a table or --offset gives it
+  /// +1 counter-clockwise, -1 clockwise (the sign of the area the programmed contour encloses,
+  /// closed by its chord when open), 0 when it encloses none.
+  int direction = 0;
+  bool closes = false;                  ///< the programmed contour ends where it starts (within the tolerance)
+  double gap = 0.0;                     ///< mm from its end back to its start: the tab it leaves when it does not close
+  double length = 0.0;                  ///< mm of wire path, lead-in and lead-out included
+  geometry::Vec2 from{0, 0}, to{0, 0};  ///< where its programmed contour starts and ends, mm
+  double alongLength = 0.0;             ///< mm of programmed contour
+  std::uint32_t firstLine = 0, lastLine = 0;  ///< the source lines of its first and last moves
+};
+
+/// A start hole and the passes cut from it, in order.
+struct Contour {
+  geometry::Vec2 startHole{0, 0};  ///< where its first cut starts, mm
+  /// Its moves [first, end): the runs of cuts between rapids that start from its hole (the rapids
+  /// between them included). A stop without a rapid (M00 before a cut-off) does not end a run.
+  std::size_t first = 0, end = 0;
+  std::vector<Pass> passes;
+};
+
+struct Structure {
+  std::vector<Contour> contours;
+  /// Some contour is cut in more than one pass (the checks then test each pass alone).
+  [[nodiscard]] bool multiPass() const;
+};
+
+/// Whether the passes cut the contour free: one closes it, or a later, shorter pass (a cut-off,
+/// under half the length) runs from where an earlier one stopped to where it began (its tab).
+bool cutsFree(const Contour& contour, double tolerance);
+
+/// The contours and passes of a toolpath. A contour is the runs of cuts (between rapids) that
+/// start from one start hole; a new pass starts with each run, where a G41/G42 run starts and
+/// after a pass that returns to the start hole. Lengths and positions in mm; `tolerance` (mm) says when two points are
+/// one.
+Structure findStructure(const Toolpath& toolpath, double tolerance);
+
+/// "counter-clockwise", "clockwise" or "neither".
+const char* directionName(int direction);
+
+}  // namespace kerf::converter

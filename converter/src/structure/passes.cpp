@@ -1,0 +1,193 @@
+// Contours and passes from the toolpath (passes.h): runs of cuts split where an offset run starts
+// and after each return to the start hole; each pass's lead-in and lead-out, side, register,
+// direction and closure from its programmed geometry.
+#include "kerf/converter/structure/passes.h"
+
+#include "kerf/geometry/chain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace kerf::converter {
+namespace {
+
+using geometry::Segment;
+using geometry::Vec2;
+
+class StructureFinder {
+ public:
+  StructureFinder(const Toolpath& tp, double tolerance) : tp_(tp), moves_(tp.moves), tol_(tolerance) {}
+
+  Structure run() {
+    Structure out;
+    std::size_t i = 0;
+    while (i < moves_.size()) {
+      if (!moves_[i].isCut()) {
+        ++i;
+        continue;
+      }
+      Contour c;
+      c.first = i;
+      c.startHole = moves_[i].lower.start;
+      std::size_t j = i + 1;
+      while (j < moves_.size() && moves_[j].isCut()) ++j;
+      c.end = j;
+      splitPasses(c);
+      // A run from the same start hole as the contour before (after a stop that secures the slug,
+      // or a rapid back to the hole) holds more passes of that contour: a cut-off, a skim.
+      if (!out.contours.empty() && atHole(out.contours.back(), c.startHole)) {
+        Contour& before = out.contours.back();
+        before.end = c.end;
+        for (Pass& p : c.passes) before.passes.push_back(std::move(p));
+      } else {
+        out.contours.push_back(std::move(c));
+      }
+      i = j;
+    }
+    return out;
+  }
+
+ private:
+  /// The programmed geometry of move k: the contour as written, before the wire offset.
+  const Segment& programmed(std::size_t k) const {
+    return k < tp_.programmed.size() ? tp_.programmed[k] : moves_[k].lower;
+  }
+  bool atHole(const Contour& c, const Vec2& p) const { return (p - c.startHole).norm() <= tol_; }
+  /// The offset runs (in order of their first moves) from the first that starts at or after move k.
+  std::vector<OffsetSpan>::const_iterator spansFrom(std::size_t k) const {
+    return std::lower_bound(tp_.offsetSpans.begin(), tp_.offsetSpans.end(), k,
+                            [](const OffsetSpan& s, std::size_t at) { return s.first < at; });
+  }
+  /// The offset run that starts at move k, if one does.
+  const OffsetSpan* spanStartingAt(std::size_t k) const {
+    const auto it = spansFrom(k);
+    return it != tp_.offsetSpans.end() && it->first == k ? &*it : nullptr;
+  }
+
+  /// Where the contour's passes start: its first move, each G41/G42 run's first move, and the move
+  /// after a return to the start hole that ends a pass — one of at least three moves around some
+  /// area, with at least three moves after it (a raster that steps back to the hole, or a last
+  /// move away from a contour that starts on itself, is one pass).
+  std::vector<std::size_t> passStarts(const Contour& c) const {
+    std::vector<std::size_t> offsetStarts;
+    for (auto it = spansFrom(c.first + 1); it != tp_.offsetSpans.end() && it->first < c.end; ++it)
+      offsetStarts.push_back(it->first);
+    std::vector<std::size_t> starts{c.first};
+    auto nextOffset = offsetStarts.begin();
+    std::size_t from = c.first;
+    bool offsetSince = !offsetStarts.empty() && spanStartingAt(c.first);  // a G41/G42 run began in [from, k]
+    double area = 0.0, length = 0.0;  // of the moves [from, k]: the path back to the hole encloses area
+    for (std::size_t k = c.first; k + 1 < c.end; ++k) {
+      const Segment& s = moves_[k].lower;
+      area += geometry::signedArea(std::span<const Segment>(&s, 1));
+      length += s.length();
+      const bool offsetNext = nextOffset != offsetStarts.end() && *nextOffset == k + 1;
+      if (offsetNext) ++nextOffset;
+      // A G41/G42 run ends the pass before it, unless that is only an approach (a move or two
+      // without an offset): then the run's pass takes it in.
+      const bool offsetSplit = offsetNext && (offsetSince || k + 1 - from >= 3);
+      const bool passBack =
+          atHole(c, s.end) && k + 1 - from >= 3 && c.end - (k + 1) >= 3 && std::abs(area) > tol_ * length;
+      if (offsetNext && !offsetSplit) offsetSince = true;
+      if (!offsetSplit && !passBack) continue;
+      starts.push_back(k + 1);
+      from = k + 1;
+      offsetSince = offsetNext;
+      area = length = 0.0;
+    }
+    return starts;
+  }
+
+  void splitPasses(Contour& c) const {
+    const std::vector<std::size_t> starts = passStarts(c);
+    for (std::size_t p = 0; p < starts.size(); ++p) {
+      Pass pass;
+      pass.first = starts[p];
+      pass.end = p + 1 < starts.size() ? starts[p + 1] : c.end;
+      describe(c, pass);
+      c.passes.push_back(std::move(pass));
+    }
+  }
+
+  /// Lead-in and lead-out: the offset run's own start-up and cancel moves; without an offset, a
+  /// first move from the start hole and a last move back to it around a contour that closes.
+  void findLeads(const Contour& c, Pass& pass, const OffsetSpan* span) const {
+    pass.alongFirst = pass.first;
+    pass.alongEnd = pass.end;
+    if (span) {
+      if (span->first + 2 <= pass.end) pass.alongFirst = span->first + 1;
+      if (span->cancelled && span->end <= pass.end && span->end - 1 > pass.alongFirst) pass.alongEnd = span->end - 1;
+      return;
+    }
+    if (pass.end - pass.first < 3) return;
+    const std::size_t last = pass.end - 1;
+    if (!atHole(c, moves_[pass.first].lower.start) || !atHole(c, moves_[last].lower.end)) return;
+    if ((programmed(last - 1).end - programmed(pass.first + 1).start).norm() > tol_) return;
+    pass.alongFirst = pass.first + 1;
+    pass.alongEnd = last;
+  }
+
+  void describe(const Contour& c, Pass& pass) const {
+    // The pass's G41/G42 run: the first that starts in it (after an approach, if it has one).
+    const auto it = spansFrom(pass.first);
+    const OffsetSpan* span = it != tp_.offsetSpans.end() && it->first < pass.end ? &*it : nullptr;
+    findLeads(c, pass, span);
+    if (span) {
+      pass.side = span->side;
+      pass.offsetRegister = span->offsetRegister;
+      pass.offset = span->value;
+    }
+    for (std::size_t k = pass.first; k < pass.end; ++k) pass.length += moves_[k].lower.length();
+    pass.firstLine = moves_[pass.first].line;
+    pass.lastLine = moves_[pass.end - 1].line;
+    const Vec2 from = programmed(pass.alongFirst).start, to = programmed(pass.alongEnd - 1).end;
+    pass.from = from;
+    pass.to = to;
+    pass.gap = (to - from).norm();
+    pass.closes = pass.gap <= tol_;
+    std::vector<Segment> contour;
+    double along = 0.0;
+    for (std::size_t k = pass.alongFirst; k < pass.alongEnd; ++k) {
+      contour.push_back(programmed(k));
+      along += programmed(k).length();
+    }
+    pass.alongLength = along;
+    if (!pass.closes) contour.push_back(Segment::line(to, from));  // an open contour closed by its chord
+    const double area = geometry::signedArea(contour);
+    // An area smaller than a band of the tolerance's width along the contour is none.
+    pass.direction = std::abs(area) <= tol_ * along ? 0 : area > 0 ? 1 : -1;
+  }
+
+  const Toolpath& tp_;
+  const MoveList& moves_;
+  double tol_;
+};
+
+}  // namespace
+
+bool Structure::multiPass() const {
+  return std::any_of(contours.begin(), contours.end(), [](const Contour& c) { return c.passes.size() > 1; });
+}
+
+bool cutsFree(const Contour& contour, double tolerance) {
+  const std::vector<Pass>& ps = contour.passes;
+  for (std::size_t q = 0; q < ps.size(); ++q) {
+    if (ps[q].closes) return true;
+    for (std::size_t p = q + 1; p < ps.size(); ++p)
+      if ((ps[p].from - ps[q].to).norm() <= tolerance && (ps[p].to - ps[q].from).norm() <= tolerance &&
+          ps[p].alongLength < 0.5 * ps[q].alongLength)
+        return true;
+  }
+  return false;
+}
+
+Structure findStructure(const Toolpath& toolpath, double tolerance) {
+  return StructureFinder(toolpath, tolerance).run();
+}
+
+const char* directionName(int direction) {
+  return direction > 0 ? "counter-clockwise" : direction < 0 ? "clockwise" : "neither";
+}
+
+}  // namespace kerf::converter

@@ -62,10 +62,10 @@ std::string centreEvidence(const ArcCentreTally& t, ArcCentreMode m) {
 namespace {
 
 /// The summary, when the caller asked for one.
-void summarizeInto(Pipeline& out, const PipelineOptions& options) {
+void summarizeInto(Pipeline& out, const PipelineOptions& options, Structure structure) {
   if (!options.summarize) return;
   out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
-  out.summary->structure = findStructure(out.toolpath, out.checkOptions.tolerance);
+  out.summary->structure = std::move(structure);
 }
 
 /// The checks, with the machine's limits unless the user gave others, then the summary (it reads
@@ -75,11 +75,12 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
   if (options.check.sectionBudget) out.checkOptions.sectionBudget = *options.check.sectionBudget;
   if (options.check.surfaceLevels) out.checkOptions.surfaceLevels = *options.check.surfaceLevels;
+  Structure structure = findStructure(out.toolpath, out.checkOptions.tolerance);
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
-    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures);
+    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures, &structure);
   }
-  summarizeInto(out, options);
+  summarizeInto(out, options, std::move(structure));
   out.diags.sortByPosition();
 }
 
@@ -180,7 +181,7 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
   }
   path.endedProperly = true;
   out.drawing = std::move(result);
-  summarizeInto(out, options);
+  summarizeInto(out, options, findStructure(path, out.checkOptions.tolerance));
 }
 
 void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::optional<SourceText> upper) {

@@ -453,7 +453,8 @@ struct CutRun {
 };
 
 /// The lower contour's self-intersections and closure; on a taper program the upper contour's,
-/// their closures against each other and, with the heights known, the surface's.
+/// their closures against each other and, with the heights known, the surface's (measures are then
+/// measureSurface(toolpath)).
 void checkCutRun(const CutRun& run, const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options,
                  Diagnostics& diags, const SurfaceMeasures* measures) {
   // The lower contour's self-intersections and closure.
@@ -509,16 +510,13 @@ void checkCutRun(const CutRun& run, const Toolpath& toolpath, const SourceFile* 
   checkContour(upper, upperTest.result, toolpath, src, options, diags, seen);
   upperTest.result = {};
   if (!toolpath.heights.known) return;
-  const SurfaceMeasures own =
-      measures && measures->patches.size() == moves.size() ? SurfaceMeasures{} : measureSurface(toolpath);
-  const SurfaceMeasures& m = own.patches.empty() ? *measures : own;
-  checkSurface(toolpath, path, closure.endsAtStart && upperClosure.endsAtStart, src, options, diags, m, seen);
+  checkSurface(toolpath, path, closure.endsAtStart && upperClosure.endsAtStart, src, options, diags, *measures, seen);
 }
 
 }  // namespace
 
 void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckOptions& options, Diagnostics& diags,
-                   const SurfaceMeasures* measures) {
+                   const SurfaceMeasures* measures, const Structure* structure) {
   const CutView path = cutView(toolpath);
   if (path.segments.empty()) {
     // With errors, those say why; alone, this says the program is empty of cuts. It points at
@@ -558,17 +556,24 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                          "wire programs usually thread the wire again (M-code) at a new start hole"));
   }
 
-  const Structure structure = findStructure(toolpath, options.tolerance);
-  if (!structure.multiPass()) {
+  // The surface's measures and the passes, once for every run of cuts checked.
+  SurfaceMeasures ownMeasures;
+  if (taper && toolpath.heights.known && !(measures && measures->patches.size() == moves.size())) {
+    ownMeasures = measureSurface(toolpath);
+    measures = &ownMeasures;
+  }
+  const Structure ownStructure = structure ? Structure{} : findStructure(toolpath, options.tolerance);
+  const Structure& passes = structure ? *structure : ownStructure;
+  if (!passes.multiPass()) {
     checkCutRun({path, taper ? "the lower contour" : "the cut path", "the upper contour", true}, toolpath, src, options,
                 diags, measures);
     return;
   }
   // Several passes over one contour: each pass is tested alone (a skim retraces its rough cut, it
   // does not meet itself), and a contour must close in some pass.
-  for (std::size_t ci = 0; ci < structure.contours.size(); ++ci) {
-    const Contour& contour = structure.contours[ci];
-    const std::string of = structure.contours.size() > 1 ? " of contour " + std::to_string(ci + 1) : "";
+  for (std::size_t ci = 0; ci < passes.contours.size(); ++ci) {
+    const Contour& contour = passes.contours[ci];
+    const std::string of = passes.contours.size() > 1 ? " of contour " + std::to_string(ci + 1) : "";
     for (std::size_t pi = 0; pi < contour.passes.size(); ++pi) {
       const Pass& pass = contour.passes[pi];
       CutView view;

@@ -76,7 +76,7 @@ class StructureFinder {
     std::vector<std::size_t> starts{c.first};
     auto nextOffset = offsetStarts.begin();
     std::size_t from = c.first;
-    bool offsetSince = !offsetStarts.empty() && spanStartingAt(c.first);  // a G41/G42 run began in [from, k]
+    bool offsetSince = spanStartingAt(c.first) != nullptr;  // a G41/G42 run began in [from, k]
     double area = 0.0, length = 0.0;  // of the moves [from, k]: the path back to the hole encloses area
     for (std::size_t k = c.first; k + 1 < c.end; ++k) {
       const Segment& s = moves_[k].lower;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "kerf/converter/nc/diagnostics.h"
+#include "kerf/converter/structure/passes.h"
 #include "kerf/converter/toolpath.h"
 
 #include <optional>
@@ -36,8 +37,11 @@ struct SurfaceMeasures;
 ///  - K0651 two patches that are not neighbours meet, K0652 generators of one patch or of
 ///    neighbouring patches cross, K0654 neighbouring patches fold over each other: found on
 ///    surfaceLevels - 1 horizontal sections, each tested exactly (docs/taper.md).
-/// measures, when given, are measureSurface(toolpath) (so `kerf check` computes them once).
+/// When some contour has several passes (structure/passes.h), the cut-path checks run on each pass
+/// alone, and K0605 is raised per contour that its passes do not cut free.
+/// measures, when given, are measureSurface(toolpath), and structure findStructure(toolpath,
+/// options.tolerance) (so `kerf check` computes them once).
 void checkToolpath(const Toolpath& toolpath, const SourceFile* source, const CheckOptions& options, Diagnostics& diags,
-                   const SurfaceMeasures* measures = nullptr);
+                   const SurfaceMeasures* measures = nullptr, const Structure* structure = nullptr);
 
 }  // namespace kerf::converter

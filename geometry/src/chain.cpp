@@ -140,15 +140,26 @@ std::vector<Chain> chainSegments(std::span<const Segment> segments, const ChainO
   return chains;
 }
 
+namespace {
+
+/// Adds twice a segment's share of the signed area to `twice`: the triangle it makes with the
+/// origin, then, for an arc, the circular segment beyond its chord (summed in that order).
+void addTwiceArea(double& twice, const Segment& s) {
+  twice += cross(s.start, s.end);
+  if (s.isArc()) twice += s.radius * s.radius * (s.sweep - std::sin(s.sweep));
+}
+
+}  // namespace
+
+double areaTerm(const Segment& s) {
+  double twice = 0.0;
+  addTwiceArea(twice, s);
+  return 0.5 * twice;
+}
+
 double signedArea(std::span<const Segment> path) {
   double twice = 0.0;
-  for (const Segment& s : path) {
-    twice += cross(s.start, s.end);
-    if (s.isArc()) {
-      const double th = s.sweep;
-      twice += s.radius * s.radius * (th - std::sin(th));  // the circular segment beyond the chord
-    }
-  }
+  for (const Segment& s : path) addTwiceArea(twice, s);
   return 0.5 * twice;
 }
 

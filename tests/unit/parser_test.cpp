@@ -8,8 +8,11 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <random>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -20,13 +23,25 @@ namespace {
 
 Program parse(const SourceFile& src, Diagnostics& d) { return parseProgram(src, d); }
 
+/// Every block's words in order, a plain block's read again from the text (WordReader).
+std::vector<Word> allWords(const Program& p) {
+  WordReader reader(p);
+  std::vector<Word> out;
+  for (const Block& b : p.blocks) {
+    const auto words = reader.words(b);
+    out.insert(out.end(), words.begin(), words.end());
+  }
+  return out;
+}
+
 TEST(parser_test, words_keep_offset_line_and_column) {
   SourceFile src("p.nc", "%\nO1234\nN10 G01X10.5Y-2.5 (cut)\n  g2 x1 y2 i3 j4;comment\n%\nG01 X99\n");
   Diagnostics d;
   const Program p = parse(src, d);
   EXPECT_FALSE(d.hasErrors());
   ASSERT_EQ(p.blocks.size(), 3u);  // O1234, N10..., g2...; the text after the closing % is ignored
-  const auto words = p.wordsOf(p.blocks[1]);
+  WordReader reader(p);
+  const auto words = reader.words(p.blocks[1]);
   ASSERT_EQ(words.size(), 4u);
   EXPECT_EQ(words[2].letter, 'X');
   EXPECT_DOUBLE_EQ(words[2].value, 10.5);
@@ -44,13 +59,15 @@ TEST(parser_test, numbers_are_correctly_rounded) {
   SourceFile src("p.nc", "X0.1 Y-000000.1300 I123456.789012 J.5 R5.\n");
   Diagnostics d;
   const Program p = parse(src, d);
-  ASSERT_EQ(p.words.size(), 5u);
-  EXPECT_EQ(p.words[0].value, 0.1);
-  EXPECT_EQ(p.words[1].value, -0.13);
-  EXPECT_EQ(p.words[2].value, 123456.789012);
-  EXPECT_EQ(p.words[3].value, 0.5);
-  EXPECT_TRUE(p.words[4].hasPoint);
-  EXPECT_EQ(p.words[4].value, 5.0);
+  EXPECT_TRUE(p.words.empty());  // a plain block's words are read again when needed
+  const std::vector<Word> words = allWords(p);
+  ASSERT_EQ(words.size(), 5u);
+  EXPECT_EQ(words[0].value, 0.1);
+  EXPECT_EQ(words[1].value, -0.13);
+  EXPECT_EQ(words[2].value, 123456.789012);
+  EXPECT_EQ(words[3].value, 0.5);
+  EXPECT_TRUE(words[4].hasPoint);
+  EXPECT_EQ(words[4].value, 5.0);
 }
 
 // The drawing and curve readers' numbers: one finite number with blanks around it, nothing else.
@@ -88,10 +105,11 @@ TEST(parser_test, numbers_agree_with_strtod_up_to_15_significant_digits) {
   Diagnostics d;
   const Program p = parse(src, d);
   EXPECT_FALSE(d.hasErrors());
-  ASSERT_EQ(p.words.size(), written.size());
+  const std::vector<Word> words = allWords(p);
+  ASSERT_EQ(words.size(), written.size());
   for (std::size_t k = 0; k < written.size(); ++k) {
-    EXPECT_EQ(p.words[k].value, std::strtod(written[k].c_str(), nullptr)) << written[k];
-    EXPECT_EQ(p.words[k].hasPoint, written[k].find('.') != std::string::npos) << written[k];
+    EXPECT_EQ(words[k].value, std::strtod(written[k].c_str(), nullptr)) << written[k];
+    EXPECT_EQ(words[k].hasPoint, written[k].find('.') != std::string::npos) << written[k];
   }
 }
 
@@ -122,8 +140,9 @@ TEST(parser_test, crlf_lines_and_spaces_between_letter_and_number) {
   Diagnostics d;
   const Program p = parse(src, d);
   EXPECT_FALSE(d.hasErrors());
-  ASSERT_EQ(p.words.size(), 3u);
-  EXPECT_EQ(p.words[1].value, 10.0);
+  const std::vector<Word> words = allWords(p);
+  ASSERT_EQ(words.size(), 3u);
+  EXPECT_EQ(words[1].value, 10.0);
   EXPECT_EQ(src.lineText(1), "G01 X 10.");
 }
 
@@ -160,7 +179,7 @@ TEST(parser_test, a_block_of_more_words_than_a_block_holds_is_an_error_at_the_fi
   EXPECT_EQ(p.blocks[0].wordCount, Block::kMaxWords);
   EXPECT_TRUE(p.blocks[0].hasError);
   EXPECT_EQ(p.blocks[1].wordCount, 2u);
-  EXPECT_EQ(p.wordsOf(p.blocks[1])[1].letter, 'X');
+  EXPECT_EQ(WordReader(p).words(p.blocks[1])[1].letter, 'X');
 }
 
 TEST(diagnostics_test, long_lines_are_shown_as_a_window_around_the_column) {
@@ -215,11 +234,12 @@ TEST(parser_test, upper_side_of_a_4_axis_block) {
   EXPECT_FALSE(d.hasErrors());
   ASSERT_EQ(p.blocks.size(), 4u);
   EXPECT_EQ(p.blocks[0].upperFrom, 5u);
-  EXPECT_EQ(p.upperWordsOf(p.blocks[0]).front().letter, 'G');
+  WordReader reader(p);
+  EXPECT_EQ(reader.upperWords(p.blocks[0]).front().letter, 'G');
   EXPECT_EQ(p.blocks[1].upperFrom, 2u);
   EXPECT_TRUE(p.blocks[2].colon);
   EXPECT_EQ(p.blocks[2].upperFrom, 2u);
-  EXPECT_EQ(p.upperWordsOf(p.blocks[2]).size(), 5u);
+  EXPECT_EQ(reader.upperWords(p.blocks[2]).size(), 5u);
   EXPECT_EQ(p.blocks[3].upperFrom, p.blocks[3].wordCount);  // no upper side
 }
 
@@ -257,7 +277,8 @@ using kerf::converter::WordValue;
 
 std::string lettersOf(const Program& p, const kerf::converter::Block& b, bool upperSide) {
   std::string out;
-  for (const auto& w : upperSide ? p.upperWordsOf(b) : p.lowerWordsOf(b)) out += w.letter;
+  WordReader reader(p);
+  for (const auto& w : upperSide ? reader.upperWords(b) : reader.lowerWords(b)) out += w.letter;
   return out;
 }
 
@@ -282,8 +303,9 @@ TEST(parser_test, a_byte_order_mark_is_not_part_of_the_program) {
   const Program p = parse(src, d);
   EXPECT_FALSE(d.hasErrors());
   ASSERT_EQ(p.blocks.size(), 2u);
-  EXPECT_EQ(p.words.front().letter, 'G');
-  EXPECT_EQ(src.locate(p.words.front().offset).column, 4u);  // columns still count the file's bytes
+  const std::vector<Word> words = allWords(p);
+  EXPECT_EQ(words.front().letter, 'G');
+  EXPECT_EQ(src.locate(words.front().offset).column, 4u);  // columns still count the file's bytes
 }
 
 TEST(parser_test, single_motion_blocks_take_any_word_order) {
@@ -308,8 +330,9 @@ TEST(parser_test, values_known_only_at_the_machine) {
   Diagnostics d;
   const Program p = parse(src, d);
   EXPECT_FALSE(d.hasErrors()) << kerf::test::dump(d);
+  WordReader reader(p);
   auto kindOf = [&](std::size_t block, char letter) {
-    for (const auto& w : p.wordsOf(p.blocks[block]))
+    for (const auto& w : reader.words(p.blocks[block]))
       if (w.letter == letter) return w.kind;
     return WordValue::Number;
   };
@@ -494,4 +517,57 @@ TEST(parser_test, the_blocks_that_are_not_plain_are_listed_in_order) {
   EXPECT_GT(expected.size(), 10000u);
   EXPECT_LT(expected.size(), p.blocks.size() - 10000);
   EXPECT_EQ(p.notPlain, expected);
+}
+
+namespace {
+
+std::string readAll(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+// The parse keeps no word of a plain block; WordReader reads them again from the text. Over every
+// sample and real program, each plain block's words as read again equal the words the parser
+// makes of the same text when the block is not plain (an M word added at its end).
+TEST(parser_test, plain_blocks_read_again_as_the_parse_read_them) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> files;
+  for (const fs::path& folder : {fs::path(KERF_SAMPLES_DIR), fs::path(KERF_REALWORLD_DIR) / "iso2d",
+                                 fs::path(KERF_REALWORLD_DIR) / "xyuv", fs::path(KERF_REALWORLD_DIR) / "polar"})
+    if (fs::is_directory(folder))
+      for (const auto& f : fs::directory_iterator(folder))
+        if (f.is_regular_file() && f.path().extension() != ".dxf") files.push_back(f.path());
+  std::size_t checked = 0;
+  for (const fs::path& file : files) {
+    SourceFile src(file.string(), readAll(file));
+    Diagnostics d;
+    const Program p = parse(src, d);
+    WordReader reader(p);
+    for (const Block& b : p.blocks) {
+      if (!b.plain) continue;
+      const std::string text = std::string(p.textOf(b)) + " M0";
+      SourceFile alone("block.nc", text);
+      Diagnostics ad;
+      const Program q = parse(alone, ad);
+      ASSERT_EQ(q.blocks.size(), 1u) << file << ":" << b.line;
+      ASSERT_FALSE(q.blocks[0].plain);
+      const auto again = reader.words(b);
+      const auto parsed = q.wordsOf(q.blocks[0]);
+      ASSERT_EQ(again.size() + 1, parsed.size()) << file << ":" << b.line;
+      for (std::size_t k = 0; k < again.size(); ++k) {
+        EXPECT_EQ(again[k].letter, parsed[k].letter) << file << ":" << b.line;
+        EXPECT_EQ(again[k].value, parsed[k].value) << file << ":" << b.line;
+        EXPECT_EQ(again[k].hasPoint, parsed[k].hasPoint) << file << ":" << b.line;
+        EXPECT_EQ(again[k].kind, parsed[k].kind) << file << ":" << b.line;
+        EXPECT_EQ(again[k].length, parsed[k].length) << file << ":" << b.line;
+        EXPECT_EQ(again[k].offset - b.offset, parsed[k].offset) << file << ":" << b.line;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000u) << "too few plain blocks to hold the reader to the parse";
 }

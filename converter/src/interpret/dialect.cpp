@@ -57,10 +57,11 @@ NumberEvidence compareNumbers(const Program& program) {
   NumberEvidence e;
   bool incremental = false;
   double x = 0, y = 0;
+  WordReader reader(program);
   for (const Block& b : program.blocks) {
     bool setPosition = false;
     const Word *u = nullptr, *v = nullptr, *wx = nullptr, *wy = nullptr;
-    for (const Word& w : program.wordsOf(b)) {
+    for (const Word& w : reader.words(b)) {
       if (!w.isNumber()) continue;
       if (w.letter == 'G') {
         if (w.value == 90) incremental = false;

@@ -26,7 +26,12 @@ const MachineProfile& profileOf(const InterpreterOptions& o) {
 }  // namespace
 
 Interpreter::Interpreter(const Program& program, const InterpreterOptions& options, Diagnostics& diags)
-    : program_(program), src_(program.source), options_(options), machine_(profileOf(options)), diags_(diags) {}
+    : program_(program),
+      words_(program),
+      src_(program.source),
+      options_(options),
+      machine_(profileOf(options)),
+      diags_(diags) {}
 
 Interpretation Interpreter::run() {
   toolpath_.reading.machine = machine_.name;
@@ -151,8 +156,8 @@ void Interpreter::indexLabels() {
 
 void Interpreter::warnIntegerUnit() {
   if (options_.integerUnit == IntegerUnit::Millimetre && !program_.anyDecimalPoint &&
-      program_.largestInteger > machine_.integerThreshold && !program_.words.empty()) {
-    const Word& w = program_.words[program_.largestIntegerWord];
+      program_.largestInteger > machine_.integerThreshold && program_.integerLengthWords > 0) {
+    const Word& w = program_.largestIntegerWord;
     diags_.warning(Code::IntegerUnitSuspect, src_, w.span(),
                    "no coordinate has a decimal point and this one is " + formatFixed(w.value, 3) +
                        " mm: the file may be written in micrometres",

@@ -157,6 +157,7 @@ bool Interpreter::skipPolarSection(std::size_t pc, std::size_t& next, const Word
   bool cancelled = false;
   std::string cancelWord = "G13.1";
   for (std::size_t k = pc + 1; k < program_.blocks.size() && end == program_.blocks.size(); ++k) {
+    if (program_.blocks[k].plain) continue;  // no G13.1, M02 or M30
     for (const Word& w : program_.wordsOf(program_.blocks[k])) {
       if (w.letter == 'G' && w.isNumber()) {
         if (const GCodeInfo* g = findGCode(w.value); g && g->code == GCode::PolarOff) {

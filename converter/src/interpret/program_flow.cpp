@@ -114,6 +114,7 @@ std::uint64_t Interpreter::blocksOfCall(std::size_t target, std::uint64_t cap, s
   std::uint64_t count = 0;
   for (std::size_t pc = target; pc < program_.blocks.size() && count < cap; ++pc) {
     ++count;
+    if (program_.blocks[pc].plain) continue;  // no M word
     const std::span<const Word> words = program_.wordsOf(program_.blocks[pc]);
     bool returns = false;
     for (const Word& w : words) {

@@ -125,7 +125,7 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
 /// (F, M, modal G codes) belongs to the block as a whole.
 bool Interpreter::readBlock(const Block& block, BlockWords& bw, BlockWords& ubw) {
   const bool split = splitsBlocks();
-  const auto words = program_.wordsOf(block);
+  const auto words = words_.words(block);
   for (std::size_t k = 0; k < words.size(); ++k) {
     const Word& w = words[k];
     const bool upperSide =

@@ -32,11 +32,16 @@ bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' ||
 /// Letters that are words in ISO wire programs. B is not: it belongs to 3B code.
 bool isWordLetter(char u) { return u != 'B'; }
 
+/// The letters of Block::plain's words other than G.
+bool isPlainLetter(char letter) {
+  return letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'F';
+}
+
 /// A word Block::plain allows: X Y I J R F, or G00-G03 written as a whole number.
 bool isPlainWord(char letter, WordValue kind, double value) {
   if (kind != WordValue::Number) return false;
   if (letter == 'G') return value == 0 || value == 1 || value == 2 || value == 3;
-  return letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'F';
+  return isPlainLetter(letter);
 }
 
 /// Letters whose numbers are lengths: they decide --integer-unit evidence.
@@ -47,22 +52,24 @@ bool isAxisLetter(char u) {
   return u == 'X' || u == 'Y' || u == 'Z' || u == 'U' || u == 'V' || u == 'W' || u == 'A' || u == 'C';
 }
 
-/// Numbers larger than this are refused (K0105): no wire machine travels a kilometre.
-constexpr double kLargestNumber = 1e9;
+/// Numbers of this many significant digits before the point or more (1e9 and larger) are refused
+/// (K0105): no wire machine travels a kilometre.
+constexpr std::size_t kLargestDigits = 10;
 /// At most this many significant digits before the point.
 constexpr int kMaxDigits = 18;
 
 struct NumberScan {
   enum Status { Ok, Missing, TooManyDigits } status = Missing;
   bool hasPoint = false;
-  std::size_t end = 0;  ///< one past the last character used
-  double value = 0.0;
+  std::size_t end = 0;            ///< one past the last character used
+  std::size_t integerDigits = 0;  ///< significant digits before the point
+  double value = 0.0;             ///< 0 when the scan was asked not to convert
 };
 
 /// [sign] digits [. digits] in text[pos, limit) — no exponent, no spaces inside. Leading zeros are
 /// not significant; more than 18 significant digits before the point are refused. The value is
-/// std::from_chars's: correctly rounded, whatever the number of digits.
-NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit) {
+/// std::from_chars's (correctly rounded, whatever the number of digits), unless `convert` is false.
+NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit, bool convert = true) {
   NumberScan s;
   std::size_t i = pos;
   const bool negative = i < limit && text[i] == '-';
@@ -71,7 +78,8 @@ NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit)
   while (i < limit && text[i] == '0') ++i;  // leading zeros
   const std::size_t significant = i;
   while (i < limit && isDigit(text[i])) ++i;
-  const bool tooMany = i - significant > static_cast<std::size_t>(kMaxDigits);
+  s.integerDigits = i - significant;
+  const bool tooMany = s.integerDigits > static_cast<std::size_t>(kMaxDigits);
   bool anyDigit = i > first;
   if (i < limit && text[i] == '.') {
     s.hasPoint = true;
@@ -86,6 +94,7 @@ NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit)
     return s;
   }
   s.status = NumberScan::Ok;
+  if (!convert) return s;
   // from_chars takes no '+' and no lone '.' after the digits in every library: the digits alone.
   std::size_t digitsEnd = i;
   if (s.hasPoint && text[digitsEnd - 1] == '.') --digitsEnd;
@@ -93,6 +102,14 @@ NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit)
   if (digitsEnd > first) std::from_chars(text.data() + first, text.data() + digitsEnd, v, std::chars_format::fixed);
   s.value = negative ? -v : v;
   return s;
+}
+
+/// The value of a word whose number the parse did not convert: its text read again.
+double wordValue(std::string_view text, const Word& w) {
+  std::size_t i = w.offset + 1;
+  const std::size_t end = std::size_t{w.offset} + w.length;
+  while (i < end && isBlank(text[i])) ++i;
+  return scanNumber(text, i, end).value;
 }
 
 std::string describeChar(char c) {
@@ -287,9 +304,22 @@ class LineParser {
       i = parseWord(block, i, end);
       if (block.hasError) break;  // one error per block: what follows is likely noise from it
     }
+    if (!isPlainCandidate(block)) convertDeferred();  // before assignSides reorders the words
     if (!block.hasError) assignSides(block);
     finish(block, blockEnd);
     return next;
+  }
+
+  /// Can the block being read still be plain (Block::plain), from what it has shown so far?
+  [[nodiscard]] bool isPlainCandidate(const Block& block) const {
+    return plainWords_ && !block.lowerCase && !block.unusualValues && splitAt_ < 0 && !upperLetters_;
+  }
+
+  /// Converts the numbers parseWord left for WordReader, now that their block is known to keep
+  /// its words.
+  void convertDeferred() {
+    for (const std::uint32_t k : deferred_) program_.words[k].value = wordValue(text_, program_.words[k]);
+    deferred_.clear();
   }
 
   /// Trims the block's text span, counts its words and keeps it when it has content.
@@ -302,9 +332,17 @@ class LineParser {
     if (block.kind == BlockKind::Words && block.upperFrom == 0 && block.wordCount > 0 && !hasUpper_)
       block.upperFrom = block.wordCount;
     hasUpper_ = false;
-    block.plain = block.kind == BlockKind::Words && block.wordCount > 0 && plainWords_ && !block.colon &&
-                  !block.twoMotions && !block.lowerCase && !block.unusualValues && block.upperFrom == block.wordCount;
+    block.plain = block.kind == BlockKind::Words && block.wordCount > 0 && plainWords_ && !block.hasError &&
+                  !block.colon && !block.twoMotions && !block.lowerCase && !block.unusualValues &&
+                  block.upperFrom == block.wordCount;
     plainWords_ = true;
+    if (block.plain) {  // WordReader reads its words again when they are needed
+      program_.words.resize(block.firstWord);
+      block.firstWord = 0;
+      deferred_.clear();
+    } else {
+      convertDeferred();
+    }
     if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) {
       if (!block.plain) program_.notPlain.push_back(static_cast<std::uint32_t>(program_.blocks.size()));
       program_.blocks.push_back(block);
@@ -493,7 +531,7 @@ class LineParser {
         ++program_.integerLengthWords;
         if (std::abs(value) > program_.largestInteger) {
           program_.largestInteger = std::abs(value);
-          program_.largestIntegerWord = static_cast<std::uint32_t>(program_.words.size());
+          program_.largestIntegerWord = w;
         }
       }
     }
@@ -515,7 +553,11 @@ class LineParser {
     if (!isWordLetter(letter)) return unknownLetter(block, start, i, end, letter);
     if (std::size_t next = 0; letter == 'T' && tryHeightWord(block, start, i, end, next)) return next;
     if (const std::size_t next = valueAtMachine(block, start, i, end, letter); next != i) return next;
-    const NumberScan n = scanNumber(text_, i, end);
+    // A plain letter's number with a point is converted only if the block turns out not to be
+    // plain (convertDeferred): a plain block's words are read again, and converted, by WordReader.
+    const bool defer = isPlainLetter(letter) && isPlainCandidate(block);
+    NumberScan n = scanNumber(text_, i, end, !defer);
+    if (defer && !n.hasPoint) n = scanNumber(text_, i, end);  // the integer-unit evidence needs its value
     if (n.status == NumberScan::Missing) return noNumber(block, start, i, end, letter);
     const std::size_t stop = n.end;
     if (n.status == NumberScan::TooManyDigits) {
@@ -523,11 +565,12 @@ class LineParser {
       return stop;
     }
     if (const std::size_t next = malformedEnd(block, start, n, end, letter); next != stop) return next;
-    if (std::abs(n.value) >= kLargestNumber) {
+    if (n.integerDigits >= kLargestDigits) {
       error(block, Code::NumberOutOfRange, start, stop - start, "number is out of range (limit 1e9)");
       return stop;
     }
     noteForSides(block, letter, n.value);
+    if (defer && n.hasPoint) deferred_.push_back(static_cast<std::uint32_t>(program_.words.size()));
     push(block, start, stop, letter, WordValue::Number, n.value, n.hasPoint);
     return stop;
   }
@@ -687,18 +730,11 @@ class LineParser {
     hasUpper_ = true;
     if (splitAt_ >= 0 || !upperLetters_) return;  // already in order
     // By letter: the lower side first, each side in the order written.
-    const std::uint32_t largest = program_.largestIntegerWord;
-    const bool largestHere = largest >= block.firstWord && largest < block.firstWord + n;
-    const std::uint32_t largestOffset = largestHere ? program_.words[largest].offset : 0;
     scratch_.assign(words, words + n);
     std::size_t at = 0;
     for (int s = 0; s < 2; ++s)
       for (std::size_t k = 0; k < n; ++k)
         if (side[k] == s) words[at++] = scratch_[k];
-    if (largestHere)
-      for (std::size_t k = 0; k < n; ++k)
-        if (words[k].offset == largestOffset)
-          program_.largestIntegerWord = block.firstWord + static_cast<std::uint32_t>(k);
   }
 
   const SourceFile& src_;
@@ -706,22 +742,60 @@ class LineParser {
   Program& program_;
   Diagnostics& diags_;
   const ParseOptions& options_;
-  std::vector<std::uint8_t> sides_;  ///< assignSides' side of each of the block's words
-  std::vector<Word> scratch_;        ///< assignSides' copy of a block it reorders
-  bool upperLetters_ = false;        ///< U V K L among the block's words
-  bool plainWords_ = true;           ///< every word of the block so far is plain (Block::plain)
-  int splitAt_ = -1;                 ///< index in the block's words where a positional upper side starts
-  bool colon_ = false;               ///< that split was a ':'
-  bool sawCoordinate_ = false;       ///< X Y I J R U V seen in this block
-  bool sawMotion_ = false;           ///< a motion word (G00-G03) seen in this block
-  bool homing_ = false;              ///< G28 or G30 seen in this block: bare axis letters allowed
-  bool hasUpper_ = false;            ///< assignSides set upperFrom for this block
+  std::vector<std::uint8_t> sides_;      ///< assignSides' side of each of the block's words
+  std::vector<Word> scratch_;            ///< assignSides' copy of a block it reorders
+  bool upperLetters_ = false;            ///< U V K L among the block's words
+  bool plainWords_ = true;               ///< every word of the block so far is plain (Block::plain)
+  int splitAt_ = -1;                     ///< index in the block's words where a positional upper side starts
+  bool colon_ = false;                   ///< that split was a ':'
+  bool sawCoordinate_ = false;           ///< X Y I J R U V seen in this block
+  bool sawMotion_ = false;               ///< a motion word (G00-G03) seen in this block
+  bool homing_ = false;                  ///< G28 or G30 seen in this block: bare axis letters allowed
+  bool hasUpper_ = false;                ///< assignSides set upperFrom for this block
+  std::vector<std::uint32_t> deferred_;  ///< the block's words (in Program::words) whose value is not converted yet
   MacroTally macros_;
 };
 
 }  // namespace
 
-// ---- 5. the whole text ------------------------------------------------------------------------
+// ---- 5. plain blocks read again -------------------------------------------------------------
+
+std::span<const Word> WordReader::words(const Block& b) {
+  if (!b.plain) return program_.wordsOf(b);
+  // A plain block parsed without an error: words of an upper-case letter and a number (with
+  // blanks between them allowed), blanks, comments closed on the line, a leading '/'. The same
+  // scanNumber as the parse, so each word comes out as the parse made it (parser_test holds it).
+  const std::string_view text = program_.source->text();
+  const std::size_t end = std::min<std::size_t>(text.size(), std::size_t{b.offset} + b.length);
+  buffer_.clear();
+  for (std::size_t i = b.offset; i < end && buffer_.size() < b.wordCount;) {
+    const char c = text[i];
+    if (c == '(') {
+      const std::size_t close = text.find(')', i);
+      if (close == std::string_view::npos) break;
+      i = close + 1;
+      continue;
+    }
+    if (!isLetter(c)) {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i++;
+    while (i < end && isBlank(text[i])) ++i;
+    const NumberScan n = scanNumber(text, i, end);
+    Word w;
+    w.letter = c;
+    w.hasPoint = n.hasPoint;
+    w.offset = static_cast<std::uint32_t>(start);
+    w.length = static_cast<std::uint16_t>(std::min<std::size_t>(n.end - start, 0xFFFF));
+    w.value = n.value;
+    buffer_.push_back(w);
+    i = std::max(n.end, i);
+  }
+  return buffer_;
+}
+
+// ---- 6. the whole text ------------------------------------------------------------------------
 
 namespace {
 
@@ -752,8 +826,8 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
                 "the file contains NUL bytes: it is not an NC text file");
     return program;
   }
-  // Room for what a typical wire program holds: a block of about 24 bytes and a word of about 6.
-  program.words.reserve(text.size() / 6);
+  // Room for what a typical wire program holds: a block of about 24 bytes. The words vector holds
+  // only the blocks that are not plain, and grows as they come.
   program.blocks.reserve(text.size() / 24);
   // A UTF-8 byte-order mark (some Windows editors write one) is not part of the program.
   const std::size_t bom = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;

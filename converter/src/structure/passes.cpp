@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <span>
 
 namespace kerf::converter {
 namespace {
@@ -80,7 +79,7 @@ class StructureFinder {
     double area = 0.0, length = 0.0;  // of the moves [from, k]: the path back to the hole encloses area
     for (std::size_t k = c.first; k + 1 < c.end; ++k) {
       const Segment& s = moves_[k].lower;
-      area += geometry::signedArea(std::span<const Segment>(&s, 1));
+      area += geometry::areaTerm(s);
       length += s.length();
       const bool offsetNext = nextOffset != offsetStarts.end() && *nextOffset == k + 1;
       if (offsetNext) ++nextOffset;
@@ -146,15 +145,14 @@ class StructureFinder {
     pass.to = to;
     pass.gap = (to - from).norm();
     pass.closes = pass.gap <= tol_;
-    std::vector<Segment> contour;
-    double along = 0.0;
+    double along = 0.0, area = 0.0;
     for (std::size_t k = pass.alongFirst; k < pass.alongEnd; ++k) {
-      contour.push_back(programmed(k));
-      along += programmed(k).length();
+      const Segment& s = programmed(k);
+      along += s.length();
+      area += geometry::areaTerm(s);
     }
     pass.alongLength = along;
-    if (!pass.closes) contour.push_back(Segment::line(to, from));  // an open contour closed by its chord
-    const double area = geometry::signedArea(contour);
+    if (!pass.closes) area += geometry::areaTerm(Segment::line(to, from));  // an open contour closed by its chord
     // An area smaller than a band of the tolerance's width along the contour is none.
     pass.direction = std::abs(area) <= tol_ * along ? 0 : area > 0 ? 1 : -1;
   }

@@ -34,5 +34,8 @@ std::vector<Chain> chainSegments(std::span<const Segment> segments, const ChainO
 
 /// The signed area a closed path encloses (> 0 counter-clockwise), arcs included exactly.
 double signedArea(std::span<const Segment> path);
+/// One element's share of signedArea: the triangle it makes with the origin plus, for an arc, the
+/// circular segment beyond its chord. Summed along a path that closes, it is the path's area.
+double areaTerm(const Segment& s);
 
 }  // namespace kerf::geometry

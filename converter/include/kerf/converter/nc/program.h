@@ -7,6 +7,7 @@
 #include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/nc/source.h"
 
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -74,10 +75,10 @@ struct Block {
   /// bytes: a program holds one per line). The parser reports a longer block (K0114).
   static constexpr std::size_t kMaxWords = 0xFFFF;
 
-  std::uint32_t firstWord = 0;
-  std::uint32_t offset = 0;  ///< start of the block's text
-  std::uint32_t length = 0;  ///< to the end of the block's text (without the line break)
-  std::uint32_t line = 0;    ///< 1-based
+  std::uint32_t firstWord = 0;  ///< index in Program::words (0 for a plain block, whose words are not kept)
+  std::uint32_t offset = 0;     ///< start of the block's text
+  std::uint32_t length = 0;     ///< to the end of the block's text (without the line break)
+  std::uint32_t line = 0;       ///< 1-based
   std::uint16_t wordCount = 0;
   /// Words from this index on (relative to firstWord) describe the upper contour. The parser
   /// orders a block's words so that the lower side's come first: those before a Sodick ':' or a
@@ -93,7 +94,7 @@ struct Block {
   bool lowerCase : 1 = false;      ///< some word letter was written in lower case
   bool unusualValues : 1 = false;  ///< some word's value is not a number (WordValue other than Number)
   /// Words only, every one X Y I J R F or a motion code G00-G03, all numbers, none written in
-  /// lower case, one side: nothing the whole-program scans look for (machine and dialect
+  /// lower case, one side, no error: nothing the whole-program scans look for (machine and dialect
   /// evidence, labels, calls, polar and rotary words), so they pass such a block by. Most blocks
   /// of a wire program are.
   bool plain : 1 = false;
@@ -125,7 +126,9 @@ struct ParseOptions {
 
 struct Program {
   const SourceFile* source = nullptr;
-  /// The words of the blocks, in order.
+  /// The words of the blocks that are not plain, in order. A plain block's words are not kept:
+  /// WordReader reads them again from the text when the interpreter comes to the block, so the
+  /// parse of a long program (its moves nearly all plain) is never held whole.
   std::vector<Word> words;
   /// Only blocks with at least one word, a macro statement or an error.
   std::vector<Block> blocks;
@@ -133,24 +136,38 @@ struct Program {
   std::vector<HeightWord> heights;
   bool anyDecimalPoint = false;          ///< some length word was written with a decimal point
   double largestInteger = 0.0;           ///< largest |value| of a length word written without a point
-  std::uint32_t largestIntegerWord = 0;  ///< index of that word in words
+  Word largestIntegerWord;               ///< that word (when integerLengthWords > 0)
   std::uint32_t integerLengthWords = 0;  ///< length words written without a decimal point
   /// The blocks that are not plain (Block::plain), in order. A plain block holds no evidence of a
   /// dialect or a machine, no subprogram call, label or mill-turn code: the scans for those go
   /// through these alone (a long program's thousands of moves are plain). parseProgram fills it.
   std::vector<std::uint32_t> notPlain;
 
+  /// The words of a block that is not plain (a plain block's: WordReader).
   [[nodiscard]] std::span<const Word> wordsOf(const Block& b) const {
+    assert(!b.plain);
     return {words.data() + b.firstWord, b.wordCount};
-  }
-  [[nodiscard]] std::span<const Word> lowerWordsOf(const Block& b) const {
-    return {words.data() + b.firstWord, b.upperFrom};
-  }
-  [[nodiscard]] std::span<const Word> upperWordsOf(const Block& b) const {
-    return {words.data() + b.firstWord + b.upperFrom, static_cast<std::size_t>(b.wordCount - b.upperFrom)};
   }
   /// The block's text as written.
   [[nodiscard]] std::string_view textOf(const Block& b) const { return source->text().substr(b.offset, b.length); }
+};
+
+/// The words of any block of a program, as the parser read them: a plain block's read again from
+/// its text (exactly as parseProgram read them: the same scanner), another block's from
+/// Program::words. The spans returned stay valid until this reader's next call; a reader reuses
+/// one buffer, so reading block after block allocates nothing once it has grown.
+class WordReader {
+ public:
+  explicit WordReader(const Program& program) : program_(program) {}
+
+  [[nodiscard]] std::span<const Word> words(const Block& b);
+  /// The lower side's words (all of them when the block has no upper side).
+  [[nodiscard]] std::span<const Word> lowerWords(const Block& b) { return words(b).first(b.upperFrom); }
+  [[nodiscard]] std::span<const Word> upperWords(const Block& b) { return words(b).subspan(b.upperFrom); }
+
+ private:
+  const Program& program_;
+  std::vector<Word> buffer_;
 };
 
 /// Parses the whole text. Errors go to diags; a block with an error is kept (hasError) so the

@@ -13,7 +13,8 @@
 namespace kerf::converter {
 namespace {
 
-std::string number(double v) {
+/// A value in a note on the evidence: up to 15 significant digits.
+std::string evidenceNumber(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.15g", v);
   return buf;
@@ -26,7 +27,7 @@ std::string number(double v) {
 std::optional<std::string> integerEvidence(const Program& p, const MachineProfile& m) {
   if (p.anyDecimalPoint || p.integerLengthWords == 0 || p.largestInteger <= m.integerThreshold) return std::nullopt;
   return "µm integers: " + std::to_string(p.integerLengthWords) + " coordinates without a decimal point, largest " +
-         number(p.largestInteger);
+         evidenceNumber(p.largestInteger);
 }
 
 const char* centreAdjective(ArcCentreMode m) {

@@ -1,13 +1,17 @@
 // The multi-pass corpus (tests/passes/*.nc) through the kerf program: each file states, in `;`
-// comment lines, the exit status `kerf check` must give (`; expect exit: N`) and lines its pass
-// table must hold (`; expect: TEXT`, each a part of one printed line). The lengths in them were
-// worked out by hand from the drawing and the offsets (docs/passes.md).
+// comment lines, the exit status `kerf check` must give (`; expect exit: N`), lines its pass
+// table must hold (`; expect: TEXT`, each a part of one printed line) and the findings it must
+// get (`; expect diagnostic: LINE CODE`: a diagnostic with that code at that line). The lengths in
+// them were worked out by hand from the drawing and the offsets (docs/passes.md).
 #include "data_test_support.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <sys/wait.h>
@@ -22,7 +26,7 @@ struct CheckRun {
 };
 
 CheckRun checkProgram(const fs::path& file) {
-  const std::string command = "'" + std::string(KERF_PROGRAM) + "' check '" + file.string() + "' 2>/dev/null";
+  const std::string command = "'" + std::string(KERF_PROGRAM) + "' check '" + file.string() + "' 2>&1";
   CheckRun r;
   if (FILE* p = popen(command.c_str(), "r")) {
     char buf[4096];
@@ -38,10 +42,17 @@ class PassTable : public testing::Test {
   explicit PassTable(fs::path file) : file_(std::move(file)) {}
   void TestBody() override {
     std::vector<std::string> expected;
+    std::vector<std::pair<std::string, std::string>> diagnostics;  // (":LINE:", "[CODE]")
     int exitStatus = -1;
     for (const std::string& line : kerf::test::splitLines(kerf::test::readFile(file_))) {
       if (line.starts_with("; expect exit: ")) exitStatus = std::stoi(line.substr(15));
       if (line.starts_with("; expect: ")) expected.push_back(line.substr(10));
+      if (line.starts_with("; expect diagnostic: ")) {
+        const std::string what = line.substr(21);  // "LINE CODE"
+        const std::size_t space = what.find(' ');
+        ASSERT_NE(space, std::string::npos) << line;
+        diagnostics.emplace_back(":" + what.substr(0, space) + ":", "[" + what.substr(space + 1) + "]");
+      }
     }
     ASSERT_GE(exitStatus, 0) << file_ << " states no '; expect exit: N'";
     ASSERT_FALSE(expected.empty()) << file_ << " states no '; expect:' line";
@@ -49,6 +60,15 @@ class PassTable : public testing::Test {
     EXPECT_EQ(r.status, exitStatus) << r.out;
     for (const std::string& e : expected)
       EXPECT_NE(r.out.find(e), std::string::npos) << "missing: " << e << "\n" << r.out;
+    const std::vector<std::string> printed = kerf::test::splitLines(r.out);
+    for (const auto& [at, code] : diagnostics)
+      EXPECT_TRUE(std::any_of(printed.begin(), printed.end(),
+                              [&](const std::string& l) {
+                                return l.find(file_.filename().string() + at) != std::string::npos &&
+                                       l.find(code) != std::string::npos;
+                              }))
+          << "no " << code << " at line " << at << "\n"
+          << r.out;
   }
 
  private:
@@ -73,6 +93,50 @@ void registerCorpus() {
   for (const fs::path& f : files)
     testing::RegisterTest("passes_test", f.stem().c_str(), nullptr, nullptr, __FILE__, __LINE__,
                           [f]() -> testing::Test* { return new PassTable(f); });
+}
+
+}  // namespace
+
+namespace {
+
+/// What `kerf ARGS FILE` writes to standard output.
+std::string kerfOutput(const std::string& args, const fs::path& file) {
+  const std::string command = "'" + std::string(KERF_PROGRAM) + "' " + args + " '" + file.string() + "' 2>/dev/null";
+  std::string out;
+  if (FILE* p = popen(command.c_str(), "r")) {
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+    pclose(p);
+  }
+  return out;
+}
+
+/// The three-pass die's structure as JSON and SARIF carry it (docs/passes.md).
+void expectDieStructure(const nlohmann::json& st) {
+  ASSERT_EQ(st.at("contours").size(), 1u) << st.dump(2);
+  const nlohmann::json& passes = st["contours"][0]["passes"];
+  ASSERT_EQ(passes.size(), 3u) << st.dump(2);
+  const char* registers[] = {"H001", "H002", "H003"};
+  const double offsets[] = {0.18, 0.11, 0.085};
+  const char* sides[] = {"G41", "G42", "G41"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(passes[k]["register"], registers[k]);
+    EXPECT_NEAR(passes[k]["offset_mm"].get<double>(), offsets[k], 1e-9);
+    EXPECT_EQ(passes[k]["side"], sides[k]);
+    EXPECT_EQ(passes[k]["kept"], "inside");  // a die opening, each pass inside it
+    EXPECT_TRUE(passes[k]["closes"].get<bool>());
+    EXPECT_FALSE(passes[k]["cut_off"].get<bool>());
+  }
+  EXPECT_NEAR(passes[0]["length_mm"].get<double>(), 98.2, 1e-9);  // docs/passes.md, worked example
+  EXPECT_EQ(passes[1]["direction"], "clockwise");
+}
+
+TEST(passes_test, json_and_sarif_carry_the_structure) {
+  const fs::path die = fs::path(KERF_PASSES_DIR) / "die_three_passes.nc";
+  const nlohmann::json j = nlohmann::json::parse(kerfOutput("check --json", die));
+  expectDieStructure(j.at("summary").at("structure"));
+  const nlohmann::json sarif = nlohmann::json::parse(kerfOutput("check --format sarif", die));
+  expectDieStructure(sarif.at("runs").at(0).at("artifacts").at(0).at("properties").at("structure"));
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
-; A die whose rough cut and skim stop 2 mm short of closing, leaving a tab that holds the slug; an
-; optional stop (M01) to secure the slug, then a cut-off pass from the hole through the tab.
+; A die whose rough cut and skim leave a 2 mm tab; a stop (M01) to secure the slug; a cut-off.
 ; expect exit: 0
 ; expect: contour 1 from (0.000, 0.000): 3 passes
 ; expect: pass 1: lines 11-17, G41 H001 = 0.180 mm, counter-clockwise, leaves a tab of 2.000 mm
 ; expect: pass 2: lines 18-24, G42 H002 = 0.110 mm, clockwise, leaves a tab of 2.000 mm
-; expect: pass 3: lines 26-28, G41 H001 = 0.180 mm, neither, leaves a tab of 2.000 mm, 21.842 mm
+; expect: pass 3: lines 26-28, G41 H001 = 0.180 mm, neither, cuts off the tab, 21.842 mm
+; expect diagnostic: 27 K0614
 H001 = +000000.1800;
 H002 = +000000.1100;
 G90 G92 X0 Y0;

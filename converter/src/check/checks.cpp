@@ -1,7 +1,9 @@
 #include "kerf/converter/check/checks.h"
+#include "finding.h"
 
 #include "kerf/converter/structure/passes.h"
 
+#include "kerf/converter/check/pass_checks.h"
 #include "kerf/converter/check/summary.h"
 #include "kerf/converter/nc/number_format.h"
 #include "kerf/geometry/contour.h"
@@ -21,22 +23,6 @@ namespace kerf::converter {
 namespace {
 
 std::string deg(double radians) { return formatFixed(radians * geometry::kDegreesPerRadian, 3) + "°"; }
-
-Diagnostic finding(Severity sev, Code code, const SourceFile* src, const Move& move, std::size_t moveIndex,
-                   const geometry::Vec3& p, std::string message, std::string help = {}) {
-  Diagnostic d;
-  d.severity = sev;
-  d.code = code;
-  d.source = src;
-  d.span = move.span;
-  d.message = std::move(message);
-  d.help = std::move(help);
-  d.move = moveIndex;
-  d.point = p;
-  return d;
-}
-
-geometry::Vec3 at3(const geometry::Vec2& p, double z) { return {p.x(), p.y(), z}; }
 
 /// A lead-out over the lead-in: the later move runs back along the earlier one, in the opposite
 /// direction, and ends where the earlier one started (the start hole). The kerf there is open
@@ -584,7 +570,7 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
       checkCutRun({view, taper ? name + " (lower contour)" : name, name + " (upper contour)", false}, toolpath, src,
                   options, diags, measures);
     }
-    if (!cutsFree(contour, options.tolerance)) {
+    if (!cutsFree(contour)) {
       const std::size_t last = contour.end - 1;
       diags.report(finding(Severity::Warning, Code::PathOpen, src, moves[last], last,
                            at3(moves[last].lower.end, zLower),
@@ -593,6 +579,7 @@ void checkToolpath(const Toolpath& toolpath, const SourceFile* src, const CheckO
                                formatFixed(contour.passes.back().gap, 3) + " mm from where it started)"));
     }
   }
+  checkPasses(passes, toolpath, src, diags);
 }
 
 }  // namespace kerf::converter

@@ -7,6 +7,7 @@
 #include "kerf/converter/report/ci_report.h"
 
 #include "kerf/converter/nc/source.h"
+#include "kerf/converter/report/report.h"
 
 #include <nlohmann/json.hpp>
 
@@ -128,7 +129,9 @@ std::string sarifLog(std::span<const CheckedFile> files, const std::string& vers
   OrderedJson artifacts = OrderedJson::array();
   OrderedJson notifications = OrderedJson::array();
   for (const CheckedFile& f : files) {
-    artifacts.push_back({{"location", {{"uri", uriOf(f.name)}}}});
+    OrderedJson artifact = {{"location", {{"uri", uriOf(f.name)}}}};
+    if (f.structure) artifact["properties"] = {{"structure", OrderedJson::parse(structureJson(*f.structure))}};
+    artifacts.push_back(std::move(artifact));
     if (!f.failure.empty())
       notifications.push_back(
           {{"level", "error"},

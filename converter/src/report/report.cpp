@@ -34,6 +34,38 @@ std::string plural(std::size_t n, const char* word) {
 }
 json vec(const Vec2& p) { return json::array({p.x(), p.y()}); }
 
+/// The contours and passes (docs/passes.md): what the text's pass table says, for every program.
+json structureObject(const Structure& st) {
+  json contours = json::array();
+  for (const Contour& c : st.contours) {
+    json passes = json::array();
+    for (const Pass& p : c.passes) {
+      const int kept = keptSide(p);
+      json pj = {{"first_line", p.firstLine},
+                 {"last_line", p.lastLine},
+                 {"first_move", p.first},
+                 {"end_move", p.end},
+                 {"side", p.side == WireOffset::Left    ? "G41"
+                          : p.side == WireOffset::Right ? "G42"
+                                                        : "none"},
+                 {"register", p.offsetRegister.empty() ? json(nullptr) : json(p.offsetRegister)},
+                 {"offset_mm", p.offset ? json(*p.offset) : json(nullptr)},
+                 {"direction", directionName(p.direction)},
+                 {"kept", kept > 0   ? "inside"
+                          : kept < 0 ? "outside"
+                                     : "unknown"},
+                 {"closes", p.closes},
+                 {"cut_off", p.cutOff},
+                 {"gap_mm", p.gap},
+                 {"length_mm", p.length},
+                 {"contour_length_mm", p.alongLength}};
+      passes.push_back(std::move(pj));
+    }
+    contours.push_back({{"start_hole", vec(c.startHole)}, {"passes", std::move(passes)}});
+  }
+  return {{"contours", std::move(contours)}};
+}
+
 /// JSON output's stated precision (docs/formats.md): lengths and angles to 10 decimals (0.1 nm,
 /// 1e-10 degree), so arithmetic noise (3.55e-15 for 0, 90.00000000000001 for 90) does not reach
 /// the report; a relative error keeps 4 significant digits, as the text shows it.
@@ -169,8 +201,10 @@ std::string structureText(const Structure& st) {
       const Pass& p = c.passes[pi];
       out += "    pass " + std::to_string(pi + 1) + ": lines " + std::to_string(p.firstLine) + "-" +
              std::to_string(p.lastLine) + ", " + offsetText(p) + ", " + directionName(p.direction) + ", " +
-             (p.closes ? std::string("closes") : "leaves a tab of " + mm(p.gap) + " mm") + ", " + mm(p.length) +
-             " mm\n";
+             (p.closes   ? std::string("closes")
+              : p.cutOff ? std::string("cuts off the tab")
+                         : "leaves a tab of " + mm(p.gap) + " mm") +
+             ", " + mm(p.length) + " mm\n";
     }
   }
   return out;
@@ -373,10 +407,13 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
                     {"lower_length_mm", t.lowerLength},    {"upper_length_mm", t.upperLength},
                     {"surface_area_mm2", t.area},          {"patches", t.patches}};
   }
+  sum["structure"] = structureObject(s.structure);
   j["summary"] = std::move(sum);
   roundNumbers(j);
   return j.dump(2) + "\n";
 }
+
+std::string structureJson(const Structure& structure) { return structureObject(structure).dump(); }
 
 std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags) {
   auto f6 = [](double v) { return formatFixed(v, 6); };

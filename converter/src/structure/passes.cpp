@@ -44,6 +44,7 @@ class StructureFinder {
       }
       i = j;
     }
+    for (Contour& c : out.contours) markCutOffs(c);
     return out;
   }
 
@@ -96,6 +97,19 @@ class StructureFinder {
       area = length = 0.0;
     }
     return starts;
+  }
+
+  /// A later pass under half as long as an earlier one that leaves a tab, from where that one
+  /// stopped to where it began, cuts the tab off.
+  void markCutOffs(Contour& c) const {
+    std::vector<Pass>& ps = c.passes;
+    for (std::size_t q = 0; q < ps.size(); ++q) {
+      if (ps[q].closes) continue;
+      for (std::size_t p = q + 1; p < ps.size(); ++p)
+        if ((ps[p].from - ps[q].to).norm() <= tol_ && (ps[p].to - ps[q].from).norm() <= tol_ &&
+            ps[p].alongLength < 0.5 * ps[q].alongLength)
+          ps[p].cutOff = true;
+    }
   }
 
   void splitPasses(Contour& c) const {
@@ -168,16 +182,14 @@ bool Structure::multiPass() const {
   return std::any_of(contours.begin(), contours.end(), [](const Contour& c) { return c.passes.size() > 1; });
 }
 
-bool cutsFree(const Contour& contour, double tolerance) {
-  const std::vector<Pass>& ps = contour.passes;
-  for (std::size_t q = 0; q < ps.size(); ++q) {
-    if (ps[q].closes) return true;
-    for (std::size_t p = q + 1; p < ps.size(); ++p)
-      if ((ps[p].from - ps[q].to).norm() <= tolerance && (ps[p].to - ps[q].from).norm() <= tolerance &&
-          ps[p].alongLength < 0.5 * ps[q].alongLength)
-        return true;
-  }
-  return false;
+bool cutsFree(const Contour& contour) {
+  return std::any_of(contour.passes.begin(), contour.passes.end(), [](const Pass& p) { return p.closes || p.cutOff; });
+}
+
+int keptSide(const Pass& pass) {
+  if (pass.side == WireOffset::Off || pass.direction == 0 || pass.cutOff) return 0;
+  const int left = pass.side == WireOffset::Left ? 1 : -1;  // G41: the wire left of the direction of travel
+  return left * pass.direction;                             // left of a counter-clockwise contour is inside it
 }
 
 Structure findStructure(const Toolpath& toolpath, double tolerance) {

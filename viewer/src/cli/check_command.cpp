@@ -106,6 +106,7 @@ struct Outcome {
   // The diagnostics point into the sources: they live as long as the outcome.
   std::unique_ptr<converter::SourceFile> source, upperSource, machineSource;
   std::size_t errors = 0, warnings = 0;
+  std::optional<converter::Structure> structure;  ///< its contours and passes, when it was read
 };
 
 Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
@@ -126,6 +127,7 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
     o.err = diagnosticsText(o.shown, a.common.checks);
   } else {
     o.exit = verdictExit(p);
+    if (p.summary) o.structure = p.summary->structure;
     const std::string format = a.json ? "json" : a.format;
     if (a.trace) {
       o.out = converter::formatTrace(p.toolpath, p.diags);
@@ -213,7 +215,7 @@ int runCheck(const CheckArgs& a) {
     withErrors += o.errors > 0;
     withWarnings += o.warnings > 0;
     unread += !o.failure.empty();
-    report.push_back({displayName(files[i]), &o.shown, o.failure});
+    report.push_back({displayName(files[i]), &o.shown, o.failure, o.structure ? &*o.structure : nullptr});
     std::cerr << o.err;
     if (format == "json" && many && !a.trace) {
       if (!o.out.empty()) jsonArray += (jsonArray.empty() ? "[\n" : ",\n") + o.out;

@@ -114,6 +114,12 @@
   X(607, RapidInsideCut, Warning, "warning", "a rapid between cuts (a point-driven machine would cut along it); note: the same with a stop (M00, M01, a profile's `rethread` code) between the cuts on either side, where the wire is cut and threaded again") \
   X(608, LoopClosesInsideMove, Note, "note", "the contour closes where one move meets another inside it, and nothing but the way back follows: as if the block were split there (IGK1, STAR5)") \
   X(609, TaperSeam, Note, "note", "a taper starts and ends at the same point, so the wire passes it twice leaning two ways") \
+  /* Passes over one contour (docs/passes.md) */ \
+  X(610, PassWrongSide, Error, "error", "a pass runs on the other side of its programmed contour from the contour's first pass (G41/G42 and the direction of travel say which side): it cuts into what that pass kept") \
+  X(611, OffsetGrows, Warning, "warning", "a skim's offset is larger than the offset of the pass before it: it runs outside the path already cut and removes nothing") \
+  X(612, PartFallsBeforeSkims, Warning, "warning", "a punch is cut free by a pass that closes its contour while skims of it follow: they skim a part that has fallen (leave a tab and cut it off last)") \
+  X(613, CutOffWithoutStop, Warning, "warning", "a cut-off through the tab with no stop (M00, M01, a profile's `rethread` code) since the pass before it: the slug or part is not secured when it falls") \
+  X(614, SlugFalls, Note, "note", "where a die's slug falls free: the end of the first pass that closes its contour") \
   /* Geometry of the ruled surface (4-axis taper) */ \
   X(650, TaperTooSteep, Error, "error", "the wire's slope exceeds `--max-taper` (default 30°)") \
   X(651, SurfaceSelfIntersection, Error, "error", "two patches that are not neighbours meet between the planes (sampled in z)") \

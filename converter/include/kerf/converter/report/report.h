@@ -26,6 +26,10 @@ std::string checkReportJson(const std::string& file, const Summary& summary, con
 /// A stable, fixed-decimal trace of the Toolpath and the diagnostics (golden files).
 std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags);
 
+/// The contours and passes as one JSON object, as `summary.structure` of checkReportJson holds it
+/// (docs/passes.md).
+std::string structureJson(const Structure& structure);
+
 /// `kerf explain`: each move, how its geometry follows from its words.
 std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling);
 /// `kerf explain --json`: {"file", "sampling", "moves": [{line, kind, start, end, centre, ...}]}.

@@ -26,7 +26,10 @@ struct Pass {
   /// +1 counter-clockwise, -1 clockwise (the sign of the area the programmed contour encloses,
   /// closed by its chord when open), 0 when it encloses none.
   int direction = 0;
-  bool closes = false;                  ///< the programmed contour ends where it starts (within the tolerance)
+  bool closes = false;  ///< the programmed contour ends where it starts (within the tolerance)
+  /// A cut-off: a later pass, shorter than half of an earlier one that leaves a tab, that runs from
+  /// where that pass stopped to where it began — through the tab.
+  bool cutOff = false;
   double gap = 0.0;                     ///< mm from its end back to its start: the tab it leaves when it does not close
   double length = 0.0;                  ///< mm of wire path, lead-in and lead-out included
   geometry::Vec2 from{0, 0}, to{0, 0};  ///< where its programmed contour starts and ends, mm
@@ -49,9 +52,13 @@ struct Structure {
   [[nodiscard]] bool multiPass() const;
 };
 
-/// Whether the passes cut the contour free: one closes it, or a later, shorter pass (a cut-off,
-/// under half the length) runs from where an earlier one stopped to where it began (its tab).
-bool cutsFree(const Contour& contour, double tolerance);
+/// Whether the passes cut the contour free: one closes it, or a cut-off runs through the tab.
+bool cutsFree(const Contour& contour);
+
+/// Which side of its programmed contour a pass's wire runs on: +1 inside (G41 along a
+/// counter-clockwise contour, G42 along a clockwise one: a die opening), -1 outside (a punch), 0
+/// when the pass has no offset side or no direction, or is a cut-off (too short to tell).
+int keptSide(const Pass& pass);
 
 /// The contours and passes of a toolpath. A contour is the runs of cuts (between rapids) that
 /// start from one start hole; a new pass starts with each run, where a G41/G42 run starts and

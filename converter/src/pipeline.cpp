@@ -257,7 +257,8 @@ GivenMachine givenMachine(Pipeline& out, const ReadOptions& ro) {
 /// evidence; an integer unit taken from the program says why in evidence. An upper program of a
 /// two-file taper pair (hasUpper) is read in the plain dialect.
 InterpreterOptions interpreterOptions(const MachineProfile& machine, const PipelineOptions& options,
-                                      const Program& program, bool hasUpper, std::vector<std::string>& evidence) {
+                                      const OffsetTable& offsets, const Program& program, bool hasUpper,
+                                      std::vector<std::string>& evidence) {
   const ReadOptions& ro = options.read;
   InterpreterOptions io;
   io.machine = &machine;
@@ -267,6 +268,8 @@ InterpreterOptions interpreterOptions(const MachineProfile& machine, const Pipel
   io.thickness = ro.thickness;
   io.programZ = ro.programZ;
   io.wireOffset = ro.wireOffset;
+  io.offsets = offsets;
+  io.offsets.insert(machine.offsets.begin(), machine.offsets.end());  // the file's first: insert keeps them
   io.maxExecutedBlocks = ro.maxExecutedBlocks;
   io.maxMoves = ro.maxMoves;
   io.recordCentreWords = options.centreWords;
@@ -372,6 +375,18 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
     return out;
   }
 
+  // An --offsets table: its errors say why nothing is read.
+  OffsetTable offsets;
+  if (ro.offsetsFile) {
+    out.offsetsSource = std::make_unique<SourceFile>(ro.offsetsFile->name, ro.offsetsFile->text);
+    std::optional<OffsetTable> table = readOffsetTable(*out.offsetsSource, out.diags);
+    if (!table) {
+      out.read = false;
+      return out;
+    }
+    offsets = std::move(*table);
+  }
+
   // 2. The program parsed with its profile's rules (detected from the program when none is named).
   // The parse tree lives only while the program is interpreted: nothing after needs it (the source
   // and the toolpath say everything), and the checks then run without its memory.
@@ -384,7 +399,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
 
   // 3. The conventions, then the program interpreted with them.
   std::vector<std::string> evidence;
-  InterpreterOptions io = interpreterOptions(out.machine, options, program, upper.has_value(), evidence);
+  InterpreterOptions io = interpreterOptions(out.machine, options, offsets, program, upper.has_value(), evidence);
   Diagnostics interpretDiags(100000);
   Interpretation in = interpretForMachine(program, out.machine, ro, io, interpretDiags, evidence);
   out.toolpath = std::move(in.toolpath);

@@ -1,7 +1,8 @@
 // The multi-pass corpus (tests/passes/*.nc) through the kerf program: each file states, in `;`
 // comment lines, the exit status `kerf check` must give (`; expect exit: N`), lines its pass
 // table must hold (`; expect: TEXT`, each a part of one printed line) and the findings it must
-// get (`; expect diagnostic: LINE CODE`: a diagnostic with that code at that line). The lengths in
+// get (`; expect diagnostic: LINE CODE`: a diagnostic with that code at that line), and the options
+// to check it with (`; options: --offsets FILE`, files named from the corpus folder). The lengths in
 // them were worked out by hand from the drawing and the offsets (docs/passes.md).
 #include "data_test_support.h"
 
@@ -25,8 +26,10 @@ struct CheckRun {
   int status = -1;
 };
 
-CheckRun checkProgram(const fs::path& file) {
-  const std::string command = "'" + std::string(KERF_PROGRAM) + "' check '" + file.string() + "' 2>&1";
+/// `kerf check FILE OPTIONS`, run in the corpus folder (OPTIONS name files there).
+CheckRun checkProgram(const fs::path& file, const std::string& options) {
+  const std::string command = "cd '" + file.parent_path().string() + "' && '" + std::string(KERF_PROGRAM) +
+                              "' check '" + file.string() + "' " + options + " 2>&1";
   CheckRun r;
   if (FILE* p = popen(command.c_str(), "r")) {
     char buf[4096];
@@ -44,9 +47,11 @@ class PassTable : public testing::Test {
     std::vector<std::string> expected;
     std::vector<std::pair<std::string, std::string>> diagnostics;  // (":LINE:", "[CODE]")
     int exitStatus = -1;
+    std::string options;
     for (const std::string& line : kerf::test::splitLines(kerf::test::readFile(file_))) {
       if (line.starts_with("; expect exit: ")) exitStatus = std::stoi(line.substr(15));
       if (line.starts_with("; expect: ")) expected.push_back(line.substr(10));
+      if (line.starts_with("; options: ")) options = line.substr(11);
       if (line.starts_with("; expect diagnostic: ")) {
         const std::string what = line.substr(21);  // "LINE CODE"
         const std::size_t space = what.find(' ');
@@ -56,7 +61,7 @@ class PassTable : public testing::Test {
     }
     ASSERT_GE(exitStatus, 0) << file_ << " states no '; expect exit: N'";
     ASSERT_FALSE(expected.empty()) << file_ << " states no '; expect:' line";
-    const CheckRun r = checkProgram(file_);
+    const CheckRun r = checkProgram(file_, options);
     EXPECT_EQ(r.status, exitStatus) << r.out;
     for (const std::string& e : expected)
       EXPECT_NE(r.out.find(e), std::string::npos) << "missing: " << e << "\n" << r.out;

@@ -1,5 +1,6 @@
 // Fuzz entry point for the pipeline every command takes (parser, machine detection, conventions
-// from the evidence, interpreter, checks) and the point emitters (libFuzzer ABI).
+// from the evidence, interpreter, checks), the point emitters and the readers of the side files (a
+// machine profile, an offset table) (libFuzzer ABI).
 // Built as a real fuzzer with clang (-DKERF_BUILD_FUZZERS=ON, tests/fuzz/run.sh), and always
 // as kerf_fuzz_replay, which feeds it every file of the bad corpus, the samples and
 // tests/fuzz/corpus so CI replays what the fuzzer found.
@@ -83,6 +84,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const Diagnostic& d : p.diags.all()) (void)formatDiagnostic(d);
   (void)formatTrace(a.toolpath, diags);
   (void)explainText(src, a.toolpath, kerf::geometry::Sampling::step(0.5));
+  // The side files a command reads beside a program: the same bytes as a machine profile and as an
+  // --offsets table (their readers report, never crash, on any text).
+  {
+    Diagnostics sideDiags(20);
+    (void)parseMachineProfile(src, sideDiags);
+    (void)readOffsetTable(src, sideDiags);
+  }
   PointRequest request;
   request.maxPoints = 500;
   (void)emitPoints(a.toolpath, &src, bp95dProfile(), request, diags);

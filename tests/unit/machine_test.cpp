@@ -392,3 +392,46 @@ TEST(machine_test, plain_blocks_say_what_every_block_says) {
   EXPECT_TRUE(std::all_of(p.toolpath.moves.begin(), p.toolpath.moves.end(),
                           [](const Move& m) { return m.kind == MoveKind::Rapid; }));
 }
+
+TEST(machine_test, offset_registers_are_named_as_the_program_names_them) {
+  EXPECT_EQ(kerf::converter::offsetRegisterName("H1"), "H001");
+  EXPECT_EQ(kerf::converter::offsetRegisterName(" d012 "), "D012");
+  EXPECT_EQ(kerf::converter::offsetRegisterName("H 7"), "H007");
+  EXPECT_EQ(kerf::converter::offsetRegisterName("X1"), "");
+  EXPECT_EQ(kerf::converter::offsetRegisterName("H1000"), "");
+  EXPECT_EQ(kerf::converter::offsetRegisterName("H1.5"), "");
+}
+
+TEST(machine_test, an_offset_table_file_is_read_and_its_wrong_lines_reported_at_their_place) {
+  using kerf::converter::readOffsetTable;
+  {
+    SourceFile file("t.offsets", "# skims\nH001 = 0.180\nh2=0.11   # second\n\nD1 = 0.15\n");
+    Diagnostics d;
+    const auto table = readOffsetTable(file, d);
+    ASSERT_TRUE(table.has_value()) << kerf::test::dump(d);
+    EXPECT_EQ(table->size(), 3u);
+    EXPECT_EQ(table->at("H002"), 0.11);
+    EXPECT_EQ(table->at("D001"), 0.15);
+  }
+  SourceFile file("t.offsets", "H001 = 0.180\nH001 = 0.2\nX3 = 1\nH4 = 12\nH5 = abc\nH6 0.1\n");
+  Diagnostics d;
+  EXPECT_FALSE(readOffsetTable(file, d).has_value());
+  ASSERT_EQ(d.errorCount(), 5u) << kerf::test::dump(d);
+  for (std::size_t k = 0; k < 5; ++k) {
+    EXPECT_EQ(d.all()[k].code, Code::OffsetTableError);
+    EXPECT_EQ(file.locate(d.all()[k].span.offset).line, k + 2) << d.all()[k].message;
+  }
+}
+
+TEST(machine_test, a_profile_gives_offset_registers) {
+  SourceFile file("m.profile", "name = shop\noffset H001 = 0.18\noffset H1 = 0.2\noffset H2 = -1\n");
+  Diagnostics d;
+  EXPECT_FALSE(parseMachineProfile(file, d).has_value());
+  ASSERT_EQ(d.errorCount(), 2u) << kerf::test::dump(d);  // H001 twice; a negative offset
+  SourceFile good("m.profile", "name = shop\noffset H001 = 0.18\noffset D3 = 0.2\n");
+  Diagnostics g;
+  const auto p = parseMachineProfile(good, g);
+  ASSERT_TRUE(p.has_value()) << kerf::test::dump(g);
+  EXPECT_EQ(p->offsets.at("H001"), 0.18);
+  EXPECT_EQ(p->offsets.at("D003"), 0.2);
+}

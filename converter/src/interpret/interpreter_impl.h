@@ -27,6 +27,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -313,6 +314,7 @@ class Interpreter {
   std::unordered_set<long> warnedM_;
   std::unordered_set<std::string> notedCodes_;
   bool warnedOffsetUnknown_ = false, warnedWorkOffset_ = false, warnedUz_ = false;
+  std::set<std::string> registersWithoutValue_;  // warned once each (K0210)
 };
 
 }  // namespace kerf::converter::interp

@@ -197,6 +197,22 @@ void readCode(const ProfileLine& l, MachineProfile& p) {
   p.codes.push_back(std::move(c));
 }
 
+/// `offset H001 = 0.180`: a register of the machine's offset table, mm.
+void readOffset(const ProfileLine& l, MachineProfile& p) {
+  const std::string name = offsetRegisterName(std::string_view(l.key).substr(7));
+  if (name.empty()) {
+    l.fail(l.lead, l.eq - l.lead, "'" + trim(l.key.substr(7)) + "' is not a D or H register",
+           "write offset H001 = 0.180");
+    return;
+  }
+  double value = 0.0;
+  if (!parseNumberField(l.value, value) || value < 0.0 || value > kLargestTableOffset) {
+    l.fail(l.valueAt, l.value.size(), name + ": '" + l.value + "' is not an offset from 0 to 10 mm");
+    return;
+  }
+  if (!p.offsets.emplace(name, value).second) l.fail(l.lead, l.eq - l.lead, name + " is given twice");
+}
+
 /// The keys of what the machine means by its words; false for a key that is none of them.
 bool readReadingKey(const ProfileLine& l, MachineProfile& p) {
   const std::string& key = l.key;
@@ -339,12 +355,14 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
     l.valueAt = std::min(text.size(), text.find_first_not_of(" \t", l.eq + 1));
     if (l.key.rfind("code ", 0) == 0 || l.key.rfind("code\t", 0) == 0)
       readCode(l, p);
+    else if (l.key.rfind("offset ", 0) == 0 || l.key.rfind("offset\t", 0) == 0)
+      readOffset(l, p);
     else if (!readReadingKey(l, p) && !readWritingKey(l, p))
       l.fail(l.lead, l.eq - l.lead, "unknown key '" + l.key + "'",
              "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
              "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, write_unit, line_end, "
              "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "
-             "write_end, polar_x, polar_c, polar_frame, code <CODE>");
+             "write_end, polar_x, polar_c, polar_frame, code <CODE>, offset <REGISTER>");
   }
   if (!ok) return std::nullopt;
   return p;

@@ -35,14 +35,16 @@ void Interpreter::executeWireOffset(const BlockWords& bw, const Word& o) {
       const double v = std::strtod(it->value.c_str(), &endp);
       if (endp != it->value.c_str() && std::isfinite(v)) offsetValue_ = std::abs(v);
     }
+    // Then --offsets FILE's table, then the profile's (InterpreterOptions::offsets holds both).
+    if (const auto table = options_.offsets.find(name); !offsetValue_ && table != options_.offsets.end())
+      offsetValue_ = table->second;
     if (!offsetValue_ && options_.wireOffset) offsetValue_ = *options_.wireOffset;
-    if (!offsetValue_ && !warnedOffsetUnknown_) {
-      warnedOffsetUnknown_ = true;
-      diags_.note(Code::WireOffsetNotApplied, src_, o.span(),
-                  gName(code) + " " + std::string(name) +
-                      ": the offset is in the machine's table, so Kerf shows the programmed contour",
-                  "give the value with --offset MM to see and check the wire-centre path");
-    }
+    if (!offsetValue_ && registersWithoutValue_.insert(name).second)
+      diags_.warning(Code::WireOffsetNotApplied, src_, o.span(),
+                     gName(code) + " " + std::string(name) + ": no table gives " + name +
+                         " (the program's, --offsets or the machine profile's), so Kerf shows the moves under "
+                         "it on their programmed contour",
+                     "give it in an --offsets file (" + std::string(name) + " = 0.180) or with --offset MM");
   } else if (options_.wireOffset) {
     offsetValue_ = *options_.wireOffset;
   } else if (!warnedOffsetUnknown_) {

@@ -104,7 +104,7 @@ struct Outcome {
   converter::Diagnostics shown;  ///< what the terminal shows (and the reports carry)
   std::string failure;           ///< why the file was not read
   // The diagnostics point into the sources: they live as long as the outcome.
-  std::unique_ptr<converter::SourceFile> source, upperSource, machineSource;
+  std::unique_ptr<converter::SourceFile> source, upperSource, machineSource, offsetsSource;
   std::size_t errors = 0, warnings = 0;
   std::optional<converter::Structure> structure;  ///< its contours and passes, when it was read
 };
@@ -121,9 +121,10 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
   o.shown = shownDiagnostics(p.diags, a.common.checks);
   o.errors = p.diags.errorCount();
   o.warnings = p.diags.warningCount();
-  if (!p.read) {  // the machine profile is wrong: its diagnostics say why
+  if (!p.read) {  // the machine profile or the offset table is wrong: its diagnostics say why
     o.exit = kExitUsage;
-    o.failure = "the machine profile cannot be used";
+    // The offset table is read only after the profile was: a source for it means it failed.
+    o.failure = p.offsetsSource ? "the offset table cannot be used" : "the machine profile cannot be used";
     o.err = diagnosticsText(o.shown, a.common.checks);
   } else {
     o.exit = verdictExit(p);
@@ -145,6 +146,7 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
   o.source = std::move(p.source);
   o.upperSource = std::move(p.upperSource);
   o.machineSource = std::move(p.machineSource);
+  o.offsetsSource = std::move(p.offsetsSource);
   return o;
 }
 

@@ -113,6 +113,10 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
                  "with --side, its wire path")
       ->check(CLI::Range(0.0, 100.0))
       ->group(reading);
+  cmd.add_option("--offsets", o.reading.offsets,
+                 "an offset table file, one register a line (H001 = 0.180, mm): the values of G41/G42 D.. or H.. "
+                 "the program's own table does not give (docs/passes.md)")
+      ->group(reading);
   cmd.add_option("--side", o.reading.side,
                  "a drawing's wire side with --offset: outside (a punch) or inside (a die) of the outermost "
                  "contours; holes in them get the other side")
@@ -240,6 +244,11 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
       if (!text) return false;
       r.machineFile = SourceText{*o.input.machine, std::move(*text)};
     }
+  }
+  if (o.reading.offsets) {
+    std::optional<std::string> text = readTextFile(*o.reading.offsets, 1 << 20, error);
+    if (!text) return false;
+    r.offsetsFile = SourceText{*o.reading.offsets, std::move(*text)};
   }
   if (o.reading.format != "auto") r.format = parseInputFormat(o.reading.format);
   if (o.reading.start) {

@@ -45,6 +45,7 @@ struct ReadingOptions {
   std::optional<std::string> integerUnit;  ///< mm | um
   std::optional<std::string> arcCentre;    ///< incremental | reversed | absolute
   std::optional<double> offset;            ///< --offset, mm
+  std::optional<std::string> offsets;      ///< --offsets FILE: an offset table
   std::optional<std::string> side;         ///< --side outside|inside (drawings)
   std::string dialect = "auto";
   std::optional<double> lowerZ, upperZ, thickness, programZ;

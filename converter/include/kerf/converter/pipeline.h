@@ -45,6 +45,7 @@ struct ReadOptions {
   std::optional<bool> polarFrameTable;    ///< --polar-frame: the G12.1 frame (nothing: the profile's)
   std::optional<std::string> machine;     ///< --machine NAME: a built-in profile
   std::optional<SourceText> machineFile;  ///< --machine FILE: a profile's text
+  std::optional<SourceText> offsetsFile;  ///< --offsets FILE: an offset table's text (offset_table.h)
   std::optional<IntegerUnit> integerUnit;
   std::optional<ArcCentreMode> arcCentre;
   std::optional<Dialect> dialect;
@@ -84,6 +85,7 @@ struct Pipeline {
   std::unique_ptr<SourceFile> source;
   std::unique_ptr<SourceFile> upperSource;    ///< two-file input
   std::unique_ptr<SourceFile> machineSource;  ///< --machine FILE
+  std::unique_ptr<SourceFile> offsetsSource;  ///< --offsets FILE
   InputFormat format = InputFormat::Iso;      ///< the format the program was read as
   std::optional<DrawingResult> drawing;       ///< DXF only: the toolpath then walks its contours
   /// DXF with --offset and --side: per contour (same index), the wire path (empty for open ones);
@@ -97,7 +99,7 @@ struct Pipeline {
   Diagnostics diags{100000};     ///< every diagnostic, sorted by position
   /// What was read: set whenever `read` is, if PipelineOptions::summarize asked for it.
   std::optional<Summary> summary;
-  /// false: nothing was read (the machine profile file is wrong); diags says why.
+  /// false: nothing was read (the machine profile file or the --offsets table is wrong); diags says why.
   bool read = false;
 };
 

@@ -46,9 +46,11 @@ struct InterpreterOptions {
 
   IntegerUnit integerUnit = IntegerUnit::Millimetre;
   ArcCentreMode arcCentre = ArcCentreMode::Incremental;
-  std::optional<double> wireOffset;  ///< --offset, mm: for a bare G41/G42
-  bool blockDelete = true;           ///< skip blocks that start with '/'
-  std::size_t maxCallDepth = 16;     ///< M98 nesting
+  std::optional<double> wireOffset;  ///< --offset, mm: for a bare G41/G42, or a register no table gives
+  /// Registers the program's own table does not give: --offsets FILE's, then the profile's.
+  OffsetTable offsets;
+  bool blockDelete = true;        ///< skip blocks that start with '/'
+  std::size_t maxCallDepth = 16;  ///< M98 nesting
   std::size_t maxExecutedBlocks = 20'000'000;
   std::size_t maxMoves = 10'000'000;
   /// Keep how each arc's centre was written (Toolpath::centreWords, 16 bytes a move): `kerf

@@ -7,6 +7,7 @@
 // named, detectMachine() picks one from the program's evidence and says why.
 #pragma once
 
+#include "kerf/converter/interpret/offset_table.h"
 #include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/nc/program.h"
 #include "kerf/converter/nc/source.h"
@@ -90,6 +91,9 @@ struct MachineProfile {
   /// (Fanuc 15i-MA: the tool's position is angle 0), or is the table's frame at C 0 (seed 002's post).
   bool polarFrameTable = false;
   std::vector<KnownCode> codes;
+  /// `offset H001 = 0.180` lines: the machine's offset registers, for G41/G42 D.. or H.. that the
+  /// program's own table and --offsets do not give.
+  OffsetTable offsets;
   std::string text;  ///< the profile as written (`kerf machines show`)
 
   /// The entry for a code: "G60", "T84", "QAIC"; a letter-only entry matches any value of it.

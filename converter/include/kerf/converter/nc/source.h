@@ -55,7 +55,8 @@ std::string_view trimBlanks(std::string_view s);
 
 /// A field that holds one decimal number and nothing else but blanks around it and a leading '+'
 /// (std::from_chars's grammar otherwise): true with the value in `out`; false for anything else, and
-/// for a number that is not finite. The drawing and curve readers read their numbers with it.
+/// for a number that is not finite. The drawing and curve readers and offset tables read their
+/// numbers with it.
 bool parseNumberField(std::string_view field, double& out);
 
 }  // namespace kerf::converter

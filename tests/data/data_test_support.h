@@ -1,7 +1,10 @@
-// Shared by the data-driven tests: file reading, capped diffs.
+// Shared by the data-driven tests: file reading, running the kerf program, capped diffs.
 #pragma once
 
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,6 +12,22 @@
 #include <vector>
 
 namespace kerf::test {
+
+/// What a shell command wrote to standard output, and its exit status (-1: it did not exit).
+struct CommandRun {
+  std::string out;
+  int status = -1;
+};
+inline CommandRun runCommand(const std::string& command) {
+  CommandRun r;
+  if (FILE* p = popen(command.c_str(), "r")) {
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
+    const int status = pclose(p);
+    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  return r;
+}
 
 inline std::string readFile(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

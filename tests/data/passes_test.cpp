@@ -15,29 +15,15 @@
 #include <utility>
 #include <vector>
 
-#include <sys/wait.h>
-
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CheckRun {
-  std::string out;
-  int status = -1;
-};
-
-/// `kerf check FILE OPTIONS`, run in the corpus folder (OPTIONS name files there).
-CheckRun checkProgram(const fs::path& file, const std::string& options) {
-  const std::string command = "cd '" + file.parent_path().string() + "' && '" + std::string(KERF_PROGRAM) +
-                              "' check '" + file.string() + "' " + options + " 2>&1";
-  CheckRun r;
-  if (FILE* p = popen(command.c_str(), "r")) {
-    char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-    const int status = pclose(p);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  return r;
+/// `kerf check FILE OPTIONS` (output and diagnostics), run in the corpus folder (OPTIONS name files
+/// there).
+kerf::test::CommandRun checkProgram(const fs::path& file, const std::string& options) {
+  return kerf::test::runCommand("cd '" + file.parent_path().string() + "' && '" + std::string(KERF_PROGRAM) +
+                                "' check '" + file.string() + "' " + options + " 2>&1");
 }
 
 class PassTable : public testing::Test {
@@ -61,7 +47,7 @@ class PassTable : public testing::Test {
     }
     ASSERT_GE(exitStatus, 0) << file_ << " states no '; expect exit: N'";
     ASSERT_FALSE(expected.empty()) << file_ << " states no '; expect:' line";
-    const CheckRun r = checkProgram(file_, options);
+    const kerf::test::CommandRun r = checkProgram(file_, options);
     EXPECT_EQ(r.status, exitStatus) << r.out;
     for (const std::string& e : expected)
       EXPECT_NE(r.out.find(e), std::string::npos) << "missing: " << e << "\n" << r.out;
@@ -106,14 +92,8 @@ namespace {
 
 /// What `kerf ARGS FILE` writes to standard output.
 std::string kerfOutput(const std::string& args, const fs::path& file) {
-  const std::string command = "'" + std::string(KERF_PROGRAM) + "' " + args + " '" + file.string() + "' 2>/dev/null";
-  std::string out;
-  if (FILE* p = popen(command.c_str(), "r")) {
-    char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-    pclose(p);
-  }
-  return out;
+  return kerf::test::runCommand("'" + std::string(KERF_PROGRAM) + "' " + args + " '" + file.string() + "' 2>/dev/null")
+      .out;
 }
 
 /// The three-pass die's structure as JSON and SARIF carry it (docs/passes.md).

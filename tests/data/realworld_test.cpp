@@ -69,14 +69,7 @@ std::string testName(const std::string& file) {
 }
 
 std::string runKerf(const std::string& args) {
-  const std::string command = "'" + std::string(KERF_PROGRAM) + "' " + args + " 2>/dev/null";
-  std::string out;
-  if (FILE* p = popen(command.c_str(), "r")) {
-    char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-    pclose(p);
-  }
-  return out;
+  return kerf::test::runCommand("'" + std::string(KERF_PROGRAM) + "' " + args + " 2>/dev/null").out;
 }
 
 class RealworldCheck : public testing::Test {

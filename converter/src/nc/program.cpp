@@ -281,17 +281,7 @@ class LineParser {
         continue;
       }
       if (!isLetter(c)) {
-        if (c == ')') {
-          error(block, Code::UnexpectedCharacter, i, 1, "')' without an opening '('");
-        } else if (isDigit(c) || c == '.' || c == '-' || c == '+') {
-          const NumberScan n = scanNumber(text_, i, end);
-          const std::size_t len = std::max<std::size_t>(1, n.end - i);
-          error(block, Code::UnexpectedCharacter, i, len,
-                "number without a letter: every value needs an address letter",
-                "write it as a word, e.g. X" + std::string(text_.substr(i, len)));
-        } else {
-          error(block, Code::UnexpectedCharacter, i, 1, "unexpected " + describeChar(c) + " in a block");
-        }
+        strayCharacter(block, i, end);
         break;
       }
       if (isLowerLetter(c)) block.lowerCase = true;
@@ -308,6 +298,21 @@ class LineParser {
     if (!block.hasError) assignSides(block);
     finish(block, blockEnd);
     return next;
+  }
+
+  /// What stands at text_[i] where a word's letter belongs: reported (K0106).
+  void strayCharacter(Block& block, std::size_t i, std::size_t end) {
+    const char c = text_[i];
+    if (c == ')') {
+      error(block, Code::UnexpectedCharacter, i, 1, "')' without an opening '('");
+    } else if (isDigit(c) || c == '.' || c == '-' || c == '+') {
+      const NumberScan n = scanNumber(text_, i, end);
+      const std::size_t len = std::max<std::size_t>(1, n.end - i);
+      error(block, Code::UnexpectedCharacter, i, len, "number without a letter: every value needs an address letter",
+            "write it as a word, e.g. X" + std::string(text_.substr(i, len)));
+    } else {
+      error(block, Code::UnexpectedCharacter, i, 1, "unexpected " + describeChar(c) + " in a block");
+    }
   }
 
   /// Can the block being read still be plain (Block::plain), from what it has shown so far?

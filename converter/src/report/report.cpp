@@ -267,6 +267,85 @@ json segmentJson(const geometry::Segment& s) {
   return e;
 }
 
+/// A drawing's reading, contours and (with --offset and --side) their wire paths.
+json drawingJson(const DrawingResult& drawing, const std::vector<ContourWire>* wires) {
+  const Drawing& d = drawing.drawing;
+  json dj;
+  dj["version"] = d.version;
+  dj["binary"] = d.binary;
+  dj["ins_units"] = d.insUnits;
+  dj["unit_to_mm"] = d.unitToMm;
+  dj["entities"] = d.entities;
+  if (d.curve) {
+    json cj;
+    cj["source"] = d.curve->points ? "points" : "expression";
+    cj["tolerance_mm"] = d.curve->tolerance;
+    cj["t"] = {d.curve->t0, d.curve->t1};
+    cj["max_error_mm"] = d.curve->maxError;
+    json spans = json::array();
+    for (const geometry::BiarcSpan& sp : d.curve->spans)
+      spans.push_back({{"t0", sp.t0}, {"t1", sp.t1}, {"error_mm", sp.error}, {"arcs", sp.count}});
+    cj["spans"] = std::move(spans);
+    dj["curve"] = std::move(cj);
+  }
+  dj["skipped"] = d.skipped;
+  dj["elements"] = d.elements.size();
+  json contours = json::array();
+  for (const geometry::Chain& c : drawing.contours) {
+    json cj;
+    cj["elements"] = c.elements.size();
+    cj["closed"] = c.closed;
+    cj["gap"] = c.gap;
+    double length = 0.0;
+    for (const geometry::Segment& seg : c.path) length += seg.length();
+    cj["length"] = length;
+    cj["area"] = c.closed ? std::abs(geometry::signedArea(c.path)) : 0.0;
+    cj["start"] = json::array({c.path.front().start.x(), c.path.front().start.y()});
+    const std::size_t index = contours.size();
+    if (wires && index < wires->size() && c.closed) {
+      json path = json::array();
+      for (const geometry::Segment& seg : c.path) path.push_back(segmentJson(seg));
+      cj["path"] = std::move(path);
+      const ContourWire& w = (*wires)[index];
+      json wj;
+      wj["offset"] = w.distance;
+      wj["refused"] = w.refused;
+      wj["degenerate"] = w.degenerate;
+      json loops = json::array();
+      double wireLength = 0.0, wireArea = 0.0;
+      for (const auto& loop : w.loops) {
+        json lj = json::array();
+        std::vector<geometry::Segment> segs;
+        for (const geometry::WirePiece& p : loop) {
+          json pj = segmentJson(p.segment);
+          pj["element"] = p.element;
+          pj["corner"] = p.corner;
+          lj.push_back(std::move(pj));
+          segs.push_back(p.segment);
+          wireLength += p.segment.length();
+        }
+        wireArea += geometry::signedArea(segs);
+        loops.push_back(std::move(lj));
+      }
+      wj["loops"] = std::move(loops);
+      wj["length"] = wireLength;
+      wj["signed_area"] = wireArea;
+      json lost = json::array();
+      for (const geometry::LostRun& r : w.lost)
+        lost.push_back({{"first", r.first},
+                        {"count", r.count},
+                        {"uncut", r.uncut},
+                        {"where", vec(r.where)},
+                        {"fillet", r.fillet}});
+      wj["lost"] = std::move(lost);
+      cj["wire"] = std::move(wj);
+    }
+    contours.push_back(std::move(cj));
+  }
+  dj["contours"] = std::move(contours);
+  return dj;
+}
+
 }  // namespace
 
 std::string checkReportJson(const std::string& file, const Summary& s, const Diagnostics& diags,
@@ -298,83 +377,7 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
   j["diagnostics"] = std::move(list);
   json sum;
   sum["format"] = inputFormatName(s.format);
-  if (drawing) {
-    const Drawing& d = drawing->drawing;
-    json dj;
-    dj["version"] = d.version;
-    dj["binary"] = d.binary;
-    dj["ins_units"] = d.insUnits;
-    dj["unit_to_mm"] = d.unitToMm;
-    dj["entities"] = d.entities;
-    if (d.curve) {
-      json cj;
-      cj["source"] = d.curve->points ? "points" : "expression";
-      cj["tolerance_mm"] = d.curve->tolerance;
-      cj["t"] = {d.curve->t0, d.curve->t1};
-      cj["max_error_mm"] = d.curve->maxError;
-      json spans = json::array();
-      for (const geometry::BiarcSpan& sp : d.curve->spans)
-        spans.push_back({{"t0", sp.t0}, {"t1", sp.t1}, {"error_mm", sp.error}, {"arcs", sp.count}});
-      cj["spans"] = std::move(spans);
-      dj["curve"] = std::move(cj);
-    }
-    dj["skipped"] = d.skipped;
-    dj["elements"] = d.elements.size();
-    json contours = json::array();
-    for (const geometry::Chain& c : drawing->contours) {
-      json cj;
-      cj["elements"] = c.elements.size();
-      cj["closed"] = c.closed;
-      cj["gap"] = c.gap;
-      double length = 0.0;
-      for (const geometry::Segment& seg : c.path) length += seg.length();
-      cj["length"] = length;
-      cj["area"] = c.closed ? std::abs(geometry::signedArea(c.path)) : 0.0;
-      cj["start"] = json::array({c.path.front().start.x(), c.path.front().start.y()});
-      const std::size_t index = contours.size();
-      if (wires && index < wires->size() && c.closed) {
-        json path = json::array();
-        for (const geometry::Segment& seg : c.path) path.push_back(segmentJson(seg));
-        cj["path"] = std::move(path);
-        const ContourWire& w = (*wires)[index];
-        json wj;
-        wj["offset"] = w.distance;
-        wj["refused"] = w.refused;
-        wj["degenerate"] = w.degenerate;
-        json loops = json::array();
-        double wireLength = 0.0, wireArea = 0.0;
-        for (const auto& loop : w.loops) {
-          json lj = json::array();
-          std::vector<geometry::Segment> segs;
-          for (const geometry::WirePiece& p : loop) {
-            json pj = segmentJson(p.segment);
-            pj["element"] = p.element;
-            pj["corner"] = p.corner;
-            lj.push_back(std::move(pj));
-            segs.push_back(p.segment);
-            wireLength += p.segment.length();
-          }
-          wireArea += geometry::signedArea(segs);
-          loops.push_back(std::move(lj));
-        }
-        wj["loops"] = std::move(loops);
-        wj["length"] = wireLength;
-        wj["signed_area"] = wireArea;
-        json lost = json::array();
-        for (const geometry::LostRun& r : w.lost)
-          lost.push_back({{"first", r.first},
-                          {"count", r.count},
-                          {"uncut", r.uncut},
-                          {"where", vec(r.where)},
-                          {"fillet", r.fillet}});
-        wj["lost"] = std::move(lost);
-        cj["wire"] = std::move(wj);
-      }
-      contours.push_back(std::move(cj));
-    }
-    dj["contours"] = std::move(contours);
-    j["drawing"] = std::move(dj);
-  }
+  if (drawing) j["drawing"] = drawingJson(*drawing, wires);
   sum["machine"] = s.reading.machine;
   sum["integer_unit"] = integerUnitName(s.reading.integerUnit);
   sum["arc_centre"] = arcCentreName(s.reading.arcCentre);

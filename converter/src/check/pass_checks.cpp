@@ -1,7 +1,7 @@
 // The checks between the passes over one contour (pass_checks.h, docs/passes.md). Sides come from
-// G41/G42 and the direction of the programmed contour (keptSide); offsets from the program's
-// table or --offset; stops from Toolpath::stops. Findings sit on the lower plane (z of the lower
-// guide for a taper program).
+// G41/G42 and the direction of the programmed contour (keptSide); offsets as the interpreter
+// resolved them (the program's table, --offsets, the profile, --offset); stops from
+// Toolpath::stops. Findings sit on the lower plane (z of the lower guide for a taper program).
 #include "kerf/converter/check/pass_checks.h"
 #include "finding.h"
 

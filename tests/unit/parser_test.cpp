@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -570,4 +571,133 @@ TEST(parser_test, plain_blocks_read_again_as_the_parse_read_them) {
     }
   }
   EXPECT_GT(checked, 1000u) << "too few plain blocks to hold the reader to the parse";
+}
+
+// A word's value is the double nearest its decimal: the parser's short conversion (whole digits
+// over a power of ten) and std::from_chars agree on numbers of every length, point position and
+// sign, up to 18 digits before the point and 25 after.
+TEST(parser_test, numbers_convert_as_from_chars_converts_them) {
+  std::mt19937_64 rng(2026);
+  std::string text;
+  std::vector<std::string> numbers;
+  for (int k = 0; k < 20000; ++k) {
+    const int before = static_cast<int>(rng() % 10);  // K0105 refuses 10 and more
+    const int after = static_cast<int>(rng() % 26);
+    std::string n;
+    for (int d = 0; d < before; ++d) n += static_cast<char>('0' + rng() % 10);
+    if (after > 0 || rng() % 2 == 0) n += '.';
+    for (int d = 0; d < after; ++d) n += static_cast<char>('0' + (rng() % 4 == 0 ? 9 : rng() % 10));
+    if (n.find_first_of("0123456789") == std::string::npos) n += '5';
+    numbers.push_back(n);
+    text += (rng() % 2 ? "G01 X-" : "G01 X") + n + " M0\n";  // not plain: the parse converts
+    text += (rng() % 2 ? "Y-" : "Y") + n + "\n";             // plain: WordReader converts
+  }
+  Diagnostics d;
+  const SourceFile src("numbers.nc", text);
+  const Program p = parse(src, d);
+  ASSERT_FALSE(d.hasErrors()) << d.all().front().message;
+  const std::vector<Word> words = allWords(p);
+  std::size_t compared = 0;
+  for (const Word& w : words) {
+    if (w.letter != 'X' && w.letter != 'Y') continue;
+    const std::string_view written = src.text().substr(w.offset + 1, w.length - 1);
+    const bool negative = written.front() == '-';
+    std::string digits(negative ? written.substr(1) : written);
+    if (digits.back() == '.') digits.pop_back();
+    double expected = 0.0;
+    std::from_chars(digits.data(), digits.data() + digits.size(), expected, std::chars_format::fixed);
+    if (negative) expected = -expected;
+    ASSERT_EQ(w.value, expected) << written;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 2 * numbers.size());
+}
+
+namespace {
+
+/// The text with " (c)" at the end of every line: a comment the parser's short road for plain
+/// blocks does not take, so every block goes through the word loop.
+std::string withCommentOnEveryLine(const std::string& text) {
+  std::string out;
+  std::size_t from = 0;
+  while (from < text.size()) {
+    const std::size_t nl = text.find('\n', from);
+    const std::size_t to = nl == std::string::npos ? text.size() : nl;
+    out += text.substr(from, to - from) + " (c)\n";
+    from = to + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+// The short road for plain blocks and the word loop read a block the same: the same blocks, words,
+// evidence and diagnostics, over random near-plain lines (letters in and out of the plain set,
+// lower case, signs, points, exponents, commas, repeated words, a second motion word, ';').
+TEST(parser_test, the_short_road_for_plain_blocks_reads_as_the_word_loop) {
+  const std::string pieces[] = {"G01", "G1",   "G02", "G3", "G4",  "G0",   "G-1", "G1.",  "X",   "Y",
+                                "I",   "J",    "R",   "F",  "U",   "x",    "M",   "1",    "-2.", "+.5",
+                                "12",  "0.25", ".",   "e3", ",5",  "9999", "1e",  " ",    " ",   " ",
+                                ";",   "G",    "-",   "Z",  "X1.", "Y-3",  "I.5", "J0.0", "R-2", "F100"};
+  for (const bool semicolonEndsBlock : {false, true}) {
+    std::mt19937 rng(semicolonEndsBlock ? 7 : 8);
+    std::string text;
+    for (int line = 0; line < 20000; ++line) {
+      const int n = 1 + static_cast<int>(rng() % 8);
+      for (int k = 0; k < n; ++k) text += pieces[rng() % std::size(pieces)];
+      text += '\n';
+    }
+    ParseOptions options;
+    options.semicolonEndsBlock = semicolonEndsBlock;
+    const SourceFile fast("fast.nc", text);
+    const SourceFile loop("loop.nc", withCommentOnEveryLine(text));
+    Diagnostics fd, ld;
+    const Program fp = parseProgram(fast, fd, options);
+    const Program lp = parseProgram(loop, ld, options);
+    // The comment adds a block of its own after a ';' that ends blocks, and lengthens the last
+    // block of a line: compare the blocks with words.
+    auto withWords = [](const Program& p) {
+      std::vector<Block> out;
+      for (const Block& b : p.blocks)
+        if (b.wordCount > 0 || b.hasError) out.push_back(b);
+      return out;
+    };
+    const std::vector<Block> fb = withWords(fp), lb = withWords(lp);
+    ASSERT_EQ(fb.size(), lb.size());
+    WordReader fr(fp), lr(lp);
+    std::size_t plain = 0;
+    for (std::size_t k = 0; k < fb.size(); ++k) {
+      const Block &a = fb[k], &b = lb[k];
+      const std::uint32_t aLine = fast.lineRange(a.line).first, bLine = loop.lineRange(b.line).first;
+      ASSERT_EQ(a.line, b.line);
+      EXPECT_EQ(a.offset - aLine, b.offset - bLine) << "line " << a.line;
+      EXPECT_EQ(a.plain, b.plain) << "line " << a.line;
+      EXPECT_EQ(a.hasError, b.hasError) << "line " << a.line;
+      EXPECT_EQ(a.wordCount, b.wordCount) << "line " << a.line;
+      EXPECT_EQ(a.upperFrom, b.upperFrom) << "line " << a.line;
+      const std::string_view aText = fp.textOf(a), bText = lp.textOf(b);
+      EXPECT_EQ(aText, bText.substr(0, aText.size())) << "line " << a.line;
+      plain += a.plain;
+      const auto aw = fr.words(a);
+      const std::vector<Word> awCopy(aw.begin(), aw.end());
+      const auto bw = lr.words(b);
+      ASSERT_EQ(awCopy.size(), bw.size()) << "line " << a.line;
+      for (std::size_t w = 0; w < bw.size(); ++w) {
+        EXPECT_EQ(awCopy[w].letter, bw[w].letter) << "line " << a.line;
+        EXPECT_EQ(awCopy[w].value, bw[w].value) << "line " << a.line;
+        EXPECT_EQ(awCopy[w].offset - aLine, bw[w].offset - bLine) << "line " << a.line;
+      }
+    }
+    EXPECT_GT(plain, 1000u);
+    EXPECT_LT(plain, fb.size() - 1000);
+    EXPECT_EQ(fp.anyDecimalPoint, lp.anyDecimalPoint);
+    EXPECT_EQ(fp.integerLengthWords, lp.integerLengthWords);
+    EXPECT_EQ(fp.largestInteger, lp.largestInteger);
+    EXPECT_EQ(fp.largestIntegerWord.letter, lp.largestIntegerWord.letter);
+    EXPECT_EQ(fp.largestIntegerWord.value, lp.largestIntegerWord.value);
+    EXPECT_EQ(fp.largestIntegerWord.length, lp.largestIntegerWord.length);
+    // The codes (a message may name what it read next: the end of the line, or the comment).
+    ASSERT_EQ(fd.all().size(), ld.all().size());
+    for (std::size_t k = 0; k < fd.all().size(); ++k) EXPECT_EQ(fd.all()[k].code, ld.all()[k].code);
+  }
 }

@@ -66,9 +66,17 @@ struct NumberScan {
   double value = 0.0;             ///< 0 when the scan was asked not to convert
 };
 
+/// 10^k for k = 0..19: each is a double exactly (10^k = 2^k 5^k and 5^19 < 2^53).
+constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,
+                                        1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19};
+
 /// [sign] digits [. digits] in text[pos, limit) — no exponent, no spaces inside. Leading zeros are
-/// not significant; more than 18 significant digits before the point are refused. The value is
-/// std::from_chars's (correctly rounded, whatever the number of digits), unless `convert` is false.
+/// not significant; more than 18 significant digits before the point are refused. The value is the
+/// correctly rounded double nearest the decimal (what std::from_chars gives), unless `convert` is
+/// false. A number of at most 19 digits whose digits, read as a whole number m, stay at most 2^53
+/// is m / 10^k (k digits after the point): both operands are exact doubles and IEEE division rounds correctly, so the
+/// quotient is the correctly rounded value (Clinger, "How to read floating point numbers
+/// accurately", PLDI 1990: the fast path). Longer numbers go to std::from_chars.
 NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit, bool convert = true) {
   NumberScan s;
   std::size_t i = pos;
@@ -77,14 +85,17 @@ NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit,
   const std::size_t first = i;
   while (i < limit && text[i] == '0') ++i;  // leading zeros
   const std::size_t significant = i;
-  while (i < limit && isDigit(text[i])) ++i;
+  std::uint64_t whole = 0;  // the digits read as a whole number; wraps past 19 digits (then unused)
+  for (; i < limit && isDigit(text[i]); ++i) whole = whole * 10 + static_cast<std::uint64_t>(text[i] - '0');
   s.integerDigits = i - significant;
   const bool tooMany = s.integerDigits > static_cast<std::size_t>(kMaxDigits);
   bool anyDigit = i > first;
+  std::size_t fractionDigits = 0;
   if (i < limit && text[i] == '.') {
     s.hasPoint = true;
     const std::size_t point = ++i;
-    while (i < limit && isDigit(text[i])) ++i;
+    for (; i < limit && isDigit(text[i]); ++i) whole = whole * 10 + static_cast<std::uint64_t>(text[i] - '0');
+    fractionDigits = i - point;
     anyDigit = anyDigit || i > point;
   }
   s.end = i;
@@ -95,11 +106,15 @@ NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit,
   }
   s.status = NumberScan::Ok;
   if (!convert) return s;
-  // from_chars takes no '+' and no lone '.' after the digits in every library: the digits alone.
-  std::size_t digitsEnd = i;
-  if (s.hasPoint && text[digitsEnd - 1] == '.') --digitsEnd;
   double v = 0.0;
-  if (digitsEnd > first) std::from_chars(text.data() + first, text.data() + digitsEnd, v, std::chars_format::fixed);
+  if (s.integerDigits + fractionDigits <= 19 && whole <= (std::uint64_t{1} << 53)) {
+    v = static_cast<double>(whole) / kExactPowersOfTen[fractionDigits];
+  } else {
+    // from_chars takes no '+' and no lone '.' after the digits in every library: the digits alone.
+    std::size_t digitsEnd = i;
+    if (s.hasPoint && text[digitsEnd - 1] == '.') --digitsEnd;
+    std::from_chars(text.data() + first, text.data() + digitsEnd, v, std::chars_format::fixed);
+  }
   s.value = negative ? -v : v;
   return s;
 }
@@ -209,6 +224,7 @@ class LineParser {
     while (i < end && isBlank(text_[i])) ++i;
     if (i >= end) return end;
     if (trySetting(i, end, line)) return end;
+    if (const std::size_t next = tryPlainBlock(i, end, line); next != i) return next;
 
     Block block;
     block.firstWord = static_cast<std::uint32_t>(program_.words.size());
@@ -297,6 +313,87 @@ class LineParser {
     if (!isPlainCandidate(block)) convertDeferred();  // before assignSides reorders the words
     if (!block.hasError) assignSides(block);
     finish(block, blockEnd);
+    return next;
+  }
+
+  /// The short road for the common block (Block::plain): words of an upper-case X Y I J R F, each
+  /// once, or G00-G03 written as digits, each letter followed at once by [sign] digits [. digits],
+  /// blanks between the words, up to the end of the line or a ';'. What it accepts the word loop
+  /// below would read as the same plain block, with the same integer-unit evidence and no
+  /// diagnostic (parser_test holds the two roads equal); it keeps no word and converts a number
+  /// only when it is an integer length (the evidence needs its value). Anything else — a comment, a
+  /// blank after a letter, lower case, a second motion word after a coordinate, anything an error —
+  /// returns i, and the word loop reads the block.
+  std::size_t tryPlainBlock(const std::size_t begin, const std::size_t end, const std::uint32_t line) {
+    constexpr std::uint16_t kMostWords = 64;  // more: the word loop (a plain block has at most 7 letters and its G's)
+    std::uint32_t letters = 0;                // X Y I J R F seen (each may stand once)
+    std::uint16_t count = 0;
+    bool sawMotion = false, sawCoordinate = false, anyPoint = false;
+    std::uint32_t integers = 0;
+    Word largest;  // the block's largest integer length word, if any (largest.length > 0)
+    std::size_t i = begin, blockEnd = end, next = end;
+    while (i < end) {
+      const char c = text_[i];
+      if (isBlank(c)) {
+        ++i;
+        continue;
+      }
+      if (c == ';') {
+        blockEnd = i;
+        if (options_.semicolonEndsBlock && startsBlock(i + 1, end)) next = i + 1;
+        break;
+      }
+      const bool motion = c == 'G';
+      if ((!motion && !isPlainLetter(c)) || ++count > kMostWords) return begin;
+      if (motion && i + 1 < end && (text_[i + 1] == '+' || text_[i + 1] == '-')) return begin;
+      const NumberScan n = scanNumber(text_, i + 1, end, false);
+      if (n.status != NumberScan::Ok || n.integerDigits >= kLargestDigits) return begin;
+      if (n.end < end && !isBlank(text_[n.end]) && text_[n.end] != ';' && text_[n.end] != 'G' &&
+          !isPlainLetter(text_[n.end]))
+        return begin;  // what follows makes it no number, or is no plain word
+      if (motion) {
+        // G00-G03: at most one significant digit, 0-3, no point; a second after a coordinate
+        // opens an upper side (noteForSides).
+        if (n.hasPoint || n.integerDigits > 1 || text_[n.end - 1] > '3' || (sawCoordinate && sawMotion)) return begin;
+        sawMotion = true;
+      } else {
+        const std::uint32_t bit = 1u << (c - 'A');
+        if (letters & bit) return begin;  // a repeated word: the word loop reports it
+        letters |= bit;
+        if (c != 'F') {  // a length letter (isLengthLetter)
+          sawCoordinate = true;
+          if (n.hasPoint) {
+            anyPoint = true;
+          } else {
+            ++integers;
+            const double v = scanNumber(text_, i + 1, end).value;
+            if (std::abs(v) > std::abs(largest.value) || largest.length == 0) {
+              largest.letter = c;
+              largest.offset = static_cast<std::uint32_t>(i);
+              largest.length = static_cast<std::uint16_t>(n.end - i);
+              largest.value = v;
+            }
+          }
+        }
+      }
+      i = n.end;
+    }
+    if (count == 0) return begin;
+    program_.anyDecimalPoint = program_.anyDecimalPoint || anyPoint;
+    program_.integerLengthWords += integers;
+    if (largest.length > 0 && std::abs(largest.value) > program_.largestInteger) {
+      program_.largestInteger = std::abs(largest.value);
+      program_.largestIntegerWord = largest;
+    }
+    Block block;
+    block.offset = static_cast<std::uint32_t>(begin);
+    block.line = line;
+    std::size_t last = blockEnd;
+    while (last > begin && isBlank(text_[last - 1])) --last;
+    block.length = static_cast<std::uint32_t>(last - begin);
+    block.wordCount = block.upperFrom = count;
+    block.plain = true;
+    program_.blocks.push_back(block);
     return next;
   }
 

@@ -19,3 +19,12 @@ legacy_taper_codes = no
 max_taper = 30
 uv_range = none
 thickness = none
+# The cutting-time estimate (docs/passes.md, "Cutting time"). Every number here is an assumption
+# for brass wire of 0.25 mm in tool steel, not a machine's figure: set your machine's own.
+# rough_rate: mm² of cut face a minute where the wire cuts full material (a rough cut, a cut-off);
+# a rough cut's speed is this over the workpiece thickness. skim_speed: mm/min along a skim.
+rough_rate = 100
+skim_speed = 10
+rapid_speed = 1000
+thread_time = 30
+feed = machine

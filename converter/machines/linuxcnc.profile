@@ -15,3 +15,7 @@ legacy_taper_codes = no
 max_taper = 60
 uv_range = none
 thickness = none
+# A hot-wire cutter moves at the F the program gives (mm/min): the time estimate uses it. It
+# threads no wire.
+feed = speed
+thread_time = 0

@@ -6,6 +6,7 @@
 #include "kerf/converter/interpret/analysis.h"
 #include "kerf/converter/interpret/mill_turn.h"
 #include "kerf/converter/nc/number_format.h"
+#include "kerf/converter/structure/cutting_time.h"
 
 #include <cstdio>
 #include <optional>
@@ -77,6 +78,7 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   if (options.check.sectionBudget) out.checkOptions.sectionBudget = *options.check.sectionBudget;
   if (options.check.surfaceLevels) out.checkOptions.surfaceLevels = *options.check.surfaceLevels;
   Structure structure = findStructure(out.toolpath, out.checkOptions.tolerance);
+  estimateTime(out.toolpath, speedModel(out.machine, out.toolpath, options.check.speed), structure);
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
     checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures, &structure);

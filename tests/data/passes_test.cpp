@@ -124,6 +124,38 @@ TEST(passes_test, json_and_sarif_carry_the_structure) {
   expectDieStructure(sarif.at("runs").at(0).at("artifacts").at(0).at("properties").at("structure"));
 }
 
+// docs/passes.md's worked example: the three-pass die at 20 mm, by hand from the program's
+// coordinates. Each pass runs round a square of side 20 - 2 x offset and in and out along half
+// of it: 4 s + s = 5 s mm. The rough cut at 100 mm²/min over 20 mm = 5 mm/min, the skims at
+// 10 mm/min (the generic profile's model), one threading of 30 s, no rapid.
+TEST(passes_test, the_time_estimate_is_the_hand_calculation) {
+  const fs::path die = fs::path(KERF_PASSES_DIR) / "die_three_passes.nc";
+  const double side[] = {20 - 2 * 0.18, 20 - 2 * 0.11, 20 - 2 * 0.085};
+  const double minutes[] = {5 * side[0] / (100.0 / 20.0), 5 * side[1] / 10.0, 5 * side[2] / 10.0};
+  const double total = minutes[0] + minutes[1] + minutes[2] + 30.0 / 60.0;  // 39.945
+  const nlohmann::json st =
+      nlohmann::json::parse(kerfOutput("check --json --thickness 20", die)).at("summary").at("structure");
+  const nlohmann::json& passes = st.at("contours").at(0).at("passes");
+  ASSERT_EQ(passes.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(passes[k]["minutes"].get<double>(), minutes[k], 1e-9) << k;
+  EXPECT_NEAR(st["time"]["total_min"].get<double>(), total, 1e-9);
+  EXPECT_NEAR(total, 39.945, 1e-9);
+  EXPECT_TRUE(st["time"]["complete"].get<bool>());
+  EXPECT_NE(kerfOutput("check --thickness 20", die).find("time 39.9 min (cutting 39.4, rapids 0.00, threading 0.50)"),
+            std::string::npos);
+
+  // --speed: every cut at that speed, whatever the thickness.
+  const nlohmann::json fast =
+      nlohmann::json::parse(kerfOutput("check --json --speed 4", die)).at("summary").at("structure");
+  EXPECT_NEAR(fast["time"]["total_min"].get<double>(), 5 * (side[0] + side[1] + side[2]) / 4.0 + 0.5, 1e-9);
+
+  // No thickness: the rough cut has no time, and the total says it is a lower bound.
+  const nlohmann::json open = nlohmann::json::parse(kerfOutput("check --json", die)).at("summary").at("structure");
+  EXPECT_TRUE(open["contours"][0]["passes"][0]["minutes"].is_null());
+  EXPECT_FALSE(open["time"]["complete"].get<bool>());
+  EXPECT_NEAR(open["time"]["total_min"].get<double>(), minutes[1] + minutes[2] + 0.5, 1e-9);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

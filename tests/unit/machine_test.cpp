@@ -435,3 +435,33 @@ TEST(machine_test, a_profile_gives_offset_registers) {
   EXPECT_EQ(p->offsets.at("H001"), 0.18);
   EXPECT_EQ(p->offsets.at("D003"), 0.2);
 }
+
+// The speed model of the time estimate (docs/passes.md): the generic profile's assumptions, a
+// profile's own numbers, LinuxCNC's F as the speed, and wrong values refused at their line.
+TEST(machine_test, a_profile_gives_the_speed_model) {
+  const MachineProfile* generic = findBuiltinMachine("generic");
+  ASSERT_NE(generic, nullptr);
+  EXPECT_EQ(generic->roughRate, 100.0);
+  EXPECT_EQ(generic->skimSpeed, 10.0);
+  EXPECT_EQ(generic->rapidSpeed, 1000.0);
+  EXPECT_EQ(generic->threadSeconds, 30.0);
+  EXPECT_FALSE(generic->feedIsSpeed);
+  ASSERT_NE(findBuiltinMachine("linuxcnc"), nullptr);
+  EXPECT_TRUE(findBuiltinMachine("linuxcnc")->feedIsSpeed);
+  SourceFile good("m.profile",
+                  "name = shop\nrough_rate = 250\nskim_speed = 12.5\nrapid_speed = 3000\n"
+                  "thread_time = 0\nfeed = speed\n");
+  Diagnostics g;
+  const auto p = parseMachineProfile(good, g);
+  ASSERT_TRUE(p.has_value()) << kerf::test::dump(g);
+  EXPECT_EQ(p->roughRate, 250.0);
+  EXPECT_EQ(p->skimSpeed, 12.5);
+  EXPECT_EQ(p->rapidSpeed, 3000.0);
+  EXPECT_EQ(p->threadSeconds, 0.0);
+  EXPECT_TRUE(p->feedIsSpeed);
+  SourceFile bad("m.profile", "name = shop\nrough_rate = 0\nskim_speed = fast\nthread_time = -1\nfeed = yes\n");
+  Diagnostics b;
+  EXPECT_FALSE(parseMachineProfile(bad, b).has_value());
+  ASSERT_EQ(b.errorCount(), 4u) << kerf::test::dump(b);
+  EXPECT_EQ(bad.locate(b.all()[0].span.offset).line, 2u);
+}

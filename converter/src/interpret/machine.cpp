@@ -274,6 +274,19 @@ bool readReadingKey(const ProfileLine& l, MachineProfile& p) {
       p.maxTaperDegrees = *v;
     else
       l.badValue("degrees from 0 to 89");
+  } else if (key == "rough_rate" || key == "skim_speed" || key == "rapid_speed") {
+    double& slot = key == "rough_rate" ? p.roughRate : key == "skim_speed" ? p.skimSpeed : p.rapidSpeed;
+    if (auto v = number(value); v && *v > 0 && *v <= 1e6)
+      slot = *v;
+    else
+      l.badValue(key == "rough_rate" ? "mm²/min above 0" : "mm/min above 0");
+  } else if (key == "thread_time") {
+    if (auto v = number(value); v && *v >= 0 && *v <= 86400)
+      p.threadSeconds = *v;
+    else
+      l.badValue("seconds from 0 to 86400");
+  } else if (key == "feed") {
+    l.either(p.feedIsSpeed, "machine", "speed");
   } else if (key == "uv_range" || key == "thickness") {
     std::optional<double>& slot = key == "uv_range" ? p.uvRange : p.thickness;
     if (value == "none")
@@ -360,7 +373,8 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
     else if (!readReadingKey(l, p) && !readWritingKey(l, p))
       l.fail(l.lead, l.eq - l.lead, "unknown key '" + l.key + "'",
              "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
-             "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, write_unit, line_end, "
+             "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, rough_rate, skim_speed, "
+             "rapid_speed, thread_time, feed, write_unit, line_end, "
              "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "
              "write_end, polar_x, polar_c, polar_frame, code <CODE>, offset <REGISTER>");
   }

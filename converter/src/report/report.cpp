@@ -58,12 +58,23 @@ json structureObject(const Structure& st) {
                  {"cut_off", p.cutOff},
                  {"gap_mm", p.gap},
                  {"length_mm", p.length},
-                 {"contour_length_mm", p.alongLength}};
+                 {"contour_length_mm", p.alongLength},
+                 {"minutes", p.minutes ? json(*p.minutes) : json(nullptr)},
+                 {"speed_mm_per_min", p.minutes ? json(p.speed) : json(nullptr)}};
       passes.push_back(std::move(pj));
     }
     contours.push_back({{"start_hole", vec(c.startHole)}, {"passes", std::move(passes)}});
   }
-  return {{"contours", std::move(contours)}};
+  const TimeEstimate& t = st.time;
+  json time = {{"total_min", t.total()},
+               {"cutting_min", t.cutting},
+               {"rapids_min", t.rapids},
+               {"threading_min", t.threading},
+               {"complete", t.missing.empty()},
+               {"passes_timed", t.passesTimed},
+               {"missing", t.missing.empty() ? json(nullptr) : json(t.missing)},
+               {"model", t.model}};
+  return {{"contours", std::move(contours)}, {"time", std::move(time)}};
 }
 
 /// JSON output's stated precision (docs/formats.md): lengths and angles to 10 decimals (0.1 nm,
@@ -190,6 +201,19 @@ std::string offsetText(const Pass& p) {
   return t + " (offset at the machine)";
 }
 
+/// Minutes as the report writes them: one decimal, two below ten minutes.
+std::string minutesText(double minutes) { return formatFixed(minutes, minutes < 10 ? 2 : 1); }
+
+/// The time estimate, one line: "time 36.67 min (cutting 36.17, rapids 0.00, threading 0.50) at ...".
+std::string timeText(const TimeEstimate& t) {
+  if (t.passesTimed == 0 && !t.missing.empty()) return "  time not estimated: " + t.missing + "\n";
+  std::string out = std::string("  time ") + (t.missing.empty() ? "" : "at least ") + minutesText(t.total()) +
+                    " min (cutting " + minutesText(t.cutting) + ", rapids " + minutesText(t.rapids) + ", threading " +
+                    minutesText(t.threading) + "): " + t.model + "\n";
+  if (!t.missing.empty()) out += "    the rough cuts have no time: " + t.missing + "\n";
+  return out;
+}
+
 /// The contours and their passes, one line each, for a program cut in several passes.
 std::string structureText(const Structure& st) {
   std::string out;
@@ -204,7 +228,7 @@ std::string structureText(const Structure& st) {
              (p.closes   ? std::string("closes")
               : p.cutOff ? std::string("cuts off the tab")
                          : "leaves a tab of " + mm(p.gap) + " mm") +
-             ", " + mm(p.length) + " mm\n";
+             ", " + mm(p.length) + " mm, " + (p.minutes ? minutesText(*p.minutes) + " min" : "no time") + "\n";
     }
   }
   return out;
@@ -248,6 +272,8 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
            mm(t.area) + " mm² in " + plural(t.patches, "patch") + "\n";
   }
   if (s.structure.multiPass()) out += structureText(s.structure);
+  if ((s.format == InputFormat::Iso || s.format == InputFormat::ThreeB) && s.cutMoves > 0)
+    out += timeText(s.structure.time);
   out += std::string("verdict: ") + (diags.hasErrors() ? "errors — do not cut" : "ok") + "\n";
   return out;
 }

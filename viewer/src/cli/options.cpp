@@ -146,6 +146,11 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
   cmd.add_option("--uv-range", o.checks.uvRange, "largest U/V travel from the lower guide, mm")
       ->check(kPositiveLength)
       ->group(checks);
+  cmd.add_option("--speed", o.checks.speed,
+                 "cutting speed of every cut for the time estimate, mm/min (default: the machine profile's speed "
+                 "model, docs/passes.md)")
+      ->check(CLI::Range(0.001, 100000.0))
+      ->group(checks);
   cmd.add_option("--max-diagnostics", o.checks.maxDiagnostics, "show at most this many diagnostics (default 50)")
       ->check(CLI::Range(1, 100000))
       ->group(checks);
@@ -281,6 +286,7 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
   if (o.reading.upperAxes) r.upperAxesUZ = *o.reading.upperAxes == "uz";
   out.check.maxTaperDegrees = o.checks.maxTaper;
   out.check.uvRange = o.checks.uvRange;
+  out.check.speed = o.checks.speed;
   return true;
 }
 

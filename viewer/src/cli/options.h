@@ -56,6 +56,7 @@ struct ReadingOptions {
 struct CheckOptions {
   std::optional<double> maxTaper;  ///< degrees
   std::optional<double> uvRange;   ///< mm
+  std::optional<double> speed;     ///< --speed, mm/min
   std::size_t maxDiagnostics = 50;
   std::vector<std::string> codeOptions;  ///< -W values as given: no-K0604, error=K0650, error
   bool quiet = false;                    ///< --quiet: errors only

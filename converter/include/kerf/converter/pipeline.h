@@ -67,6 +67,7 @@ struct CheckSettings {
   std::optional<double> uvRange;             ///< --uv-range, mm
   std::optional<std::size_t> sectionBudget;  ///< CheckOptions::sectionBudget (the fuzz target lowers it)
   std::optional<int> surfaceLevels;          ///< CheckOptions::surfaceLevels (the fuzz target lowers it)
+  std::optional<double> speed;               ///< --speed: mm/min of every cut, for the time estimate
 };
 
 struct PipelineOptions {

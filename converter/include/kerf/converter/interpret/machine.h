@@ -69,6 +69,13 @@ struct MachineProfile {
   double maxTaperDegrees = 30.0;         ///< the machine's largest wire slope
   std::optional<double> uvRange;         ///< largest |upper - lower| per axis, mm
   std::optional<double> thickness;       ///< default workpiece thickness, mm
+  // The speed model of the cutting-time estimate (docs/passes.md, "Cutting time"). The defaults
+  // are assumptions (see there), the generic profile's; a profile sets its machine's own.
+  double roughRate = 100.0;     ///< rough_rate: mm² of cut face a minute where the wire cuts full material
+  double skimSpeed = 10.0;      ///< skim_speed: mm/min along a skim
+  double rapidSpeed = 1000.0;   ///< rapid_speed: mm/min of a rapid
+  double threadSeconds = 30.0;  ///< thread_time: s to thread the wire in a start hole
+  bool feedIsSpeed = false;     ///< feed = speed: the program's F is the wire's speed, mm/min (LinuxCNC, hot wire)
   // Writing for this machine (`kerf convert --to iso --for NAME`, docs/machines.md).
   bool writeMicrometres = false;          ///< write_unit = um: integers in µm, no decimal point
   bool crlf = false;                      ///< line_end = crlf

@@ -35,6 +35,10 @@ struct Pass {
   geometry::Vec2 from{0, 0}, to{0, 0};  ///< where its programmed contour starts and ends, mm
   double alongLength = 0.0;             ///< mm of programmed contour
   std::uint32_t firstLine = 0, lastLine = 0;  ///< the source lines of its first and last moves
+  /// The cutting-time estimate (structure/cutting_time.h): minutes, and the mean speed it took
+  /// (mm/min); nothing when the model cannot tell (a rough cut of unknown thickness).
+  std::optional<double> minutes;
+  double speed = 0.0;
 };
 
 /// A start hole and the passes cut from it, in order.
@@ -46,8 +50,21 @@ struct Contour {
   std::vector<Pass> passes;
 };
 
+/// A program's cutting time, minutes (structure/cutting_time.h; docs/passes.md, "Cutting time").
+struct TimeEstimate {
+  double cutting = 0.0;         ///< the passes that have a time
+  double rapids = 0.0;          ///< the rapids, at the profile's rapid speed
+  double threading = 0.0;       ///< one threading of the wire a contour
+  std::size_t passesTimed = 0;  ///< the passes that have a time
+  /// Empty when every pass has a time; else why some have none (then the total is a lower bound).
+  std::string missing;
+  std::string model;  ///< the speeds taken and where they come from, one line
+  [[nodiscard]] double total() const { return cutting + rapids + threading; }
+};
+
 struct Structure {
   std::vector<Contour> contours;
+  TimeEstimate time;  ///< filled by estimateTime
   /// Some contour is cut in more than one pass (the checks then test each pass alone).
   [[nodiscard]] bool multiPass() const;
 };

@@ -1,0 +1,93 @@
+// The cutting-time estimate (docs/passes.md, "Cutting time").
+#include "kerf/converter/structure/cutting_time.h"
+
+#include "kerf/converter/nc/number_format.h"
+
+#include <string>
+
+namespace kerf::converter {
+namespace {
+
+/// mm/min as the report writes a speed: three decimals, trailing zeros dropped ("5", "6.667").
+std::string speedText(double v) {
+  std::string t = formatFixed(v, 3);
+  while (t.back() == '0') t.pop_back();
+  if (t.back() == '.') t.pop_back();
+  return t;
+}
+
+/// Minutes of one pass: its moves at their own F where the model takes F, else at `speed`
+/// (mm/min; nothing when it is unknown, 0).
+std::optional<double> passMinutes(const Toolpath& toolpath, const Pass& pass, const SpeedModel& model, double speed) {
+  double minutes = 0.0;
+  for (std::size_t m = pass.first; m < pass.end; ++m) {
+    const Move& move = toolpath.moves[m];
+    const double length = move.lower.length();
+    if (model.feedIsSpeed && move.feedIndex > 0 && toolpath.feeds[move.feedIndex - 1] > 0)
+      minutes += length / toolpath.feeds[move.feedIndex - 1];
+    else if (speed > 0)
+      minutes += length / speed;
+    else
+      return std::nullopt;
+  }
+  return minutes;
+}
+
+/// The model in one line: "rough 100 mm²/min over 20.000 mm (--thickness) = 5 mm/min, skims 10 mm/min,
+/// rapids 1000 mm/min, threading 30 s: the generic profile's speeds".
+std::string modelText(const SpeedModel& model, double roughSpeed) {
+  if (model.speed) return "every cut at " + speedText(*model.speed) + " mm/min (--speed)";
+  std::string rough = "rough " + speedText(model.roughRate) + " mm²/min";
+  if (model.thickness)
+    rough += " over " + formatFixed(*model.thickness, 3) + " mm = " + speedText(roughSpeed) + " mm/min";
+  return (model.feedIsSpeed ? std::string("F where the program gives it, else ") : std::string()) + rough + ", skims " +
+         speedText(model.skimSpeed) + " mm/min, rapids " + speedText(model.rapidSpeed) + " mm/min, threading " +
+         speedText(model.threadSeconds) + " s: the " + model.profile + " profile's speeds";
+}
+
+}  // namespace
+
+SpeedModel speedModel(const MachineProfile& machine, const Toolpath& toolpath, std::optional<double> speed) {
+  SpeedModel m;
+  m.roughRate = machine.roughRate;
+  m.skimSpeed = machine.skimSpeed;
+  m.rapidSpeed = machine.rapidSpeed;
+  m.threadSeconds = machine.threadSeconds;
+  m.feedIsSpeed = machine.feedIsSpeed;
+  m.speed = speed;
+  m.profile = machine.name;
+  if (toolpath.heights.known) {
+    m.thickness = toolpath.heights.planes.height();
+    m.thicknessSource = toolpath.heights.source;
+  }
+  return m;
+}
+
+void estimateTime(const Toolpath& toolpath, const SpeedModel& model, Structure& structure) {
+  TimeEstimate& t = structure.time;
+  t = {};
+  const double roughSpeed = model.speed ? *model.speed : model.thickness ? model.roughRate / *model.thickness : 0.0;
+  const double skimSpeed = model.speed ? *model.speed : model.skimSpeed;
+  bool roughUnknown = false;
+  for (Contour& c : structure.contours) {
+    for (std::size_t k = 0; k < c.passes.size(); ++k) {
+      Pass& p = c.passes[k];
+      const bool fullMaterial = k == 0 || p.cutOff;  // a skim cuts only what the pass before left
+      p.minutes = passMinutes(toolpath, p, model, fullMaterial ? roughSpeed : skimSpeed);
+      p.speed = p.minutes && *p.minutes > 0 ? p.length / *p.minutes : 0.0;
+      if (p.minutes) {
+        t.cutting += *p.minutes;
+        ++t.passesTimed;
+      } else {
+        roughUnknown = true;
+      }
+    }
+  }
+  for (const Move& m : toolpath.moves)
+    if (!m.isCut()) t.rapids += m.lower.length() / model.rapidSpeed;
+  t.threading = static_cast<double>(structure.contours.size()) * model.threadSeconds / 60.0;
+  if (roughUnknown) t.missing = "the workpiece thickness is unknown (give --thickness, or --speed)";
+  t.model = modelText(model, roughSpeed);
+}
+
+}  // namespace kerf::converter

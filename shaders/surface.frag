@@ -1,5 +1,6 @@
 #version 330 core
-// Two-sided headlight shading; optional colour ramp by slope; optional highlight of flagged moves.
+// Two-sided headlight shading; optional colour ramp by slope or colour by pass; optional highlight
+// of flagged moves.
 in vec3 vNormal;
 in float vSlope;
 flat in uint vFlags;
@@ -7,6 +8,8 @@ uniform vec3 uBaseColour;
 uniform int uColourBySlope;
 uniform vec2 uSlopeRange;  // degrees: the ramp's ends
 uniform int uHighlight;
+uniform int uColourByPass;
+uniform vec3 uPassColours[6];  // render::passColour(1..6), the rough cut first
 out vec4 fragColour;
 
 // Blue - cyan - green - yellow - red, the same stops as the legend (render/colour_ramp.h).
@@ -31,6 +34,9 @@ void main() {
     float span = max(uSlopeRange.y - uSlopeRange.x, 1e-6);
     base = ramp((vSlope - uSlopeRange.x) / span);
   }
+  // Bits 8-15 of the flags: the move's pass (0: none); the colours repeat after six passes.
+  uint pass = (vFlags >> 8u) & 255u;
+  if (uColourByPass != 0 && pass > 0u) base = uPassColours[int((pass - 1u) % 6u)];
   // Moves with findings: tinted red; under the slope colours (whose top is red) they keep their
   // colour and the others are greyed instead.
   bool flagged = (vFlags & 1u) != 0u;

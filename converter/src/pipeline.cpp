@@ -64,10 +64,10 @@ std::string centreEvidence(const ArcCentreTally& t, ArcCentreMode m) {
 namespace {
 
 /// The summary, when the caller asked for one.
-void summarizeInto(Pipeline& out, const PipelineOptions& options, Structure structure) {
+void summarizeInto(Pipeline& out, const PipelineOptions& options) {
   if (!options.summarize) return;
   out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
-  out.summary->structure = std::move(structure);
+  out.summary->structure = out.structure;
 }
 
 /// The checks, with the machine's limits unless the user gave others, then the summary (it reads
@@ -77,13 +77,13 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.checkOptions.uvRange = options.check.uvRange ? options.check.uvRange : out.machine.uvRange;
   if (options.check.sectionBudget) out.checkOptions.sectionBudget = *options.check.sectionBudget;
   if (options.check.surfaceLevels) out.checkOptions.surfaceLevels = *options.check.surfaceLevels;
-  Structure structure = findStructure(out.toolpath, out.checkOptions.tolerance);
-  estimateTime(out.toolpath, speedModel(out.machine, out.toolpath, options.check.speed), structure);
+  out.structure = findStructure(out.toolpath, out.checkOptions.tolerance);
+  estimateTime(out.toolpath, speedModel(out.machine, out.toolpath, options.check.speed), out.structure);
   if (out.toolpath.blocks > 0) {
     out.measures = measureSurface(out.toolpath);
-    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures, &structure);
+    checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures, &out.structure);
   }
-  summarizeInto(out, options, std::move(structure));
+  summarizeInto(out, options);
   out.diags.sortByPosition();
 }
 
@@ -184,7 +184,8 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
   }
   path.endedProperly = true;
   out.drawing = std::move(result);
-  summarizeInto(out, options, findStructure(path, out.checkOptions.tolerance));
+  out.structure = findStructure(path, out.checkOptions.tolerance);
+  summarizeInto(out, options);
 }
 
 void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::optional<SourceText> upper) {

@@ -16,6 +16,9 @@ kerf_snapshot_test(NAME taper_punch_top ARGS samples/taper_punch_2deg.nc ${s} --
 # Colour by slope, with its legend.
 kerf_snapshot_test(NAME taper_punch_slope ARGS samples/taper_punch_2deg.nc ${s} --color-by slope)
 kerf_snapshot_test(NAME circle_under_square_slope ARGS samples/circle_under_square.nc ${s} --color-by slope --view front)
+# Colour by pass, with its legend (below the title): a die and a punch, each with a tab and its cut-off.
+kerf_snapshot_test(NAME die_tab_cut_off_passes ARGS tests/passes/die_tab_cut_off.nc ${s} --color-by pass)
+kerf_snapshot_test(NAME punch_tab_cut_off_passes ARGS tests/passes/punch_tab_cut_off.nc ${s} --color-by pass)
 # Findings highlighted: a 2-axis crossing, and taper faults.
 kerf_snapshot_test(NAME path_crosses_highlight EXIT 1 ARGS tests/bad/path_crosses_itself.nc ${s} --highlight-findings --view top)
 kerf_snapshot_test(NAME too_steep_highlight EXIT 1 ARGS samples/bad/too_steep.nc ${s} --highlight-findings --color-by slope)

@@ -200,4 +200,13 @@ const char* directionName(int direction) {
   return direction > 0 ? "counter-clockwise" : direction < 0 ? "clockwise" : "neither";
 }
 
+std::vector<std::uint8_t> movePasses(const Structure& structure, std::size_t moves) {
+  std::vector<std::uint8_t> out(moves, 0);
+  for (const Contour& c : structure.contours)
+    for (std::size_t k = 0; k < c.passes.size(); ++k)
+      for (std::size_t m = c.passes[k].first; m < c.passes[k].end && m < moves; ++m)
+        out[m] = static_cast<std::uint8_t>(std::min<std::size_t>(k + 1, 255));
+  return out;
+}
+
 }  // namespace kerf::converter

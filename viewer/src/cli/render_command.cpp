@@ -16,8 +16,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& a) {
       ->check(CLI::IsMember({"iso", "top", "front", "side"}))
       ->group(g);
   cmd->add_option("--size", a.size, "WIDTHxHEIGHT in pixels (default 800x600)")->group(g);
-  cmd->add_option("--color-by,--colour-by", a.colourBy, "colour the surface by the wire slope")
-      ->check(CLI::IsMember({"slope"}))
+  cmd->add_option("--color-by,--colour-by", a.colourBy,
+                  "colour the surface by the wire slope, or the surface and contours by pass (rough cut, skims; "
+                  "with a legend)")
+      ->check(CLI::IsMember({"slope", "pass"}))
       ->group(g);
   cmd->add_flag("--highlight-findings", a.highlight, "tint moves with findings and label the findings")->group(g);
   cmd->add_option("--backend", a.backend, "headless OpenGL: auto (OSMesa, then EGL), osmesa or egl")

@@ -19,7 +19,8 @@ int drawRender(const RenderArgs& a) {
   request.view = *render::parseView(a.view);
   request.backend = *headless::parseBackend(a.backend);
   request.samples = a.samples;
-  request.options.colourBySlope = a.colourBy.has_value();
+  request.options.colourBySlope = a.colourBy == "slope";
+  request.options.colourByPass = a.colourBy == "pass";
   request.options.highlightFindings = a.highlight;
   const std::string& file = a.common.input.files.front();
   std::optional<Loaded> in = loadOne(a.common);
@@ -32,9 +33,13 @@ int drawRender(const RenderArgs& a) {
   render::SceneOptions so = sceneOptionsOf(a.mesh);
   so.minForcedPieceLength = ui::picturePixelMm(p.toolpath, so, request);
   so.lineTolerance = 0.25 * so.minForcedPieceLength;
+  if (request.options.colourByPass) so.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());
   const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, reference);
   request.annotation = annotationOf(file, p);
   request.annotation.legend = request.options.colourBySlope;
+  if (request.options.colourByPass)
+    for (std::size_t k = 1; k <= std::min(scene.passes, render::kPassColours); ++k)
+      request.annotation.passLegend.push_back("pass " + std::to_string(k) + (k == 1 ? " (rough)" : ""));
   request.annotation.labels = a.highlight;
   const ui::PictureResult result = ui::renderPicture(scene, request);
   if (result.png.empty()) {

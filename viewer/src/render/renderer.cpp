@@ -364,6 +364,13 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
     g.UniformMatrix4fv(uniform(surfaceProgram_, "uView"), 1, GL_FALSE, view.data());
     g.Uniform3f(uniform(surfaceProgram_, "uBaseColour"), 0.72f, 0.78f, 0.86f);
     g.Uniform1i(uniform(surfaceProgram_, "uColourBySlope"), options.colourBySlope ? 1 : 0);
+    g.Uniform1i(uniform(surfaceProgram_, "uColourByPass"), options.colourByPass ? 1 : 0);
+    for (std::size_t k = 0; k < kPassColours; ++k) {
+      const std::uint32_t c = passColour(k + 1);
+      const std::string name = "uPassColours[" + std::to_string(k) + "]";
+      g.Uniform3f(uniform(surfaceProgram_, name.c_str()), static_cast<float>(c & 0xFF) / 255.0f,
+                  static_cast<float>((c >> 8) & 0xFF) / 255.0f, static_cast<float>((c >> 16) & 0xFF) / 255.0f);
+    }
     g.Uniform2f(uniform(surfaceProgram_, "uSlopeRange"), static_cast<float>(slopeMin_), static_cast<float>(slopeMax_));
     g.Uniform1i(uniform(surfaceProgram_, "uHighlight"), options.highlightFindings ? 1 : 0);
     g.BindVertexArray(surface_.vao);

@@ -256,7 +256,8 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     bool onFinding = false;
     if (move != SIZE_MAX)
       for (std::size_t k = move; k < cut.patchEnd[patch] && !onFinding; ++k) onFinding = flagged[k];
-    const std::uint32_t flags = onFinding ? kOnFinding : 0u;
+    std::uint32_t flags = onFinding ? kOnFinding : 0u;
+    if (move < options.movePass.size()) flags |= std::uint32_t{options.movePass[move]} << kPassShift;
     // The patch's vertices, in the order they were met: finish each once.
     for (std::size_t t = t0; t < t1; ++t) {
       for (const std::uint32_t v : mesh.triangles[t]) {
@@ -311,8 +312,10 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
       if (scene.taper) addSegment(scene.rapids, up, planes.upper, sampling, kRapidColour, scratch);
       continue;
     }
-    addSegment(scene.lower, lower, planes.lower, sampling, kLowerColour, scratch);
-    addSegment(scene.upper, up, planes.upper, sampling, kUpperColour, scratch);
+    const std::uint8_t pass = i < options.movePass.size() ? options.movePass[i] : 0;
+    scene.passes = std::max<std::size_t>(scene.passes, pass);
+    addSegment(scene.lower, lower, planes.lower, sampling, pass ? passColour(pass) : kLowerColour, scratch);
+    addSegment(scene.upper, up, planes.upper, sampling, pass ? passColour(pass) : kUpperColour, scratch);
     // Generators every `spacing` mm of the lower contour, and at every move's start (corners).
     if (options.generators == 0) continue;
     const double len = lower.length();

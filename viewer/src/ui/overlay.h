@@ -8,6 +8,7 @@
 #include "kerf/render/scene.h"
 
 #include <string>
+#include <vector>
 
 struct ImDrawList;
 struct ImDrawData;
@@ -19,7 +20,10 @@ struct Annotation {
   std::string title;     ///< first line: the file
   std::string subtitle;  ///< second line: dialect, moves, verdict
   bool legend = false;   ///< the slope colour ramp with its range
-  bool labels = false;   ///< finding labels next to their markers
+  /// Colour by pass: one legend entry a pass number, "pass 1 (rough)", "pass 2", ... (their colours
+  /// are render::passColour(1), (2), ...). Empty: no pass legend.
+  std::vector<std::string> passLegend;
+  bool labels = false;  ///< finding labels next to their markers
   /// The errors and warnings of the program: those not labelled (no place in the picture, or a
   /// label that would cover another) are counted under the title, "+6 more".
   std::size_t findings = 0;

@@ -96,6 +96,7 @@ struct Pipeline {
   MachineProfile machine;        ///< the profile in force
   bool machineDetected = false;  ///< chosen from the evidence, not given
   SurfaceMeasures measures;      ///< per move, for a taper program whose heights are known
+  Structure structure;           ///< contours and passes, with the time estimate (a program, not a drawing)
   CheckOptions checkOptions;     ///< the settings the checks ran with
   Diagnostics diags{100000};     ///< every diagnostic, sorted by position
   /// What was read: set whenever `read` is, if PipelineOptions::summarize asked for it.

@@ -26,6 +26,7 @@ struct RenderOptions {
   bool markers = true;
   bool triad = true;
   bool colourBySlope = false;
+  bool colourByPass = false;       ///< the surface in its pass's colour (Scene built with SceneOptions::movePass)
   bool highlightFindings = false;  ///< tint the surface of moves with findings, bigger markers
   float lineWidth = 2.0f;          ///< pixels
   std::uint32_t background = rgba(250, 250, 250);

@@ -30,6 +30,17 @@ struct SurfaceVertex {
   std::uint32_t flags;          ///< kOnFinding: the move has an error or warning finding
 };
 inline constexpr std::uint32_t kOnFinding = 1u;
+/// SurfaceVertex::flags bits 8-15: the pass the vertex's move belongs to (SceneOptions::movePass).
+inline constexpr std::uint32_t kPassShift = 8u;
+
+/// Colours of passes 1, 2, ... (the rough cut first), repeating after kPassColours: the surface
+/// shader, the contour lines and the legend take them from here.
+inline constexpr std::size_t kPassColours = 6;
+constexpr std::uint32_t passColour(std::size_t pass) {
+  constexpr std::uint32_t colours[kPassColours] = {rgba(205, 60, 45),  rgba(40, 110, 200), rgba(50, 160, 80),
+                                                   rgba(225, 150, 20), rgba(140, 70, 170), rgba(30, 160, 170)};
+  return colours[(pass == 0 ? 0 : pass - 1) % kPassColours];
+}
 
 struct LineVertex {
   std::array<float, 3> position;
@@ -68,6 +79,9 @@ struct SceneOptions {
   /// detail under half a pixel, lines and surface alike, left out (displayRuns).
   double mergeTolerance = 0.0;
   bool noteMarkers = false;  ///< notes get markers too (errors and warnings always do)
+  /// Colour by pass: each move's pass in its contour (1 = the first, the rough cut; 0 = in none),
+  /// one entry a move (converter::movePasses). Empty: the contours keep their plane colours.
+  std::vector<std::uint8_t> movePass;
 };
 
 struct Scene {
@@ -89,6 +103,7 @@ struct Scene {
   double minSlopeDegrees = 0.0, maxSlopeDegrees = 0.0;
   double surfaceArea = 0.0;  ///< mm^2, of the triangles drawn
   std::size_t moves = 0;
+  std::size_t passes = 0;  ///< the largest pass number drawn (SceneOptions::movePass), 0 without
   [[nodiscard]] std::size_t triangles() const { return surfaceIndices.size() / 3; }
 };
 

@@ -83,6 +83,11 @@ int keptSide(const Pass& pass);
 /// one.
 Structure findStructure(const Toolpath& toolpath, double tolerance);
 
+/// Each move's pass number in its contour (1 = the first, the rough cut), 0 for a move in no pass
+/// (a rapid, a move before the first cut); one entry for each of a toolpath's `moves` moves.
+/// Numbers above 255 read 255.
+std::vector<std::uint8_t> movePasses(const Structure& structure, std::size_t moves);
+
 /// "counter-clockwise", "clockwise" or "neither".
 const char* directionName(int direction);
 

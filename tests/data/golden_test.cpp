@@ -5,6 +5,7 @@
 //                            writes nothing), and expected.bp95d.log its exit code and messages;
 //   expected.points4(.log)   the same for `--to points4`, for taper programs;
 //   expected.3b, .4b, .iso, .polar (and .log)  the same for those emitters (one plane: the lower).
+// An emitter's own options (max-points, profile, start-block, plane, pass) go to convert only.
 // Each runs the kerf program in the case's folder, so messages name input.nc. Byte compare; a
 // capped diff on failure; KERF_UPDATE_GOLDEN=1 rewrites the expectations instead of comparing.
 #include "data_test_support.h"
@@ -64,7 +65,8 @@ class GoldenTest : public testing::Test {
     std::string readArgs, emitArgs;
     for (const auto& [key, value] : readOptions(dir_ / "options")) {
       // Sampling and reading options go to every command; the rest to convert.
-      const bool emitter = key == "max-points" || key == "profile" || key == "start-block" || key == "plane";
+      const bool emitter =
+          key == "max-points" || key == "profile" || key == "start-block" || key == "plane" || key == "pass";
       (emitter ? emitArgs : readArgs) += " --" + key + " '" + value + "'";
     }
     const KerfRun trace = runKerf(dir_, "check input.nc --trace" + readArgs);
@@ -84,6 +86,7 @@ class GoldenTest : public testing::Test {
       const auto o = readOptions(dir_ / "options");
       if (o.count("start-block") && (std::string(to) == "3b" || std::string(to) == "4b"))
         args += " --start-block '" + o.at("start-block") + "'";
+      if (o.count("pass")) args += " --pass '" + o.at("pass") + "'";
       const KerfRun run = runKerf(dir_, args);
       compare(std::string("expected.") + to, run.out);
       compare(std::string("expected.") + to + ".log", "exit " + std::to_string(run.exit) + "\n" + run.err);

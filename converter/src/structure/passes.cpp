@@ -209,4 +209,60 @@ std::vector<std::uint8_t> movePasses(const Structure& structure, std::size_t mov
   return out;
 }
 
+std::optional<Toolpath> toolpathOfPass(const Toolpath& toolpath, const Structure& structure, std::size_t pass,
+                                       double tolerance) {
+  const std::vector<std::uint8_t> number = movePasses(structure, toolpath.moves.size());
+  if (pass == 0 || std::find(number.begin(), number.end(), std::min<std::size_t>(pass, 255)) == number.end())
+    return std::nullopt;
+  Toolpath out = toolpath;
+  out.moves.clear();
+  for (auto* v : {&out.upper, &out.programmed}) v->clear();
+  out.offsetRole.clear();
+  out.taperDegrees.clear();
+  out.centreWords.clear();
+  out.stops.clear();
+  out.offsetSpans.clear();
+  std::vector<std::uint32_t> newIndex(toolpath.moves.size() + 1, 0);
+  // One move of the source toolpath, with its per-move data.
+  auto append = [&](std::size_t i, const Move& move) {
+    out.moves.push_back(move);
+    if (!toolpath.upper.empty()) out.upper.push_back(toolpath.upper[i]);
+    if (!toolpath.programmed.empty()) out.programmed.push_back(toolpath.programmed[i]);
+    if (!toolpath.offsetRole.empty()) out.offsetRole.push_back(toolpath.offsetRole[i]);
+    if (!toolpath.taperDegrees.empty()) out.taperDegrees.push_back(toolpath.taperDegrees[i]);
+    if (!toolpath.centreWords.empty()) out.centreWords.push_back(toolpath.centreWords[i]);
+  };
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    newIndex[i] = static_cast<std::uint32_t>(out.moves.size());
+    const Move& m = toolpath.moves[i];
+    if (m.isCut() && number[i] != pass) continue;
+    if (!out.moves.empty() && (out.moves.back().lower.end - m.lower.start).norm() > tolerance) {
+      Move join = m;  // a rapid to where this move starts, in its block's place
+      join.kind = MoveKind::Rapid;
+      join.centreForm = CentreForm::None;
+      join.wireOffset = WireOffset::Off;
+      join.lower = geometry::Segment::line(out.moves.back().lower.end, m.lower.start);
+      append(i, join);
+      if (!out.upper.empty())
+        out.upper.back() = geometry::Segment::line(out.upper[out.upper.size() - 2].end, toolpath.upperOf(i).start);
+      if (!out.programmed.empty()) out.programmed.back() = join.lower;
+      if (!out.offsetRole.empty()) out.offsetRole.back() = OffsetRole::None;
+      if (!out.centreWords.empty()) out.centreWords.back() = geometry::Vec2(0, 0);
+    }
+    newIndex[i] = static_cast<std::uint32_t>(out.moves.size());
+    append(i, m);
+  }
+  newIndex[toolpath.moves.size()] = static_cast<std::uint32_t>(out.moves.size());
+  for (const std::uint32_t s : toolpath.stops)
+    if (s <= toolpath.moves.size() && (out.stops.empty() || out.stops.back() != newIndex[s]))
+      out.stops.push_back(newIndex[s]);
+  for (const OffsetSpan& span : toolpath.offsetSpans) {
+    OffsetSpan kept = span;
+    kept.first = newIndex[std::min<std::size_t>(span.first, toolpath.moves.size())];
+    kept.end = newIndex[std::min<std::size_t>(span.end, toolpath.moves.size())];
+    if (kept.end > kept.first) out.offsetSpans.push_back(std::move(kept));
+  }
+  return out;
+}
+
 }  // namespace kerf::converter

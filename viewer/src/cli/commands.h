@@ -46,6 +46,7 @@ struct ConvertArgs {
   bool compact = false;
   std::string end = "dd";
   std::string polarXOut = "diameter";
+  std::string pass = "all";  ///< --pass N: only each contour's Nth pass (1: the rough cut)
 };
 CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& args);
 int runConvert(const ConvertArgs& args);

@@ -10,6 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <charconv>
 #include <iostream>
 
 namespace kerf::cli {
@@ -31,6 +33,18 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
       ->check(CLI::Range(std::size_t{2}, std::size_t{100000000}))
       ->group("Output");
   cmd->add_option("--profile", a.profile, "point-file profile (docs/bp95d.md)")->group("Output");
+  cmd->add_option("--pass", a.pass,
+                  "all (default: every pass in order) or N: of each contour only its Nth pass (1: the rough cut), "
+                  "joined by rapids (docs/passes.md)")
+      ->check([](const std::string& v) {
+        if (v == "all") return std::string();
+        std::size_t n = 0;
+        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+        return ec == std::errc() && end == v.data() + v.size() && n >= 1 && n <= 255
+                   ? std::string()
+                   : std::string("--pass takes all or a pass number from 1 to 255");
+      })
+      ->group("Output");
   cmd->add_option("--start-block", a.startBlock, "start the output at the cut move on this source line")
       ->group("Output");
   cmd->add_option("--for", a.target,
@@ -141,6 +155,19 @@ int runConvert(const ConvertArgs& a) {
   request.tolerance = a.common.sampling.tolerance.value_or(0.001);
 
   const Toolpath* path = &p.toolpath;
+  std::optional<Toolpath> onePass;
+  if (a.pass != "all") {
+    const std::size_t n = static_cast<std::size_t>(std::stoul(a.pass));
+    onePass = toolpathOfPass(p.toolpath, p.structure, n, p.checkOptions.tolerance);
+    if (!onePass) {
+      std::size_t most = 0;
+      for (const Contour& c : p.structure.contours) most = std::max(most, c.passes.size());
+      reportError("--pass " + a.pass + ": no contour of this program has a pass " + a.pass + " (" +
+                  (most == 1 ? std::string("each is cut in one pass") : "the most is " + std::to_string(most)) + ")");
+      return kExitUsage;
+    }
+    path = &*onePass;
+  }
   std::optional<Toolpath> flat;
   if (emitter.planes == PlaneNeed::Both) {
     if (a.plane) {
@@ -160,7 +187,7 @@ int runConvert(const ConvertArgs& a) {
       return kExitUsage;
     }
     const double tol = a.common.sampling.tolerance.value_or(0.001);
-    flat = toolpathAtPlane(p.toolpath, *plane, tol, p.source.get(), emitDiags);
+    flat = toolpathAtPlane(*path, *plane, tol, p.source.get(), emitDiags);
     path = flat ? &*flat : nullptr;
   }
   std::optional<EmitOutput> out;

@@ -88,6 +88,14 @@ Structure findStructure(const Toolpath& toolpath, double tolerance);
 /// Numbers above 255 read 255.
 std::vector<std::uint8_t> movePasses(const Structure& structure, std::size_t moves);
 
+/// The toolpath of one pass number: of every contour its pass `pass` (1 = the rough cut) and every
+/// rapid, in program order; where two kept moves do not meet (within `tolerance`, mm), a rapid from
+/// the one's end to the other's start joins them, with the later move's place in the source. The
+/// per-move data (upper contour, offsets, taper angles, centres as written) follows its moves;
+/// stops and offset runs are kept where their moves are. Nothing when no contour has that pass.
+std::optional<Toolpath> toolpathOfPass(const Toolpath& toolpath, const Structure& structure, std::size_t pass,
+                                       double tolerance);
+
 /// "counter-clockwise", "clockwise" or "neither".
 const char* directionName(int direction);
 

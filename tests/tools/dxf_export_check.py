@@ -3,7 +3,9 @@
 reader. For R12 and R2000 it checks that ezdxf reads the file with the version asked for, that its
 audit finds no error, that every entity is a LINE, ARC or CIRCLE on the layers Kerf documents, and
 that the length on layer LOWER (and UPPER) equals the cut length `kerf check --json` reports for the
-same program, and UPPER sits at the upper plane's height. Then Kerf reads its own drawing back
+same program, and UPPER sits at the upper plane's height. A program cut in several passes puts pass
+k on LOWER_PASSk (and UPPER_PASSk): each as long as the passes numbered k in the structure that
+`kerf check --json` reports (docs/passes.md). Then Kerf reads its own drawing back
 (`kerf check out.dxf --json`): as many contours, as long.
 
 usage: dxf_export_check.py KERF PROGRAM WORKDIR [kerf options...]
@@ -49,6 +51,15 @@ taper = summary.get("taper")
 want = {"LOWER": taper["lower_length_mm"] if taper else summary["cut_length_mm"]}
 if taper:
     want["UPPER"] = taper["upper_length_mm"]
+contours = summary.get("structure", {}).get("contours", [])
+by_pass = max((len(c["passes"]) for c in contours), default=0) > 1
+if by_pass:  # the lower plane's length of each pass number; the upper one's only its layer
+    want = {}
+    for c in contours:
+        for k, p in enumerate(c["passes"], 1):
+            want[f"LOWER_PASS{k}"] = want.get(f"LOWER_PASS{k}", 0.0) + p["length_mm"]
+layers = {"LOWER", "UPPER", "PROGRAMMED", "RAPID"} | {
+    f"{plane}_PASS{k}" for plane in ("LOWER", "UPPER") for k in range(1, 256)}
 
 stem = os.path.splitext(os.path.basename(program))[0]
 for version, acad in (("r12", "AC1009"), ("r2000", "AC1015")):
@@ -68,10 +79,10 @@ for version, acad in (("r12", "AC1009"), ("r2000", "AC1015")):
     for e in doc.modelspace():
         check(e.dxftype() in ("LINE", "ARC", "CIRCLE"), f"{version}: unexpected entity {e.dxftype()}")
         layer = e.dxf.layer
-        check(layer in ("LOWER", "UPPER", "PROGRAMMED", "RAPID"), f"{version}: unexpected layer {layer}")
+        check(layer in layers, f"{version}: unexpected layer {layer}")
         per_layer[layer] = per_layer.get(layer, 0.0) + length(e)
         z = e.dxf.start[2] if e.dxftype() == "LINE" else e.dxf.center[2]
-        heights.setdefault(layer, set()).add(round(z, 9))
+        heights.setdefault(layer.split("_")[0], set()).add(round(z, 9))
     for layer, mm in want.items():
         got = per_layer.get(layer, 0.0)
         check(abs(got - mm) <= 1e-6 * max(1.0, mm), f"{version}: layer {layer} is {got:.9f} mm long, kerf check says {mm:.9f}")

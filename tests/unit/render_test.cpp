@@ -3,6 +3,7 @@
 #include "kerf/converter/check/checks.h"
 #include "kerf/converter/check/summary.h"
 #include "kerf/converter/interpret/analysis.h"
+#include "kerf/converter/structure/passes.h"
 #include "kerf/export/mesh_export.h"
 #include "kerf/headless/context.h"
 #include "kerf/headless/png.h"
@@ -402,6 +403,40 @@ TEST_F(export_test, vtp_carries_move_line_slope_and_findings) {
     EXPECT_GE(slope->GetTuple1(c), std::atan(0.2) * 180 / geometry::kPi - 1e-3);
     EXPECT_LE(slope->GetTuple1(c), std::atan(0.2 * std::sqrt(2.0)) * 180 / geometry::kPi + 1e-3);
   }
+}
+
+// A program cut in two passes (a rough cut G41 and a reversed skim G42 over a 20 mm square): every
+// cell of the VTP carries its move's pass, 1 or 2, as the structure numbers them.
+TEST_F(export_test, vtp_carries_each_cells_pass) {
+  const std::string square =
+      "G90 G92 X0 Y0\nG41 G01 X10. Y0\nY10.\nX-10.\nY-10.\nX10.\nY0\nG40 G01 X0 Y0\n"
+      "G42 G01 X10. Y0\nY-10.\nX-10.\nY10.\nX10.\nY0\nG40 G01 X0 Y0\nM02\n";
+  const Part p = analyse(square);
+  const converter::Structure st = converter::findStructure(p.toolpath, 1e-3);
+  ASSERT_EQ(st.contours.size(), 1u);
+  ASSERT_EQ(st.contours[0].passes.size(), 2u);
+  render::SceneOptions options;
+  options.movePass = converter::movePasses(st, p.toolpath.moves.size());
+  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags->all(), options, false);
+  const std::string path = (dir_ / "passes.vtp").string();
+  std::string error;
+  ASSERT_TRUE(exporter::writeMesh(data, exporter::MeshFormat::Vtp, path, error)) << error;
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkDataArray* pass = reader->GetOutput()->GetCellData()->GetArray("pass");
+  vtkDataArray* move = reader->GetOutput()->GetCellData()->GetArray("move");
+  ASSERT_NE(pass, nullptr);
+  std::size_t seen[3] = {0, 0, 0};
+  for (vtkIdType c = 0; c < reader->GetOutput()->GetNumberOfPolys(); ++c) {
+    const auto m = static_cast<std::size_t>(move->GetTuple1(c));
+    const auto k = static_cast<std::size_t>(pass->GetTuple1(c));
+    const std::size_t expected = m < st.contours[0].passes[1].first ? 1 : 2;
+    ASSERT_EQ(k, expected) << "cell " << c << ", move " << m;
+    ++seen[k];
+  }
+  EXPECT_GT(seen[1], 0u);
+  EXPECT_GT(seen[2], 0u);
 }
 
 TEST_F(export_test, findings_flags_mark_the_moves_with_findings) {

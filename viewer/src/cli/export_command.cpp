@@ -50,6 +50,7 @@ int runDxfExport(const ExportArgs& a) {
   converter::DxfWriteOptions options;
   options.version = *version;
   options.rapids = a.rapids;
+  options.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());
   converter::DxfWriteCounts counts;
   const std::string text = converter::writeDxf(p.toolpath, options, &counts);
   if (counts.lines + counts.arcs + counts.circles == 0) {

@@ -19,7 +19,9 @@ int drawExportMesh(const ExportArgs& a) {
   std::optional<Loaded> in = loadOne(a.common);
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), a.caps);
+  render::SceneOptions options = sceneOptionsOf(a.mesh);
+  options.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());
+  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags.all(), options, a.caps);
   if (data.surface.mesh.triangles.empty()) {
     reportError("nothing is cut, so there is no surface to export");
     return kExitErrors;

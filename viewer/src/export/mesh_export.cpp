@@ -48,6 +48,7 @@ SurfaceData surfaceData(const converter::Toolpath& toolpath, std::span<const con
   out.cellLine.resize(n);
   out.cellSlope.resize(n);
   out.cellFindings.resize(n);
+  out.cellPass.assign(n, 0);
   for (std::size_t t = 0; t < n; ++t) {
     const std::uint32_t patch = mesh.trianglePatch[t];
     const auto& tri = mesh.triangles[t];
@@ -65,6 +66,7 @@ SurfaceData surfaceData(const converter::Toolpath& toolpath, std::span<const con
     out.cellMove[t] = static_cast<int>(move);
     out.cellLine[t] = static_cast<int>(toolpath.moves[move].line);
     out.cellFindings[t] = moveFindings[move];
+    if (move < options.movePass.size()) out.cellPass[t] = options.movePass[move];
   }
   return out;
 }
@@ -99,6 +101,7 @@ vtkNew<vtkPolyData> toPolyData(const SurfaceData& data) {
   intArray("move", data.cellMove);
   intArray("line", data.cellLine);
   intArray("findings", data.cellFindings);
+  intArray("pass", data.cellPass);
   vtkNew<vtkFloatArray> slope;
   slope->SetName("slope");
   slope->SetNumberOfValues(static_cast<vtkIdType>(data.cellSlope.size()));

@@ -26,11 +26,27 @@ std::optional<DxfVersion> dxfVersionNamed(std::string_view name) {
 namespace {
 
 struct Layer {
-  const char* name;
+  std::string name;
   int colour;  // AutoCAD colour index
 };
-constexpr Layer kLayers[] = {{"0", 7}, {"LOWER", 5}, {"UPPER", 3}, {"PROGRAMMED", 8}, {"RAPID", 2}};
-enum LayerIndex { kLower = 1, kUpper = 2, kProgrammed = 3, kRapid = 4 };
+/// The fixed layers, then (a program cut in several passes) LOWER_PASS1, UPPER_PASS1, LOWER_PASS2, ...
+const Layer kLayers[] = {{"0", 7}, {"LOWER", 5}, {"UPPER", 3}, {"PROGRAMMED", 8}, {"RAPID", 2}};
+enum LayerIndex { kLower = 1, kUpper = 2, kProgrammed = 3, kRapid = 4, kFirstPass = 5 };
+
+/// The layers of a drawing whose moves are in at most `passes` passes (0 or 1: the fixed ones).
+/// Pass colours: red, blue, green, yellow, magenta, cyan (AutoCAD indices 1 5 3 2 6 4), repeating.
+std::vector<Layer> layersFor(std::size_t passes) {
+  std::vector<Layer> out(std::begin(kLayers), std::end(kLayers));
+  constexpr int kPassColours[] = {1, 5, 3, 2, 6, 4};
+  if (passes < 2) return out;
+  for (std::size_t k = 1; k <= passes; ++k)
+    for (const char* plane : {"LOWER", "UPPER"})
+      out.push_back(
+          {std::string(plane) + "_PASS" + std::to_string(k), kPassColours[(k - 1) % std::size(kPassColours)]});
+  return out;
+}
+/// The layer of a cut move of pass `pass` (1-based) on the lower or the upper plane.
+int passLayer(std::size_t pass, bool upper) { return kFirstPass + 2 * static_cast<int>(pass - 1) + (upper ? 1 : 0); }
 
 struct Item {
   geometry::Segment segment;
@@ -141,25 +157,27 @@ std::string record(Out& o, const char* type, const std::string& tableHandle, con
   return h;
 }
 
-void entityHead(Out& o, const char* type, const std::string& owner, int layer, const char* subclass) {
+void entityHead(Out& o, const char* type, const std::string& owner, const std::string& layer, const char* subclass) {
   o.g(0, type);
   o.owned(owner);
   if (o.handles()) o.g(100, "AcDbEntity");
-  o.g(8, kLayers[layer].name);
+  o.g(8, layer);
   if (o.handles()) o.g(100, subclass);
 }
 
-void writeItem(Out& o, const Item& it, const std::string& owner, DxfWriteCounts& counts) {
+void writeItem(Out& o, const Item& it, const std::vector<Layer>& layers, const std::string& owner,
+               DxfWriteCounts& counts) {
   const geometry::Segment& s = it.segment;
+  const std::string& layer = layers[static_cast<std::size_t>(it.layer)].name;
   if (!s.isArc()) {
-    entityHead(o, "LINE", owner, it.layer, "AcDbLine");
+    entityHead(o, "LINE", owner, layer, "AcDbLine");
     o.point(10, s.start, it.z);
     o.point(11, s.end, it.z);
     ++counts.lines;
     return;
   }
   const bool full = std::abs(std::abs(s.sweep) - 2 * std::numbers::pi) < 1e-12;
-  entityHead(o, full ? "CIRCLE" : "ARC", owner, it.layer, "AcDbCircle");
+  entityHead(o, full ? "CIRCLE" : "ARC", owner, layer, "AcDbCircle");
   o.point(10, s.centre, it.z);
   o.g(40, s.radius);
   if (full) {
@@ -174,8 +192,16 @@ void writeItem(Out& o, const Item& it, const std::string& owner, DxfWriteCounts&
   ++counts.arcs;
 }
 
+/// The most passes any contour has (DxfWriteOptions::movePass).
+std::size_t passCount(const DxfWriteOptions& options) {
+  std::size_t most = 0;
+  for (const std::uint8_t p : options.movePass) most = std::max<std::size_t>(most, p);
+  return most;
+}
+
 std::vector<Item> itemsOf(const Toolpath& tp, const DxfWriteOptions& options) {
   std::vector<Item> items;
+  const std::size_t passes = passCount(options);
   const bool heights = tp.isTaper() && tp.heights.known;
   const double zLower = heights ? tp.heights.planes.lower : 0.0;
   const double zUpper = heights ? tp.heights.planes.upper : 0.0;
@@ -186,8 +212,11 @@ std::vector<Item> itemsOf(const Toolpath& tp, const DxfWriteOptions& options) {
       if (options.rapids && usable(m.lower)) items.push_back({m.lower, zLower, kRapid});
       continue;
     }
-    if (usable(m.lower)) items.push_back({m.lower, zLower, kLower});
-    if (tp.isTaper() && usable(tp.upper[i])) items.push_back({tp.upper[i], zUpper, kUpper});
+    const std::size_t pass = i < options.movePass.size() ? options.movePass[i] : 0;
+    const bool byPass = pass > 0 && passes > 1;
+    if (usable(m.lower)) items.push_back({m.lower, zLower, byPass ? passLayer(pass, false) : kLower});
+    if (tp.isTaper() && usable(tp.upper[i]))
+      items.push_back({tp.upper[i], zUpper, byPass ? passLayer(pass, true) : kUpper});
   }
   if (options.programmed && !tp.programmed.empty()) {
     for (std::size_t i = 0; i < tp.programmed.size() && i < tp.offsetRole.size(); ++i) {
@@ -231,6 +260,7 @@ void extents(Out& o, const std::vector<Item>& items) {
 
 std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWriteCounts* countsOut) {
   const std::vector<Item> items = itemsOf(tp, options);
+  const std::vector<Layer> layerList = layersFor(passCount(options));
   DxfWriteCounts counts;
   const bool r2000 = options.version == DxfVersion::R2000;
   // The body first (it allocates the handles), then the header that names the next free one.
@@ -258,9 +288,9 @@ std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWrit
     body.g(40, 0.0);
   }
   body.g(0, "ENDTAB");
-  const std::string layers = table(body, "LAYER", static_cast<long>(std::size(kLayers)));
-  for (const Layer& l : kLayers) {
-    record(body, "LAYER", layers, "AcDbLayerTableRecord", l.name);
+  const std::string layers = table(body, "LAYER", static_cast<long>(layerList.size()));
+  for (const Layer& l : layerList) {
+    record(body, "LAYER", layers, "AcDbLayerTableRecord", l.name.c_str());
     body.gi(62, l.colour);
     body.g(6, r2000 ? "Continuous" : "CONTINUOUS");
     if (r2000) body.gi(370, -3);  // lineweight: default
@@ -319,7 +349,7 @@ std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWrit
   endsec(body);
 
   section(body, "ENTITIES");
-  for (const Item& it : items) writeItem(body, it, modelRecord, counts);
+  for (const Item& it : items) writeItem(body, it, layerList, modelRecord, counts);
   endsec(body);
 
   if (r2000) {

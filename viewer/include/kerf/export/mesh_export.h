@@ -30,9 +30,11 @@ struct SurfaceData {
   std::vector<int> cellLine;      ///< source line of the move (0: a cap)
   std::vector<float> cellSlope;   ///< degrees, mean of the cell's vertices
   std::vector<int> cellFindings;  ///< kFinding* bits
+  std::vector<int> cellPass;      ///< the move's pass in its contour (1: the rough cut; 0: none, or a cap)
 };
 
-/// Meshes the cut surface (closed contours capped when caps) and computes the cell data.
+/// Meshes the cut surface (closed contours capped when caps) and computes the cell data; the pass
+/// of each cell from options.movePass (0 everywhere when it is empty).
 SurfaceData surfaceData(const converter::Toolpath& toolpath, std::span<const converter::Diagnostic> findings,
                         const render::SceneOptions& options, bool caps);
 

@@ -16,9 +16,11 @@
 #include "kerf/converter/toolpath.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace kerf::converter {
 
@@ -31,6 +33,10 @@ struct DxfWriteOptions {
   DxfVersion version = DxfVersion::R2000;
   bool rapids = false;     ///< also the rapids, on layer RAPID
   bool programmed = true;  ///< where an offset was applied, the programmed contour on PROGRAMMED
+  /// Each move's pass number in its contour (converter::movePasses). When some contour has more
+  /// than one pass, the cut moves of pass k go on LOWER_PASSk and UPPER_PASSk instead of LOWER and
+  /// UPPER. Empty: LOWER and UPPER.
+  std::vector<std::uint8_t> movePass;
 };
 
 struct DxfWriteCounts {

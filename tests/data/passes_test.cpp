@@ -156,6 +156,34 @@ TEST(passes_test, the_time_estimate_is_the_hand_calculation) {
   EXPECT_NEAR(open["time"]["total_min"].get<double>(), minutes[1] + minutes[2] + 0.5, 1e-9);
 }
 
+// kerf explain marks where each pass begins and ends and which moves lead in and out: the tab die's
+// three passes, in text (each mark before the block it names) and in JSON.
+TEST(passes_test, explain_marks_where_passes_begin_and_end) {
+  const fs::path die = fs::path(KERF_PASSES_DIR) / "die_tab_cut_off.nc";
+  const std::string text = kerfOutput("explain", die);
+  const std::size_t begin2 = text.find("== pass 2 of contour 1 begins");
+  const std::size_t end1 = text.find("== pass 1 of contour 1 ends: it leaves a tab of 2.000 mm");
+  const std::size_t line18 = text.find("\nline 18: G42 H002");
+  ASSERT_NE(begin2, std::string::npos) << text;
+  ASSERT_NE(end1, std::string::npos) << text;
+  EXPECT_LT(end1, begin2);
+  EXPECT_LT(begin2, line18);
+  EXPECT_NE(text.find("the cut-off through the tab"), std::string::npos);
+  EXPECT_NE(text.find("lead-in of pass 3 of contour 1"), std::string::npos);
+  const nlohmann::json j = nlohmann::json::parse(kerfOutput("explain --json", die));
+  std::size_t leadIns = 0, along = 0;
+  for (const nlohmann::json& m : j.at("moves")) {
+    ASSERT_TRUE(m.contains("pass")) << m.dump();
+    leadIns += m["pass"]["role"] == "lead-in";
+    along += m["pass"]["role"] == "contour";
+    if (m["line"] == 18) {
+      EXPECT_EQ(m["pass"]["pass"], 2);
+    }
+  }
+  EXPECT_EQ(leadIns, 3u);
+  EXPECT_GT(along, 9u);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -482,7 +482,10 @@ std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags) {
 
 // ---- 3. explain --------------------------------------------------------------------------------
 
-std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling) {
+namespace {
+
+/// The explanation's first lines: the file, the sampling, the angle convention, the start, the planes.
+std::string explainHeader(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling) {
   std::string out;
   out += "Kerf explains " + source.name() + ": " + plural(toolpath.moves.size(), "move") + ", arcs sampled at " +
          samplingText(sampling) + "\n";
@@ -497,113 +500,188 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
                ? "Planes: " + h.source + "; slope = atan(|upper(t) - lower(t)| / " + mm(h.planes.height()) + " mm).\n"
                : std::string("The plane heights are not known, so slopes cannot be given.\n");
   }
-  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
-    const Move& m = toolpath.moves[i];
-    const geometry::Segment& s = m.lower;
-    out += "\nline " + std::to_string(m.line) + ": " + blockText(source, m) + "\n";
-    if (i < toolpath.offsetRole.size()) {
-      const geometry::Segment& p = toolpath.programmed[i];
-      switch (toolpath.offsetRole[i]) {
-        case OffsetRole::None: break;
-        case OffsetRole::Element:
-          out += "  wire offset: the wire-centre path below is this block's programmed " + segmentText(p, 3) +
-                 " moved sideways by the offset (an arc keeps its centre, its radius grows or shrinks)\n";
-          break;
-        case OffsetRole::Corner:
-          out += "  wire offset: no block of its own: the wire rolls round the convex corner at " +
-                 formatPoint(p.start) + " on an arc of the offset radius about it\n";
-          break;
-        case OffsetRole::StartUp:
-          out += "  wire offset starts: programmed " + segmentText(p, 3) +
-                 "; the wire goes from the programmed start to the offset path\n";
-          break;
-        case OffsetRole::Cancel:
-          out += "  wire offset cancelled: programmed " + segmentText(p, 3) +
-                 "; the wire leaves the offset path for the programmed end\n";
-          break;
-      }
-    }
-    if (toolpath.isTaper()) {
-      const geometry::Segment& u = toolpath.upper[i];
-      out += "  upper: " + segmentText(u, 3) + ", length " + mm(u.length()) + " mm\n";
-      out += "  pairing: " + pairingReason(toolpath, i) + "\n";
-      if (toolpath.heights.known) {
-        const geometry::Planes& pl = toolpath.heights.planes;
-        const geometry::PatchMeasures pm = geometry::measurePatch(s, u, pl);
-        out += "  slope " + formatFixed(geometry::slopeAt(s, u, pl, 0.0) * kToDegrees, 3) + "° at the start, " +
-               formatFixed(geometry::slopeAt(s, u, pl, 1.0) * kToDegrees, 3) + "° at the end, steepest " +
-               formatFixed(pm.maxSlope.value * kToDegrees, 3) + "° at t = " + formatFixed(pm.maxSlope.t, 3) +
-               (pm.exact ? " (closed form)" : " (sampled and refined)") + "\n";
-      }
-      out += "  lower:\n";
-    }
-    const bool threeB = toolpath.format == InputFormat::ThreeB;
-    if (m.kind != MoveKind::Arc) {
-      if (threeB)
-        out +=
-            "  3B line: x y give the direction (their signs from L, the end's quadrant), J the length along the "
-            "count axis G; end = start + (x, y) J / (x for GX, y for GY)\n";
-      out += std::string("  ") + (m.kind == MoveKind::Rapid ? "rapid (G00, not cut)" : "straight cut (G01)") +
-             " from " + formatPoint(s.start) + " to " + formatPoint(s.end) + ", length " + mm(s.length()) + " mm\n";
-      if (m.kind == MoveKind::Line) out += "  a line adds only its end point to the point sequence\n";
-      continue;
-    }
-    const bool cw = s.sweep < 0;
-    out += std::string("  arc ") + (cw ? "clockwise (G02)" : "counter-clockwise (G03)") + " from " +
-           formatPoint(s.start) + " (the end of the previous move) to " + formatPoint(s.end) + "\n";
-    // Where G41/G42 was applied, the centre follows from the words on the programmed arc (a corner
-    // arc has no words: its centre is the programmed corner).
-    const OffsetRole role = i < toolpath.offsetRole.size() ? toolpath.offsetRole[i] : OffsetRole::None;
-    const geometry::Segment& d = role == OffsetRole::Element ? toolpath.programmed[i] : s;
-    if (role == OffsetRole::Corner) {
-      out += "  centre " + formatPoint(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius) +
-             " mm\n";
-    } else if (m.centreForm == CentreForm::Radius) {
-      const double r = toolpath.programmedRadius(i);
-      const int zn = geometry::seedSignFactor(
-          cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
-      out += "  centre " + formatPoint(d.centre) + " from R " + mm(r) + ": half the chord" +
-             (role == OffsetRole::Element ? " of the programmed arc" : "") + " is " + mm((d.end - d.start).norm() / 2) +
-             " mm; " +
-             (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
-             " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
-    } else if (threeB) {
-      const Vec2 xy = toolpath.programmedCentreWords(i);
-      out += "  3B arc: x y = start - centre = (" + mm(xy.x()) + ", " + mm(xy.y()) +
-             ") (signs from the start's quadrant in SR/NR), so the centre is " + formatPoint(s.centre) + ", radius " +
-             mm(s.radius) +
-             " mm; the arc ends where it has travelled J along the count axis, over every quadrant it "
-             "crosses\n";
-    } else {
-      const Vec2 ij = toolpath.programmedCentreWords(i);
-      std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"
-                         : m.centreForm == CentreForm::Reversed  ? "centre = start - (I, J)"
-                                                                 : "centre = (I, J)";
-      out += "  centre " + formatPoint(d.centre) + " from I " + mm(ij.x()) + " J " + mm(ij.y()) + ": " + rule +
-             (role == OffsetRole::Element ? " (the programmed start " + formatPoint(d.start) + ")" : std::string()) +
-             "; radius by formula (3) = |start - centre| = " + mm(d.radius) + " mm\n";
-      if (const double error = programmedRadiusError(toolpath, i); std::abs(error) > 0.0005)
-        out += "  the end point is " + mm(std::abs(error)) + " mm off that circle (within the accepted tolerance)\n";
-    }
-    if (role == OffsetRole::Element)
-      out += "  the wire path keeps that centre, " + std::string(s.radius > d.radius ? "outside" : "inside") +
-             " the programmed arc by the offset\n";
-    out += "  radius " + mm(s.radius) + " mm, sweep " + deg(std::abs(s.sweep)) + " degrees, length " + mm(s.length()) +
+  return out;
+}
+
+/// What the wire offset made of move i (nothing where none was applied).
+std::string explainOffsetRole(const Toolpath& toolpath, std::size_t i) {
+  if (i >= toolpath.offsetRole.size()) return {};
+  const geometry::Segment& p = toolpath.programmed[i];
+  switch (toolpath.offsetRole[i]) {
+    case OffsetRole::None: return {};
+    case OffsetRole::Element:
+      return "  wire offset: the wire-centre path below is this block's programmed " + segmentText(p, 3) +
+             " moved sideways by the offset (an arc keeps its centre, its radius grows or shrinks)\n";
+    case OffsetRole::Corner:
+      return "  wire offset: no block of its own: the wire rolls round the convex corner at " + formatPoint(p.start) +
+             " on an arc of the offset radius about it\n";
+    case OffsetRole::StartUp:
+      return "  wire offset starts: programmed " + segmentText(p, 3) +
+             "; the wire goes from the programmed start to the offset path\n";
+    case OffsetRole::Cancel:
+      return "  wire offset cancelled: programmed " + segmentText(p, 3) +
+             "; the wire leaves the offset path for the programmed end\n";
+  }
+  return {};
+}
+
+/// Move i of a taper program: its upper side, how it pairs with the lower, its slope.
+std::string explainUpper(const Toolpath& toolpath, std::size_t i) {
+  const geometry::Segment& s = toolpath.moves[i].lower;
+  const geometry::Segment& u = toolpath.upper[i];
+  std::string out = "  upper: " + segmentText(u, 3) + ", length " + mm(u.length()) + " mm\n";
+  out += "  pairing: " + pairingReason(toolpath, i) + "\n";
+  if (toolpath.heights.known) {
+    const geometry::Planes& pl = toolpath.heights.planes;
+    const geometry::PatchMeasures pm = geometry::measurePatch(s, u, pl);
+    out += "  slope " + formatFixed(geometry::slopeAt(s, u, pl, 0.0) * kToDegrees, 3) + "° at the start, " +
+           formatFixed(geometry::slopeAt(s, u, pl, 1.0) * kToDegrees, 3) + "° at the end, steepest " +
+           formatFixed(pm.maxSlope.value * kToDegrees, 3) + "° at t = " + formatFixed(pm.maxSlope.t, 3) +
+           (pm.exact ? " (closed form)" : " (sampled and refined)") + "\n";
+  }
+  return out + "  lower:\n";
+}
+
+/// The lower side of move i: a line's length, or how an arc's centre follows from its words.
+void explainLower(std::string& out, const Toolpath& toolpath, std::size_t i, const geometry::Sampling& sampling) {
+  const Move& m = toolpath.moves[i];
+  const geometry::Segment& s = m.lower;
+  const bool threeB = toolpath.format == InputFormat::ThreeB;
+  if (m.kind != MoveKind::Arc) {
+    if (threeB)
+      out +=
+          "  3B line: x y give the direction (their signs from L, the end's quadrant), J the length along the "
+          "count axis G; end = start + (x, y) J / (x for GX, y for GY)\n";
+    out += std::string("  ") + (m.kind == MoveKind::Rapid ? "rapid (G00, not cut)" : "straight cut (G01)") + " from " +
+           formatPoint(s.start) + " to " + formatPoint(s.end) + ", length " + mm(s.length()) + " mm\n";
+    if (m.kind == MoveKind::Line) out += "  a line adds only its end point to the point sequence\n";
+    return;
+  }
+  const bool cw = s.sweep < 0;
+  out += std::string("  arc ") + (cw ? "clockwise (G02)" : "counter-clockwise (G03)") + " from " +
+         formatPoint(s.start) + " (the end of the previous move) to " + formatPoint(s.end) + "\n";
+  // Where G41/G42 was applied, the centre follows from the words on the programmed arc (a corner
+  // arc has no words: its centre is the programmed corner).
+  const OffsetRole role = i < toolpath.offsetRole.size() ? toolpath.offsetRole[i] : OffsetRole::None;
+  const geometry::Segment& d = role == OffsetRole::Element ? toolpath.programmed[i] : s;
+  if (role == OffsetRole::Corner) {
+    out += "  centre " + formatPoint(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius) +
            " mm\n";
-    const geometry::ArcSampleStats st = geometry::sample(s, sampling, nullptr);  // counts only
-    if (sampling.mode == geometry::SamplingMode::Step) {
-      const geometry::SeedArcAngles a = geometry::seedAngles(s, sampling.value);
-      out += "  seed angles: alpha " + deg(a.alpha) + ", beta " + deg(a.beta) +
-             ", gamma = 2 asin(k / 2R) = " + deg(a.gamma) + " degrees; delta " + (cw ? "grows" : "falls") +
-             " by gamma from alpha to beta\n";
+  } else if (m.centreForm == CentreForm::Radius) {
+    const double r = toolpath.programmedRadius(i);
+    const int zn =
+        geometry::seedSignFactor(cw ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise, r);
+    out += "  centre " + formatPoint(d.centre) + " from R " + mm(r) + ": half the chord" +
+           (role == OffsetRole::Element ? " of the programmed arc" : "") + " is " + mm((d.end - d.start).norm() / 2) +
+           " mm; " +
+           (r > 0 ? "R > 0 takes the arc of at most 180 degrees" : "R < 0 takes the arc longer than 180 degrees") +
+           " (seed formulas (1)-(2) with signs restored, sign factor zn = " + (zn > 0 ? "+1" : "-1") + ")\n";
+  } else if (threeB) {
+    const Vec2 xy = toolpath.programmedCentreWords(i);
+    out += "  3B arc: x y = start - centre = (" + mm(xy.x()) + ", " + mm(xy.y()) +
+           ") (signs from the start's quadrant in SR/NR), so the centre is " + formatPoint(s.centre) + ", radius " +
+           mm(s.radius) +
+           " mm; the arc ends where it has travelled J along the count axis, over every quadrant it "
+           "crosses\n";
+  } else {
+    const Vec2 ij = toolpath.programmedCentreWords(i);
+    std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"
+                       : m.centreForm == CentreForm::Reversed  ? "centre = start - (I, J)"
+                                                               : "centre = (I, J)";
+    out += "  centre " + formatPoint(d.centre) + " from I " + mm(ij.x()) + " J " + mm(ij.y()) + ": " + rule +
+           (role == OffsetRole::Element ? " (the programmed start " + formatPoint(d.start) + ")" : std::string()) +
+           "; radius by formula (3) = |start - centre| = " + mm(d.radius) + " mm\n";
+    if (const double error = programmedRadiusError(toolpath, i); std::abs(error) > 0.0005)
+      out += "  the end point is " + mm(std::abs(error)) + " mm off that circle (within the accepted tolerance)\n";
+  }
+  if (role == OffsetRole::Element)
+    out += "  the wire path keeps that centre, " + std::string(s.radius > d.radius ? "outside" : "inside") +
+           " the programmed arc by the offset\n";
+  out += "  radius " + mm(s.radius) + " mm, sweep " + deg(std::abs(s.sweep)) + " degrees, length " + mm(s.length()) +
+         " mm\n";
+  const geometry::ArcSampleStats st = geometry::sample(s, sampling, nullptr);  // counts only
+  if (sampling.mode == geometry::SamplingMode::Step) {
+    const geometry::SeedArcAngles a = geometry::seedAngles(s, sampling.value);
+    out += "  seed angles: alpha " + deg(a.alpha) + ", beta " + deg(a.beta) +
+           ", gamma = 2 asin(k / 2R) = " + deg(a.gamma) + " degrees; delta " + (cw ? "grows" : "falls") +
+           " by gamma from alpha to beta\n";
+  }
+  out += "  " + plural(st.points, "point") + " after the start, max deviation " + formatFixed(st.maxDeviation, 6) +
+         " mm, mean relative error " + sci(st.meanRelativeError) + "\n";
+}
+
+/// Where the passes begin and end (a program cut in several passes), for `kerf explain`.
+struct PassMarks {
+  std::vector<std::string> before, after;  ///< per move: the lines before and after its explanation
+  std::vector<std::string> role;           ///< per move: "" or "lead-in of pass 2" / "lead-out of pass 2"
+};
+
+PassMarks passMarks(const Structure* structure, std::size_t moves) {
+  PassMarks marks{std::vector<std::string>(moves), std::vector<std::string>(moves), std::vector<std::string>(moves)};
+  if (!structure || !structure->multiPass()) return marks;
+  for (std::size_t ci = 0; ci < structure->contours.size(); ++ci) {
+    const Contour& c = structure->contours[ci];
+    for (std::size_t k = 0; k < c.passes.size(); ++k) {
+      const Pass& p = c.passes[k];
+      if (p.first >= p.end || p.end > moves) continue;
+      const std::string name = "pass " + std::to_string(k + 1) + " of contour " + std::to_string(ci + 1);
+      const int kept = keptSide(p);
+      const std::string what = p.cutOff ? "the cut-off through the tab" : k == 0 ? "the rough cut" : "a skim";
+      marks.before[p.first] = "\n== " + name + " begins (" + std::to_string(c.passes.size()) +
+                              " passes from the hole at " + formatPoint(c.startHole) + "): " + what + ", " +
+                              offsetText(p) + ", " + directionName(p.direction) +
+                              (kept > 0   ? ", inside its contour"
+                               : kept < 0 ? ", outside its contour"
+                                          : "") +
+                              "\n";
+      marks.after[p.end - 1] = "== " + name + " ends: " +
+                               (p.closes   ? std::string("it closes the contour")
+                                : p.cutOff ? std::string("the tab is cut off")
+                                           : "it leaves a tab of " + mm(p.gap) + " mm") +
+                               "; " + mm(p.length) + " mm" +
+                               (p.minutes ? ", about " + minutesText(*p.minutes) + " min" : std::string()) + "\n";
+      for (std::size_t m = p.first; m < p.alongFirst && m < moves; ++m)
+        marks.role[m] = "  lead-in of " + name + ": from the hole to the contour\n";
+      for (std::size_t m = p.alongEnd; m < p.end; ++m)
+        marks.role[m] = "  lead-out of " + name + ": back from the contour\n";
     }
-    out += "  " + plural(st.points, "point") + " after the start, max deviation " + formatFixed(st.maxDeviation, 6) +
-           " mm, mean relative error " + sci(st.meanRelativeError) + "\n";
+  }
+  return marks;
+}
+
+}  // namespace
+
+std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling,
+                        const Structure* structure) {
+  std::string out = explainHeader(source, toolpath, sampling);
+  const PassMarks marks = passMarks(structure, toolpath.moves.size());
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    out += marks.before[i];
+    out += "\nline " + std::to_string(toolpath.moves[i].line) + ": " + blockText(source, toolpath.moves[i]) + "\n";
+    out += marks.role[i];
+    out += explainOffsetRole(toolpath, i);
+    if (toolpath.isTaper()) out += explainUpper(toolpath, i);
+    explainLower(out, toolpath, i, sampling);
+    out += marks.after[i];
   }
   return out;
 }
 
-std::string explainJson(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling) {
+std::string explainJson(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling,
+                        const Structure* structure) {
+  // A program cut in several passes: each move's contour and pass (1-based) and its role in it.
+  std::vector<json> passOf(toolpath.moves.size());
+  if (structure && structure->multiPass())
+    for (std::size_t ci = 0; ci < structure->contours.size(); ++ci)
+      for (std::size_t k = 0; k < structure->contours[ci].passes.size(); ++k) {
+        const Pass& p = structure->contours[ci].passes[k];
+        for (std::size_t m = p.first; m < p.end && m < passOf.size(); ++m)
+          passOf[m] = {{"contour", ci + 1},
+                       {"pass", k + 1},
+                       {"role", m < p.alongFirst  ? "lead-in"
+                                : m >= p.alongEnd ? "lead-out"
+                                                  : "contour"}};
+      }
   json j;
   j["file"] = source.name();
   j["sampling"] = samplingJson(sampling);
@@ -664,6 +742,7 @@ std::string explainJson(const SourceFile& source, const Toolpath& toolpath, cons
     } else {
       e["points"] = 1;
     }
+    if (!passOf[i].is_null()) e["pass"] = std::move(passOf[i]);
     moves.push_back(std::move(e));
   }
   j["moves"] = std::move(moves);

@@ -22,8 +22,8 @@ int runExplain(const ExplainArgs& a) {
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   const auto sampling = a.common.sampling.sampling();
-  std::cout << (a.json ? converter::explainJson(*p.source, p.toolpath, sampling)
-                       : converter::explainText(*p.source, p.toolpath, sampling));
+  std::cout << (a.json ? converter::explainJson(*p.source, p.toolpath, sampling, &p.structure)
+                       : converter::explainText(*p.source, p.toolpath, sampling, &p.structure));
   return verdictExit(p);
 }
 

@@ -30,9 +30,14 @@ std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags);
 /// (docs/passes.md).
 std::string structureJson(const Structure& structure);
 
-/// `kerf explain`: each move, how its geometry follows from its words.
-std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling);
-/// `kerf explain --json`: {"file", "sampling", "moves": [{line, kind, start, end, centre, ...}]}.
-std::string explainJson(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling);
+/// `kerf explain`: each move, how its geometry follows from its words. With the structure of a
+/// program cut in several passes, where each pass begins and ends and which moves lead in and out.
+std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling,
+                        const Structure* structure = nullptr);
+/// `kerf explain --json`: {"file", "sampling", "moves": [{line, kind, start, end, centre, ...}]};
+/// with a multi-pass structure each move of a pass has "pass": {contour, pass, role}, role
+/// "lead-in", "contour" or "lead-out".
+std::string explainJson(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling,
+                        const Structure* structure = nullptr);
 
 }  // namespace kerf::converter

@@ -42,6 +42,9 @@ if(KERF_XVFB_RUN)
   # --line with --playback: the block asked for stays selected (line 14), the wire is drawn halfway.
   kerf_snapshot_test(NAME view_line_with_playback WINDOW
                      ARGS samples/taper_punch_2deg.nc --size 900x560 --frames 4 --line 14 --playback 0.5)
+  # A program cut in three passes: the pass list, coloured by pass, the skim's block selected.
+  kerf_snapshot_test(NAME view_passes WINDOW
+                     ARGS tests/passes/die_tab_cut_off.nc --size 900x560 --frames 4 --colour-by pass --line 20)
 else()
   message(WARNING "xvfb-run (package xvfb) not found: the window snapshot tests are not built")
 endif()

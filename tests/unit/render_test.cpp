@@ -439,6 +439,26 @@ TEST_F(export_test, vtp_carries_each_cells_pass) {
   EXPECT_GT(seen[2], 0u);
 }
 
+// The window hides a pass by building the scene without its moves: they draw no surface and no
+// line, and keep their indices (the other moves' lines stay where they were).
+TEST(scene_test, hidden_moves_draw_nothing_and_keep_their_indices) {
+  const std::string square = "G90 G92 X0 Y0\nG01 X10. Y0\nY10.\nX-10.\nY-10.\nX10.\nY0\nX0 Y0\nM02\n";
+  const Part p = analyse(square);
+  const std::size_t n = p.toolpath.moves.size();
+  ASSERT_EQ(n, 7u);
+  const render::Scene all = render::buildScene(p.toolpath, {});
+  render::SceneOptions options;
+  options.hiddenMoves.assign(n, false);
+  options.hiddenMoves[2] = options.hiddenMoves[3] = true;
+  const render::Scene some = render::buildScene(p.toolpath, {}, options);
+  ASSERT_EQ(some.lower.moveFirst.size(), n + 1);  // one a move, and the end
+  EXPECT_EQ(some.lower.moveFirst[3], some.lower.moveFirst[2]);  // move 2 drew no line
+  EXPECT_LT(some.lower.vertices.size(), all.lower.vertices.size());
+  EXPECT_LT(some.triangles(), all.triangles());
+  for (const std::uint32_t m : some.triangleMove) EXPECT_TRUE(m != 2 && m != 3) << m;
+  EXPECT_GT(some.triangles(), 0u);
+}
+
 TEST_F(export_test, findings_flags_mark_the_moves_with_findings) {
   const Part p = analyse("G90 G21\nG01 X10. Y10.\nX10. Y0\nX0 Y10.\nX0 Y0\nM30\n");
   const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags->all(), {}, false);

@@ -87,7 +87,7 @@ struct ViewArgs {
   double playback = -1;
   MeshOptions mesh;
   bool colourBy = false;     ///< start with the surface coloured by slope
-  std::string colourByName;  ///< --color-by slope, as render spells it
+  std::string colourByName;  ///< --color-by slope|pass, as render spells it
   bool coarse = false;
 };
 CLI::App* addViewCommand(CLI::App& app, ViewArgs& args);

@@ -33,7 +33,10 @@ int drawRender(const RenderArgs& a) {
   render::SceneOptions so = sceneOptionsOf(a.mesh);
   so.minForcedPieceLength = ui::picturePixelMm(p.toolpath, so, request);
   so.lineTolerance = 0.25 * so.minForcedPieceLength;
-  if (request.options.colourByPass) so.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());
+  if (request.options.colourByPass) {
+    so.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());
+    so.passLines = true;
+  }
   const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, reference);
   request.annotation = annotationOf(file, p);
   request.annotation.legend = request.options.colourBySlope;

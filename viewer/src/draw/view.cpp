@@ -37,16 +37,20 @@ int drawView(const ViewArgs& a) {
     }
   }
   request.reference = converter::referenceGeometry(p);
-  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), sceneOptionsOf(a.mesh), request.reference);
+  render::SceneOptions so = sceneOptionsOf(a.mesh);
+  so.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());  // the window's colour by pass
+  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, request.reference);
+  request.structure = &p.structure;
   request.source = p.source.get();
   request.toolpath = &p.toolpath;
   request.findings = p.diags.all();
   request.scene = &scene;
-  request.sceneOptions = sceneOptionsOf(a.mesh);
+  request.sceneOptions = so;
   request.coarseFrames = a.coarse;
   request.annotation = annotationOf(file, p);
   request.annotation.legend = true;
   request.options.colourBySlope = a.colourBy;
+  request.options.colourByPass = a.colourByName == "pass";
   request.step = a.common.sampling.step.value_or(SamplingOptions::kDefaultStep);
   request.screenshot = a.screenshot;
   request.frames = a.frames;

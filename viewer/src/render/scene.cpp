@@ -234,6 +234,10 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     std::size_t t1 = t0;
     const std::uint32_t patch = mesh.trianglePatch[t0];
     while (t1 < mesh.triangles.size() && mesh.trianglePatch[t1] == patch) ++t1;
+    if (patch < cutMove.size() && cutMove[patch] < options.hiddenMoves.size() && options.hiddenMoves[cutMove[patch]]) {
+      t0 = t1;  // a hidden move draws no surface
+      continue;
+    }
     ++run;
     const std::size_t patchFirst = scene.surface.size();
     for (std::size_t t = t0; t < t1; ++t) {
@@ -296,7 +300,7 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
   for (std::size_t i = 0; i < n; ++i) {
     for (LineSet* set : {&scene.lower, &scene.upper, &scene.generators, &scene.rapids})
       set->moveFirst.push_back(static_cast<std::uint32_t>(set->vertices.size()));
-    if (i < insideUntil) continue;
+    if (i < insideUntil || (i < options.hiddenMoves.size() && options.hiddenMoves[i])) continue;
     const std::size_t last = runEnd[i] - 1;
     insideUntil = runEnd[i];
     // A merged run's chords (made only for a run: a plain move draws its own segments).
@@ -314,8 +318,9 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     }
     const std::uint8_t pass = i < options.movePass.size() ? options.movePass[i] : 0;
     scene.passes = std::max<std::size_t>(scene.passes, pass);
-    addSegment(scene.lower, lower, planes.lower, sampling, pass ? passColour(pass) : kLowerColour, scratch);
-    addSegment(scene.upper, up, planes.upper, sampling, pass ? passColour(pass) : kUpperColour, scratch);
+    const bool passColoured = options.passLines && pass > 0;
+    addSegment(scene.lower, lower, planes.lower, sampling, passColoured ? passColour(pass) : kLowerColour, scratch);
+    addSegment(scene.upper, up, planes.upper, sampling, passColoured ? passColour(pass) : kUpperColour, scratch);
     // Generators every `spacing` mm of the lower contour, and at every move's start (corners).
     if (options.generators == 0) continue;
     const double len = lower.length();

@@ -54,6 +54,8 @@ struct State {
   float step = 0.1f;
   geometry::PathSampleStats stepStats;
   std::vector<std::size_t> firstMoveOfLine;  // per source line (1-based), SIZE_MAX: none
+  std::vector<bool> passShown;               // per pass, contour after contour (the pass list)
+  bool passesChanged = false;                // a pass was shown or hidden: the scene is built again
 };
 
 /// Points along the cut path at the step, and their worst deviation (the seed's experiment).
@@ -145,6 +147,57 @@ void textPanel(State& s, float width, float height) {
   ImGui::End();
 }
 
+/// The contours and passes of a program cut in several passes: a box shows or hides each pass, a
+/// click on it selects its first move and puts the playback wire there.
+void passList(State& s) {
+  const converter::Structure* st = s.request->structure;
+  if (s.passShown.empty() || !st) return;
+  ImGui::Separator();
+  ImGui::TextUnformatted("Passes (the box shows or hides one)");
+  const double moves = static_cast<double>(std::max<std::size_t>(s.request->toolpath->moves.size(), 1));
+  std::size_t at = 0;
+  for (std::size_t ci = 0; ci < st->contours.size(); ++ci) {
+    ImGui::Text("contour %zu from %s", ci + 1, converter::formatPoint(st->contours[ci].startHole).c_str());
+    for (std::size_t k = 0; k < st->contours[ci].passes.size(); ++k, ++at) {
+      const converter::Pass& p = st->contours[ci].passes[k];
+      ImGui::PushID(static_cast<int>(at));
+      bool shown = s.passShown[at];
+      if (ImGui::Checkbox("##shown", &shown)) {
+        s.passShown[at] = shown;
+        s.passesChanged = true;
+      }
+      ImGui::SameLine();
+      const std::uint32_t c = render::passColour(k + 1);
+      ImGui::ColorButton("##colour", ImGui::ColorConvertU32ToFloat4(c), ImGuiColorEditFlags_NoTooltip,
+                         ImVec2(ImGui::GetFrameHeight() * 0.6f, ImGui::GetFrameHeight()));
+      ImGui::SameLine();
+      // Short enough for the panel: the register and value, the lines; the rest in the tooltip.
+      const std::string label = "pass " + std::to_string(k + 1) + ": " +
+                                (p.offsetRegister.empty() ? std::string() : p.offsetRegister + " ") +
+                                (p.offset ? converter::formatFixed(*p.offset, 3) + ", " : std::string()) +
+                                std::to_string(p.firstLine) + "-" + std::to_string(p.lastLine);
+      if (ImGui::Selectable(label.c_str(), s.selected && *s.selected >= p.first && *s.selected < p.end)) {
+        selectMove(s, p.first);
+        s.playback = static_cast<double>(p.first) / moves;
+        s.followPlayback = false;
+      }
+      if (ImGui::IsItemHovered()) {
+        const std::string more = std::string(p.side == converter::WireOffset::Left    ? "G41"
+                                             : p.side == converter::WireOffset::Right ? "G42"
+                                                                                      : "no offset") +
+                                 ", " + converter::directionName(p.direction) + ", " +
+                                 (p.closes   ? "closes"
+                                  : p.cutOff ? "cuts off the tab"
+                                             : "leaves a tab") +
+                                 ", " + converter::formatFixed(p.length, 3) + " mm" +
+                                 (p.minutes ? ", " + converter::formatFixed(*p.minutes, 1) + " min" : std::string());
+        ImGui::SetTooltip("%s", more.c_str());
+      }
+      ImGui::PopID();
+    }
+  }
+}
+
 void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
   const WindowRequest& r = *s.request;
   ImGui::SetNextWindowPos(ImVec2(x, 0));
@@ -169,12 +222,18 @@ void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
     ImGui::Checkbox("drawing", &s.options.reference);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("what the wire path was made from (dashed)");
   }
-  ImGui::Checkbox("colour by slope", &s.options.colourBySlope);
+  if (ImGui::Checkbox("colour by slope", &s.options.colourBySlope) && s.options.colourBySlope)
+    s.options.colourByPass = false;
+  if (!s.passShown.empty()) {
+    ImGui::SameLine();
+    if (ImGui::Checkbox("by pass", &s.options.colourByPass) && s.options.colourByPass) s.options.colourBySlope = false;
+  }
   ImGui::Checkbox("highlight findings", &s.options.highlightFindings);
   if (ImGui::Button("fit")) s.camera = s.fitted;
   ImGui::SameLine();
   if (ImGui::Button("screenshot")) screenshot = true;
 
+  passList(s);
   ImGui::Separator();
   ImGui::TextUnformatted("Wire playback");
   float play = static_cast<float>(std::max(0.0, s.playback));
@@ -259,6 +318,9 @@ void startState(State& s, const WindowRequest& request) {
   s.playback = request.playback;
   s.step = static_cast<float>(request.step);
   s.stepStats = stepStatistics(*request.toolpath, request.step);
+  if (request.structure && request.structure->multiPass())
+    for (const converter::Contour& c : request.structure->contours)
+      s.passShown.resize(s.passShown.size() + c.passes.size(), true);
   s.firstMoveOfLine.assign(request.source->lineCount() + 2, SIZE_MAX);
   for (std::size_t i = 0; i < request.toolpath->moves.size(); ++i) {
     const std::uint32_t line = request.toolpath->moves[i].line;
@@ -277,7 +339,7 @@ void startState(State& s, const WindowRequest& request) {
 /// among them: it changes how the picture is drawn, not the picture.)
 struct Drawn {
   render::Camera camera;
-  std::array<bool, 9> switches{};  // RenderOptions' switches, in switchesOf's order
+  std::array<bool, 10> switches{};  // RenderOptions' switches, in switchesOf's order
   float lineWidth = 0.0f;
   std::uint32_t background = 0;
   std::size_t selected = SIZE_MAX;
@@ -286,9 +348,9 @@ struct Drawn {
   bool valid = false;
 };
 static_assert(sizeof(render::RenderOptions) == 48, "a new RenderOptions field must join Drawn and switchesOf");
-std::array<bool, 9> switchesOf(const render::RenderOptions& o) {
-  return {o.surface, o.contours, o.generators,    o.rapids,           o.reference,
-          o.markers, o.triad,    o.colourBySlope, o.highlightFindings};
+std::array<bool, 10> switchesOf(const render::RenderOptions& o) {
+  return {o.surface, o.contours, o.generators,    o.rapids,       o.reference,
+          o.markers, o.triad,    o.colourBySlope, o.colourByPass, o.highlightFindings};
 }
 
 /// Where the three parts of a frame lie, in framebuffer pixels: text panel, 3D view, side panel.
@@ -317,6 +379,11 @@ class FrameLoop {
   /// Orbit, pan, zoom and pick; true while the view moves.
   bool handleMouse(const Layout& l);
   void advancePlayback();
+  /// After a pass was shown or hidden: the scene (and the coarse one) built again without the
+  /// hidden passes' moves.
+  void showPasses();
+  /// The scene drawn now: the request's, or the one without the hidden passes.
+  [[nodiscard]] const render::Scene& scene() const { return shownScene_ ? *shownScene_ : *request_.scene; }
   void annotate(const render::RenderOptions& options, const Layout& l);
   render::Renderer& drawView(const render::RenderOptions& options, bool moving, const Layout& l);
   bool saveScreenshot(const Layout& l, bool last, std::string& error);
@@ -326,6 +393,7 @@ class FrameLoop {
   State& s_;
   render::Renderer renderer_, coarseRenderer_;
   std::optional<render::Scene> coarse_;
+  std::optional<render::Scene> shownScene_;
   render::OffscreenTarget target_;
   unsigned char* fontPixels_ = nullptr;
   int fontW_ = 0, fontH_ = 0;
@@ -406,7 +474,7 @@ bool FrameLoop::handleMouse(const Layout& l) {
   if (dragging_ && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
     dragging_ = false;
     if ((local - pressAt_).norm() < 3.0)
-      if (auto m = pick(*request_.scene, s_.camera, local, l.viewW, l.viewH)) selectMove(s_, *m);
+      if (auto m = pick(scene(), s_.camera, local, l.viewW, l.viewH)) selectMove(s_, *m);
   }
   const bool panning =
       ImGui::IsMouseDragging(ImGuiMouseButton_Right, 1.0f) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 1.0f);
@@ -442,6 +510,29 @@ void FrameLoop::advancePlayback() {
   }
 }
 
+void FrameLoop::showPasses() {
+  if (!s_.passesChanged) return;
+  s_.passesChanged = false;
+  const converter::Structure& st = *request_.structure;
+  render::SceneOptions so = request_.sceneOptions;
+  so.hiddenMoves.assign(request_.toolpath->moves.size(), false);
+  std::size_t at = 0;
+  for (const converter::Contour& c : st.contours)
+    for (const converter::Pass& p : c.passes)
+      if (!s_.passShown[at++])
+        for (std::size_t m = p.first; m < p.end && m < so.hiddenMoves.size(); ++m) so.hiddenMoves[m] = true;
+  shownScene_ = render::buildScene(*request_.toolpath, request_.findings, so, request_.reference);
+  renderer_.setScene(*shownScene_);
+  if (coarse_) {
+    so.tolerance = std::max(so.tolerance, 0.5 * s_.fitted.mmPerPixel(targetH_));
+    so.mergeTolerance = 0.5 * s_.fitted.mmPerPixel(targetH_);
+    so.minTaperPieces = 1;
+    coarse_ = render::buildScene(*request_.toolpath, request_.findings, so, request_.reference);
+    coarseRenderer_.setScene(*coarse_);
+  }
+  shown_.valid = false;
+}
+
 void FrameLoop::annotate(const render::RenderOptions& options, const Layout& l) {
   // Drawn in the view's own coordinates (ImGui culls text against the clip rectangle as it draws),
   // then moved right by the text panel's width, clip rectangles included.
@@ -449,7 +540,7 @@ void FrameLoop::annotate(const render::RenderOptions& options, const Layout& l) 
   fg->PushClipRect(ImVec2(0, 0), ImVec2(static_cast<float>(l.viewW), static_cast<float>(l.viewH)));
   const int vtxStart = fg->VtxBuffer.Size;
   const int cmdStart = fg->CmdBuffer.Size - 1;
-  ui::drawAnnotations(*fg, *request_.scene, s_.camera, options, request_.annotation, l.viewW, l.viewH);
+  ui::drawAnnotations(*fg, scene(), s_.camera, options, request_.annotation, l.viewW, l.viewH);
   for (int v = vtxStart; v < fg->VtxBuffer.Size; ++v) fg->VtxBuffer[v].pos.x += static_cast<float>(l.viewX);
   for (int c = std::max(0, cmdStart); c < fg->CmdBuffer.Size; ++c) {
     fg->CmdBuffer[c].ClipRect.x += static_cast<float>(l.viewX);
@@ -502,6 +593,7 @@ bool FrameLoop::frame(std::string& error, bool& failed) {
   bool screenshot = false;
   textPanel(s_, l.textW, static_cast<float>(l.fbH));
   sidePanel(s_, static_cast<float>(l.fbW) - l.sideW, l.sideW, static_cast<float>(l.fbH), screenshot);
+  showPasses();
   const bool moving = handleMouse(l);
   advancePlayback();
   render::RenderOptions options = s_.options;

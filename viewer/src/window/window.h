@@ -4,6 +4,7 @@
 
 #include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/nc/source.h"
+#include "kerf/converter/structure/passes.h"
 #include "kerf/converter/toolpath.h"
 #include "kerf/render/renderer.h"
 #include "kerf/render/scene.h"
@@ -18,6 +19,9 @@ namespace kerf::window {
 struct WindowRequest {
   const converter::SourceFile* source = nullptr;
   const converter::Toolpath* toolpath = nullptr;
+  /// Its contours and passes: a program cut in several passes gets the pass list (show, hide,
+  /// select, colour by pass). Null: no list.
+  const converter::Structure* structure = nullptr;
   std::vector<converter::Diagnostic> findings;
   std::vector<geometry::Segment> reference;  ///< converter::referenceGeometry: drawn beside the path
   const render::Scene* scene = nullptr;

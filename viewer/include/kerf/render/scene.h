@@ -79,9 +79,13 @@ struct SceneOptions {
   /// detail under half a pixel, lines and surface alike, left out (displayRuns).
   double mergeTolerance = 0.0;
   bool noteMarkers = false;  ///< notes get markers too (errors and warnings always do)
-  /// Colour by pass: each move's pass in its contour (1 = the first, the rough cut; 0 = in none),
-  /// one entry a move (converter::movePasses). Empty: the contours keep their plane colours.
+  /// Each move's pass in its contour (1 = the first, the rough cut; 0 = in none), one entry a move
+  /// (converter::movePasses): the surface carries it for RenderOptions::colourByPass. Empty: none.
   std::vector<std::uint8_t> movePass;
+  bool passLines = false;  ///< the contour lines in their pass's colour too (kerf render --color-by pass)
+  /// Moves left out of the picture (the window's hidden passes), one entry a move; empty: none.
+  /// They keep their index: picking and the text panel still name moves as the toolpath does.
+  std::vector<bool> hiddenMoves;
 };
 
 struct Scene {

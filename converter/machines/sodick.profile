@@ -15,7 +15,7 @@ max_taper = 30
 uv_range = none
 thickness = none
 code A = harmless: the taper angle; it leans the wire only under G51/G52 (A0 with no G51 is no taper)
-code C = harmless: machining condition number: selects a row of the condition table (C000 = ...)
+code C = condition: machining condition number: selects a row of the condition table (C000 = ...)
 code QAIC = harmless: corner control (feed and power at corners, its arguments as written); no change to the programmed path [assumed]
 code G29 = harmless: written after G92 before the cut; meaning not modelled [assumed: no effect on the path]
 code G149 = harmless: written after the cut; meaning not modelled [assumed: no effect on the path]

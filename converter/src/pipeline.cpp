@@ -295,7 +295,8 @@ InterpreterOptions interpreterOptions(const MachineProfile& machine, const Pipel
 Interpretation interpretForMachine(const Program& program, const MachineProfile& machine, const ReadOptions& ro,
                                    InterpreterOptions& io, Diagnostics& diags, std::vector<std::string>& evidence) {
   const KnownCode* cCode = machine.find("C");
-  const bool cIsRotary = !cCode || cCode->effect != CodeEffect::Harmless;  // Sodick: C is a condition
+  const bool cIsRotary = !cCode || (cCode->effect != CodeEffect::Harmless &&
+                                    cCode->effect != CodeEffect::Condition);  // Sodick: C is a condition
   const bool millTurn = isMillTurnProgram(program) || (cIsRotary && hasRotaryMoves(program));
   if (millTurn) {
     MillTurnOptions mt;

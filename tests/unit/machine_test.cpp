@@ -465,3 +465,25 @@ TEST(machine_test, a_profile_gives_the_speed_model) {
   ASSERT_EQ(b.errorCount(), 4u) << kerf::test::dump(b);
   EXPECT_EQ(bad.locate(b.all()[0].span.offset).line, 2u);
 }
+
+// `condition_speed C001 = 4`: a speed a machining condition, named in any case; wrong names,
+// values and repeats refused at their line. The built-in sodick profile's C selects a condition.
+TEST(machine_test, a_profile_gives_its_conditions_speeds) {
+  SourceFile good("m.profile", "name = shop\ncondition_speed C001 = 4\ncondition_speed c2 = 12.5\n");
+  Diagnostics g;
+  const auto p = parseMachineProfile(good, g);
+  ASSERT_TRUE(p.has_value()) << kerf::test::dump(g);
+  EXPECT_EQ(p->conditionSpeeds.at("C001"), 4.0);
+  EXPECT_EQ(p->conditionSpeeds.at("C2"), 12.5);
+  SourceFile bad("m.profile",
+                 "name = shop\ncondition_speed 12 = 4\ncondition_speed C1 = 0\n"
+                 "condition_speed C2 = 3\ncondition_speed c2 = 4\n");
+  Diagnostics b;
+  EXPECT_FALSE(parseMachineProfile(bad, b).has_value());
+  ASSERT_EQ(b.errorCount(), 3u) << kerf::test::dump(b);
+  EXPECT_EQ(bad.locate(b.all()[2].span.offset).line, 5u);
+  const MachineProfile* sodick = findBuiltinMachine("sodick");
+  ASSERT_NE(sodick, nullptr);
+  ASSERT_NE(sodick->find("C"), nullptr);
+  EXPECT_EQ(sodick->find("C")->effect, CodeEffect::Condition);
+}

@@ -52,6 +52,7 @@ const char* codeEffectName(CodeEffect e) {
     case CodeEffect::Guides: return "guides";
     case CodeEffect::ProgramEnd: return "program-end";
     case CodeEffect::Rethread: return "rethread";
+    case CodeEffect::Condition: return "condition";
   }
   return "harmless";
 }
@@ -174,15 +175,17 @@ void readCode(const ProfileLine& l, MachineProfile& p) {
   const std::string effect = trim(l.value.substr(0, colon));
   c.note = colon == std::string::npos ? std::string{} : trim(l.value.substr(colon + 1));
   bool known = false;
-  for (CodeEffect e : {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
-                       CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread})
+  for (CodeEffect e :
+       {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
+        CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread, CodeEffect::Condition})
     if (effect == codeEffectName(e)) {
       c.effect = e;
       known = true;
     }
   if (!known) {
     l.badValue(
-        "harmless, not-modelled, position, no-motion, thickness, guides, program-end or rethread, then ': note'");
+        "harmless, not-modelled, position, no-motion, thickness, guides, program-end, rethread or condition, then "
+        "': note'");
     return;
   }
   if (c.note.empty()) {
@@ -211,6 +214,25 @@ void readOffset(const ProfileLine& l, MachineProfile& p) {
     return;
   }
   if (!p.offsets.emplace(name, value).second) l.fail(l.lead, l.eq - l.lead, name + " is given twice");
+}
+
+/// `condition_speed C001 = 4`: mm/min of a pass cut under that machining condition.
+void readConditionSpeed(const ProfileLine& l, MachineProfile& p) {
+  std::string name = trim(l.key.substr(16));
+  for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const bool wellFormed = name.size() >= 2 && std::isalpha(static_cast<unsigned char>(name[0])) &&
+                          name.find_first_not_of("0123456789", 1) == std::string::npos;
+  if (!wellFormed) {
+    l.fail(l.lead, l.eq - l.lead, "'" + trim(l.key.substr(16)) + "' is not a condition",
+           "write condition_speed C001 = 4");
+    return;
+  }
+  double value = 0.0;
+  if (!parseNumberField(l.value, value) || value <= 0.0 || value > 1e6) {
+    l.fail(l.valueAt, l.value.size(), name + ": '" + l.value + "' is not a speed above 0 mm/min");
+    return;
+  }
+  if (!p.conditionSpeeds.emplace(name, value).second) l.fail(l.lead, l.eq - l.lead, name + " is given twice");
 }
 
 /// The keys of what the machine means by its words; false for a key that is none of them.
@@ -370,13 +392,15 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       readCode(l, p);
     else if (l.key.rfind("offset ", 0) == 0 || l.key.rfind("offset\t", 0) == 0)
       readOffset(l, p);
+    else if (l.key.rfind("condition_speed ", 0) == 0 || l.key.rfind("condition_speed\t", 0) == 0)
+      readConditionSpeed(l, p);
     else if (!readReadingKey(l, p) && !readWritingKey(l, p))
       l.fail(l.lead, l.eq - l.lead, "unknown key '" + l.key + "'",
              "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
              "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, rough_rate, skim_speed, "
              "rapid_speed, thread_time, feed, write_unit, line_end, "
              "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "
-             "write_end, polar_x, polar_c, polar_frame, code <CODE>, offset <REGISTER>");
+             "write_end, polar_x, polar_c, polar_frame, code <CODE>, offset <REGISTER>, condition_speed <CONDITION>");
   }
   if (!ok) return std::nullopt;
   return p;

@@ -11,6 +11,13 @@ std::string written(const SourceFile* src, const Word& w) {
   return std::string(src->text().substr(w.offset, w.length));
 }
 
+/// A condition's name as the pass table shows it: the word as written, upper case ("c001": "C001").
+std::string conditionName(std::string word) {
+  for (char& c : word)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return word;
+}
+
 }  // namespace
 
 Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) {
@@ -39,6 +46,11 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
       case CodeEffect::Rethread:
         toolpath_.stops.push_back(static_cast<std::uint32_t>(toolpath_.moves.size()));
         if (notedCodes_.insert(key).second)
+          diags_.note(Code::MachineCode, src_, w.span(), as + ": " + code.note + " [" + machine_.name + " profile]");
+        break;
+      case CodeEffect::Condition:
+        toolpath_.conditions.push_back({static_cast<std::uint32_t>(toolpath_.moves.size()), conditionName(as)});
+        if (notedCodes_.insert(std::string(1, w.letter)).second)
           diags_.note(Code::MachineCode, src_, w.span(), as + ": " + code.note + " [" + machine_.name + " profile]");
         break;
       case CodeEffect::Harmless:

@@ -59,6 +59,7 @@ json structureObject(const Structure& st) {
                  {"gap_mm", p.gap},
                  {"length_mm", p.length},
                  {"contour_length_mm", p.alongLength},
+                 {"condition", p.condition.empty() ? json(nullptr) : json(p.condition)},
                  {"minutes", p.minutes ? json(*p.minutes) : json(nullptr)},
                  {"speed_mm_per_min", p.minutes ? json(p.speed) : json(nullptr)}};
       passes.push_back(std::move(pj));
@@ -224,7 +225,8 @@ std::string structureText(const Structure& st) {
     for (std::size_t pi = 0; pi < c.passes.size(); ++pi) {
       const Pass& p = c.passes[pi];
       out += "    pass " + std::to_string(pi + 1) + ": lines " + std::to_string(p.firstLine) + "-" +
-             std::to_string(p.lastLine) + ", " + offsetText(p) + ", " + directionName(p.direction) + ", " +
+             std::to_string(p.lastLine) + ", " + offsetText(p) +
+             (p.condition.empty() ? std::string() : ", " + p.condition) + ", " + directionName(p.direction) + ", " +
              (p.closes   ? std::string("closes")
               : p.cutOff ? std::string("cuts off the tab")
                          : "leaves a tab of " + mm(p.gap) + " mm") +

@@ -42,7 +42,9 @@ std::string modelText(const SpeedModel& model, double roughSpeed) {
     rough += " over " + formatFixed(*model.thickness, 3) + " mm = " + speedText(roughSpeed) + " mm/min";
   return (model.feedIsSpeed ? std::string("F where the program gives it, else ") : std::string()) + rough + ", skims " +
          speedText(model.skimSpeed) + " mm/min, rapids " + speedText(model.rapidSpeed) + " mm/min, threading " +
-         speedText(model.threadSeconds) + " s: the " + model.profile + " profile's speeds";
+         speedText(model.threadSeconds) + " s" +
+         (model.conditionSpeeds.empty() ? std::string() : ", and its conditions' speeds") + ": the " + model.profile +
+         " profile's speeds";
 }
 
 }  // namespace
@@ -54,6 +56,7 @@ SpeedModel speedModel(const MachineProfile& machine, const Toolpath& toolpath, s
   m.rapidSpeed = machine.rapidSpeed;
   m.threadSeconds = machine.threadSeconds;
   m.feedIsSpeed = machine.feedIsSpeed;
+  m.conditionSpeeds = machine.conditionSpeeds;
   m.speed = speed;
   m.profile = machine.name;
   if (toolpath.heights.known) {
@@ -73,7 +76,11 @@ void estimateTime(const Toolpath& toolpath, const SpeedModel& model, Structure& 
     for (std::size_t k = 0; k < c.passes.size(); ++k) {
       Pass& p = c.passes[k];
       const bool fullMaterial = k == 0 || p.cutOff;  // a skim cuts only what the pass before left
-      p.minutes = passMinutes(toolpath, p, model, fullMaterial ? roughSpeed : skimSpeed);
+      double speed = fullMaterial ? roughSpeed : skimSpeed;
+      if (const auto known = model.conditionSpeeds.find(p.condition);
+          !model.speed && known != model.conditionSpeeds.end())
+        speed = known->second;
+      p.minutes = passMinutes(toolpath, p, model, speed);
       p.speed = p.minutes && *p.minutes > 0 ? p.length / *p.minutes : 0.0;
       if (p.minutes) {
         t.cutting += *p.minutes;

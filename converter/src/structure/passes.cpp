@@ -193,7 +193,17 @@ int keptSide(const Pass& pass) {
 }
 
 Structure findStructure(const Toolpath& toolpath, double tolerance) {
-  return StructureFinder(toolpath, tolerance).run();
+  Structure st = StructureFinder(toolpath, tolerance).run();
+  // Each pass's machining condition: the last one selected at or before its first move along the
+  // contour (a condition is usually written on the lead-in's block or just before it).
+  if (!toolpath.conditions.empty())
+    for (Contour& c : st.contours)
+      for (Pass& p : c.passes) {
+        const std::size_t at = p.alongFirst < p.alongEnd ? p.alongFirst : p.first;
+        for (const Toolpath::ConditionChange& change : toolpath.conditions)
+          if (change.from <= at) p.condition = change.name;
+      }
+  return st;
 }
 
 const char* directionName(int direction) {
@@ -256,6 +266,9 @@ std::optional<Toolpath> toolpathOfPass(const Toolpath& toolpath, const Structure
   for (const std::uint32_t s : toolpath.stops)
     if (s <= toolpath.moves.size() && (out.stops.empty() || out.stops.back() != newIndex[s]))
       out.stops.push_back(newIndex[s]);
+  out.conditions.clear();
+  for (const Toolpath::ConditionChange& change : toolpath.conditions)
+    out.conditions.push_back({newIndex[std::min<std::size_t>(change.from, toolpath.moves.size())], change.name});
   for (const OffsetSpan& span : toolpath.offsetSpans) {
     OffsetSpan kept = span;
     kept.first = newIndex[std::min<std::size_t>(span.first, toolpath.moves.size())];

@@ -130,6 +130,13 @@ struct Toolpath {
   /// M01 or profile `rethread` code, in order (a rapid between cuts with one beside it goes to a
   /// new start hole).
   std::vector<std::uint32_t> stops;
+  /// The machining conditions the program selects (a profile's `condition` code: Sodick C001), in
+  /// order: from move `from` on, `name` is in force (as written, upper case).
+  struct ConditionChange {
+    std::uint32_t from = 0;
+    std::string name;
+  };
+  std::vector<ConditionChange> conditions;
 
   Dialect dialect = Dialect::Plain;
   /// The upper contour, one segment per move (same index), or empty for a plain program.

@@ -14,6 +14,7 @@
 #include "kerf/converter/toolpath.h"
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,6 +36,7 @@ enum class CodeEffect : std::uint8_t {
   Guides,       ///< P Q give the wire guides' geometry: accepted, not needed for the part
   ProgramEnd,   ///< ends the program, as M02 does
   Rethread,     ///< cuts or threads the wire: a rapid next to it goes to a new start hole (as after M00)
+  Condition,    ///< selects a machining condition (Sodick C001): each pass reports the one in force
 };
 const char* codeEffectName(CodeEffect e);
 
@@ -76,6 +78,9 @@ struct MachineProfile {
   double rapidSpeed = 1000.0;   ///< rapid_speed: mm/min of a rapid
   double threadSeconds = 30.0;  ///< thread_time: s to thread the wire in a start hole
   bool feedIsSpeed = false;     ///< feed = speed: the program's F is the wire's speed, mm/min (LinuxCNC, hot wire)
+  /// `condition_speed C001 = 4`: mm/min of a pass cut under that machining condition (it wins over
+  /// rough_rate and skim_speed), by the condition as the program writes it, upper case.
+  std::map<std::string, double> conditionSpeeds;
   // Writing for this machine (`kerf convert --to iso --for NAME`, docs/machines.md).
   bool writeMicrometres = false;          ///< write_unit = um: integers in µm, no decimal point
   bool crlf = false;                      ///< line_end = crlf

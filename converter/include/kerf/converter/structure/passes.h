@@ -35,6 +35,9 @@ struct Pass {
   geometry::Vec2 from{0, 0}, to{0, 0};  ///< where its programmed contour starts and ends, mm
   double alongLength = 0.0;             ///< mm of programmed contour
   std::uint32_t firstLine = 0, lastLine = 0;  ///< the source lines of its first and last moves
+  /// The machining condition in force along it (Toolpath::conditions, at its first move along the
+  /// contour: "C001"); empty when the program selects none.
+  std::string condition;
   /// The cutting-time estimate (structure/cutting_time.h): minutes, and the mean speed it took
   /// (mm/min); nothing when the model cannot tell (a rough cut of unknown thickness).
   std::optional<double> minutes;

@@ -347,6 +347,13 @@ elseif(CASE STREQUAL "outputs_are_safe")
     execute_process(COMMAND sh -c "test ${test} '${path}'" RESULT_VARIABLE r)
     expect("${msg}" r EQUAL 0)
   endfunction()
+  # The file behind standard input is an input too (issue 41): `convert - -o part.nc < part.nc`.
+  file(SHA256 "${part}" before)
+  execute_process(COMMAND sh -c "'${KERF}' convert - --to iso -o '${part}' < '${part}'" RESULT_VARIABLE rc
+                  ERROR_VARIABLE err)
+  file(SHA256 "${part}" after)
+  string(FIND "${err}" "refusing to write the output over the file standard input reads" at)
+  expect("convert - -o F < F must refuse, not replace F" rc EQUAL 2 AND NOT at EQUAL -1 AND before STREQUAL after)
   run("${KERF}" convert "${part}" --to bp95d -o /dev/null)
   expect("-o /dev/null writes through the device" rc EQUAL 0)
   is_kind(-c /dev/null "/dev/null is still a character device")

@@ -198,7 +198,16 @@ bool writeOutputVia(const std::string& path, const std::vector<std::string>& inp
   struct stat st {};
   const bool exists = ::stat(target.c_str(), &st) == 0;
   for (const std::string& in : inputs) {
-    if (in.empty() || in == "-") continue;
+    if (in.empty()) continue;
+    if (in == "-") {  // standard input: refused when it is the very file the output would replace
+      struct stat stdinStat {};
+      if (exists && ::fstat(STDIN_FILENO, &stdinStat) == 0 && S_ISREG(stdinStat.st_mode) &&
+          stdinStat.st_dev == st.st_dev && stdinStat.st_ino == st.st_ino) {
+        error = "refusing to write the output over the file standard input reads ('" + path + "')";
+        return false;
+      }
+      continue;
+    }
     if (exists && fs::equivalent(target, in, ec)) {
       error = "refusing to write the output over the input file '" + in + "'";
       return false;

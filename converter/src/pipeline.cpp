@@ -107,6 +107,16 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
     o.maxElements = ro.maxMoves;
     result.drawing = readDxf(*out.source, o, out.diags);
   }
+  // A drawing that yields nothing to cut says so, whatever the reason (issue 41): skipped entities
+  // counted, a refusal or the budget already reported.
+  if (result.drawing.elements.empty() && !out.diags.hasErrors()) {
+    std::string skipped;
+    for (const auto& [type, n] : result.drawing.skipped)
+      skipped += (skipped.empty() ? "" : ", ") + std::to_string(n) + " " + type;
+    out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},
+                    "the drawing holds no line, arc or curve Kerf can cut: nothing to cut" +
+                        (skipped.empty() ? std::string() : " (it holds " + skipped + ")"));
+  }
   std::vector<geometry::Segment> segments;
   segments.reserve(result.drawing.elements.size());
   for (const DrawingElement& e : result.drawing.elements) segments.push_back(e.segment);

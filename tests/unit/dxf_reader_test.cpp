@@ -139,3 +139,25 @@ TEST(dxf_reader_test, a_truncated_binary_dxf_is_an_error_at_its_byte_offset) {
 }
 
 }  // namespace
+
+// Angles of any size are reduced in closed form (issue 41: `while (a1 <= a0) a1 += 2 pi` never ended
+// for a start angle of 1e20): an ARC from 1e20 degrees (reduced to one turn, exactly) to 10, one
+// from 350 to 370 (20 degrees through 0) and an ELLIPSE whose start parameter is 1e300 each read
+// at once, as arcs of a sweep in (0, 2 pi].
+TEST(dxf_reader_test, huge_angles_are_reduced_without_a_loop) {
+  Diagnostics d(100);
+  const Drawing g = read(ascii("0\nARC\n8\n0\n10\n0\n20\n0\n40\n5\n50\n1e20\n51\n10\n"
+                               "0\nARC\n8\n0\n10\n0\n20\n0\n40\n5\n50\n350\n51\n370\n"
+                               "0\nELLIPSE\n8\n0\n10\n0\n20\n0\n11\n5\n21\n0\n40\n0.5\n41\n1e300\n42\n6.28\n"),
+                         d);
+  ASSERT_TRUE(g.ok);
+  ASSERT_GE(g.elements.size(), 3u);
+  const auto& first = g.elements[0].segment;
+  ASSERT_TRUE(first.isArc());
+  EXPECT_GT(first.sweep, 0.0);
+  EXPECT_LE(first.sweep, 2 * kPi);
+  const double start = std::fmod(std::fmod(1e20, 360.0) * kPi / 180, 2 * kPi);  // where DXF says it starts
+  EXPECT_NEAR(first.start.x(), 5 * std::cos(start), 1e-9);
+  const auto& second = g.elements[1].segment;
+  EXPECT_NEAR(second.sweep, 20 * kPi / 180, 1e-12);  // 350 to 370: 20 degrees through 0
+}

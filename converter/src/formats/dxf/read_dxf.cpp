@@ -14,10 +14,12 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 
 namespace kerf::converter {
 
@@ -243,6 +245,37 @@ struct Entity {
   }
 };
 
+/// Kerf's range for drawings: points and sizes within this many mm of the origin (a kilometre; the
+/// ISO reader's numbers stop at 1e9 in their own unit), INSERT scales within this factor, arrays of
+/// at most this many rows or columns (K0132).
+constexpr double kLargestCoordinate = 1e6;
+constexpr double kLargestScale = 1e6;
+constexpr double kLargestArray = 1e6;
+
+/// `to` moved by whole turns to the first value above `from` + eps, for angles within two turns
+/// of each other (both reduced by fmod): at most two steps, never a loop over the turns.
+double nextAbove(double from, double to, double eps) {
+  for (int k = 0; k < 3 && to <= from + eps; ++k) to += 2 * kPi;
+  return to;
+}
+
+/// A value refused as out of range, for its message: three decimals while it is small enough to
+/// read so, else in exponent form (1e300 is not 300 digits long).
+std::string outOfRange(double v) {
+  if (std::isfinite(v) && std::abs(v) < 1e9) return formatFixed(v, 3);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3e", v);
+  return buf;
+}
+
+std::string outOfRange(const Vec2& p) { return "(" + outOfRange(p.x()) + ", " + outOfRange(p.y()) + ")"; }
+
+/// A number read as an integer (a flag, a count, a degree): rounded when it lies within
+/// +-2^31 - 1, else `fallback`; never cast out of int's range.
+int asInteger(double v, int fallback) {
+  return std::isfinite(v) && std::abs(v) <= 2147483647.0 ? static_cast<int>(std::lround(v)) : fallback;
+}
+
 struct DxfBlock {  // a BLOCK section entry: its base point and its entities
   Vec2 base{0, 0};
   std::vector<Entity> entities;
@@ -349,7 +382,7 @@ class DrawingReader {
       if (t.code == 0) break;
       if (t.code == 9 && i + 1 < tags.size()) {
         if (t.text == "$ACADVER") drawing_.version = std::string(tags[i + 1].text);
-        if (t.text == "$INSUNITS") drawing_.insUnits = static_cast<int>(tags[i + 1].number);
+        if (t.text == "$INSUNITS") drawing_.insUnits = asInteger(tags[i + 1].number, -1);
       }
     }
     return skipSection(tags, i);
@@ -458,6 +491,35 @@ class DrawingReader {
                    std::string(e.type) + (binary_ ? " at byte " + std::to_string(e.where) : "") + ": " + what);
   }
 
+  /// An entity beyond Kerf's range (K0132): an error at its line; the entity is left out.
+  void refuse(const Entity& e, const std::string& what) {
+    diags_.error(Code::DrawingOutOfRange, &src_, binary_ ? SourceSpan::wholeFile() : e.span,
+                 std::string(e.type) + (binary_ ? " at byte " + std::to_string(e.where) : "") + ": " + what,
+                 "Kerf reads drawings within 1e6 mm (a kilometre) of the origin");
+  }
+
+  /// Counts `n` more entity visits, the expansion of INSERT `e`, against the budget
+  /// (DxfOptions::maxVisits); false, with one error at the INSERT that spends it.
+  bool visit(const Entity& e, std::size_t n) {
+    if (!overBudget_ && n <= o_.maxVisits - std::min(o_.maxVisits, visits_)) {
+      visits_ += n;
+      return true;
+    }
+    if (!overBudget_)
+      diags_.error(Code::DxfEntity, &src_, binary_ ? SourceSpan::wholeFile() : e.span,
+                   "INSERT" + (binary_ ? " at byte " + std::to_string(e.where) : std::string()) +
+                       ": the drawing's INSERTs expand to more than " + std::to_string(o_.maxVisits) +
+                       " entities: refused before expanding further");
+    overBudget_ = true;
+    return false;
+  }
+
+  /// Whether a point of the drawing, in mm, lies within Kerf's range.
+  static bool inRange(const Vec2& p) {
+    return std::isfinite(p.x()) && std::isfinite(p.y()) && std::abs(p.x()) <= kLargestCoordinate &&
+           std::abs(p.y()) <= kLargestCoordinate;
+  }
+
   bool room() {
     if (drawing_.elements.size() < o_.maxElements) return true;
     if (!overBudget_)
@@ -469,6 +531,11 @@ class DrawingReader {
   }
 
   void add(const Entity& e, const std::string& layer, const Segment& s) {
+    if (!inRange(s.start) || !inRange(s.end) ||
+        (s.isArc() && (!inRange(s.centre) || !(s.radius <= kLargestCoordinate)))) {
+      refuse(e, "it reaches " + outOfRange(inRange(s.start) ? s.end : s.start) + " mm, beyond 1e6 mm");
+      return;
+    }
     if (!room()) return;
     DrawingElement d;
     d.segment = s;
@@ -493,8 +560,13 @@ class DrawingReader {
       warn(e, "radius " + formatFixed(r, 6) + ": no arc");
       return;
     }
-    if (full) a1 = a0 + 2 * kPi;
-    while (a1 <= a0) a1 += 2 * kPi;
+    if (!(r * scale_ <= kLargestCoordinate)) {
+      refuse(e, "a radius of " + outOfRange(r * scale_) + " mm, beyond 1e6 mm");
+      return;
+    }
+    // Whole turns taken off in closed form (fmod is exact): a start angle of 1e20 costs nothing.
+    a0 = std::fmod(a0, 2 * kPi);
+    a1 = full ? a0 + 2 * kPi : nextAbove(a0, std::fmod(a1, 2 * kPi), 0.0);
     if (const std::optional<double> k = a.similarity()) {
       const Vec2 p = a(c + r * Vec2(std::cos(a0), std::sin(a0))) * scale_;
       const Vec2 q = full ? p : Vec2(a(c + r * Vec2(std::cos(a1), std::sin(a1))) * scale_);
@@ -574,7 +646,9 @@ class DrawingReader {
       addLine(e, layer, a, {e.number(10), e.number(20)}, {e.number(11), e.number(21)});
     } else if (type == "ARC" || type == "CIRCLE") {
       const bool circle = type == "CIRCLE";
-      const double a0 = circle ? 0.0 : e.number(50) * kPi / 180, a1 = circle ? 0.0 : e.number(51) * kPi / 180;
+      // Degrees reduced to one turn before they become radians (fmod is exact).
+      const double a0 = circle ? 0.0 : std::fmod(e.number(50), 360.0) * kPi / 180;
+      const double a1 = circle ? 0.0 : std::fmod(e.number(51), 360.0) * kPi / 180;
       const bool full = circle || std::abs(std::remainder(a1 - a0, 2 * kPi)) < 1e-12;
       addArc(e, layer, a, {e.number(10), e.number(20)}, e.number(40), a0, a1, full);
     } else if (type == "LWPOLYLINE") {
@@ -590,9 +664,9 @@ class DrawingReader {
           bulge.back() = t.number;
         }
       }
-      addPolyline(e, layer, a, v, bulge, (static_cast<int>(e.number(70)) & 1) != 0);
+      addPolyline(e, layer, a, v, bulge, (asInteger(e.number(70), 0) & 1) != 0);
     } else if (type == "POLYLINE") {
-      const int flags = static_cast<int>(e.number(70));
+      const int flags = asInteger(e.number(70), 0);
       if (flags & (16 | 64)) {  // polygon and polyface meshes
         ++drawing_.skipped[std::string(type) + " (mesh)"];
         return;
@@ -600,7 +674,7 @@ class DrawingReader {
       std::vector<Vec2> v;
       std::vector<double> bulge;
       for (const Entity& vert : e.children) {
-        const int vf = static_cast<int>(vert.number(70));
+        const int vf = asInteger(vert.number(70), 0);
         if (vf & 16) continue;  // a spline frame's control point, not on the curve
         v.emplace_back(vert.number(10), vert.number(20));
         bulge.push_back(vert.number(42));
@@ -630,8 +704,15 @@ class DrawingReader {
     }
     // The minor axis is the normal crossed with the major axis, scaled by the ratio.
     const Vec2 minor = (nz < 0 ? Vec2(major.y(), -major.x()) : Vec2(-major.y(), major.x())) * ratio;
-    double t0 = e.number(41, 0.0), t1 = e.number(42, 2 * kPi);
-    while (t1 <= t0 + 1e-12) t1 += 2 * kPi;
+    if (!(ratio <= 1.0 + 1e-9) || !inRange(c * scale_) ||
+        !(std::hypot(major.x(), major.y()) * scale_ <= kLargestCoordinate)) {
+      refuse(e, "an ellipse of ratio " + outOfRange(ratio) + " and major axis " +
+                    outOfRange(std::hypot(major.x(), major.y()) * scale_) +
+                    " mm: the ratio must be at most 1, the axes within 1e6 mm");
+      return;
+    }
+    const double t0 = std::fmod(e.number(41, 0.0), 2 * kPi);
+    const double t1 = nextAbove(t0, std::fmod(e.number(42, 2 * kPi), 2 * kPi), 1e-12);
     geometry::ParametricCurve curve;
     const double s = scale_;
     curve.point = [=](double t) { return Vec2(a(c + std::cos(t) * major + std::sin(t) * minor) * s); };
@@ -642,7 +723,7 @@ class DrawingReader {
   }
 
   void spline(const Entity& e, const std::string& layer, const Affine& a) {
-    const int degree = static_cast<int>(e.number(71, 3));
+    const int degree = asInteger(e.number(71, 3), -1);
     std::vector<double> knots, weights;
     std::vector<Vec2> control, fit;
     for (const Tag& t : e.tags) {
@@ -734,15 +815,31 @@ class DrawingReader {
       warn(e, "block '" + name + "' is not defined in the file");
       return;
     }
-    if (depth >= o_.maxInsertDepth) {
-      warn(e, "INSERTs nested deeper than " + std::to_string(o_.maxInsertDepth) + " (a block that inserts itself?)");
+    if (depth >= o_.maxInsertDepth) {  // said once a block: a deep tree would say it for every leaf
+      if (tooDeep_.insert(name).second)
+        warn(e, "INSERTs nested deeper than " + std::to_string(o_.maxInsertDepth) + " (a block that inserts itself?)");
       return;
     }
     const DxfBlock& b = it->second;
-    const double sx = e.number(41, 1.0), sy = e.number(42, 1.0), rot = e.number(50) * kPi / 180;
-    const int cols = std::max(1, static_cast<int>(e.number(70, 1))),
-              rows = std::max(1, static_cast<int>(e.number(71, 1)));
+    const double sx = e.number(41, 1.0), sy = e.number(42, 1.0), rot = std::fmod(e.number(50), 360.0) * kPi / 180;
+    const double colsWritten = e.number(70, 1), rowsWritten = e.number(71, 1);
     const double dc = e.number(44), dr = e.number(45);
+    if (!(std::abs(sx) > 0 && std::abs(sx) <= kLargestScale && std::abs(sy) > 0 && std::abs(sy) <= kLargestScale)) {
+      refuse(e, "a scale of " + outOfRange(sx) + " x " + outOfRange(sy) + ": 0, or beyond 1e6");
+      return;
+    }
+    if (!(colsWritten <= kLargestArray && rowsWritten <= kLargestArray) || std::abs(dc) > kLargestCoordinate ||
+        std::abs(dr) > kLargestCoordinate) {
+      refuse(e, "an array of " + outOfRange(colsWritten) + " x " + outOfRange(rowsWritten) +
+                    " copies, or a spacing beyond 1e6: refused before expanding");
+      return;
+    }
+    const int cols = std::max(1, asInteger(colsWritten, 1)), rows = std::max(1, asInteger(rowsWritten, 1));
+    // Every copy of every entity of the block is a visit (a text adds no element, a nested INSERT
+    // a warning): the work is counted before it is done, as the G-code move budget is.
+    if (!visit(e, static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows) *
+                      std::max<std::size_t>(b.entities.size(), 1)))
+      return;
     const Eigen::Matrix2d r = Eigen::Rotation2Dd(rot).toRotationMatrix();
     for (int row = 0; row < rows; ++row)
       for (int col = 0; col < cols; ++col) {
@@ -763,6 +860,8 @@ class DrawingReader {
   Drawing drawing_;
   bool binary_ = false;
   bool overBudget_ = false;
+  std::size_t visits_ = 0;         ///< entity visits through INSERTs so far (visit())
+  std::set<std::string> tooDeep_;  ///< blocks already reported as nested too deep
   double scale_ = 1.0;
   std::map<std::string, DxfBlock> blocks_;
 };

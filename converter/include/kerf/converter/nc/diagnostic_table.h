@@ -43,6 +43,7 @@
   X(129, WireOffsetRefused, Error, "error", "the wire offset would need more pieces than the budget allows; nothing is computed") \
   X(130, CurveSyntax, Error, "error", "a curve (`--curve`, a `.curve` file) whose expression does not parse or evaluate to a finite point, whose range is empty, or whose point list has a line that is not two numbers") \
   X(131, CurveFit, Note, "note", "the biarcs a curve was fitted with (spans, largest error); error: a curve that cannot be fitted within the tolerance (a cusp, a corner) or needs more spans than allowed") \
+  X(132, DrawingOutOfRange, Error, "error", "a drawing's entity beyond Kerf's range: a point or size farther than 1e6 mm (a kilometre), an INSERT scale of 0 or beyond 1e6, an ellipse whose ratio is outside (0, 1]; refused at its line, the rest of the drawing read") \
   /* Words and modal state */ \
   X(201, UnknownGCode, Error, "error", "a G code neither the standard set nor the machine profile knows; the help names the built-in profiles that know it") \
   X(202, UnknownMCode, Warning, "warning", "an M code neither the standard set nor the machine profile knows (once per code); taken as having no effect on the path") \

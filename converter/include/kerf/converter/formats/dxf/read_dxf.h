@@ -42,6 +42,9 @@ struct DxfOptions {
   double unitToMm = 0.0;
   std::size_t maxElements = 5'000'000;  ///< refuse past this many lines and arcs (nested INSERT arrays)
   int maxInsertDepth = 16;
+  /// Entity visits through INSERTs (copies of copies, arrays, those that add nothing included),
+  /// counted before each INSERT expands: past it the drawing is refused (K0122).
+  std::size_t maxVisits = 20'000'000;
 };
 
 struct DrawingElement {

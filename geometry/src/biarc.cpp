@@ -232,7 +232,7 @@ BiarcFit fitPointList(const std::vector<Vec2>& points, const BiarcOptions& optio
   std::vector<Vec2> pts;
   for (const Vec2& p : points)
     if (pts.empty() || (p - pts.back()).norm() > 1e-12) pts.push_back(p);
-  if (pts.size() < 2) {
+  if (pts.size() < 2 || pts.size() > kMostFitPoints) {
     BiarcFit none;
     none.ok = false;
     return none;

@@ -254,6 +254,9 @@ bool looksLikeCurve(std::string_view text) {
   return false;
 }
 
+/// Points of a point list lie within this many mm of the origin (as drawings do, K0132).
+constexpr double kLargestCurveCoordinate = 1e6;
+
 Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& diags) {
   Drawing d;
   d.version = "curve";
@@ -283,7 +286,19 @@ Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& dia
           ok = false;
           continue;
         }
+        if (!(std::abs(x) <= kLargestCurveCoordinate && std::abs(y) <= kLargestCurveCoordinate)) {
+          diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
+                      "a point beyond 1e6 mm of the origin: Kerf reads curves within a kilometre");
+          ok = false;
+          continue;
+        }
         if (pts.empty() || (pts.back() - geometry::Vec2(x, y)).norm() > 1e-9) pts.emplace_back(x, y);
+        if (pts.size() > geometry::kMostFitPoints) {
+          diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
+                      "more than " + std::to_string(geometry::kMostFitPoints) +
+                          " points: Kerf fits a curve through at most that many (split the list)");
+          return d;
+        }
       }
       if (!ok) return d;
       if (pts.size() < 2) {
@@ -369,6 +384,13 @@ Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& dia
       diags.error(
           Code::CurveSyntax, &src, {bad.offset, bad.length},
           std::string(std::isfinite(x) ? "y" : "x") + " is not a finite number at t = " + formatFixed(state->t, 6));
+      return d;
+    }
+    if (std::abs(x) > kLargestCurveCoordinate || std::abs(y) > kLargestCurveCoordinate) {
+      const Expression& bad = std::abs(x) <= kLargestCurveCoordinate ? state->y : state->x;
+      diags.error(Code::CurveSyntax, &src, {bad.offset, bad.length},
+                  std::string(std::abs(x) <= kLargestCurveCoordinate ? "y" : "x") + " reaches beyond 1e6 mm at t = " +
+                      formatFixed(state->t, 6) + ": Kerf reads curves within a kilometre of the origin");
       return d;
     }
   }

@@ -514,6 +514,16 @@ class DrawingReader {
     return false;
   }
 
+  /// The size of the box around points (its longer side), in their units.
+  static double extentOf(const std::vector<Vec2>& points) {
+    Vec2 lo = points.front(), hi = points.front();
+    for (const Vec2& q : points) {
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+    return (hi - lo).maxCoeff();
+  }
+
   /// Whether a point of the drawing, in mm, lies within Kerf's range.
   static bool inRange(const Vec2& p) {
     return std::isfinite(p.x()) && std::isfinite(p.y()) && std::abs(p.x()) <= kLargestCoordinate &&
@@ -734,11 +744,40 @@ class DrawingReader {
       if (t.code == 11) fit.emplace_back(t.number, 0.0);
       if (t.code == 21 && !fit.empty()) fit.back().y() = t.number;
     }
+    // Refused or left out in closed form before any fitting (issue 41: a zero weight, a point at
+    // 1e308 or a curve of no extent kept the biarc fitter busy for a minute and then gave nothing).
+    for (const Vec2& q : control)
+      if (!inRange(a(q) * scale_)) {
+        refuse(e, "a control point at " + outOfRange(a(q) * scale_) + " mm, beyond 1e6 mm");
+        return;
+      }
+    for (const Vec2& q : fit)
+      if (!inRange(a(q) * scale_)) {
+        refuse(e, "a fit point at " + outOfRange(a(q) * scale_) + " mm, beyond 1e6 mm");
+        return;
+      }
+    for (const double w : weights)
+      if (!(w > 0 && w <= kLargestScale)) {
+        refuse(e, "a weight of " + outOfRange(w) + ": weights must lie in (0, 1e6]");
+        return;
+      }
+    // Fit points repeated one after another add nothing: dropped.
+    fit.erase(std::unique(fit.begin(), fit.end(), [](const Vec2& x, const Vec2& y) { return (x - y).norm() < 1e-12; }),
+              fit.end());
     const std::size_t n = control.size();
+    if (n > 0 && extentOf(control) * scale_ < o_.curveTolerance && fit.size() < 2) {
+      warn(e, "its control points all lie within the curve tolerance of one point: a curve of no extent");
+      return;
+    }
     const bool nurbs = degree >= 1 && degree <= 11 && n >= static_cast<std::size_t>(degree) + 1 &&
                        knots.size() == n + static_cast<std::size_t>(degree) + 1 &&
                        std::is_sorted(knots.begin(), knots.end()) && (weights.empty() || weights.size() == n);
     if (!nurbs) {
+      if (fit.size() > geometry::kMostFitPoints) {
+        refuse(e, std::to_string(fit.size()) + " fit points: Kerf fits a curve through at most " +
+                      std::to_string(geometry::kMostFitPoints) + " (without control points and knots)");
+        return;
+      }
       if (fit.size() >= 2) {
         std::vector<Vec2> pts;
         for (const Vec2& p : fit) pts.push_back(a(p) * scale_);
@@ -750,7 +789,7 @@ class DrawingReader {
       }
       warn(e, "its control points, knots and weights do not make a curve (degree " + std::to_string(degree) + ", " +
                   std::to_string(n) + " control points, " + std::to_string(knots.size()) +
-                  " knots), and it has no fit points");
+                  " knots), and it has fewer than two distinct fit points");
       return;
     }
     if (weights.empty()) weights.assign(n, 1.0);

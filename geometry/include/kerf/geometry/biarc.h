@@ -65,9 +65,14 @@ struct BiarcOptions {
 /// Fits the curve with biarcs within options.tolerance (see the file comment).
 BiarcFit fitBiarcs(const ParametricCurve& curve, const BiarcOptions& options = {});
 
+/// The most points fitPointList takes. Eigen's interpolation solves a dense system (O(n^3) time,
+/// O(n^2) memory) and the biarc fit of the result grows with it: 1,000 points take about 5 s on a
+/// two-core machine (docs/performance.md), so the readers refuse longer lists at their line.
+constexpr std::size_t kMostFitPoints = 1000;
+
 /// A smooth curve through points (an interpolating cubic B-spline, chord-length parameters:
-/// Eigen's unsupported SplineFitting), fitted
-/// with biarcs: CAWEP's point lists. At least two distinct points.
+/// Eigen's unsupported SplineFitting), fitted with biarcs: CAWEP's point lists. At least two
+/// distinct points and at most kMostFitPoints (ok is false otherwise).
 BiarcFit fitPointList(const std::vector<Vec2>& points, const BiarcOptions& options = {});
 
 }  // namespace kerf::geometry

@@ -76,7 +76,8 @@ std::optional<PlaneChoice> parsePlane(std::string_view text) {
   const std::string number(text.substr(2));
   char* end = nullptr;
   const double z = std::strtod(number.c_str(), &end);
-  if (end != number.c_str() + number.size() || !std::isfinite(z)) return std::nullopt;
+  // Within a kilometre, as every coordinate Kerf reads.
+  if (end != number.c_str() + number.size() || !(std::abs(z) <= 1e6)) return std::nullopt;
   return PlaneChoice{PlaneChoice::Kind::Height, z};
 }
 

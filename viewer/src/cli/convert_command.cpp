@@ -177,7 +177,7 @@ int runConvert(const ConvertArgs& a) {
   } else {
     const std::optional<PlaneChoice> plane = parsePlane(a.plane.value_or("lower"));
     if (!plane) {
-      reportError("--plane takes lower, upper or z=HEIGHT, not '" + *a.plane + "'");
+      reportError("--plane takes lower, upper or z=HEIGHT (|HEIGHT| up to 1e6 mm), not '" + *a.plane + "'");
       return kExitUsage;
     }
     if (p.toolpath.isTaper() && !a.plane) {

@@ -27,14 +27,15 @@ std::vector<std::string> builtinMachineNames() {
 
 namespace {
 
-/// A length that must be greater than zero, said in words (CLI::PositiveNumber prints its range
-/// to the largest double: 300 digits).
+/// A length that must be greater than zero and within a kilometre (every coordinate Kerf reads
+/// is), said in words (CLI::PositiveNumber prints its range to the largest double: 300 digits).
 const CLI::Validator kPositiveLength(
     [](std::string& text) -> std::string {
       char* end = nullptr;
       const double v = std::strtod(text.c_str(), &end);
       if (end == text.c_str() || *end != '\0' || !std::isfinite(v) || v <= 0)
         return "must be a length greater than 0 mm, not " + text;
+      if (v > 1e6) return "must be a length of at most 1e6 mm (a kilometre), not " + text;
       return {};
     },
     "MM > 0");
@@ -129,13 +130,20 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
                  "names of the second plane's axes: uv, or uz (some hot-wire firmware)")
       ->check(CLI::IsMember({"uv", "uz"}))
       ->group(reading);
-  cmd.add_option("--lower-z", o.reading.lowerZ, "z of the lower contour's plane, mm (default 0)")->group(reading);
-  auto* upperZ = cmd.add_option("--upper-z", o.reading.upperZ, "z of the upper contour's plane, mm")->group(reading);
+  // Heights within a kilometre, as every coordinate Kerf reads (docs/formats.md).
+  const auto kHeight = CLI::Range(-1e6, 1e6);
+  cmd.add_option("--lower-z", o.reading.lowerZ, "z of the lower contour's plane, mm (default 0)")
+      ->check(kHeight)
+      ->group(reading);
+  auto* upperZ = cmd.add_option("--upper-z", o.reading.upperZ, "z of the upper contour's plane, mm")
+                     ->check(kHeight)
+                     ->group(reading);
   auto* thickness = cmd.add_option("--thickness", o.reading.thickness, "upper minus lower plane, mm")
                         ->check(kPositiveLength)
                         ->group(reading);
   upperZ->excludes(thickness);
   cmd.add_option("--program-z", o.reading.programZ, "z of the programmed contour (taper-angle, xyuv-rel), mm")
+      ->check(kHeight)
       ->group(reading);
 
   // Checks.

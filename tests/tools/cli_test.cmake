@@ -31,6 +31,20 @@ elseif(CASE STREQUAL "usage_errors_exit_2")
   run("${KERF}" render --help)
   string(FIND "${out}" "iso (default)" at)
   expect("kerf render --help should name the default view" rc EQUAL 0 AND NOT at EQUAL -1)
+  # An input larger than --max-input is refused once that much has come (standard input of
+  # /dev/zero: issue 41), and a --files-from list names each file once and no FIFO through a pattern.
+  execute_process(COMMAND sh -c "'${KERF}' check --max-input 1 - < /dev/zero" RESULT_VARIABLE rc ERROR_VARIABLE err)
+  string(FIND "${err}" "standard input holds more than 1048576 bytes" at)
+  expect("--max-input 1 with /dev/zero on standard input should be refused" rc EQUAL 2 AND NOT at EQUAL -1)
+  file(MAKE_DIRECTORY "${WORK}/list")
+  file(COPY_FILE "${SOURCE}/samples/punch_outline.nc" "${WORK}/list/a.nc")
+  execute_process(COMMAND mkfifo "${WORK}/list/pipe.nc")
+  file(WRITE "${WORK}/files.txt" "${WORK}/list/*.nc\n${WORK}/list\n${WORK}/list/a.nc\n${WORK}/list/../list/a.nc\n")
+  run(timeout 20 "${KERF}" check --files-from "${WORK}/files.txt")
+  string(REGEX MATCHALL "verdict: ok" verdicts "${out}")
+  list(LENGTH verdicts n)
+  expect("four names of one file and a FIFO behind a pattern: one check, no wait (${n} verdicts)" rc EQUAL 0 AND n EQUAL 1)
+  file(REMOVE_RECURSE "${WORK}/list" "${WORK}/files.txt")  # the folder cases below want WORK empty of programs
   # A pass the program does not have, and a pass that is no number.
   run("${KERF}" convert "${SOURCE}/tests/passes/die_tab_cut_off.nc" --to 3b --pass 4)
   string(FIND "${err}" "--pass 4: no contour of this program has a pass 4 (the most is 3)" at)

@@ -12,12 +12,14 @@
 #include <CLI/CLI.hpp>
 
 #include <glob.h>
-#include <algorithm>
+#include <sys/stat.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <set>
 #include <thread>
 
 namespace kerf::cli {
@@ -56,15 +58,25 @@ bool expandInputs(const std::vector<std::string>& args, std::vector<std::string>
     std::sort(found.begin(), found.end());
     files.insert(files.end(), found.begin(), found.end());
   }
+  // Each file once, however often a folder, a pattern or a name reaches it (by device and inode:
+  // `a.nc`, `./a.nc` and a link to it are one file); the first place it came in keeps it.
+  std::set<std::pair<dev_t, ino_t>> seen;
+  std::erase_if(files, [&seen](const std::string& f) {
+    struct stat st {};
+    return f != "-" && ::stat(f.c_str(), &st) == 0 && !seen.insert({st.st_dev, st.st_ino}).second;
+  });
   return true;
 }
+
+/// The most bytes a --files-from list may hold (a list of names, not programs).
+constexpr std::size_t kMaxFileList = std::size_t{16} << 20;
 
 /// The lines of --files-from (a file, or standard input for "-"): each a file, a folder or a glob
 /// pattern, expanded in name order; blank lines and lines starting with '#' skipped. False after
 /// saying what is wrong (a list that cannot be read, a pattern that matches nothing).
 bool readFileList(const std::string& list, std::vector<std::string>& out) {
   std::string error;
-  const std::optional<std::string> read = readTextFile(list, converter::SourceFile::kMaxSize, error);  // "-": stdin
+  const std::optional<std::string> read = readTextFile(list, kMaxFileList, error);  // "-": stdin
   if (!read) {
     reportError(error);
     return false;
@@ -85,8 +97,14 @@ bool readFileList(const std::string& list, std::vector<std::string>& out) {
     }
     glob_t g{};
     const int rc = ::glob(line.c_str(), 0, nullptr, &g);
+    // Sorted by glob(). Only files and folders: a FIFO or a device is read only when named
+    // directly (a pattern that matched a FIFO would block on it).
     if (rc == 0)
-      for (std::size_t k = 0; k < g.gl_pathc; ++k) out.emplace_back(g.gl_pathv[k]);  // sorted by glob()
+      for (std::size_t k = 0; k < g.gl_pathc; ++k) {
+        struct stat st {};
+        if (::stat(g.gl_pathv[k], &st) == 0 && (S_ISREG(st.st_mode) || S_ISDIR(st.st_mode)))
+          out.emplace_back(g.gl_pathv[k]);
+      }
     ::globfree(&g);
     if (rc != 0) {
       reportError((list == "-" ? std::string("<stdin>") : list) + ":" + std::to_string(lineNumber) + ": '" + line +

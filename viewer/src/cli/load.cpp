@@ -85,11 +85,11 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
   if (needs.summary) po.summarize = options.sampling.sampling();
   po.centreWords = needs.centreWords;
   std::optional<std::string> text = curve ? std::optional<std::string>(curveText(options.input))
-                                          : readTextFile(file, converter::SourceFile::kMaxSize, failure);
+                                          : readTextFile(file, options.input.maxInputMiB << 20, failure);
   if (!text) return std::nullopt;
   std::optional<converter::SourceText> upper;
   if (options.input.upper) {
-    std::optional<std::string> upperText = readTextFile(*options.input.upper, converter::SourceFile::kMaxSize, failure);
+    std::optional<std::string> upperText = readTextFile(*options.input.upper, options.input.maxInputMiB << 20, failure);
     if (!upperText) return std::nullopt;
     upper = converter::SourceText{*options.input.upper, std::move(*upperText)};
   }

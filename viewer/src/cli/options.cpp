@@ -58,6 +58,10 @@ void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
                  "biarcs (docs/cam.md)")
       ->group("Input");
   cmd.add_option("--t", o.input.range, "the curve's range FROM:TO (expressions, e.g. 0:2*pi)")->group("Input");
+  cmd.add_option("--max-input", o.input.maxInputMiB,
+                 "the largest program read, MiB (default 512; a larger one is refused before it is read)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{2047}))
+      ->group("Input");
   cmd.final_callback([&o, manyFiles] {
     if (o.input.curve) {
       if (!o.input.files.empty()) throw CLI::ValidationError("--curve", "give a file or --curve, not both");

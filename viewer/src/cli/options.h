@@ -25,6 +25,9 @@ struct InputOptions {
   /// holds kCurveInput.
   std::optional<std::string> curve, range;
   bool fileRequired = true;  ///< false: the command runs without one (kerf convert --list)
+  /// --max-input: the most bytes a program (and --upper) may hold, MiB; refused before it is read
+  /// when its size is known, else once that many bytes have come (standard input, a pipe, a device).
+  std::size_t maxInputMiB = 512;
 };
 
 /// The name a --curve input goes by (in files and in diagnostics).

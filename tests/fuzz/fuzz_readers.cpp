@@ -1,0 +1,53 @@
+// The reader fuzz entry points' shared part (fuzz_readers.h).
+#include "fuzz_readers.h"
+
+#include "kerf/converter/formats/dxf/write_dxf.h"
+#include "kerf/converter/formats/emit.h"
+#include "kerf/converter/formats/read.h"
+
+namespace kerf::fuzz {
+
+using namespace kerf::converter;
+
+Pipeline readAs(const std::uint8_t* data, std::size_t size, InputFormat format, const char* name) {
+  PipelineOptions options;
+  options.read.format = format;
+  options.read.maxMoves = 20000;  // elements, spans, records: the limits themselves are tested
+  options.read.maxExecutedBlocks = 200000;
+  options.check.sectionBudget = 2500;
+  options.check.surfaceLevels = 4;
+  options.summarize = geometry::Sampling::step(0.5);
+  return runPipeline({name, std::string(reinterpret_cast<const char*>(data), size)}, options);
+}
+
+namespace {
+
+/// Reads `text` as `format` and traps when its reader finds it malformed: Kerf wrote it.
+void readBack(const std::string& text, InputFormat format, const char* name) {
+  PipelineOptions options;
+  options.read.format = format;
+  options.read.maxMoves = 200000;
+  const Pipeline q = runPipeline({name, text}, options);
+  for (const Diagnostic& d : q.diags.all())
+    if (d.code == Code::DxfSyntax || d.code == Code::ThreeBSyntax || d.code == Code::UnexpectedCharacter ||
+        d.code == Code::MalformedNumber)
+      __builtin_trap();
+}
+
+}  // namespace
+
+void writeAndReadBack(const Pipeline& p) {
+  if (!p.read || p.toolpath.moves.empty() || p.toolpath.moves.size() > 5000) return;
+  DxfWriteCounts counts;
+  const std::string dxf = writeDxf(p.toolpath, DxfWriteOptions{}, &counts);
+  if (counts.lines + counts.arcs + counts.circles > 0) readBack(dxf, InputFormat::Dxf, "back.dxf");
+  if (p.toolpath.isTaper()) return;  // 3B and ISO of one plane: --plane's business
+  Diagnostics diags(100);
+  EmitRequest request;
+  if (const auto threeB = writeThreeB(p.toolpath, p.source.get(), request, diags))
+    readBack(threeB->text, InputFormat::ThreeB, "back.3b");
+  if (const auto iso = writeIso(p.toolpath, p.source.get(), request, diags))
+    readBack(iso->text, InputFormat::Iso, "back.nc");
+}
+
+}  // namespace kerf::fuzz

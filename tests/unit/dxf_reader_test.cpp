@@ -161,3 +161,17 @@ TEST(dxf_reader_test, huge_angles_are_reduced_without_a_loop) {
   const auto& second = g.elements[1].segment;
   EXPECT_NEAR(second.sweep, 20 * kPi / 180, 1e-12);  // 350 to 370: 20 degrees through 0
 }
+
+// A file whose lines end in a lone CR (old Mac editors) is a DXF file like any other (issue 41: it
+// was read as G-code, 200 errors).
+TEST(dxf_reader_test, lines_may_end_in_a_lone_carriage_return) {
+  std::string text = ascii("0\nLINE\n8\n0\n10\n0\n20\n0\n11\n10\n21\n0\n");
+  for (char& c : text)
+    if (c == '\n') c = '\r';
+  EXPECT_TRUE(looksLikeDxf(text));
+  Diagnostics d(100);
+  const Drawing g = read(text, d);
+  ASSERT_TRUE(g.ok);
+  ASSERT_EQ(g.elements.size(), 1u);
+  EXPECT_NEAR(g.elements[0].segment.end.x(), 10, 1e-12);
+}

@@ -487,3 +487,14 @@ TEST(machine_test, a_profile_gives_its_conditions_speeds) {
   ASSERT_NE(sodick->find("C"), nullptr);
   EXPECT_EQ(sodick->find("C")->effect, CodeEffect::Condition);
 }
+
+// A code whose number is too long to be one is refused at its line, never cast (the profile fuzzer
+// found `code G111111111111111 = ...` cast to int: undefined behaviour).
+TEST(machine_test, a_code_number_of_seven_digits_is_no_code) {
+  SourceFile bad("m.profile",
+                 "name = shop\ncode G111111111111111 = harmless: no such code\ncode G999999 = harmless: x\n");
+  Diagnostics b;
+  EXPECT_FALSE(parseMachineProfile(bad, b).has_value());
+  ASSERT_EQ(b.errorCount(), 1u) << kerf::test::dump(b);
+  EXPECT_EQ(bad.locate(b.all()[0].span.offset).line, 2u);
+}

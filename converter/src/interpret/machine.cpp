@@ -103,6 +103,7 @@ std::string normaliseKey(std::string_view raw) {
       std::count(number.begin(), number.end(), '.') > 1)
     return {};
   const double v = std::strtod(number.c_str(), nullptr);
+  if (!(v < 1e6)) return {};  // no code has seven digits (and the key's number is an int: readCode)
   const long tenths = roundHalfAway(v * 10);
   if (std::abs(v * 10 - static_cast<double>(tenths)) > 1e-9) return {};
   std::string out(1, key[0]);

@@ -33,8 +33,10 @@ std::optional<OffsetTable> readOffsetTable(const SourceFile& file, Diagnostics& 
   OffsetTable table;
   bool ok = true;
   for (std::uint32_t line = 1; line <= file.lineCount(); ++line) {
-    const auto [begin, end] = file.lineRange(line);
-    std::string_view text = file.text().substr(begin, end - begin);
+    // Not a structured binding: clang 14 (the fuzz build) does not let a lambda capture one.
+    const std::pair<std::uint32_t, std::uint32_t> range = file.lineRange(line);
+    const std::uint32_t begin = range.first;
+    std::string_view text = file.text().substr(begin, range.second - begin);
     if (const std::size_t hash = text.find('#'); hash != std::string_view::npos) text = text.substr(0, hash);
     if (text.find_first_not_of(" \t\r") == std::string_view::npos) continue;
     auto fail = [&](std::size_t at, std::size_t length, std::string message) {

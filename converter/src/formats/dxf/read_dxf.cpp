@@ -77,14 +77,14 @@ class TagReader {
   bool readAscii(std::string_view t, std::vector<Tag>& tags) {
     std::size_t pos = 0;
     std::uint32_t line = 0;
+    // Lines end at LF, CR LF or a lone CR (old Mac files), as SourceFile counts them.
     auto nextLine = [&](std::string_view& out, std::uint32_t& start) {
       if (pos >= t.size()) return false;
       start = static_cast<std::uint32_t>(pos);
-      std::size_t e = t.find('\n', pos);
+      std::size_t e = t.find_first_of("\r\n", pos);
       if (e == std::string_view::npos) e = t.size();
       out = t.substr(pos, e - pos);
-      if (!out.empty() && out.back() == '\r') out.remove_suffix(1);
-      pos = e + 1;
+      pos = e + (e + 1 < t.size() && t[e] == '\r' && t[e + 1] == '\n' ? 2 : 1);
       ++line;
       return true;
     };
@@ -98,8 +98,10 @@ class TagReader {
       int code = 0;
       const auto r = std::from_chars(c.data(), c.data() + c.size(), code);
       if (c.empty() || r.ec != std::errc() || r.ptr != c.data() + c.size() || code < 0 || code > 1071) {
-        error(codeLine, -1, false, "'" + std::string(c.substr(0, 40)) + "' is not a group code",
-              {codeStart, static_cast<std::uint32_t>(codeText.size())});
+        error(codeLine, -1, false,
+              c.empty() ? std::string("an empty line where a group code belongs")
+                        : "'" + std::string(c.substr(0, 40)) + "' is not a group code",
+              {codeStart, static_cast<std::uint32_t>(std::max<std::size_t>(codeText.size(), 1))});
         return false;
       }
       if (!nextLine(value, valueStart)) {
@@ -911,11 +913,11 @@ bool looksLikeDxf(std::string_view text) {
   if (text.substr(0, kBinaryDxfSentinel.size()) == kBinaryDxfSentinel) return true;
   // Pairs of lines: skip 999 comments, then "0" and "SECTION".
   std::size_t pos = 0;
-  auto line = [&]() {
-    std::size_t e = text.find('\n', pos);
+  auto line = [&]() {  // LF, CR LF or a lone CR
+    std::size_t e = text.find_first_of("\r\n", pos);
     if (e == std::string_view::npos) e = text.size();
     std::string_view l = trimBlanks(text.substr(pos, e - pos));
-    pos = std::min(text.size(), e + 1);
+    pos = std::min(text.size(), e + (e + 1 < text.size() && text[e] == '\r' && text[e + 1] == '\n' ? 2 : 1));
     return l;
   };
   for (int guard = 0; guard < 64 && pos < text.size(); ++guard) {

@@ -498,3 +498,18 @@ TEST(machine_test, a_code_number_of_seven_digits_is_no_code) {
   ASSERT_EQ(b.errorCount(), 1u) << kerf::test::dump(b);
   EXPECT_EQ(bad.locate(b.all()[0].span.offset).line, 2u);
 }
+
+// A write_* block with a placeholder its key does not fill is refused at its line (issue 41: a
+// user profile's `{offset}` inside write_offset was written into the program as it stood).
+TEST(machine_test, write_blocks_take_only_the_placeholders_they_fill) {
+  SourceFile bad("m.profile",
+                 "name = shop\nwrite_offset = {g} D1 {offset}\nwrite_start = G90 | {cancel}\nwrite_end = M02 {g}\n");
+  Diagnostics b;
+  EXPECT_FALSE(parseMachineProfile(bad, b).has_value());
+  ASSERT_EQ(b.errorCount(), 3u) << kerf::test::dump(b);
+  SourceFile good("m.profile",
+                  "name = shop\nwrite_offset = {g} D1 X{x} Y{y}\nwrite_start = G90 | {offset}\n"
+                  "write_end = {cancel} | M02\nwrite_cancel = {g}\n");
+  Diagnostics g;
+  EXPECT_TRUE(parseMachineProfile(good, g).has_value()) << kerf::test::dump(g);
+}

@@ -324,6 +324,20 @@ bool readReadingKey(const ProfileLine& l, MachineProfile& p) {
   return true;
 }
 
+/// The first `{...}` in a write_* block that the writer would not fill for that key (it would be
+/// written verbatim); empty when there is none. {x} {y} everywhere; {g} in write_offset and
+/// write_cancel; {offset} as a whole block of write_start and {cancel} of write_end.
+std::string unknownPlaceholder(const std::string& key, const std::string& block) {
+  if ((key == "write_start" && block == "{offset}") || (key == "write_end" && block == "{cancel}")) return {};
+  const bool g = key == "write_offset" || key == "write_cancel";
+  for (std::size_t open = block.find('{'); open != std::string::npos; open = block.find('{', open + 1)) {
+    const std::size_t close = block.find('}', open);
+    const std::string token = block.substr(open, close == std::string::npos ? std::string::npos : close - open + 1);
+    if (token != "{x}" && token != "{y}" && !(g && token == "{g}")) return token;
+  }
+  return {};
+}
+
 /// The keys of how `kerf convert --to iso --for` writes for the machine; false for another key.
 bool readWritingKey(const ProfileLine& l, MachineProfile& p) {
   const std::string& key = l.key;
@@ -354,6 +368,13 @@ bool readWritingKey(const ProfileLine& l, MachineProfile& p) {
     while (from <= value.size()) {
       const std::size_t bar = value.find('|', from);
       const std::string b = trim(value.substr(from, bar == std::string::npos ? std::string::npos : bar - from));
+      if (const std::string bad = unknownPlaceholder(key, b); !bad.empty()) {
+        l.fail(l.valueAt, l.value.size(),
+               key + ": '" + bad + "' is not a placeholder this key fills (it would be written as it stands)",
+               "{x} {y} the start; {g} in write_offset and write_cancel; {offset} alone in write_start, {cancel} "
+               "alone in write_end (docs/machines.md)");
+        return true;
+      }
       if (!b.empty()) blocks.push_back(b);
       if (bar == std::string::npos) break;
       from = bar + 1;

@@ -87,6 +87,17 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
   out.diags.sortByPosition();
 }
 
+/// A drawing that yields nothing to cut says so, whatever the reason (issue 41): what it holds
+/// instead, counted (K0606 at 1:1).
+void reportEmptyDrawing(Pipeline& out, const Drawing& drawing) {
+  std::string skipped;
+  for (const auto& [type, n] : drawing.skipped)
+    skipped += (skipped.empty() ? "" : ", ") + std::to_string(n) + " " + type;
+  out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},
+                  "the drawing holds no line, arc or curve Kerf can cut: nothing to cut" +
+                      (skipped.empty() ? std::string() : " (it holds " + skipped + ")"));
+}
+
 /// 3B: no machine conventions to choose; the reader gives the Toolpath, an upper file of its own
 /// (3B or ISO) pairs with it.
 /// A drawing: read, chained into contours, and walked as a toolpath (a rapid to each contour's
@@ -107,16 +118,7 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
     o.maxElements = ro.maxMoves;
     result.drawing = readDxf(*out.source, o, out.diags);
   }
-  // A drawing that yields nothing to cut says so, whatever the reason (issue 41): skipped entities
-  // counted, a refusal or the budget already reported.
-  if (result.drawing.elements.empty() && !out.diags.hasErrors()) {
-    std::string skipped;
-    for (const auto& [type, n] : result.drawing.skipped)
-      skipped += (skipped.empty() ? "" : ", ") + std::to_string(n) + " " + type;
-    out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},
-                    "the drawing holds no line, arc or curve Kerf can cut: nothing to cut" +
-                        (skipped.empty() ? std::string() : " (it holds " + skipped + ")"));
-  }
+  if (result.drawing.elements.empty() && !out.diags.hasErrors()) reportEmptyDrawing(out, result.drawing);
   std::vector<geometry::Segment> segments;
   segments.reserve(result.drawing.elements.size());
   for (const DrawingElement& e : result.drawing.elements) segments.push_back(e.segment);

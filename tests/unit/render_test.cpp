@@ -451,7 +451,7 @@ TEST(scene_test, hidden_moves_draw_nothing_and_keep_their_indices) {
   options.hiddenMoves.assign(n, false);
   options.hiddenMoves[2] = options.hiddenMoves[3] = true;
   const render::Scene some = render::buildScene(p.toolpath, {}, options);
-  ASSERT_EQ(some.lower.moveFirst.size(), n + 1);  // one a move, and the end
+  ASSERT_EQ(some.lower.moveFirst.size(), n + 1);                // one a move, and the end
   EXPECT_EQ(some.lower.moveFirst[3], some.lower.moveFirst[2]);  // move 2 drew no line
   EXPECT_LT(some.lower.vertices.size(), all.lower.vertices.size());
   EXPECT_LT(some.triangles(), all.triangles());

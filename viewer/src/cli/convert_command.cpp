@@ -68,6 +68,19 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
 
 namespace {
 
+/// --pass N: the toolpath of each contour's Nth pass; nothing, said, when no contour has one.
+std::optional<converter::Toolpath> passToConvert(const converter::Pipeline& p, const std::string& pass) {
+  std::optional<converter::Toolpath> out =
+      converter::toolpathOfPass(p.toolpath, p.structure, std::stoul(pass), p.checkOptions.tolerance);
+  if (!out) {
+    std::size_t most = 0;
+    for (const converter::Contour& c : p.structure.contours) most = std::max(most, c.passes.size());
+    reportError("--pass " + pass + ": no contour of this program has a pass " + pass + " (" +
+                (most == 1 ? std::string("each is cut in one pass") : "the most is " + std::to_string(most)) + ")");
+  }
+  return out;
+}
+
 void printList() {
   std::cout << "Output formats (kerf convert FILE --to NAME -o OUT):\n";
   for (const converter::Emitter& e : converter::emitters())
@@ -157,15 +170,8 @@ int runConvert(const ConvertArgs& a) {
   const Toolpath* path = &p.toolpath;
   std::optional<Toolpath> onePass;
   if (a.pass != "all") {
-    const std::size_t n = static_cast<std::size_t>(std::stoul(a.pass));
-    onePass = toolpathOfPass(p.toolpath, p.structure, n, p.checkOptions.tolerance);
-    if (!onePass) {
-      std::size_t most = 0;
-      for (const Contour& c : p.structure.contours) most = std::max(most, c.passes.size());
-      reportError("--pass " + a.pass + ": no contour of this program has a pass " + a.pass + " (" +
-                  (most == 1 ? std::string("each is cut in one pass") : "the most is " + std::to_string(most)) + ")");
-      return kExitUsage;
-    }
+    onePass = passToConvert(p, a.pass);
+    if (!onePass) return kExitUsage;
     path = &*onePass;
   }
   std::optional<Toolpath> flat;

@@ -254,8 +254,56 @@ bool looksLikeCurve(std::string_view text) {
   return false;
 }
 
+namespace {
+
 /// Points of a point list lie within this many mm of the origin (as drawings do, K0132).
 constexpr double kLargestCurveCoordinate = 1e6;
+
+/// A point list (`points`, then X Y per line) into d: the points range-checked and counted at
+/// their lines, then fitted (K0130, K0131).
+void readPointList(const SourceFile& src, const std::vector<Statement>& st, const CurveOptions& o,
+                   const geometry::BiarcOptions& bo, Diagnostics& diags, Drawing& d) {
+  auto spanOf = [](const Statement& s) { return SourceSpan{s.offset, static_cast<std::uint32_t>(s.text.size())}; };
+  std::vector<geometry::Vec2> pts;
+  bool ok = true;
+  for (std::size_t k = 1; k < st.size(); ++k) {
+    std::string_view s = st[k].text;
+    std::size_t cut = s.find(',');
+    if (cut == std::string_view::npos) cut = s.find_first_of(" \t");
+    double x = 0, y = 0;
+    if (cut == std::string_view::npos || !parseNumberField(s.substr(0, cut), x) ||
+        !parseNumberField(s.substr(cut + 1), y)) {
+      diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
+                  "a point is two numbers, X Y or X, Y (mm), not '" + std::string(s) + "'");
+      ok = false;
+      continue;
+    }
+    if (!(std::abs(x) <= kLargestCurveCoordinate && std::abs(y) <= kLargestCurveCoordinate)) {
+      diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
+                  "a point beyond 1e6 mm of the origin: Kerf reads curves within a kilometre");
+      ok = false;
+      continue;
+    }
+    if (pts.empty() || (pts.back() - geometry::Vec2(x, y)).norm() > 1e-9) pts.emplace_back(x, y);
+    if (pts.size() > geometry::kMostFitPoints) {
+      diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
+                  "more than " + std::to_string(geometry::kMostFitPoints) +
+                      " points: Kerf fits a curve through at most that many (split the list)");
+      return;
+    }
+  }
+  if (!ok) return;
+  if (pts.size() < 2) {
+    diags.error(Code::CurveSyntax, &src, spanOf(st.front()), "a point list needs at least two distinct points");
+    return;
+  }
+  const geometry::BiarcFit fit = geometry::fitPointList(pts, bo);
+  if (!reportFit(fit, o, src, spanOf(st.front()), diags)) return;
+  d.curve = FittedCurve{true, o.tolerance, 0.0, 1.0, fit.spans, fit.maxError};
+  fillDrawing(d, fit, "POINTS", spanOf(st.front()), src.locate(st.front().offset).line);
+}
+
+}  // namespace
 
 Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& diags) {
   Drawing d;
@@ -272,43 +320,7 @@ Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& dia
     std::string first;
     for (char c : st.front().text) first += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (first == "points") {
-      std::vector<geometry::Vec2> pts;
-      bool ok = true;
-      for (std::size_t k = 1; k < st.size(); ++k) {
-        std::string_view s = st[k].text;
-        std::size_t cut = s.find(',');
-        if (cut == std::string_view::npos) cut = s.find_first_of(" \t");
-        double x = 0, y = 0;
-        if (cut == std::string_view::npos || !parseNumberField(s.substr(0, cut), x) ||
-            !parseNumberField(s.substr(cut + 1), y)) {
-          diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
-                      "a point is two numbers, X Y or X, Y (mm), not '" + std::string(s) + "'");
-          ok = false;
-          continue;
-        }
-        if (!(std::abs(x) <= kLargestCurveCoordinate && std::abs(y) <= kLargestCurveCoordinate)) {
-          diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
-                      "a point beyond 1e6 mm of the origin: Kerf reads curves within a kilometre");
-          ok = false;
-          continue;
-        }
-        if (pts.empty() || (pts.back() - geometry::Vec2(x, y)).norm() > 1e-9) pts.emplace_back(x, y);
-        if (pts.size() > geometry::kMostFitPoints) {
-          diags.error(Code::CurveSyntax, &src, spanOf(st[k]),
-                      "more than " + std::to_string(geometry::kMostFitPoints) +
-                          " points: Kerf fits a curve through at most that many (split the list)");
-          return d;
-        }
-      }
-      if (!ok) return d;
-      if (pts.size() < 2) {
-        diags.error(Code::CurveSyntax, &src, spanOf(st.front()), "a point list needs at least two distinct points");
-        return d;
-      }
-      const geometry::BiarcFit fit = geometry::fitPointList(pts, bo);
-      if (!reportFit(fit, o, src, spanOf(st.front()), diags)) return d;
-      d.curve = FittedCurve{true, o.tolerance, 0.0, 1.0, fit.spans, fit.maxError};
-      fillDrawing(d, fit, "POINTS", spanOf(st.front()), src.locate(st.front().offset).line);
+      readPointList(src, st, o, bo, diags, d);
       return d;
     }
   }

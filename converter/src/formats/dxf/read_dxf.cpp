@@ -734,6 +734,29 @@ class DrawingReader {
     addCurve(e, layer, curve);
   }
 
+  /// A SPLINE's points and weights within Kerf's range (K0132 at the entity otherwise), checked in
+  /// closed form before any fitting (issue 41: a zero weight or a point at 1e308 kept the biarc
+  /// fitter busy for a minute and then gave nothing).
+  bool splineInRange(const Entity& e, const Affine& a, const std::vector<Vec2>& control, const std::vector<Vec2>& fit,
+                     const std::vector<double>& weights) {
+    for (const Vec2& q : control)
+      if (!inRange(a(q) * scale_)) {
+        refuse(e, "a control point at " + outOfRange(a(q) * scale_) + " mm, beyond 1e6 mm");
+        return false;
+      }
+    for (const Vec2& q : fit)
+      if (!inRange(a(q) * scale_)) {
+        refuse(e, "a fit point at " + outOfRange(a(q) * scale_) + " mm, beyond 1e6 mm");
+        return false;
+      }
+    for (const double w : weights)
+      if (!(w > 0 && w <= kLargestScale)) {
+        refuse(e, "a weight of " + outOfRange(w) + ": weights must lie in (0, 1e6]");
+        return false;
+      }
+    return true;
+  }
+
   void spline(const Entity& e, const std::string& layer, const Affine& a) {
     const int degree = asInteger(e.number(71, 3), -1);
     std::vector<double> knots, weights;
@@ -746,23 +769,7 @@ class DrawingReader {
       if (t.code == 11) fit.emplace_back(t.number, 0.0);
       if (t.code == 21 && !fit.empty()) fit.back().y() = t.number;
     }
-    // Refused or left out in closed form before any fitting (issue 41: a zero weight, a point at
-    // 1e308 or a curve of no extent kept the biarc fitter busy for a minute and then gave nothing).
-    for (const Vec2& q : control)
-      if (!inRange(a(q) * scale_)) {
-        refuse(e, "a control point at " + outOfRange(a(q) * scale_) + " mm, beyond 1e6 mm");
-        return;
-      }
-    for (const Vec2& q : fit)
-      if (!inRange(a(q) * scale_)) {
-        refuse(e, "a fit point at " + outOfRange(a(q) * scale_) + " mm, beyond 1e6 mm");
-        return;
-      }
-    for (const double w : weights)
-      if (!(w > 0 && w <= kLargestScale)) {
-        refuse(e, "a weight of " + outOfRange(w) + ": weights must lie in (0, 1e6]");
-        return;
-      }
+    if (!splineInRange(e, a, control, fit, weights)) return;
     // Fit points repeated one after another add nothing: dropped.
     fit.erase(std::unique(fit.begin(), fit.end(), [](const Vec2& x, const Vec2& y) { return (x - y).norm() < 1e-12; }),
               fit.end());

@@ -489,14 +489,16 @@ TEST(machine_test, a_profile_gives_its_conditions_speeds) {
 }
 
 // A code whose number is too long to be one is refused at its line, never cast (the profile fuzzer
-// found `code G111111111111111 = ...` cast to int: undefined behaviour).
+// found `code G111111111111111 = ...` and `code Q2222...AIC = ...` cast to int: undefined behaviour).
 TEST(machine_test, a_code_number_of_seven_digits_is_no_code) {
   SourceFile bad("m.profile",
-                 "name = shop\ncode G111111111111111 = harmless: no such code\ncode G999999 = harmless: x\n");
+                 "name = shop\ncode G111111111111111 = harmless: no such code\ncode G999999 = harmless: x\n"
+                 "code Q22222222222222222222AIC = harmless: a macro name that reads as a number\n");
   Diagnostics b;
   EXPECT_FALSE(parseMachineProfile(bad, b).has_value());
-  ASSERT_EQ(b.errorCount(), 1u) << kerf::test::dump(b);
+  ASSERT_EQ(b.errorCount(), 2u) << kerf::test::dump(b);
   EXPECT_EQ(bad.locate(b.all()[0].span.offset).line, 2u);
+  EXPECT_EQ(bad.locate(b.all()[1].span.offset).line, 4u);
 }
 
 // A write_* block with a placeholder its key does not fill is refused at its line (issue 41: a

@@ -169,6 +169,10 @@ void readCode(const ProfileLine& l, MachineProfile& p) {
     c.number = -2;  // a macro call's name
   } else if (c.key.size() > 1) {
     const double v = std::strtod(c.key.c_str() + 1, nullptr);
+    if (!(v >= 0 && v < 1e6)) {  // `Q2222...AIC` passes as a macro name but reads as a number here
+      l.fail(l.lead, l.eq - l.lead, "'" + trim(l.key.substr(5)) + "' is not a code", "write G60, M28, T84, C or QAIC");
+      return;
+    }
     c.number = static_cast<int>(v);
     c.fraction = static_cast<int>(std::lround((v - c.number) * 10));
   }

@@ -42,6 +42,23 @@ std::string formatNumber(double v, int decimals) {
   return buf;
 }
 
+/// The pass legend at the right edge, under the title: a swatch in each pass's colour and its name.
+void drawPassLegend(ImDrawList& list, const std::vector<std::string>& names, int width) {
+  const float lineHeight = ImGui::GetTextLineHeight();
+  float textW = 0.0f;
+  for (const std::string& s : names) textW = std::max(textW, ImGui::CalcTextSize(s.c_str()).x);
+  const float swatch = lineHeight * 0.8f, rowH = lineHeight + 3.0f;
+  const float x0 = static_cast<float>(width) - textW - swatch - 16.0f, y0 = 2.0f * lineHeight + 14.0f;
+  const float y1 = y0 + rowH * static_cast<float>(names.size());
+  list.AddRectFilled(ImVec2(x0 - 6, y0 - 4), ImVec2(static_cast<float>(width) - 4, y1 + 2), kPanel, 2.0f);
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const float row = y0 + rowH * static_cast<float>(k);
+    const std::uint32_t c = render::passColour(k + 1);  // 0xAABBGGRR, as ImGui's IM_COL32
+    list.AddRectFilled(ImVec2(x0, row + 2), ImVec2(x0 + swatch, row + 2 + swatch), c);
+    list.AddText(ImVec2(x0 + swatch + 5, row), kText, names[k].c_str());
+  }
+}
+
 }  // namespace
 
 double niceLength(double maxLength) {
@@ -103,21 +120,7 @@ void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render:
     list.AddText(ImVec2(x0 + barW + 3, y0 + barH - lineHeight + 2), kText, lo.c_str());
   }
 
-  // Pass legend, right edge: a swatch in each pass's colour and its name.
-  if (!annotation.passLegend.empty()) {
-    float textW = 0.0f;
-    for (const std::string& s : annotation.passLegend) textW = std::max(textW, ImGui::CalcTextSize(s.c_str()).x);
-    const float swatch = lineHeight * 0.8f, rowH = lineHeight + 3.0f;
-    const float x0 = static_cast<float>(width) - textW - swatch - 16.0f, y0 = 2.0f * lineHeight + 14.0f;
-    const float y1 = y0 + rowH * static_cast<float>(annotation.passLegend.size());
-    list.AddRectFilled(ImVec2(x0 - 6, y0 - 4), ImVec2(static_cast<float>(width) - 4, y1 + 2), kPanel, 2.0f);
-    for (std::size_t k = 0; k < annotation.passLegend.size(); ++k) {
-      const float row = y0 + rowH * static_cast<float>(k);
-      const std::uint32_t c = render::passColour(k + 1);  // 0xAABBGGRR, as ImGui's IM_COL32
-      list.AddRectFilled(ImVec2(x0, row + 2), ImVec2(x0 + swatch, row + 2 + swatch), c);
-      list.AddText(ImVec2(x0 + swatch + 5, row), kText, annotation.passLegend[k].c_str());
-    }
-  }
+  if (!annotation.passLegend.empty()) drawPassLegend(list, annotation.passLegend, width);
 
   // Finding labels beside their markers: errors first, each where it covers no label placed
   // before it and stays in the picture; what finds no place is counted under the title.

@@ -441,24 +441,24 @@ TEST(machine_test, a_profile_gives_offset_registers) {
 TEST(machine_test, a_profile_gives_the_speed_model) {
   const MachineProfile* generic = findBuiltinMachine("generic");
   ASSERT_NE(generic, nullptr);
-  EXPECT_EQ(generic->roughRate, 100.0);
-  EXPECT_EQ(generic->skimSpeed, 10.0);
-  EXPECT_EQ(generic->rapidSpeed, 1000.0);
-  EXPECT_EQ(generic->threadSeconds, 30.0);
-  EXPECT_FALSE(generic->feedIsSpeed);
+  EXPECT_EQ(generic->speeds.roughRate, 100.0);
+  EXPECT_EQ(generic->speeds.skimSpeed, 10.0);
+  EXPECT_EQ(generic->speeds.rapidSpeed, 1000.0);
+  EXPECT_EQ(generic->speeds.threadSeconds, 30.0);
+  EXPECT_FALSE(generic->speeds.feedIsSpeed);
   ASSERT_NE(findBuiltinMachine("linuxcnc"), nullptr);
-  EXPECT_TRUE(findBuiltinMachine("linuxcnc")->feedIsSpeed);
+  EXPECT_TRUE(findBuiltinMachine("linuxcnc")->speeds.feedIsSpeed);
   SourceFile good("m.profile",
                   "name = shop\nrough_rate = 250\nskim_speed = 12.5\nrapid_speed = 3000\n"
                   "thread_time = 0\nfeed = speed\n");
   Diagnostics g;
   const auto p = parseMachineProfile(good, g);
   ASSERT_TRUE(p.has_value()) << kerf::test::dump(g);
-  EXPECT_EQ(p->roughRate, 250.0);
-  EXPECT_EQ(p->skimSpeed, 12.5);
-  EXPECT_EQ(p->rapidSpeed, 3000.0);
-  EXPECT_EQ(p->threadSeconds, 0.0);
-  EXPECT_TRUE(p->feedIsSpeed);
+  EXPECT_EQ(p->speeds.roughRate, 250.0);
+  EXPECT_EQ(p->speeds.skimSpeed, 12.5);
+  EXPECT_EQ(p->speeds.rapidSpeed, 3000.0);
+  EXPECT_EQ(p->speeds.threadSeconds, 0.0);
+  EXPECT_TRUE(p->speeds.feedIsSpeed);
   SourceFile bad("m.profile", "name = shop\nrough_rate = 0\nskim_speed = fast\nthread_time = -1\nfeed = yes\n");
   Diagnostics b;
   EXPECT_FALSE(parseMachineProfile(bad, b).has_value());
@@ -473,8 +473,8 @@ TEST(machine_test, a_profile_gives_its_conditions_speeds) {
   Diagnostics g;
   const auto p = parseMachineProfile(good, g);
   ASSERT_TRUE(p.has_value()) << kerf::test::dump(g);
-  EXPECT_EQ(p->conditionSpeeds.at("C001"), 4.0);
-  EXPECT_EQ(p->conditionSpeeds.at("C2"), 12.5);
+  EXPECT_EQ(p->speeds.conditionSpeeds.at("C001"), 4.0);
+  EXPECT_EQ(p->speeds.conditionSpeeds.at("C2"), 12.5);
   SourceFile bad("m.profile",
                  "name = shop\ncondition_speed 12 = 4\ncondition_speed C1 = 0\n"
                  "condition_speed C2 = 3\ncondition_speed c2 = 4\n");

@@ -237,7 +237,7 @@ void readConditionSpeed(const ProfileLine& l, MachineProfile& p) {
     l.fail(l.valueAt, l.value.size(), name + ": '" + l.value + "' is not a speed above 0 mm/min");
     return;
   }
-  if (!p.conditionSpeeds.emplace(name, value).second) l.fail(l.lead, l.eq - l.lead, name + " is given twice");
+  if (!p.speeds.conditionSpeeds.emplace(name, value).second) l.fail(l.lead, l.eq - l.lead, name + " is given twice");
 }
 
 /// The keys of what the machine means by its words; false for a key that is none of them.
@@ -302,18 +302,20 @@ bool readReadingKey(const ProfileLine& l, MachineProfile& p) {
     else
       l.badValue("degrees from 0 to 89");
   } else if (key == "rough_rate" || key == "skim_speed" || key == "rapid_speed") {
-    double& slot = key == "rough_rate" ? p.roughRate : key == "skim_speed" ? p.skimSpeed : p.rapidSpeed;
+    double& slot = key == "rough_rate"   ? p.speeds.roughRate
+                   : key == "skim_speed" ? p.speeds.skimSpeed
+                                         : p.speeds.rapidSpeed;
     if (auto v = number(value); v && *v > 0 && *v <= 1e6)
       slot = *v;
     else
       l.badValue(key == "rough_rate" ? "mm²/min above 0" : "mm/min above 0");
   } else if (key == "thread_time") {
     if (auto v = number(value); v && *v >= 0 && *v <= 86400)
-      p.threadSeconds = *v;
+      p.speeds.threadSeconds = *v;
     else
       l.badValue("seconds from 0 to 86400");
   } else if (key == "feed") {
-    l.either(p.feedIsSpeed, "machine", "speed");
+    l.either(p.speeds.feedIsSpeed, "machine", "speed");
   } else if (key == "uv_range" || key == "thickness") {
     std::optional<double>& slot = key == "uv_range" ? p.uvRange : p.thickness;
     if (value == "none")

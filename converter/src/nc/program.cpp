@@ -280,9 +280,8 @@ class LineParser {
         i = close + 1;
         continue;
       }
-      if (c == ';') {  // end of block; the rest of the line is a comment, or the next block
-        blockEnd = i;
-        if (options_.semicolonEndsBlock && startsBlock(i + 1, end)) next = i + 1;
+      if (c == ';') {
+        endAtSemicolon(i, end, blockEnd, next);
         break;
       }
       if (c == ':') {  // Sodick: the lower contour before, the upper after (docs/taper.md)
@@ -339,8 +338,7 @@ class LineParser {
         continue;
       }
       if (c == ';') {
-        blockEnd = i;
-        if (options_.semicolonEndsBlock && startsBlock(i + 1, end)) next = i + 1;
+        endAtSemicolon(i, end, blockEnd, next);
         break;
       }
       const bool motion = c == 'G';
@@ -449,6 +447,13 @@ class LineParser {
       if (!block.plain) program_.notPlain.push_back(static_cast<std::uint32_t>(program_.blocks.size()));
       program_.blocks.push_back(block);
     }
+  }
+
+  /// A ';' at i ends the block; the rest of the line is a comment, or the next block where the
+  /// profile's ';' ends blocks (then `next` is after it).
+  void endAtSemicolon(std::size_t i, std::size_t end, std::size_t& blockEnd, std::size_t& next) const {
+    blockEnd = i;
+    if (options_.semicolonEndsBlock && startsBlock(i + 1, end)) next = i + 1;
   }
 
   /// Does a block start after a ';' that ends blocks? Only words, a comment or '/' do; other text

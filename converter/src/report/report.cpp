@@ -61,7 +61,7 @@ json structureObject(const Structure& st) {
                  {"contour_length_mm", p.alongLength},
                  {"condition", p.condition.empty() ? json(nullptr) : json(p.condition)},
                  {"minutes", p.minutes ? json(*p.minutes) : json(nullptr)},
-                 {"speed_mm_per_min", p.minutes ? json(p.speed) : json(nullptr)}};
+                 {"speed_mm_per_min", p.minutes && *p.minutes > 0 ? json(p.length / *p.minutes) : json(nullptr)}};
       passes.push_back(std::move(pj));
     }
     contours.push_back({{"start_hole", vec(c.startHole)}, {"passes", std::move(passes)}});

@@ -23,7 +23,7 @@ std::optional<double> passMinutes(const Toolpath& toolpath, const Pass& pass, co
   for (std::size_t m = pass.first; m < pass.end; ++m) {
     const Move& move = toolpath.moves[m];
     const double length = move.lower.length();
-    if (model.feedIsSpeed && move.feedIndex > 0 && toolpath.feeds[move.feedIndex - 1] > 0)
+    if (model.speeds.feedIsSpeed && move.feedIndex > 0 && toolpath.feeds[move.feedIndex - 1] > 0)
       minutes += length / toolpath.feeds[move.feedIndex - 1];
     else if (speed > 0)
       minutes += length / speed;
@@ -37,26 +37,21 @@ std::optional<double> passMinutes(const Toolpath& toolpath, const Pass& pass, co
 /// rapids 1000 mm/min, threading 30 s: the generic profile's speeds".
 std::string modelText(const SpeedModel& model, double roughSpeed) {
   if (model.speed) return "every cut at " + speedText(*model.speed) + " mm/min (--speed)";
-  std::string rough = "rough " + speedText(model.roughRate) + " mm²/min";
+  std::string rough = "rough " + speedText(model.speeds.roughRate) + " mm²/min";
   if (model.thickness)
     rough += " over " + formatFixed(*model.thickness, 3) + " mm = " + speedText(roughSpeed) + " mm/min";
-  return (model.feedIsSpeed ? std::string("F where the program gives it, else ") : std::string()) + rough + ", skims " +
-         speedText(model.skimSpeed) + " mm/min, rapids " + speedText(model.rapidSpeed) + " mm/min, threading " +
-         speedText(model.threadSeconds) + " s" +
-         (model.conditionSpeeds.empty() ? std::string() : ", and its conditions' speeds") + ": the " + model.profile +
-         " profile's speeds";
+  return (model.speeds.feedIsSpeed ? std::string("F where the program gives it, else ") : std::string()) + rough +
+         ", skims " + speedText(model.speeds.skimSpeed) + " mm/min, rapids " + speedText(model.speeds.rapidSpeed) +
+         " mm/min, threading " + speedText(model.speeds.threadSeconds) + " s" +
+         (model.speeds.conditionSpeeds.empty() ? std::string() : ", and its conditions' speeds") + ": the " +
+         model.profile + " profile's speeds";
 }
 
 }  // namespace
 
 SpeedModel speedModel(const MachineProfile& machine, const Toolpath& toolpath, std::optional<double> speed) {
   SpeedModel m;
-  m.roughRate = machine.roughRate;
-  m.skimSpeed = machine.skimSpeed;
-  m.rapidSpeed = machine.rapidSpeed;
-  m.threadSeconds = machine.threadSeconds;
-  m.feedIsSpeed = machine.feedIsSpeed;
-  m.conditionSpeeds = machine.conditionSpeeds;
+  m.speeds = machine.speeds;
   m.speed = speed;
   m.profile = machine.name;
   if (toolpath.heights.known) {
@@ -69,19 +64,20 @@ SpeedModel speedModel(const MachineProfile& machine, const Toolpath& toolpath, s
 void estimateTime(const Toolpath& toolpath, const SpeedModel& model, Structure& structure) {
   TimeEstimate& t = structure.time;
   t = {};
-  const double roughSpeed = model.speed ? *model.speed : model.thickness ? model.roughRate / *model.thickness : 0.0;
-  const double skimSpeed = model.speed ? *model.speed : model.skimSpeed;
+  const double roughSpeed = model.speed       ? *model.speed
+                            : model.thickness ? model.speeds.roughRate / *model.thickness
+                                              : 0.0;
+  const double skimSpeed = model.speed ? *model.speed : model.speeds.skimSpeed;
   bool roughUnknown = false;
   for (Contour& c : structure.contours) {
     for (std::size_t k = 0; k < c.passes.size(); ++k) {
       Pass& p = c.passes[k];
       const bool fullMaterial = k == 0 || p.cutOff;  // a skim cuts only what the pass before left
       double speed = fullMaterial ? roughSpeed : skimSpeed;
-      if (const auto known = model.conditionSpeeds.find(p.condition);
-          !model.speed && known != model.conditionSpeeds.end())
+      if (const auto known = model.speeds.conditionSpeeds.find(p.condition);
+          !model.speed && known != model.speeds.conditionSpeeds.end())
         speed = known->second;
       p.minutes = passMinutes(toolpath, p, model, speed);
-      p.speed = p.minutes && *p.minutes > 0 ? p.length / *p.minutes : 0.0;
       if (p.minutes) {
         t.cutting += *p.minutes;
         ++t.passesTimed;
@@ -91,8 +87,8 @@ void estimateTime(const Toolpath& toolpath, const SpeedModel& model, Structure& 
     }
   }
   for (const Move& m : toolpath.moves)
-    if (!m.isCut()) t.rapids += m.lower.length() / model.rapidSpeed;
-  t.threading = static_cast<double>(structure.contours.size()) * model.threadSeconds / 60.0;
+    if (!m.isCut()) t.rapids += m.lower.length() / model.speeds.rapidSpeed;
+  t.threading = static_cast<double>(structure.contours.size()) * model.speeds.threadSeconds / 60.0;
   if (roughUnknown) t.missing = "the workpiece thickness is unknown (give --thickness, or --speed)";
   t.model = modelText(model, roughSpeed);
 }

@@ -42,6 +42,28 @@ std::string formatNumber(double v, int decimals) {
   return buf;
 }
 
+/// The slope legend at the right edge: the surface shader's ramp and the slopes at its ends.
+void drawSlopeLegend(ImDrawList& list, const render::Scene& scene, int width, int height) {
+  const float lineHeight = ImGui::GetTextLineHeight();
+  const float barH = std::min(160.0f, static_cast<float>(height) * 0.45f), barW = 12.0f;
+  const float x0 = static_cast<float>(width) - 92.0f, y0 = 30.0f;
+  const std::string hi = formatNumber(scene.maxSlopeDegrees, 2) + " deg";
+  const std::string lo = formatNumber(scene.minSlopeDegrees, 2) + " deg";
+  list.AddRectFilled(ImVec2(x0 - 6, y0 - lineHeight - 8), ImVec2(static_cast<float>(width) - 4, y0 + barH + 6), kPanel,
+                     2.0f);
+  list.AddText(ImVec2(x0 - 2, y0 - lineHeight - 5), kText, "slope");
+  constexpr int kSteps = 16;
+  for (int i = 0; i < kSteps; ++i) {
+    const float a = y0 + barH * static_cast<float>(i) / kSteps, b = y0 + barH * static_cast<float>(i + 1) / kSteps;
+    const ImU32 top = rampColour(1.0f - static_cast<float>(i) / kSteps);
+    const ImU32 bottom = rampColour(1.0f - static_cast<float>(i + 1) / kSteps);
+    list.AddRectFilledMultiColor(ImVec2(x0, a), ImVec2(x0 + barW, b), top, top, bottom, bottom);
+  }
+  list.AddRect(ImVec2(x0, y0), ImVec2(x0 + barW, y0 + barH), kText);
+  list.AddText(ImVec2(x0 + barW + 3, y0 - 2), kText, hi.c_str());
+  list.AddText(ImVec2(x0 + barW + 3, y0 + barH - lineHeight + 2), kText, lo.c_str());
+}
+
 /// The pass legend at the right edge, under the title: a swatch in each pass's colour and its name.
 void drawPassLegend(ImDrawList& list, const std::vector<std::string>& names, int width) {
   const float lineHeight = ImGui::GetTextLineHeight();
@@ -99,27 +121,7 @@ void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render:
     list.AddText(ImVec2(0.5f * (x0 + x1) - 0.5f * ls.x, yb - ls.y - 5), kText, label.c_str());
   }
 
-  // Slope legend, right edge.
-  if (annotation.legend && options.colourBySlope && options.surface) {
-    const float barH = std::min(160.0f, static_cast<float>(height) * 0.45f), barW = 12.0f;
-    const float x0 = static_cast<float>(width) - 92.0f, y0 = 30.0f;
-    const std::string hi = formatNumber(scene.maxSlopeDegrees, 2) + " deg";
-    const std::string lo = formatNumber(scene.minSlopeDegrees, 2) + " deg";
-    list.AddRectFilled(ImVec2(x0 - 6, y0 - lineHeight - 8), ImVec2(static_cast<float>(width) - 4, y0 + barH + 6),
-                       kPanel, 2.0f);
-    list.AddText(ImVec2(x0 - 2, y0 - lineHeight - 5), kText, "slope");
-    constexpr int kSteps = 16;
-    for (int i = 0; i < kSteps; ++i) {
-      const float a = y0 + barH * static_cast<float>(i) / kSteps, b = y0 + barH * static_cast<float>(i + 1) / kSteps;
-      const ImU32 top = rampColour(1.0f - static_cast<float>(i) / kSteps);
-      const ImU32 bottom = rampColour(1.0f - static_cast<float>(i + 1) / kSteps);
-      list.AddRectFilledMultiColor(ImVec2(x0, a), ImVec2(x0 + barW, b), top, top, bottom, bottom);
-    }
-    list.AddRect(ImVec2(x0, y0), ImVec2(x0 + barW, y0 + barH), kText);
-    list.AddText(ImVec2(x0 + barW + 3, y0 - 2), kText, hi.c_str());
-    list.AddText(ImVec2(x0 + barW + 3, y0 + barH - lineHeight + 2), kText, lo.c_str());
-  }
-
+  if (annotation.legend && options.colourBySlope && options.surface) drawSlopeLegend(list, scene, width, height);
   if (!annotation.passLegend.empty()) drawPassLegend(list, annotation.passLegend, width);
 
   // Finding labels beside their markers: errors first, each where it covers no label placed

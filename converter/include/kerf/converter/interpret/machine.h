@@ -51,6 +51,19 @@ struct KnownCode {
   int fraction = 0;
 };
 
+/// How fast a machine cuts, for the cutting-time estimate (docs/passes.md, "Cutting time"). The
+/// defaults are assumptions (see there), the generic profile's; a profile sets its machine's own.
+struct CuttingSpeeds {
+  double roughRate = 100.0;     ///< rough_rate: mm² of cut face a minute where the wire cuts full material
+  double skimSpeed = 10.0;      ///< skim_speed: mm/min along a skim
+  double rapidSpeed = 1000.0;   ///< rapid_speed: mm/min of a rapid
+  double threadSeconds = 30.0;  ///< thread_time: s to thread the wire in a start hole
+  bool feedIsSpeed = false;     ///< feed = speed: the program's F is the wire's speed, mm/min (LinuxCNC, hot wire)
+  /// `condition_speed C001 = 4`: mm/min of a pass cut under that machining condition (it wins over
+  /// rough_rate and skim_speed), by the condition as the program writes it, upper case.
+  std::map<std::string, double> conditionSpeeds;
+};
+
 struct MachineProfile {
   std::string name = "generic";
   std::string summary;               ///< one line for `kerf machines`
@@ -71,16 +84,8 @@ struct MachineProfile {
   double maxTaperDegrees = 30.0;         ///< the machine's largest wire slope
   std::optional<double> uvRange;         ///< largest |upper - lower| per axis, mm
   std::optional<double> thickness;       ///< default workpiece thickness, mm
-  // The speed model of the cutting-time estimate (docs/passes.md, "Cutting time"). The defaults
-  // are assumptions (see there), the generic profile's; a profile sets its machine's own.
-  double roughRate = 100.0;     ///< rough_rate: mm² of cut face a minute where the wire cuts full material
-  double skimSpeed = 10.0;      ///< skim_speed: mm/min along a skim
-  double rapidSpeed = 1000.0;   ///< rapid_speed: mm/min of a rapid
-  double threadSeconds = 30.0;  ///< thread_time: s to thread the wire in a start hole
-  bool feedIsSpeed = false;     ///< feed = speed: the program's F is the wire's speed, mm/min (LinuxCNC, hot wire)
-  /// `condition_speed C001 = 4`: mm/min of a pass cut under that machining condition (it wins over
-  /// rough_rate and skim_speed), by the condition as the program writes it, upper case.
-  std::map<std::string, double> conditionSpeeds;
+  /// The speed model of the cutting-time estimate (docs/passes.md, "Cutting time").
+  CuttingSpeeds speeds;
   // Writing for this machine (`kerf convert --to iso --for NAME`, docs/machines.md).
   bool writeMicrometres = false;          ///< write_unit = um: integers in µm, no decimal point
   bool crlf = false;                      ///< line_end = crlf

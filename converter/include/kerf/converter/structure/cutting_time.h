@@ -6,7 +6,6 @@
 #include "kerf/converter/structure/passes.h"
 #include "kerf/converter/toolpath.h"
 
-#include <map>
 #include <optional>
 #include <string>
 
@@ -15,22 +14,17 @@ namespace kerf::converter {
 /// The speeds the estimate takes: a machine profile's, the thickness the toolpath's planes give,
 /// and --speed when it is given.
 struct SpeedModel {
-  double roughRate = 100.0;     ///< mm²/min where the wire cuts full material: a rough cut, a cut-off
-  double skimSpeed = 10.0;      ///< mm/min along a skim
-  double rapidSpeed = 1000.0;   ///< mm/min
-  double threadSeconds = 30.0;  ///< s to thread the wire in a start hole
-  bool feedIsSpeed = false;     ///< a move's F (mm/min) is its speed where the program gives one
-  std::optional<double> speed;  ///< --speed: mm/min for every cut, overriding the rest
-  std::map<std::string, double> conditionSpeeds;  ///< mm/min of a pass cut under a condition ("C001")
-  std::optional<double> thickness;                ///< mm, when the planes are known
-  std::string thicknessSource;                    ///< where the planes come from (PlaneHeights::source)
-  std::string profile = "generic";                ///< the profile's name, for the report
+  CuttingSpeeds speeds;             ///< the profile's
+  std::optional<double> speed;      ///< --speed: mm/min for every cut, overriding the rest
+  std::optional<double> thickness;  ///< mm, when the planes are known
+  std::string thicknessSource;      ///< where the planes come from (PlaneHeights::source)
+  std::string profile = "generic";  ///< the profile's name, for the report
 };
 
 /// The model of `machine` for `toolpath` (its planes give the thickness), with --speed when given.
 SpeedModel speedModel(const MachineProfile& machine, const Toolpath& toolpath, std::optional<double> speed);
 
-/// Sets each pass's minutes and speed and structure.time. A pass under a machining condition the
+/// Sets each pass's minutes and structure.time. A pass under a machining condition the
 /// profile gives a speed for is cut at that speed; else a contour's first pass and a cut-off cut
 /// full material: roughRate / thickness mm/min (no time when the thickness is unknown); the other
 /// passes are skims. With feedIsSpeed a move's own F wins; --speed wins over everything. Rapids

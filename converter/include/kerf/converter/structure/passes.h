@@ -38,10 +38,9 @@ struct Pass {
   /// The machining condition in force along it (Toolpath::conditions, at its first move along the
   /// contour: "C001"); empty when the program selects none.
   std::string condition;
-  /// The cutting-time estimate (structure/cutting_time.h): minutes, and the mean speed it took
-  /// (mm/min); nothing when the model cannot tell (a rough cut of unknown thickness).
+  /// The cutting-time estimate (structure/cutting_time.h), minutes; nothing when the model cannot
+  /// tell (a rough cut of unknown thickness).
   std::optional<double> minutes;
-  double speed = 0.0;
 };
 
 /// A start hole and the passes cut from it, in order.

@@ -42,150 +42,163 @@ const CLI::Validator kPositiveLength(
 
 }  // namespace
 
-void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
-  // Input.
+namespace {
+
+/// The input group: the files, --files-from, --curve, --max-input, --upper, --machine.
+void addInputOptions(CLI::App& cmd, InputOptions& o, bool manyFiles) {
   // The file is required unless --curve stands in for it (checked once everything is parsed).
   if (manyFiles) {
-    cmd.add_option("files", o.input.files, "NC programs or folders of them ('-' reads a program from standard input)");
-    cmd.add_option("--files-from", o.input.filesFrom,
+    cmd.add_option("files", o.files, "NC programs or folders of them ('-' reads a program from standard input)");
+    cmd.add_option("--files-from", o.filesFrom,
                    "read the files to check from this list, one a line: files, folders or glob patterns (* ? [...]); "
                    "'-' reads the list from standard input")
         ->group("Input");
   } else
-    cmd.add_option("file", o.input.files, "NC program ('-' reads standard input)")->expected(0, 1);
-  cmd.add_option("--curve", o.input.curve,
+    cmd.add_option("file", o.files, "NC program ('-' reads standard input)")->expected(0, 1);
+  cmd.add_option("--curve", o.curve,
                  "a curve instead of a file: \"x = EXPR; y = EXPR\" of the parameter t (muparser), fitted with "
                  "biarcs (docs/cam.md)")
       ->group("Input");
-  cmd.add_option("--t", o.input.range, "the curve's range FROM:TO (expressions, e.g. 0:2*pi)")->group("Input");
-  cmd.add_option("--max-input", o.input.maxInputMiB,
+  cmd.add_option("--t", o.range, "the curve's range FROM:TO (expressions, e.g. 0:2*pi)")->group("Input");
+  cmd.add_option("--max-input", o.maxInputMiB,
                  "the largest program read, MiB (default 512; a larger one is refused before it is read)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{2047}))
       ->group("Input");
   cmd.final_callback([&o, manyFiles] {
-    if (o.input.curve) {
-      if (!o.input.files.empty()) throw CLI::ValidationError("--curve", "give a file or --curve, not both");
-      o.input.files = {kCurveInput};
-    } else if (o.input.range) {
+    if (o.curve) {
+      if (!o.files.empty()) throw CLI::ValidationError("--curve", "give a file or --curve, not both");
+      o.files = {kCurveInput};
+    } else if (o.range) {
       throw CLI::ValidationError("--t", "--t is the range of a --curve");
-    } else if (o.input.files.empty() && o.input.fileRequired && !o.input.filesFrom) {
+    } else if (o.files.empty() && o.fileRequired && !o.filesFrom) {
       throw CLI::RequiredError(manyFiles ? "files" : "file");
     }
   });
-  cmd.add_option("--upper", o.input.upper, "two-file input: the upper contour's program, paired move by move")
+  cmd.add_option("--upper", o.upper, "two-file input: the upper contour's program, paired move by move")
       ->group("Input");
-  cmd.add_option("--machine", o.input.machine,
+  cmd.add_option("--machine", o.machine,
                  "machine profile: a built-in name (kerf machines lists them) or a profile file; "
                  "default: detected from the program")
       ->group("Input");
+}
 
-  // Reading: what the words mean.
+/// The reading group: what the words mean: format, conventions, offsets, heights.
+void addReadingOptions(CLI::App& cmd, ReadingOptions& o) {
   const std::string reading = "Reading (default: the machine profile's, else the program's evidence)";
-  cmd.add_option("--input-format", o.reading.format, "input format; auto: detected from the content (docs/formats.md)")
+  cmd.add_option("--input-format", o.format, "input format; auto: detected from the content (docs/formats.md)")
       ->check(CLI::IsMember({"auto", "iso", "3b", "dxf", "curve"}))
       ->group(reading);
-  cmd.add_option("--start", o.reading.start, "where a 3B program starts, X,Y in mm (default 0,0)")->group(reading);
-  cmd.add_option("--polar-x", o.reading.polarX,
+  cmd.add_option("--start", o.start, "where a 3B program starts, X,Y in mm (default 0,0)")->group(reading);
+  cmd.add_option("--polar-x", o.polarX,
                  "X inside G12.1/G112 polar interpolation: radius or diameter (default: the machine profile's)")
       ->check(CLI::IsMember({"radius", "diameter"}))
       ->group(reading);
-  cmd.add_option("--dxf-units", o.reading.dxfUnits,
+  cmd.add_option("--dxf-units", o.dxfUnits,
                  "a DXF drawing's unit: file (the default: as its $INSUNITS says, unitless read as mm), or mm or in "
                  "whatever it says (docs/dxf.md)")
       ->check(CLI::IsMember({"mm", "in", "file"}))
       ->group(reading);
-  cmd.add_option("--curve-tolerance", o.reading.curveTolerance,
+  cmd.add_option("--curve-tolerance", o.curveTolerance,
                  "curves (--curve, a .curve file, DXF SPLINE and ELLIPSE) as biarcs within this, mm (default 0.001)")
       ->check(CLI::Range(1e-6, 10.0))
       ->group(reading);
-  cmd.add_option("--chain-tolerance", o.reading.chainTolerance,
+  cmd.add_option("--chain-tolerance", o.chainTolerance,
                  "a DXF drawing's element ends this close (mm) are one point of a contour (default 0.001)")
       ->check(CLI::Range(1e-9, 10.0))
       ->group(reading);
-  cmd.add_option("--polar-frame", o.reading.polarFrame,
+  cmd.add_option("--polar-frame", o.polarFrame,
                  "the G12.1/G112 frame: tool (turned by the table's C at G12.1, as Fanuc says) or table (the "
                  "table at C 0, as seed 002's post means); default: the machine profile's")
       ->check(CLI::IsMember({"tool", "table"}))
       ->group(reading);
-  cmd.add_option("--integer-unit", o.reading.integerUnit, "unit of coordinates written without a decimal point")
+  cmd.add_option("--integer-unit", o.integerUnit, "unit of coordinates written without a decimal point")
       ->check(CLI::IsMember({"mm", "um"}))
       ->group(reading);
-  cmd.add_option("--arc-centre", o.reading.arcCentre, "how I J give an arc's centre")
+  cmd.add_option("--arc-centre", o.arcCentre, "how I J give an arc's centre")
       ->check(CLI::IsMember({"incremental", "reversed", "absolute"}))
       ->group(reading);
-  cmd.add_option("--offset", o.reading.offset,
+  cmd.add_option("--offset", o.offset,
                  "wire offset in mm (wire radius plus spark gap): for G41/G42 without D or H; for a drawing "
                  "with --side, its wire path")
       ->check(CLI::Range(0.0, 100.0))
       ->group(reading);
-  cmd.add_option("--offsets", o.reading.offsets,
+  cmd.add_option("--offsets", o.offsets,
                  "an offset table file, one register a line (H001 = 0.180, mm): the values of G41/G42 D.. or H.. "
                  "the program's own table does not give (docs/passes.md)")
       ->group(reading);
-  cmd.add_option("--side", o.reading.side,
+  cmd.add_option("--side", o.side,
                  "a drawing's wire side with --offset: outside (a punch) or inside (a die) of the outermost "
                  "contours; holes in them get the other side")
       ->check(CLI::IsMember({"outside", "inside"}))
       ->group(reading);
-  cmd.add_option("--dialect", o.reading.dialect, "4-axis dialect (docs/taper.md); auto: detected from the words")
+  cmd.add_option("--dialect", o.dialect, "4-axis dialect (docs/taper.md); auto: detected from the words")
       ->check(CLI::IsMember({"auto", "plain", "xyuv-abs", "xyuv-rel", "xyuv-linuxcnc", "sodick-colon", "taper-angle"}))
       ->group(reading);
-  cmd.add_option("--upper-axes", o.reading.upperAxes,
-                 "names of the second plane's axes: uv, or uz (some hot-wire firmware)")
+  cmd.add_option("--upper-axes", o.upperAxes, "names of the second plane's axes: uv, or uz (some hot-wire firmware)")
       ->check(CLI::IsMember({"uv", "uz"}))
       ->group(reading);
   // Heights within a kilometre, as every coordinate Kerf reads (docs/formats.md).
   const auto kHeight = CLI::Range(-1e6, 1e6);
-  cmd.add_option("--lower-z", o.reading.lowerZ, "z of the lower contour's plane, mm (default 0)")
+  cmd.add_option("--lower-z", o.lowerZ, "z of the lower contour's plane, mm (default 0)")
       ->check(kHeight)
       ->group(reading);
-  auto* upperZ = cmd.add_option("--upper-z", o.reading.upperZ, "z of the upper contour's plane, mm")
-                     ->check(kHeight)
-                     ->group(reading);
-  auto* thickness = cmd.add_option("--thickness", o.reading.thickness, "upper minus lower plane, mm")
-                        ->check(kPositiveLength)
-                        ->group(reading);
+  auto* upperZ =
+      cmd.add_option("--upper-z", o.upperZ, "z of the upper contour's plane, mm")->check(kHeight)->group(reading);
+  auto* thickness =
+      cmd.add_option("--thickness", o.thickness, "upper minus lower plane, mm")->check(kPositiveLength)->group(reading);
   upperZ->excludes(thickness);
-  cmd.add_option("--program-z", o.reading.programZ, "z of the programmed contour (taper-angle, xyuv-rel), mm")
+  cmd.add_option("--program-z", o.programZ, "z of the programmed contour (taper-angle, xyuv-rel), mm")
       ->check(kHeight)
       ->group(reading);
+}
 
-  // Checks.
+/// The check group: the machine's limits, the time estimate's speed, which diagnostics show and how.
+void addCheckOptions(CLI::App& cmd, CheckOptions& o) {
   const std::string checks = "Checks (default: the machine profile's limits)";
-  cmd.add_option("--max-taper", o.checks.maxTaper, "the machine's largest wire slope, degrees (generic: 30)")
+  cmd.add_option("--max-taper", o.maxTaper, "the machine's largest wire slope, degrees (generic: 30)")
       ->check(CLI::Range(0.0, 89.0))
       ->group(checks);
-  cmd.add_option("--uv-range", o.checks.uvRange, "largest U/V travel from the lower guide, mm")
+  cmd.add_option("--uv-range", o.uvRange, "largest U/V travel from the lower guide, mm")
       ->check(kPositiveLength)
       ->group(checks);
-  cmd.add_option("--speed", o.checks.speed,
+  cmd.add_option("--speed", o.speed,
                  "cutting speed of every cut for the time estimate, mm/min (default: the machine profile's speed "
                  "model, docs/passes.md)")
       ->check(CLI::Range(0.001, 100000.0))
       ->group(checks);
-  cmd.add_option("--max-diagnostics", o.checks.maxDiagnostics, "show at most this many diagnostics (default 50)")
+  cmd.add_option("--max-diagnostics", o.maxDiagnostics, "show at most this many diagnostics (default 50)")
       ->check(CLI::Range(1, 100000))
       ->group(checks);
-  cmd.add_option("-W", o.checks.codeOptions,
+  cmd.add_option("-W", o.codeOptions,
                  "-Wno-K0604 silences a warning or note, -Werror=K0650 makes a code an error, -Werror every warning "
                  "(as compilers take them; errors cannot be silenced)")
       ->allow_extra_args(false)
       ->group(checks);
-  cmd.add_flag("-q,--quiet", o.checks.quiet, "print errors only")->group(checks);
-  cmd.add_option("--color", o.checks.color,
+  cmd.add_flag("-q,--quiet", o.quiet, "print errors only")->group(checks);
+  cmd.add_option("--color", o.color,
                  "colour the diagnostics: auto (on a terminal, unless NO_COLOR is set), always, never")
       ->check(CLI::IsMember({"auto", "always", "never"}))
       ->group(checks);
+}
 
-  // Sampling of arcs.
-  auto* step = cmd.add_option("--step", o.sampling.step, "arc interpolation step k in mm (chord length; default 0.1)")
+/// The sampling group: how arcs are sampled: --step or --tolerance.
+void addSamplingOptions(CLI::App& cmd, SamplingOptions& o) {
+  auto* step = cmd.add_option("--step", o.step, "arc interpolation step k in mm (chord length; default 0.1)")
                    ->check(kPositiveLength)
                    ->group("Sampling");
-  auto* tol = cmd.add_option("--tolerance", o.sampling.tolerance,
-                             "arc chord tolerance in mm (max deviation), instead of --step")
+  auto* tol = cmd.add_option("--tolerance", o.tolerance, "arc chord tolerance in mm (max deviation), instead of --step")
                   ->check(kPositiveLength)
                   ->group("Sampling");
   step->excludes(tol);
+}
+
+}  // namespace
+
+void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
+  addInputOptions(cmd, o.input, manyFiles);
+  addReadingOptions(cmd, o.reading);
+  addCheckOptions(cmd, o.checks);
+  addSamplingOptions(cmd, o.sampling);
 }
 
 void addMeshOptions(CLI::App& cmd, MeshOptions& o, bool generators) {

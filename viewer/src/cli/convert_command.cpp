@@ -81,6 +81,42 @@ std::optional<converter::Toolpath> passToConvert(const converter::Pipeline& p, c
   return out;
 }
 
+/// The emitter settings that come straight from the options.
+void fillRequest(const ConvertArgs& a, converter::EmitRequest& request) {
+  request.sampling = a.common.sampling.sampling();
+  request.maxPoints = a.maxPoints;
+  request.startLine = a.startBlock;
+  request.relativeUv = a.uv == "relative";
+  request.decimals = a.decimals;
+  request.compact = a.compact;
+  request.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
+  request.polarX = a.polarXOut == "radius" ? converter::PolarX::Radius : converter::PolarX::Diameter;
+  request.tolerance = a.common.sampling.tolerance.value_or(0.001);
+}
+
+/// The plane a 2-axis format follows (`plane` stays empty for an emitter that writes both); false
+/// after saying why the options do not fit the emitter or the program.
+bool planeFor(const ConvertArgs& a, const converter::Emitter& emitter, const converter::Toolpath& toolpath,
+              std::optional<converter::PlaneChoice>& plane) {
+  if (emitter.planes == converter::PlaneNeed::Both) {
+    if (!a.plane) return true;
+    reportError("--plane chooses one plane for a 2-axis file; " + std::string(emitter.name) + " writes both");
+    return false;
+  }
+  plane = converter::parsePlane(a.plane.value_or("lower"));
+  if (!plane) {
+    reportError("--plane takes lower, upper or z=HEIGHT (|HEIGHT| up to 1e6 mm), not '" + *a.plane + "'");
+    return false;
+  }
+  if (toolpath.isTaper() && !a.plane) {
+    reportError(
+        "this is a 4-axis taper program: choose the plane the 2-axis file follows with --plane "
+        "lower|upper|z=HEIGHT (one file per plane), or write both with --to points4 or --to iso");
+    return false;
+  }
+  return true;
+}
+
 void printList() {
   std::cout << "Output formats (kerf convert FILE --to NAME -o OUT):\n";
   for (const converter::Emitter& e : converter::emitters())
@@ -157,15 +193,7 @@ int runConvert(const ConvertArgs& a) {
       request.target = &*targetFile;
     }
   }
-  request.sampling = a.common.sampling.sampling();
-  request.maxPoints = a.maxPoints;
-  request.startLine = a.startBlock;
-  request.relativeUv = a.uv == "relative";
-  request.decimals = a.decimals;
-  request.compact = a.compact;
-  request.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
-  request.polarX = a.polarXOut == "radius" ? PolarX::Radius : PolarX::Diameter;
-  request.tolerance = a.common.sampling.tolerance.value_or(0.001);
+  fillRequest(a, request);
 
   const Toolpath* path = &p.toolpath;
   std::optional<Toolpath> onePass;
@@ -175,25 +203,10 @@ int runConvert(const ConvertArgs& a) {
     path = &*onePass;
   }
   std::optional<Toolpath> flat;
-  if (emitter.planes == PlaneNeed::Both) {
-    if (a.plane) {
-      reportError("--plane chooses one plane for a 2-axis file; " + std::string(emitter.name) + " writes both");
-      return kExitUsage;
-    }
-  } else {
-    const std::optional<PlaneChoice> plane = parsePlane(a.plane.value_or("lower"));
-    if (!plane) {
-      reportError("--plane takes lower, upper or z=HEIGHT (|HEIGHT| up to 1e6 mm), not '" + *a.plane + "'");
-      return kExitUsage;
-    }
-    if (p.toolpath.isTaper() && !a.plane) {
-      reportError(
-          "this is a 4-axis taper program: choose the plane the 2-axis file follows with --plane "
-          "lower|upper|z=HEIGHT (one file per plane), or write both with --to points4 or --to iso");
-      return kExitUsage;
-    }
-    const double tol = a.common.sampling.tolerance.value_or(0.001);
-    flat = toolpathAtPlane(*path, *plane, tol, p.source.get(), emitDiags);
+  std::optional<PlaneChoice> plane;
+  if (!planeFor(a, emitter, p.toolpath, plane)) return kExitUsage;
+  if (plane) {
+    flat = toolpathAtPlane(*path, *plane, a.common.sampling.tolerance.value_or(0.001), p.source.get(), emitDiags);
     path = flat ? &*flat : nullptr;
   }
   std::optional<EmitOutput> out;

@@ -72,6 +72,11 @@ struct BSpline {
   }
 };
 
+/// A step of the walk is the longest span that fits to within this fraction of its length.
+constexpr double kSpanPrecision = 256;
+/// equalise's target error is the smallest to within this fraction of the tolerance.
+constexpr double kEqualisePrecision = 64;
+
 Vec2 unit(const Vec2& v) {
   const double n = v.norm();
   return n > 0 ? Vec2(v / n) : Vec2(0, 0);
@@ -140,12 +145,16 @@ class Fitter {
     return true;
   }
 
-  /// The greedy walk with target error e: the nodes, or empty when over budget.
+  /// The greedy walk with target error e: the nodes, or empty when over budget. Each step takes
+  /// the longest span from t that fits, found to within 1/kSpanPrecision of its length (the walk
+  /// needs a long span, not the longest to the last bit): the span of the step before, doubled,
+  /// is tried first, so a curve of even spans costs a few trials a step, not a bisection of the
+  /// whole rest of the range.
   std::vector<double> walk(double e, bool& ok) const {
     std::vector<double> nodes{c_.t0};
     std::vector<Segment> scratch;
     ok = true;
-    double t = c_.t0;
+    double t = c_.t0, step = c_.t1 - c_.t0;
     while (t < c_.t1) {
       if (nodes.size() > o_.maxSpans) return {};
       if (fits(t, c_.t1, e, scratch)) {
@@ -153,7 +162,13 @@ class Fitter {
         break;
       }
       double lo = t, hi = c_.t1;  // span(t, lo) fits (or lo = t), span(t, hi) does not
-      for (int i = 0; i < 60 && hi - lo > o_.minSpan; ++i) {
+      if (const double guess = t + 2 * step; guess < c_.t1) {
+        if (fits(t, guess, e, scratch))
+          lo = guess;
+        else
+          hi = guess;
+      }
+      for (int i = 0; i < 60 && hi - lo > std::max(o_.minSpan, (hi - t) / kSpanPrecision); ++i) {
         const double mid = 0.5 * (lo + hi);
         if (fits(t, mid, e, scratch))
           lo = mid;
@@ -164,6 +179,7 @@ class Fitter {
         ok = false;
         lo = std::min(c_.t1, hi);
       }
+      step = lo - t;
       nodes.push_back(lo);
       t = lo;
     }
@@ -242,7 +258,7 @@ BiarcFit fitBiarcs(const ParametricCurve& curve, const BiarcOptions& options) {
     // The smallest target that still needs as many spans: the last span takes its share.
     const std::size_t n = nodes.size();
     double lo = 0.0, hi = options.tolerance;
-    for (int i = 0; i < 24; ++i) {
+    for (int i = 0; i < 24 && hi - lo > options.tolerance / kEqualisePrecision; ++i) {
       const double mid = 0.5 * (lo + hi);
       bool midOk = true;
       const std::vector<double> trial = f.walk(mid, midOk);

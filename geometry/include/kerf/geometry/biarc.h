@@ -10,11 +10,13 @@
 // corner.
 //
 // Nodes: CAWEP's "approximately equal error". From each node the next is the farthest parameter
-// whose biarc stays within the tolerance (found by bisection on the parameter; the error is
-// measured by sampling the true curve densely and taking each sample's distance to the two arcs).
-// That gives the fewest spans n the greedy walk allows; the walk is then repeated with a smaller
-// target error, bisected until it still needs n spans and the last span's error is close to the
-// others' — so the errors of all spans come out nearly equal and below the tolerance.
+// whose biarc stays within the tolerance, to within 1/256 of the span (found by bisection on the
+// parameter, starting from twice the span before; the error is measured by sampling the true curve
+// densely and taking each sample's distance to the two arcs). That gives (nearly) the fewest spans
+// n the greedy walk allows; the walk is then repeated with a smaller target error, bisected to
+// 1/64 of the tolerance while it still needs n spans and the last span's error is close to the
+// others' — so the errors of all spans come out nearly equal and below the tolerance. Both
+// precisions bound the work: a spline through 1,000 points is fitted in a bounded number of trials.
 #pragma once
 
 #include "kerf/geometry/segment.h"
@@ -66,8 +68,8 @@ struct BiarcOptions {
 BiarcFit fitBiarcs(const ParametricCurve& curve, const BiarcOptions& options = {});
 
 /// The most points fitPointList takes. Eigen's interpolation solves a dense system (O(n^3) time,
-/// O(n^2) memory) and the biarc fit of the result grows with it: 1,000 points take about 5 s on a
-/// two-core machine (docs/performance.md), so the readers refuse longer lists at their line.
+/// O(n^2) memory) and the biarc fit of the result grows with it (docs/performance.md), so the
+/// readers refuse longer lists at their line.
 constexpr std::size_t kMostFitPoints = 1000;
 
 /// A smooth curve through points (an interpolating cubic B-spline, chord-length parameters:

@@ -141,4 +141,28 @@ TEST(fit_point_list_test, points_on_a_circle_give_arcs_near_the_circle) {
     for (double t : {0.25, 0.5, 0.75}) EXPECT_NEAR(s.pointAt(t).norm(), 20.0, 0.01);
 }
 
+TEST(biarc_test, the_walk_evaluates_the_curve_a_bounded_number_of_times_per_span) {
+  // A rippled circle of 30 lobes needs hundreds of spans at 1 um: each step of the walk costs a
+  // few trials from the span before, and equalise a few walks, not a bisection to the last bit of
+  // the parameter per step and 24 walks (that took seconds for a 250-point DXF spline).
+  long evaluations = 0;
+  ParametricCurve c;
+  c.point = [&evaluations](double t) {
+    ++evaluations;
+    const double r = 40 * (1 + 0.1 * std::sin(30 * t));
+    return Vec2(r * std::cos(t), r * std::sin(t));
+  };
+  c.t0 = 0;
+  c.t1 = 2 * M_PI;
+  BiarcOptions o;
+  o.tolerance = 0.001;
+  const BiarcFit fit = fitBiarcs(c, o);
+  ASSERT_TRUE(fit.ok);
+  ASSERT_GE(fit.spans.size(), 100u);
+  const double perSpan = static_cast<double>(evaluations) / static_cast<double>(fit.spans.size());
+  std::printf("%zu spans, %ld evaluations, %.0f per span\n", fit.spans.size(), evaluations, perSpan);
+  EXPECT_LE(perSpan, 4000.0);
+  EXPECT_LE(fit.maxError, 0.001);
+}
+
 }  // namespace

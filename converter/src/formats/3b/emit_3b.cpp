@@ -69,6 +69,9 @@ Record lineRecord(const Micro& d) {
   r.axis = three_b::lineAxis(dx, dy);
   r.j = r.axis == Axis::X ? r.x : r.y;
   r.quadrant = three_b::lineQuadrant(dx, dy);
+  // On an axis x and y are written 0 and J is the length; L names the direction (seed 004: "终点在
+  // 坐标轴上时,x、y值为零,计数长度j为线段长度", the form its controls and posts expect).
+  if (d[0] == 0 || d[1] == 0) r.x = r.y = 0;
   return r;
 }
 

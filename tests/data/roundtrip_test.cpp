@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <regex>
 
 #include <sys/wait.h>
@@ -209,7 +211,9 @@ class PolarRoundTrip : public testing::Test {
     ASSERT_FALSE(got.empty()) << out;
     double reach = 0.0;
     for (const Seg& s : want) reach = std::max({reach, std::hypot(s.sx, s.sy), std::hypot(s.ex, s.ey)});
-    const double tol = 0.001 + 0.00005 + reach * 0.00005 * std::acos(-1.0) / 180.0 + 1e-6;
+    // X rounds to half its last digit, in the program's unit (an inch program stays in inches).
+    const double unit = kerf::test::readFile(out).find("G20") != std::string::npos ? 25.4 : 1.0;
+    const double tol = 0.001 + 0.00005 * unit + reach * 0.00005 * std::acos(-1.0) / 180.0 + 1e-6;
     std::vector<Seg> wantCuts, gotCuts;
     for (const Seg& s : want)
       if (s.kind != "rapid") wantCuts.push_back(s);
@@ -248,11 +252,13 @@ TEST(seed002_test, o30_written_as_polar_starts_as_o31_and_ends_a_turn_further) {
   kerf("convert '" + in.string() + "' --machine fanuc --force --to polar --tolerance 0.005 -o '" + out.string() + "'",
        "seed002");
   const auto lines = kerf::test::splitLines(kerf::test::readFile(out));
-  ASSERT_GE(lines.size(), 5u);
-  EXPECT_EQ(lines[2], "G00 X64.404 C-115.769");           // O31 N70 (after the start at the centre)
-  EXPECT_EQ(lines[3], "G01 X63.198 C-116.299 F120.000");  // O31 N85
-  const std::string& last = lines[lines.size() - 2];      // before M30
-  EXPECT_EQ(last.substr(0, 8), "X64.404 ");               // O31 N1340: X64.404 C-154.231
+  ASSERT_GE(lines.size(), 6u);
+  EXPECT_EQ(lines[1], "(seed 002 O30, N70-N100)");  // every line the writer does not convert, in place
+  EXPECT_EQ(lines[2], "G28 C0.");
+  EXPECT_EQ(lines[3], "G00 X64.404 C-115.769");        // O31 N70 (no move added before it)
+  EXPECT_EQ(lines[4], "G01 X63.198 C-116.299 F120.");  // O31 N85, its feed as written
+  const std::string& last = lines[lines.size() - 2];   // before M30
+  EXPECT_EQ(last.substr(0, 8), "X64.404 ");            // O31 N1340: X64.404 C-154.231
   const double c = std::stod(last.substr(last.find('C') + 1));
   EXPECT_NEAR(c, -154.231 - 360.0, 1e-9) << "unwrapped: O31's C-154.231 one turn further";
 }
@@ -302,6 +308,65 @@ TEST(seed002_test, o66_in_the_table_frame_is_o30s_square_and_the_tool_frame_turn
 }
 
 // A dwell on a lathe gives its time as X (`G4 X2.`): no move (the mill-turn reader).
+/// The words of a line that the polar writer does not convert (X Y C I J R, G0-G3, G12.1/G13.1,
+/// G90/G91), upper-cased, in order; comments as one word each.
+std::vector<std::string> keptWords(const std::string& line) {
+  std::vector<std::string> words;
+  for (std::size_t i = 0; i < line.size();) {
+    if (line[i] == ' ') {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    if (line[i] == '(') {
+      j = line.find(')', i) + 1;
+    } else {
+      while (j < line.size() && line[j] != ' ' && !std::isalpha(static_cast<unsigned char>(line[j])) && line[j] != '(')
+        ++j;
+    }
+    const std::string w = line.substr(i, j - i);
+    const char l = static_cast<char>(std::toupper(static_cast<unsigned char>(w[0])));
+    const bool converted =
+        std::strchr("XYCIJR", l) != nullptr ||
+        (l == 'G' && (std::stod(w.substr(1)) <= 3 || w == "G12.1" || w == "G13.1" || w == "G90" || w == "G91"));
+    if (!converted) words.push_back(w);
+    i = j;
+  }
+  return words;
+}
+
+// Issue 42: a face program with its tool, spindle, Z plunges and retracts, feeds, comments and
+// sequence numbers. `--to polar` converts the face words and keeps every other word in place —
+// compared line by line with the source — and adds no move: the output's first move is the
+// source's first, to X120 C0.
+TEST(seed002_test, polar_output_keeps_every_word_it_does_not_convert_in_place) {
+  const fs::path in = fs::path(KERF_ROUNDTRIP_WORK) / "face_slot.nc";
+  fs::create_directories(in.parent_path());
+  const std::string source =
+      "%\nO1234 (FACE SLOT)\nN10 T0707\nN20 G97 S2000 M03\nN30 G0 X120. C0. Z5.\nN40 G12.1\nN50 G0 X20. "
+      "C0.\nN60 G1 Z-2. F200.\nN70 G1 X20. C10. F120.\nN80 G3 X10. C20. R10.\nN90 G1 X-10. C20.\nN100 G0 Z5. "
+      "(retract)\nN110 G13.1\nN120 G0 X120. C0.\nN130 M05\nN140 M30\n%\n";
+  kerf::test::writeFile(in, source);
+  const fs::path out = fs::path(KERF_ROUNDTRIP_WORK) / "face_slot.xc";
+  fs::remove(out);
+  kerf("convert '" + in.string() + "' --force --to polar -o '" + out.string() + "'", "face_slot");
+  const auto got = kerf::test::splitLines(kerf::test::readFile(out));
+  const auto want = kerf::test::splitLines(source);
+  // Output lines that start a source line: those with the source's N word, or the source's line
+  // itself; point lines after a block's first (X C alone) belong to that block.
+  std::vector<std::string> starts;
+  for (const std::string& l : got)
+    if (!l.empty() && l[0] != 'X' && l.rfind("(written by Kerf", 0) != 0) starts.push_back(l);
+  // N40 G12.1 and N110 G13.1 keep their N alone: explicit X/C needs no polar mode.
+  const std::vector<std::string>& sourceLines = want;
+  ASSERT_EQ(starts.size(), sourceLines.size()) << kerf::test::readFile(out);
+  for (std::size_t k = 0; k < starts.size(); ++k)
+    EXPECT_EQ(keptWords(starts[k]), keptWords(sourceLines[k])) << starts[k] << " | " << sourceLines[k];
+  EXPECT_EQ(got[0], "%");  // the tape start stays first, the writer's comment after it
+  EXPECT_EQ(starts[4].substr(0, 24), "N30 G00 X120.000 C0.000 ") << "the first move is the source's first";
+  EXPECT_NE(kerf::test::readFile(out).find("N60 G1 Z-2. F200.\n"), std::string::npos) << "the plunge as written";
+}
+
 TEST(seed002_test, a_dwell_on_a_lathe_moves_nothing) {
   const fs::path in = fs::path(KERF_ROUNDTRIP_WORK) / "dwell.nc";
   fs::create_directories(in.parent_path());

@@ -44,6 +44,7 @@ bool faceG(const Word& w) {
                                      {28, 0},
                                      {30, 0},
                                      {53, 0},
+                                     {92, 0},
                                      {4, 0}})
     if (isG(w, whole, tenth)) return true;
   return false;
@@ -135,7 +136,7 @@ bool Interpreter::readFaceWord(const Word& w) {
       else if (!harmlessG(w))
         diags_.warning(Code::CodeNotModelled, src_, w.span(),
                        codeText(w) + " is not read in a mill-turn face program: the path may differ",
-                       "Kerf reads G0-G3, G4, G12.1/G13.1 (G112/G113), G20/G21, G90/G91 and G28/G30/G53 here "
+                       "Kerf reads G0-G3, G4, G12.1/G13.1 (G112/G113), G20/G21, G90/G91, G92 and G28/G30/G53 here "
                        "(docs/polar.md)");
       return true;
     case 'M':
@@ -159,6 +160,21 @@ void Interpreter::executeFaceBlock(const BlockWords& bw, const Block& block, con
       face_.cKnown = true;
       position_ = Vec2(face_.radius, face_.y);
     }
+    return;
+  }
+  if (plan.setPosition) {  // G92 X C: the face point is there now (X a diameter, C degrees)
+    if (face_.polar) {
+      diags_.warning(Code::CodeNotModelled, src_, block.span(),
+                     "G92 inside polar coordinate interpolation is not read: the path may differ");
+      return;
+    }
+    if (const Word* X = bw['X']) face_.radius = length(*X) / 2;
+    if (const Word* Y = bw['Y']) face_.y = length(*Y);
+    if (const Word* C = bw['C']) {
+      face_.c = C->value;
+      face_.cKnown = true;
+    }
+    position_ = rotate(Vec2(face_.radius, face_.y), face_.c);
     return;
   }
   if (bw.group(ModalGroup::Polar)) {

@@ -1,5 +1,6 @@
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
-G00 X40.000 C0.000
+(I J written as start minus centre, as some Agie/Charmilles/Mitsubishi posts do)
+X40.000 C0.000 G92
 G01 X20.000 C0.000
 X20.000 C45.000
 X20.000 C90.000
@@ -10,4 +11,4 @@ X20.000 C270.000
 X20.000 C315.000
 X20.000 C360.000
 X40.000 C360.000
-M30
+M02

@@ -1,7 +1,8 @@
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
-G00 X0.000 C0.000
+(Output through a custom profile: micrometre integers, incremental, numbered, with header)
+X0.000 C0.000 G92
 G01 X20.000 C0.000
 X20.000 C45.000
 X20.000 C90.000
 X0.000 C90.000
-M30
+M02

@@ -1,6 +1,14 @@
+%
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0100 mm)
-G00 X41.232 C104.036
-G01 X40.698 C100.620 F3.000
+(Kerf sample: a punch outline that uses both ways of programming an arc.)
+( - corners R5 by radius R, the top notch by centre I J [incremental: centre - start];)
+( - a 70 x 40 mm plate profile with a 10 mm semicircular notch in the top edge;)
+( - the wire enters from a start hole at [-5, 20], cuts clockwise, and leaves the way it came.)
+(Compare the two arc forms in `kerf explain samples/punch_outline.nc`.)
+O0002
+G90 G21 G17
+G92 X41.232 C104.036
+G01 X40.698 C100.620 F3.
 X40.312 C97.125
 X40.078 C93.576
 X40.000 C90.000
@@ -37,7 +45,7 @@ X90.588 C62.021
 X91.788 C60.642
 X93.038 C59.300
 X94.340 C57.995
-X93.522 C57.663
+X93.522 C57.663 (notch, counter-clockwise seen from above: it dips into the part)
 X92.736 C57.302
 X91.982 C56.911
 X91.266 C56.492
@@ -196,3 +204,4 @@ X40.312 C97.125
 X40.698 C100.620
 X41.232 C104.036
 M30
+%

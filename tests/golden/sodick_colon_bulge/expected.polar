@@ -1,5 +1,6 @@
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
-G00 X31.622 C-18.435
+G21 G90
+G92 X31.622 C-18.435
 G01 X31.430 C-17.354
 X31.250 C-16.260
 X31.080 C-15.154

@@ -1,6 +1,7 @@
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
-G00 X20.000 C0.000
-G01 X18.718 C0.099
+G21 G90
+G92 X20.000 C0.000
+G41 H001 G01 X18.718 C0.099
 X17.436 C0.214
 X16.152 C0.346
 X14.870 C0.501
@@ -262,7 +263,7 @@ X6.702 C2.224
 X7.310 C2.038
 X8.526 C1.747
 X9.744 C1.529
-X11.024 C1.182
+G40 X11.024 C1.182
 X12.306 C0.908
 X13.588 C0.685
 X14.870 C0.501

@@ -1,5 +1,6 @@
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
-G00 X0.000 C0.000
+(A closed square: the point file starts at the move of line 5, as the seed's start point)
+X0.000 C0.000 G92
 G01 X20.000 C0.000
 X20.002 C0.895
 X20.010 C1.790
@@ -120,4 +121,4 @@ X20.010 C88.210
 X20.002 C89.105
 X20.000 C90.000
 X0.000 C90.000
-M30
+M02

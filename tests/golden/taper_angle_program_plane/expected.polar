@@ -1,5 +1,6 @@
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
-G00 X20.000 C-90.000
+G21 G90
+G92 X20.000 C-90.000
 G01 X18.684 C-90.201
 X17.370 C-90.432
 X16.054 C-90.701

@@ -1,5 +1,6 @@
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
-G00 X30.000 C-90.000
+G21 G90
+G92 X30.000 C-90.000
 G01 X20.000 C-90.000 F2.000
 X20.004 C-88.747
 X20.020 C-87.495

@@ -1,5 +1,5 @@
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
-G00 X230.868 C-4.970
+X230.868 C-4.970 G92
 G01 X228.402 C-5.024
 X225.936 C-5.078
 X223.472 C-5.135
@@ -1567,4 +1567,4 @@ X223.472 C354.865
 X225.936 C354.922
 X228.402 C354.976
 X230.868 C355.030
-M30
+M02

@@ -1,5 +1,6 @@
 (written by Kerf: polar X/C from input.nc; X diameter, C degrees unwrapped; the spiral between points within 0.0010 mm)
-G00 X0.000 C0.000
+G21 G90
+G92 X0.000 C0.000
 G01 X20.000 C0.000
 X20.000 C45.000
 X20.000 C90.000

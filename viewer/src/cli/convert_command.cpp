@@ -194,6 +194,9 @@ int runConvert(const ConvertArgs& a) {
     }
   }
   fillRequest(a, request);
+  // The whole program as its own blocks wrote it: polar output keeps what it does not convert.
+  if (p.format == InputFormat::Iso && a.pass == "all" && !p.toolpath.isTaper())
+    request.sourceBlocks = parseOptionsFor(p.machine);
 
   const Toolpath* path = &p.toolpath;
   std::optional<Toolpath> onePass;

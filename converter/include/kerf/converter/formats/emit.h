@@ -10,6 +10,7 @@
 #include "kerf/converter/formats/points/points.h"
 #include "kerf/converter/interpret/machine.h"
 #include "kerf/converter/nc/diagnostics.h"
+#include "kerf/converter/nc/program.h"
 #include "kerf/converter/toolpath.h"
 
 #include <optional>
@@ -65,6 +66,9 @@ struct EmitRequest {
   // Polar X/C.
   PolarX polarX = PolarX::Diameter;
   double tolerance = 0.001;  ///< mm: how far the machine's X/C path may leave the programmed one
+  /// Set for an ISO source (how its text splits into blocks): polar output keeps each block's
+  /// words that it does not convert, in place. Unset: the moves alone.
+  std::optional<ParseOptions> sourceBlocks;
 };
 
 struct EmitOutput {

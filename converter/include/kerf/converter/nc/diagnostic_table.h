@@ -141,6 +141,7 @@
   X(806, NotInOutputFormat, Warning, "warning", "something the output format cannot say (3B rapids, M101 and a lower plane)") \
   X(807, OutputAdjusted, Note, "note/warning", "a 3B arc centre moved, or a count that misses its grid point") \
   X(808, OutputUnsure, Note, "note", "the 4B layout is unsure") \
+  X(809, OutputExpanded, Note, "note", "subprogram calls and repeats written out in a converted program") \
   X(810, MachineProfileError, Error, "error", "a wrong line in a machine profile file, or an unknown profile name") \
   X(811, OffsetTableError, Error, "error", "a wrong line in an `--offsets` table: not `H001 = 0.180`, a value that is no offset from 0 to 10 mm, a register given twice") \
   X(899, TooManyDiagnostics, Warning, "warning", "more self-intersections than reported")

@@ -195,8 +195,47 @@ TEST(machine_test, a_code_the_profile_knows_is_a_note_and_others_stay_errors) {
   // The standard codes that do not move the wire are known everywhere.
   const Pipeline standard = read("G17 G21 G90 G94 G49 G61 G98\nG64\nG28 X Y\nG92 X0 Y0\nG01 X10.\nM02\n", generic);
   EXPECT_FALSE(standard.diags.hasErrors()) << kerf::test::dump(standard.diags);
-  EXPECT_TRUE(has(standard, Code::PositionUnknown));  // G28 homes the axes: a note, nothing cut is lost
-  EXPECT_EQ(first(standard, Code::PositionUnknown).severity, Severity::Note);
+  EXPECT_TRUE(has(standard, Code::HomePositionTaken));  // G28 homes the axes: to the profile's home, a note
+  EXPECT_EQ(first(standard, Code::HomePositionTaken).severity, Severity::Note);
+  EXPECT_FALSE(has(standard, Code::PositionUnknown));
+}
+
+// Issue 42: hot-wire programs home with `G28 X Y` and `G28 U V` (GRBL, LinuxCNC) and then cut in
+// G91. The home is the profile's (default the origin): one note, the path drawn from there, and a
+// profile that says `home = unknown` keeps the position to the machine. G53 alone moves nothing;
+// G43/G44 (tool length) are known codes with no effect on the wire.
+TEST(machine_test, g28_goes_to_the_profiles_home_and_the_path_after_it_is_drawn) {
+  PipelineOptions o;
+  o.read.machine = "generic";
+  o.read.thickness = 100.0;
+  const std::string foam =
+      "G21\nG28 X Y\nG28 U V\nG91\nG1 X10 Y0 U10 V0 F300\nG1 X0 Y20 U0 V20\n"
+      "G1 X-10 Y0 U-10 V0\nG1 X0 Y-20 U0 V-20\nG90\nG1 X5 Y5 U5 V5\nG28 X2 Y0\nM2\n";
+  const Pipeline p = read(foam, o);
+  EXPECT_FALSE(p.diags.hasErrors()) << kerf::test::dump(p.diags);
+  EXPECT_FALSE(has(p, Code::PositionUnknown));
+  ASSERT_TRUE(has(p, Code::HomePositionTaken));
+  int notes = 0;
+  for (const Diagnostic& d : p.diags.all()) notes += d.code == Code::HomePositionTaken;
+  EXPECT_EQ(notes, 1);
+  ASSERT_EQ(p.toolpath.moves.size(), 7u);                       // four sides, the move to (5, 5), through it and home
+  EXPECT_NEAR(p.toolpath.moves[0].lower.end.x(), 10.0, 1e-12);  // from the home at the origin
+  EXPECT_NEAR(p.toolpath.moves[3].lower.end.norm(), 0.0, 1e-12);
+  EXPECT_EQ(p.toolpath.moves[5].kind, MoveKind::Rapid);  // G28 X2 Y0 in G90: through (2, 0) ...
+  EXPECT_NEAR((p.toolpath.moves[5].lower.end - Vec2(2, 0)).norm(), 0.0, 1e-12);
+  EXPECT_EQ(p.toolpath.moves[6].kind, MoveKind::Rapid);  // ... home; U V named by none: stay
+  EXPECT_NEAR(p.toolpath.moves[6].lower.end.norm(), 0.0, 1e-12);
+
+  PipelineOptions u = o;
+  u.read.machineFile = SourceText{"shop.profile", "name = shop\nhome = unknown\n"};
+  const Pipeline unknown = read("G90 G92 X0 Y0\nG28 X Y\nG1 X10. Y0\nM2\n", u);
+  EXPECT_TRUE(has(unknown, Code::PositionUnknown)) << kerf::test::dump(unknown.diags);
+  EXPECT_FALSE(has(unknown, Code::HomePositionTaken));
+
+  const Pipeline g53 = read("G43 Z100. H10\nG44 H2\nG49\nG90 G92 X0 Y0\nG53\nG1 X10. Y0\nX10. Y10.\nM2\n", o);
+  EXPECT_FALSE(has(g53, Code::UnknownGCode)) << kerf::test::dump(g53.diags);
+  EXPECT_FALSE(has(g53, Code::PositionUnknown)) << kerf::test::dump(g53.diags);
+  EXPECT_EQ(g53.toolpath.moves.size(), 2u);
 }
 
 TEST(machine_test, a_profile_sets_the_limits_of_the_checks) {

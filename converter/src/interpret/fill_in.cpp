@@ -27,8 +27,10 @@ BlockPlan Interpreter::fillIn(const Block& block, const BlockWords& bw, const Bl
   }
   p.setPosition = bw.hasCode(GCode::SetPosition);
   p.dwell = bw.hasCode(GCode::Dwell);
-  p.homing =
-      bw.hasCode(GCode::ReferenceReturn) || bw.hasCode(GCode::SecondReference) || bw.hasCode(GCode::MachineCoordinates);
+  // G53 alone moves nothing (a machine-coordinate move needs its axis words).
+  const bool axisWords = bw.has('X') || bw.has('Y') || bw.has('U') || bw.has('V') || ubw.has('U') || ubw.has('V');
+  p.homing = bw.hasCode(GCode::ReferenceReturn) || bw.hasCode(GCode::SecondReference) ||
+             (bw.hasCode(GCode::MachineCoordinates) && axisWords);
   p.lowerWords =
       bw.has('X') || bw.has('Y') || bw.has('I') || bw.has('J') || bw.has('R') || (options_.millTurn && bw.has('C'));
   p.upperWords = bw.has('U') || bw.has('V');

@@ -14,7 +14,7 @@ using MG = ModalGroup;
 
 // Every code Kerf knows under every profile. Meanings follow RS274/NGC and the wire-EDM usage in
 // docs/formats.md; the ones with no effect on the programmed path are marked so.
-constexpr std::array<GCodeInfo, 43> kGCodes = {{
+constexpr std::array<GCodeInfo, 45> kGCodes = {{
     {G::Rapid, 0, 0, MG::Motion, "rapid positioning (not cut)"},
     {G::Line, 1, 0, MG::Motion, "linear interpolation"},
     {G::ArcClockwise, 2, 0, MG::Motion, "circular interpolation, clockwise"},
@@ -33,6 +33,8 @@ constexpr std::array<GCodeInfo, 43> kGCodes = {{
     {G::OffsetCancel, 40, 0, MG::WireOffset, "wire offset cancel"},
     {G::OffsetLeft, 41, 0, MG::WireOffset, "wire offset left"},
     {G::OffsetRight, 42, 0, MG::WireOffset, "wire offset right"},
+    {G::ToolLengthPlus, 43, 0, MG::ToolLength, "tool length offset (+H): no effect on the wire's path"},
+    {G::ToolLengthMinus, 44, 0, MG::ToolLength, "tool length offset (-H): no effect on the wire's path"},
     {G::ToolLengthCancel, 49, 0, MG::ToolLength, "tool length offset cancel: no effect on the programmed path"},
     {G::TaperCancel, 50, 0, MG::Taper, "taper cancel"},
     {G::TaperLeft, 51, 0, MG::Taper, "taper, the wire leaning left of travel"},

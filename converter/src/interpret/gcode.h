@@ -48,6 +48,8 @@ enum class GCode : std::uint8_t {
   OffsetCancel,         ///< G40
   OffsetLeft,           ///< G41
   OffsetRight,          ///< G42
+  ToolLengthPlus,       ///< G43
+  ToolLengthMinus,      ///< G44
   ToolLengthCancel,     ///< G49
   TaperCancel,          ///< G50
   TaperLeft,            ///< G51

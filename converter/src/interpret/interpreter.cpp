@@ -213,7 +213,9 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   if (executeMachineCodes(bw, block) == Flow::Stop) return Flow::Stop;
   if (plan.setPosition && !executeSetPosition(bw, ubw, block)) return Flow::Continue;
   holdMotion(bw);
-  if (plan.homing || plan.positionCode) {
+  if (plan.homing && machine_.home && !bw.hasCode(GCode::MachineCoordinates)) {
+    returnHome(bw, ubw, block, plan);
+  } else if (plan.homing || plan.positionCode) {
     const Word* w = plan.positionCodeWord ? plan.positionCodeWord : bw.group(ModalGroup::NonModal);
     const std::string what =
         plan.positionCode

@@ -210,6 +210,9 @@ class Interpreter {
   Flow executeMachineCodes(const BlockWords& bw, const Block& block);
   Flow executeMacroCall(const Block& block);
   void positionUnknown(std::string cause, SourceSpan span, std::string help = {}, bool silent = false);
+  /// G28/G30 with the profile's home known: a rapid through the point the axis words give, then
+  /// one to the home for the axes named (all when none is), the upper plane's U V too.
+  void returnHome(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
   void skipMove(const Block& block, bool cut);
   void positionKnownAgain(const Block& block);
   void flushUnknown(const Block* knownAgain);
@@ -297,6 +300,7 @@ class Interpreter {
   // 4-axis state.
   Vec2 upperPosition_{0, 0};  // xyuv-abs, xyuv-linuxcnc, sodick-colon: where the upper contour is
   Vec2 upperShift_{0, 0};     // xyuv-abs, xyuv-linuxcnc: G92 U V
+  bool notedHome_ = false;    // HomePositionTaken said
   Motion upperMotion_ = Motion::None;
   HeldWord upperMotionWord_;
   Vec2 uvOffset_{0, 0};     // xyuv-rel: upper minus lower, the modal U V

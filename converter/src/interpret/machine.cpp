@@ -316,6 +316,16 @@ bool readReadingKey(const ProfileLine& l, MachineProfile& p) {
       l.badValue("seconds from 0 to 86400");
   } else if (key == "feed") {
     l.either(p.speeds.feedIsSpeed, "machine", "speed");
+  } else if (key == "home") {
+    const std::size_t comma = value.find(',');
+    const auto x = comma == std::string::npos ? std::nullopt : number(trim(value.substr(0, comma)));
+    const auto y = comma == std::string::npos ? std::nullopt : number(trim(value.substr(comma + 1)));
+    if (value == "unknown")
+      p.home.reset();
+    else if (x && y && std::abs(*x) <= 1e6 && std::abs(*y) <= 1e6)
+      p.home = std::array<double, 2>{*x, *y};
+    else
+      l.badValue("unknown, or X, Y in mm within 1e6");
   } else if (key == "uv_range" || key == "thickness") {
     std::optional<double>& slot = key == "uv_range" ? p.uvRange : p.thickness;
     if (value == "none")
@@ -425,7 +435,7 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
     else if (!readReadingKey(l, p) && !readWritingKey(l, p))
       l.fail(l.lead, l.eq - l.lead, "unknown key '" + l.key + "'",
              "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
-             "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, rough_rate, skim_speed, "
+             "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, home, rough_rate, skim_speed, "
              "rapid_speed, thread_time, feed, write_unit, line_end, "
              "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "
              "write_end, polar_x, polar_c, polar_frame, code <CODE>, offset <REGISTER>, condition_speed <CONDITION>");

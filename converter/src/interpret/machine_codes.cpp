@@ -126,6 +126,59 @@ void Interpreter::positionUnknown(std::string cause, SourceSpan span, std::strin
   unknown_.silent = silent;
 }
 
+void Interpreter::returnHome(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan) {
+  const bool upperAbsolute =
+      dialect_ == Dialect::XyuvAbs || dialect_ == Dialect::XyuvLinuxCnc || dialect_ == Dialect::SodickColon;
+  auto named = [&](char c) { return bw.has(c) || ubw.has(c); };
+  // The intermediate point, where the words move the wire at all: a bare letter (`G28 X Y`) only
+  // names an axis, and under G91 X0 Y0 stays where it is.
+  bool through = false;
+  for (char c : {'X', 'Y', 'U', 'V'})
+    for (const BlockWords* side : {&bw, &ubw})
+      if (const Word* w = (*side)[c]; w && w->isNumber()) through |= !plan.incremental || w->value != 0.0;
+  if (through && !unknown_.active) {
+    const Motion held = motion_;
+    motion_ = Motion::Rapid;
+    executeMotion(bw, ubw, block, plan);
+    motion_ = held;
+  }
+  const bool all = !plan.lowerWords && !plan.upperWords;
+  const Vec2 home((*machine_.home)[0], (*machine_.home)[1]);
+  Vec2 lowerEnd = position_, upperEnd = upperAbsolute ? upperPosition_ : position_;
+  if (all || named('X')) lowerEnd.x() = home.x();
+  if (all || named('Y')) lowerEnd.y() = home.y();
+  if (upperAbsolute) {
+    if (all || named('U')) upperEnd.x() = home.x();
+    if (all || named('V')) upperEnd.y() = home.y();
+  } else {
+    upperEnd = lowerEnd;
+  }
+  if (!notedHome_) {
+    notedHome_ = true;
+    const Word* w = bw.group(ModalGroup::NonModal);
+    diags_.note(Code::HomePositionTaken, src_, w ? w->span() : block.span(),
+                gName(bw.code(ModalGroup::NonModal)) + " goes to the machine's home, taken as (" +
+                    formatFixed(home.x(), 3) + ", " + formatFixed(home.y(), 3) +
+                    ") in the frame the program starts in: drawn as a rapid, and the path after it from there",
+                "the profile's `home = X, Y` says where it is; `home = unknown` leaves the position to the machine");
+  }
+  const Vec2 upperStart = upperAbsolute ? upperPosition_ : position_;
+  if (unknown_.active) positionKnownAgain(block);  // the home is a known place
+  if ((lowerEnd - position_).norm() > 1e-12 || (upperEnd - upperStart).norm() > 1e-12) {
+    Move move;
+    move.line = block.line;
+    move.span = block.span();
+    move.kind = MoveKind::Rapid;
+    move.feedIndex = feedIndex_;
+    move.wireOffset = wireOffset_;
+    move.callDepth = static_cast<std::uint8_t>(std::min<std::size_t>(stack_.size(), 255));
+    move.lower = Segment::line(position_, lowerEnd);
+    push(std::move(move), Segment::line(upperStart, upperEnd));
+  }
+  position_ = lowerEnd;
+  upperPosition_ = upperEnd;
+}
+
 void Interpreter::skipMove(const Block& block, bool cut) {
   ++unknown_.skippedMoves;
   if (cut) ++unknown_.skippedCuts;

@@ -13,6 +13,7 @@
 #include "kerf/converter/nc/source.h"
 #include "kerf/converter/toolpath.h"
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -84,6 +85,9 @@ struct MachineProfile {
   double maxTaperDegrees = 30.0;         ///< the machine's largest wire slope
   std::optional<double> uvRange;         ///< largest |upper - lower| per axis, mm
   std::optional<double> thickness;       ///< default workpiece thickness, mm
+  /// `home = X, Y`: where G28/G30 take the wire, mm in the program's frame [decided: the origin, as
+  /// GRBL and LinuxCNC home to machine zero unless set]; `home = unknown`: only the machine knows.
+  std::optional<std::array<double, 2>> home = std::array<double, 2>{0.0, 0.0};
   /// The speed model of the cutting-time estimate (docs/passes.md, "Cutting time").
   CuttingSpeeds speeds;
   // Writing for this machine (`kerf convert --to iso --for NAME`, docs/machines.md).

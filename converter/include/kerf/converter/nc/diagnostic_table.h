@@ -85,6 +85,7 @@
   X(236, PolarNotSupported, Warning, "warning", "a mill-turn program ends inside polar interpolation (no G13.1/G113)") \
   X(237, RotaryJump, Error, "error (warning for a rapid)", "a C step longer than the shortest way (docs/polar.md)") \
   X(238, PolarAxisValue, Note, "note", "how a mill-turn program's polar frame or X/C spirals were drawn") \
+  X(239, HomePositionTaken, Note, "note", "G28/G30 go to the machine profile's home position (`home`, default the origin), drawn as rapids; once per program") \
   /* Arcs */ \
   X(301, ArcWithoutCentre, Error, "error", "an arc with neither I J nor R") \
   X(302, RadiusTooSmall, Error, "error", "\\|R\\| shorter than half the chord") \

@@ -108,8 +108,16 @@ TEST(taper_test, absolute_or_relative_uv_decided_by_the_numbers) {
       named |= d.code == Code::DialectChosen && d.message.find("the numbers") != std::string::npos;
     EXPECT_TRUE(named) << kerf::test::dump(r->diags);
   }
-  // Incremental programs compare increments: U V moving with X Y are absolute.
+  // Incremental programs compare the positions the increments reach: U V moving with X Y are absolute.
   EXPECT_EQ(run("G91\nG1 X10. U10. Y0 V0\nX0 Y10. U-0.5 V10.\nM2\n")->path().dialect, Dialect::XyuvAbs);
+  // Issue 42: a hot-wire wing homed with G28, cut in G91, its tip 60 % of its root and swept 35 mm.
+  // The increments alone (|dU - dX| against |dU|: 15.4 against 24.8) decide nothing; the positions
+  // they reach (13.0 against 42.2) say U V are the tip's contour itself.
+  auto wing =
+      run("G21\nG28 X Y\nG28 U V\nG91\nG1 X20 Y10 U47 V16 F300\nG1 X100 Y0 U60 V0\nG1 X-20 Y8 U-12 V4.8\n"
+          "G1 X-80 Y-8 U-48 V-4.8\nG1 X0 Y-10 U0 V-6\nM2\n");
+  EXPECT_EQ(wing->path().dialect, Dialect::XyuvAbs) << kerf::test::dump(wing->diags);
+  EXPECT_FALSE(wing->hasCode(Code::DialectAmbiguous));
 }
 
 TEST(taper_test, heights_come_from_options_first_then_the_program) {

@@ -53,37 +53,41 @@ struct NumberEvidence {
   std::uint32_t firstLine = 0;
 };
 
+/// U V against X Y at the positions the words reach: under G91 the words are increments, so the
+/// positions are summed (from 0, or where a G92 sets them; G28/G30 take the axes they name, all when
+/// none, to 0: the home).
 NumberEvidence compareNumbers(const Program& program) {
   NumberEvidence e;
   bool incremental = false;
-  double x = 0, y = 0;
+  std::array<double, 4> at{};  // X Y U V
+  constexpr std::array<char, 4> kAxes{'X', 'Y', 'U', 'V'};
   WordReader reader(program);
   for (const Block& b : program.blocks) {
-    bool setPosition = false;
-    const Word *u = nullptr, *v = nullptr, *wx = nullptr, *wy = nullptr;
+    bool setPosition = false, home = false;
+    std::array<const Word*, 4> given{};
     for (const Word& w : reader.words(b)) {
-      if (!w.isNumber()) continue;
-      if (w.letter == 'G') {
+      if (w.letter == 'G' && w.isNumber()) {
         if (w.value == 90) incremental = false;
         if (w.value == 91) incremental = true;
         if (w.value == 92) setPosition = true;
+        if (w.value == 28 || w.value == 30) home = true;
       }
-      if (w.letter == 'U' && !u) u = &w;
-      if (w.letter == 'V' && !v) v = &w;
-      if (w.letter == 'X' && !wx) wx = &w;
-      if (w.letter == 'Y' && !wy) wy = &w;
+      for (std::size_t k = 0; k < kAxes.size(); ++k)
+        if (w.letter == kAxes[k] && !given[k]) given[k] = &w;
     }
-    if (incremental) {
-      x = wx ? wx->value : 0.0;
-      y = wy ? wy->value : 0.0;
-    } else {
-      if (wx) x = wx->value;
-      if (wy) y = wy->value;
+    if (home) {
+      const bool all = std::none_of(given.begin(), given.end(), [](const Word* w) { return w != nullptr; });
+      for (std::size_t k = 0; k < kAxes.size(); ++k)
+        if (all || given[k]) at[k] = 0.0;
+      continue;
     }
-    if (setPosition || (!u && !v)) continue;
-    auto add = [&](const Word* w, double along) {
-      if (!w) return;
-      const double dev = std::abs(w->value - along), mag = std::abs(w->value);
+    for (std::size_t k = 0; k < kAxes.size(); ++k)
+      if (given[k] && given[k]->isNumber())
+        at[k] = incremental && !setPosition ? at[k] + given[k]->value : given[k]->value;
+    if (setPosition || (!given[2] && !given[3])) continue;
+    auto add = [&](std::size_t upper, std::size_t lower) {
+      if (!given[upper]) return;
+      const double dev = std::abs(at[upper] - at[lower]), mag = std::abs(at[upper]);
       if (dev < 1e-9 && mag < 1e-9) return;  // zero against zero tells nothing
       e.deviation += dev;
       e.magnitude += mag;
@@ -92,8 +96,8 @@ NumberEvidence compareNumbers(const Program& program) {
         e.firstLine = b.line;
       }
     };
-    add(u, x);
-    add(v, y);
+    add(2, 0);
+    add(3, 1);
   }
   return e;
 }

@@ -40,11 +40,18 @@ const char* centreAdjective(ArcCentreMode m) {
   return "";
 }
 
-/// The convention every I J arc closes by, when the one used fails some and another fails none.
+/// Another I J convention, when the evidence decides for it: some arc closes that way only, none
+/// closes only the way in force, and every arc that closes at all closes that way. An arc that
+/// closes no way is no evidence (it is an error under any convention, reported at its line); arcs
+/// that close several ways are none either. Otherwise the convention in force (the profile's
+/// default) holds.
 std::optional<ArcCentreMode> betterCentre(const ArcCentreTally& t, ArcCentreMode used) {
-  if (t.arcs == 0 || t.closes[static_cast<int>(used)] == t.arcs) return std::nullopt;
-  for (ArcCentreMode m : {ArcCentreMode::Incremental, ArcCentreMode::Absolute, ArcCentreMode::Reversed})
-    if (m != used && t.closes[static_cast<int>(m)] == t.arcs) return m;
+  const auto u = static_cast<int>(used);
+  if (t.arcs == 0 || t.only[u] > 0 || t.closes[u] == t.arcs) return std::nullopt;
+  for (ArcCentreMode m : {ArcCentreMode::Incremental, ArcCentreMode::Absolute, ArcCentreMode::Reversed}) {
+    const auto k = static_cast<int>(m);
+    if (m != used && t.only[k] > 0 && t.closes[k] + t.closeNoWay == t.arcs) return m;
+  }
   return std::nullopt;
 }
 

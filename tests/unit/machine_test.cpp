@@ -138,6 +138,21 @@ TEST(machine_test, micrometres_and_absolute_centres_from_the_evidence) {
   EXPECT_NE(first(forced, Code::ZeroRadius).help.find("--arc-centre absolute"), std::string::npos);
 }
 
+// Issue 42: the I J convention is decided by arcs that close one way only. An arc that closes no
+// way is no evidence against the others: it is an error of its own, at its line, under the
+// convention they decide. Arcs that close either way decide nothing: the profile's default holds.
+TEST(machine_test, an_arc_that_closes_no_way_does_not_decide_the_centre_convention) {
+  const Pipeline p = read("G92 X0 Y0\nG01 X10. Y0\nG03 X-10. Y0 I0 J0\nG03 X10. Y0 I0 J0\nG03 X0 Y7. I0 J0\nM02\n");
+  EXPECT_EQ(p.toolpath.reading.arcCentre, ArcCentreMode::Absolute) << kerf::test::dump(p.diags);
+  ASSERT_TRUE(has(p, Code::ArcEndOffCircle)) << kerf::test::dump(p.diags);
+  EXPECT_EQ(p.source->locate(first(p, Code::ArcEndOffCircle).span.offset).line, 5u);
+  EXPECT_FALSE(has(p, Code::ZeroRadius));  // the two good arcs read as the evidence says
+  // Arcs from the origin close both ways: no evidence, the default (incremental) holds.
+  const Pipeline both = read("G92 X0 Y0\nG02 X0 Y0 I5. J0\nG01 X3. Y0\nG03 X0 Y7. I1. J1.\nM02\n");
+  EXPECT_EQ(both.toolpath.reading.arcCentre, ArcCentreMode::Incremental) << kerf::test::dump(both.diags);
+  EXPECT_TRUE(has(both, Code::ArcEndOffCircle));
+}
+
 // A long program that runs straight through gives its parse tree back as it runs (many thousand
 // blocks, pages at a time). What it reads must not change: the same moves as a run that keeps the
 // tree; a diagnostic that points at the motion word of the first block, 30,000 blocks later; and a

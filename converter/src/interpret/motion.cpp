@@ -50,8 +50,15 @@ void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2&
                                  bool closedAsUsed, std::uint32_t line) {
   ++tally_.arcs;
   const Vec2 centres[3] = {start + ij, start - ij, ij - shift};
+  int closing = 0, way = 0;
   for (int k = 0; k < 3; ++k)
-    if (geometry::centreVerdict(start, end, centres[k], tolerance_) == geometry::ArcStatus::Ok) ++tally_.closes[k];
+    if (geometry::centreVerdict(start, end, centres[k], tolerance_) == geometry::ArcStatus::Ok) {
+      ++tally_.closes[k];
+      ++closing;
+      way = k;
+    }
+  if (closing == 1) ++tally_.only[way];
+  if (closing == 0) ++tally_.closeNoWay;
   if (!closedAsUsed && tally_.firstFailLine == 0) tally_.firstFailLine = line;
 }
 

@@ -65,6 +65,8 @@ struct InterpreterOptions {
 struct ArcCentreTally {
   std::size_t arcs = 0;             ///< arcs given by I J (lower side)
   std::size_t closes[3] = {};       ///< of those, how many close as incremental, reversed, absolute
+  std::size_t only[3] = {};         ///< of those, how many close that way and no other (evidence that decides)
+  std::size_t closeNoWay = 0;       ///< arcs that close no way: errors whatever the convention
   std::uint32_t firstFailLine = 0;  ///< the first arc that failed under the convention in force
 };
 

@@ -86,12 +86,49 @@ bool atSeam(const Toolpath& tp, std::size_t a, std::size_t b, double tol) {
   return (ps - qe).norm() <= tol || (pe - qs).norm() <= tol || (ps - qs).norm() <= tol || (pe - qe).norm() <= tol;
 }
 
-void seamNote(const Toolpath& tp, const SourceFile* src, std::size_t mi, std::size_t mj, const geometry::Vec3& p,
-              const std::string& where, Diagnostics& diags) {
-  diags.report(finding(Severity::Note, Code::TaperSeam, src, tp.moves[mj], mj, p,
-                       "the wire passes the start point twice" + where + " (the move on line " +
-                           std::to_string(tp.moves[mi].line) + " leans the other way): the taper's seam"));
-}
+/// The seam's contacts on one contour, or in all the sections of one surface, said in one note at
+/// the first (a new user's first screen should say what matters, not the same note three times).
+class SeamNote {
+ public:
+  /// The later move mj meets the earlier move mi at p, at the seam.
+  void add(std::size_t mi, std::size_t mj, const geometry::Vec3& p) {
+    if (pairs_.empty()) point_ = p;
+    pairs_.emplace_back(mi, mj);
+  }
+
+  void report(const Toolpath& tp, const SourceFile* src, const std::string& where, Diagnostics& diags) const {
+    if (pairs_.empty()) return;
+    std::set<std::uint32_t> earlier, later;
+    for (const auto& [mi, mj] : pairs_) {
+      earlier.insert(tp.moves[mi].line);
+      later.insert(tp.moves[mj].line);
+    }
+    const std::size_t mj = pairs_.front().second;
+    const std::string message =
+        pairs_.size() == 1
+            ? "the wire passes the start point twice" + where + " (the move on line " +
+                  std::to_string(tp.moves[pairs_.front().first].line) + " leans the other way): the taper's seam"
+            : "the wire passes the start point twice" + where + ": the " + linesText(later) + " meet the " +
+                  linesText(earlier) + ", which lean the other way: the taper's seam";
+    diags.report(finding(Severity::Note, Code::TaperSeam, src, tp.moves[mj], mj, point_, message));
+  }
+
+ private:
+  /// "move on line 21", "moves on lines 12 and 13", "moves on lines 3, 5 and 9".
+  static std::string linesText(const std::set<std::uint32_t>& lines) {
+    std::string text = lines.size() == 1 ? "move on line " : "moves on lines ";
+    std::size_t k = 0;
+    for (const std::uint32_t l : lines) {
+      if (k > 0) text += k + 1 == lines.size() ? " and " : ", ";
+      text += std::to_string(l);
+      ++k;
+    }
+    return text;
+  }
+
+  std::vector<std::pair<std::size_t, std::size_t>> pairs_;
+  geometry::Vec3 point_ = geometry::Vec3::Zero();
+};
 
 /// One plane's contour: the segments of the cut moves in order and each one's move.
 /// One contour to test: views of segments and their moves held elsewhere (the cut path is not
@@ -137,6 +174,7 @@ void checkContour(const PlaneContour& c, const geometry::SelfIntersectionResult&
                   const SourceFile* src, const CheckOptions& options, Diagnostics& diags, MovePairs& seen) {
   const auto& moves = toolpath.moves;
   const std::string name = c.name;
+  SeamNote seam;
   for (const geometry::Contact& x : result.contacts) {
     const std::size_t mi = c.moveIndex[x.first], mj = c.moveIndex[x.second];
     seen.insert({mi, mj});
@@ -147,7 +185,7 @@ void checkContour(const PlaneContour& c, const geometry::SelfIntersectionResult&
         !(x.kind == geometry::ContactKind::Overlap &&
           isRetrace(c.segments[x.first], c.segments[x.second], x, options.tolerance)) &&
         atSeam(toolpath, mi, mj, options.tolerance)) {
-      seamNote(toolpath, src, mi, mj, p, c.upperPlane ? " on the upper plane" : " on the lower plane", diags);
+      seam.add(mi, mj, p);
       continue;
     }
     // Where the loop comes back to its start smoothly (a T onto the lead-in's end), an arc whose
@@ -219,6 +257,7 @@ void checkContour(const PlaneContour& c, const geometry::SelfIntersectionResult&
         break;
     }
   }
+  seam.report(toolpath, src, c.upperPlane ? " on the upper plane" : " on the lower plane", diags);
   if (result.truncated) {
     diags.warning(Code::TooManyDiagnostics, src, SourceSpan::wholeFile(),
                   "stopped after " + std::to_string(options.maxContacts) + " self-intersections of " + name);
@@ -358,7 +397,7 @@ void makeSection(const SurfaceCheck& c, int level, int levels, Section& out) {
 /// A section's contacts as findings, in order, but for the pairs of moves seen or reported already
 /// (reported grows) and retraces; the first coarsened section says so once (coarsened).
 void reportSection(const SurfaceCheck& c, const Section& level, const MovePairs& seen, MovePairs& reported,
-                   bool& coarsened) {
+                   bool& coarsened, SeamNote& seam) {
   const auto& moves = c.toolpath.moves;
   const geometry::Planes& planes = c.toolpath.heights.planes;
   const PlaneContour& section = level.section;
@@ -385,7 +424,7 @@ void reportSection(const SurfaceCheck& c, const Section& level, const MovePairs&
     reported.insert({mi, mj});
     const bool neighbours = kb == ka + 1 || (c.closed && ka == 0 && kb + 1 == n);
     if (ka != kb && !neighbours && atSeam(c.toolpath, mi, mj, c.options.tolerance)) {
-      seamNote(c.toolpath, c.src, mi, mj, at3(x.point, section.z), " at z " + formatFixed(section.z, 3), c.diags);
+      seam.add(mi, mj, at3(x.point, section.z));
       continue;
     }
     const geometry::Vec3 p = at3(x.point, section.z);
@@ -420,14 +459,16 @@ void checkSurface(const Toolpath& toolpath, const CutView& path, bool closed, co
   MovePairs reported = checkJoints(c);
   const int levels = std::max(2, options.surfaceLevels);
   bool coarsened = false;
+  SeamNote seam;
   const int batchSize = static_cast<int>(std::max(1u, geometry::workerCount()));
   for (int first = 1; first < levels; first += batchSize) {
     std::vector<Section> batch(static_cast<std::size_t>(std::min(batchSize, levels - first)));
     geometry::parallelFor(batch.size(), 1, [&](std::size_t b, std::size_t e) {
       for (std::size_t k = b; k < e; ++k) makeSection(c, first + static_cast<int>(k), levels, batch[k]);
     });
-    for (const Section& level : batch) reportSection(c, level, seen, reported, coarsened);
+    for (const Section& level : batch) reportSection(c, level, seen, reported, coarsened, seam);
   }
+  seam.report(toolpath, src, " between the planes", diags);
 }
 
 /// A run of cut moves checked as one path: the program's cuts, or one pass of a contour.

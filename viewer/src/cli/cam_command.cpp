@@ -173,14 +173,17 @@ int runCam(const CamArgs& a) {
     }
     if (a.to != "3b") po.read.machine = p.machine.name;
     back.emplace(runPipeline({name, out->text}, po));
-    for (const Diagnostic& d : back->diags.all())
-      if (d.severity != Severity::Note) all.report(d);
     double length = 0.0;
     for (const Move& m : back->toolpath.moves)
       if (m.isCut()) length += m.lower.length();
     const double allowed = 0.002 * static_cast<double>(back->toolpath.moves.size()) + 0.01;
     readBack = "; read back: " + std::to_string(back->toolpath.moves.size()) + " moves, cut length " + mm(length) +
                " mm (made " + mm(made->cutLength) + ")";
+    // Refused, nothing is written: the findings name the program made, not a file that is not there.
+    if (back->diags.hasErrors() || std::abs(length - made->cutLength) > allowed)
+      back.emplace(runPipeline({"<not written: " + name + ">", out->text}, po));
+    for (const Diagnostic& d : back->diags.all())
+      if (d.severity != Severity::Note) all.report(d);
     if (back->diags.hasErrors()) {
       printDiagnostics(all, c);
       reportError("not writing: the program made has errors when read back (shown above)");

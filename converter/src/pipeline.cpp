@@ -75,6 +75,29 @@ void summarizeInto(Pipeline& out, const PipelineOptions& options) {
   if (!options.summarize) return;
   out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
   out.summary->structure = out.structure;
+  out.summary->comparison = out.comparison;
+}
+
+/// --drawing: the DXF read (in mm, its own findings at its lines) and the program held against it.
+void compareDrawing(Pipeline& out, const PipelineOptions& options) {
+  if (!options.drawing) return;
+  out.drawingSource = std::make_unique<SourceFile>(options.drawing->name, options.drawing->text);
+  DxfOptions o;
+  if (options.read.dxfUnit) o.unitToMm = *options.read.dxfUnit;
+  o.curveTolerance = options.read.curveTolerance;
+  o.maxElements = options.read.maxMoves;
+  const Drawing drawing = readDxf(*out.drawingSource, o, out.diags);
+  if (!drawing.ok) return;
+  if (drawing.elements.empty()) {
+    out.diags.error(Code::NothingCut, out.drawingSource.get(), SourceSpan{0, 0},
+                    "the drawing holds no line, arc or curve to compare the program with");
+    return;
+  }
+  std::vector<DrawnElement> drawn;
+  drawn.reserve(drawing.elements.size());
+  for (const DrawingElement& e : drawing.elements) drawn.push_back({e.segment, e.entity, e.where, e.span});
+  out.comparison = compareWithDrawing(out.toolpath, out.structure, drawn, options.drawingCheck, out.source.get(),
+                                      out.drawingSource.get(), out.diags);
 }
 
 /// The checks, with the machine's limits unless the user gave others, then the summary (it reads
@@ -90,6 +113,7 @@ void runChecks(Pipeline& out, const PipelineOptions& options) {
     out.measures = measureSurface(out.toolpath);
     checkToolpath(out.toolpath, out.source.get(), out.checkOptions, out.diags, &out.measures, &out.structure);
   }
+  compareDrawing(out, options);
   summarizeInto(out, options);
   out.diags.sortByPosition();
 }

@@ -27,7 +27,7 @@ double distanceToChord(const Vec2& p, const Vec2& a, const Vec2& b) {
 }  // namespace
 
 DeviationSet::DeviationSet(SegmentView segments, double chordDeviation, std::size_t maxChords)
-    : chordDeviation_(chordDeviation) {
+    : segments_(segments.begin(), segments.end()), chordDeviation_(chordDeviation) {
   for (std::size_t k = 0; k < segments.size(); ++k) {
     const Segment& s = segments[k];
     if (!s.isArc()) {
@@ -125,8 +125,9 @@ Farthest farthestFrom(const Segment& s, const DeviationSet& set, double precisio
   auto probe = [&](double t) {
     const Vec2 p = s.pointAt(t);
     const DeviationSet::Hit h = set.nearest(p);
-    if (h.distance > out.distance) {
-      out.distance = h.distance;
+    const double exact = set.ownerDistance(p, h.chord);
+    if (exact > out.distance) {
+      out.distance = exact;
       out.at = p;
       out.nearest = set.chord(h.chord).owner;
     }

@@ -46,6 +46,52 @@ TEST(cam_test, a_refused_program_is_named_as_not_written) {
   EXPECT_EQ(err.find(out.string() + ":"), std::string::npos) << "a line of a file that is not there: " << err;
 }
 
+// Issue 43: samples/plate.dxf's three contours as kerf cam makes them with the offset left to the
+// controller (G42), then two mistakes a programmer makes by hand: the round hole forgotten, and one
+// corner of the square typed 10 um off (X31.010 for X31.000). The program against its drawing finds
+// both, at their lines, with the deviation; the program as made finds nothing.
+TEST(drawing_test, a_forgotten_hole_and_a_mistyped_corner_are_found_against_the_drawing) {
+  const std::string made =
+      "G90 G21\nG92 X15.000 Y15.000\nG42 G01 X17.000 Y15.000\nG02 X17.000 Y15.000 I-5.000 J0.000\nM00\n"
+      "G40 G00 X26.414 Y11.414\nM00\nG42 G01 X25.000 Y10.000\nG01 X25.000 Y20.000\nG01 X31.000 Y20.000\n"
+      "G01 X31.000 Y10.000\nG01 X25.000 Y10.000\nM00\nG40 G00 X4.000 Y-2.000\nM00\nG42 G01 X4.000 Y0.000\n"
+      "G01 X36.000 Y0.000\nG03 X40.000 Y4.000 I0.000 J4.000\nG01 X40.000 Y26.000\nG03 X36.000 Y30.000 I-4.000 "
+      "J0.000\nG01 X4.000 Y30.000\nG03 X0.000 Y26.000 I0.000 J-4.000\nG01 X0.000 Y4.000\nG03 X4.000 Y0.000 "
+      "I4.000 J0.000\nG40\nM02\n";
+  std::string wrong = made;
+  wrong.replace(wrong.find("G42 G01 X17.000 Y15.000\nG02 X17.000 Y15.000 I-5.000 J0.000\n"),
+                std::string("G42 G01 X17.000 Y15.000\nG02 X17.000 Y15.000 I-5.000 J0.000\n").size(), "");
+  wrong.replace(wrong.find("G01 X31.000 Y20.000"), 19, "G01 X31.010 Y20.000");
+  const fs::path work = fs::path(KERF_DXF_WORK);
+  fs::create_directories(work);
+  const std::string drawing = std::string(KERF_SAMPLES_DIR) + "/plate.dxf";
+  auto check = [&](const std::string& name, const std::string& text, int& exit) {
+    kerf::test::writeFile(work / name, text);
+    return json::parse(run("'" + std::string(KERF_PROGRAM) + "' check --json '" + (work / name).string() +
+                               "' --drawing '" + drawing + "' 2>/dev/null",
+                           work / (name + ".json"), exit));
+  };
+  int exit = 0;
+  const json good = check("plate_made.nc", made, exit);
+  EXPECT_EQ(exit, 0);
+  const json& c = good["summary"]["comparison"];
+  EXPECT_EQ(c["out_of_tolerance"], 0);
+  EXPECT_LE(c["worst_mm"].get<double>(), 1e-6) << c.dump();
+  EXPECT_EQ(c["elements"].size(), 13u);
+  const json bad = check("plate_wrong.nc", wrong, exit);
+  EXPECT_EQ(exit, 1);
+  bool holeNotCut = false, cornerOff = false;
+  for (const json& d : bad["diagnostics"]) {
+    holeNotCut |= d["code"] == "K0631" && d["message"].get<std::string>().find("(12.000, 15.000)") != std::string::npos;
+    if (d["code"] == "K0630" && d["line"] == 9) {  // the block down from the mistyped corner, nearest the far point
+      cornerOff = true;
+      EXPECT_NE(d["message"].get<std::string>().find("9.9 µm off"), std::string::npos) << d.dump();
+    }
+  }
+  EXPECT_TRUE(holeNotCut) << bad["diagnostics"].dump(1);
+  EXPECT_TRUE(cornerOff) << bad["diagnostics"].dump(1);
+}
+
 class DxfAgainstEzdxf : public testing::Test {
  public:
   explicit DxfAgainstEzdxf(fs::path file) : file_(std::move(file)) {}

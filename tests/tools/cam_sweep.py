@@ -3,6 +3,9 @@
 its first closed contour is made into a program — outside and inside, ISO and 3B, wire offset
 0.15 mm — and `kerf check` of what was written must exit 0 with no error. Drawings with no closed
 contour are listed as such (kerf cam refuses them with K0606, as it must).
+Then the same contour made with the offset left to the controller (G41/G42, ISO) is held against its
+own drawing (`kerf check --drawing`, issue 43): every move it cuts lies within 0.001 mm of the
+drawing, and at least the contour's elements lie within 0.001 mm of what it cuts.
 
 usage: cam_sweep.py KERF DXF_DIR WORKDIR"""
 import glob
@@ -13,7 +16,7 @@ import sys
 
 kerf, dxf_dir, work = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(work, exist_ok=True)
-failures, made, no_closed = [], 0, []
+failures, made, no_closed, compared, worst = [], 0, [], 0, 0.0
 for path in sorted(glob.glob(os.path.join(dxf_dir, "*.dxf"))):
     name = os.path.splitext(os.path.basename(path))[0]
     r = subprocess.run([kerf, "check", "--json", path], capture_output=True, text=True)
@@ -42,6 +45,28 @@ for path in sorted(glob.glob(os.path.join(dxf_dir, "*.dxf"))):
                 failures.append(f"{name} {side} {to}: kerf check of the program exits {c.returncode}")
                 continue
             made += 1
+    # The program against its own drawing.
+    out = os.path.join(work, f"{name}.controller.iso")
+    if os.path.exists(out):
+        os.remove(out)
+    # Four decimals: the 0.5 um rounding of three would take an arc's end up to 0.7 um off on its own.
+    r = subprocess.run([kerf, "cam", path, "--offset-by", "controller", "--side", "outside", "--contour",
+                        str(closed[0]), "--to", "iso", "--decimals", "4", "-o", out], capture_output=True, text=True)
+    if r.returncode != 0:
+        failures.append(f"{name}: cam --offset-by controller exited {r.returncode}: {r.stderr[-300:]}")
+        continue
+    c = subprocess.run([kerf, "check", "--json", out, "--drawing", path], capture_output=True, text=True)
+    comparison = json.loads(c.stdout)["summary"]["comparison"]
+    edge_worst = max((e["deviation_mm"] for e in comparison["edge"]), default=0.0)
+    within = sum(1 for e in comparison["elements"] if e["deviation_mm"] <= 0.001)
+    wanted = contours[closed[0] - 1]["elements"]
+    if edge_worst > 0.001 or within < wanted:
+        failures.append(f"{name}: against its drawing, moves up to {edge_worst:.6f} mm off, {within} elements "
+                        f"within 0.001 mm of {wanted} in the contour")
+        continue
+    compared += 1
+    worst = max(worst, edge_worst)
+print(f"{compared} programs held against their own drawings: largest deviation {worst * 1000:.3f} um")
 print(f"{made} programs made and checked clean; no closed contour (refused, K0606): {', '.join(no_closed)}")
 for f in failures:
     print("FAIL:", f)

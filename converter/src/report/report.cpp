@@ -238,6 +238,43 @@ std::string structureText(const Structure& st) {
 
 }  // namespace
 
+/// The program against --drawing: the worst deviation, and the worst ten elements past the
+/// tolerance (JSON lists every element).
+std::string comparisonText(const DrawingComparison& c) {
+  auto um = [](double mm) { return formatFixed(mm * 1000.0, 1) + " µm"; };
+  std::string out = "  drawing " + c.drawing + ": " + plural(c.elements.size(), "element") + ", largest deviation " +
+                    um(c.worst) + " (tolerance " + um(c.tolerance) + "), " + std::to_string(c.outOfTolerance) +
+                    " out of tolerance\n";
+  std::vector<const ElementDeviation*> off;
+  for (const ElementDeviation& e : c.elements)
+    if (e.deviation > c.tolerance) off.push_back(&e);
+  std::stable_sort(off.begin(), off.end(), [](const auto* a, const auto* b) { return a->deviation > b->deviation; });
+  for (std::size_t k = 0; k < off.size() && k < 10; ++k)
+    out += "    drawing line " + std::to_string(off[k]->drawingLine) + ": " + um(off[k]->deviation) + " at " +
+           formatPoint(off[k]->at) + ", nearest block on line " + std::to_string(off[k]->blockLine) + "\n";
+  if (off.size() > 10) out += "    and " + std::to_string(off.size() - 10) + " more (--json lists every element)\n";
+  return out;
+}
+
+json comparisonJson(const DrawingComparison& c) {
+  json elements = json::array(), edge = json::array();
+  for (const ElementDeviation& e : c.elements)
+    elements.push_back({{"element", e.element},
+                        {"drawing_line", e.drawingLine},
+                        {"deviation_mm", e.deviation},
+                        {"at", vec(e.at)},
+                        {"move", e.move},
+                        {"block_line", e.blockLine}});
+  for (const EdgeDeviation& e : c.edge)
+    edge.push_back({{"move", e.move}, {"deviation_mm", e.deviation}, {"at", vec(e.at)}});
+  return {{"drawing", c.drawing},
+          {"tolerance_mm", c.tolerance},
+          {"worst_mm", c.worst},
+          {"out_of_tolerance", c.outOfTolerance},
+          {"elements", std::move(elements)},
+          {"edge", std::move(edge)}};
+}
+
 std::string formatSummaryText(const std::string& file, const Summary& s, const Diagnostics& diags) {
   std::string out;
   out += file + ": " + plural(diags.errorCount(), "error") + ", " + plural(diags.warningCount(), "warning") + "\n";
@@ -274,6 +311,7 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
            mm(t.area) + " mm² in " + plural(t.patches, "patch") + "\n";
   }
   if (s.structure.multiPass()) out += structureText(s.structure);
+  if (s.comparison) out += comparisonText(*s.comparison);
   if ((s.format == InputFormat::Iso || s.format == InputFormat::ThreeB) && s.cutMoves > 0)
     out += timeText(s.structure.time);
   out += std::string("verdict: ") + (diags.hasErrors() ? "errors — do not cut" : "ok") + "\n";
@@ -439,6 +477,7 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
                     {"surface_area_mm2", t.area},          {"patches", t.patches}};
   }
   sum["structure"] = structureObject(s.structure);
+  if (s.comparison) sum["comparison"] = comparisonJson(*s.comparison);
   j["summary"] = std::move(sum);
   roundNumbers(j);
   return j.dump(2) + "\n";

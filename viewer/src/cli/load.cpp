@@ -101,6 +101,7 @@ std::optional<Loaded> loadQuietly(const CommonOptions& options, const std::strin
   if (options.input.upper) out.inputs.push_back(*options.input.upper);
   if (po.read.machineFile) out.inputs.push_back(po.read.machineFile->name);
   if (po.read.offsetsFile) out.inputs.push_back(po.read.offsetsFile->name);
+  if (po.drawing) out.inputs.push_back(po.drawing->name);
   return out;
 }
 

@@ -166,6 +166,17 @@ void addCheckOptions(CLI::App& cmd, CheckOptions& o) {
                  "model, docs/passes.md)")
       ->check(CLI::Range(0.001, 100000.0))
       ->group(checks);
+  cmd.add_option(
+         "--drawing", o.drawing,
+         "the drawing (DXF) the program should cut: each element against the part edge, both ways (docs/drawing.md)")
+      ->group(checks);
+  cmd.add_option("--drawing-tolerance", o.drawingTolerance,
+                 "how far the part edge may lie from the drawing, mm (default 0.005)")
+      ->check(CLI::Range(1e-6, 100.0))
+      ->group(checks);
+  cmd.add_option("--drawing-origin", o.drawingOrigin,
+                 "the drawing's point at the program's origin, X,Y in mm (default 0,0)")
+      ->group(checks);
   cmd.add_option("--max-diagnostics", o.maxDiagnostics, "show at most this many diagnostics (default 50)")
       ->check(CLI::Range(1, 100000))
       ->group(checks);
@@ -309,6 +320,23 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
   r.wireOffset = o.reading.offset;
   if (o.reading.side) r.side = *o.reading.side == "inside" ? WireSide::Inside : WireSide::Outside;
   if (o.reading.upperAxes) r.upperAxesUZ = *o.reading.upperAxes == "uz";
+  if (o.checks.drawing) {
+    std::optional<std::string> text = readTextFile(*o.checks.drawing, 512u << 20, error);
+    if (!text) return false;
+    out.drawing = SourceText{*o.checks.drawing, std::move(*text)};
+    out.drawingCheck.tolerance = o.checks.drawingTolerance;
+  }
+  if (o.checks.drawingOrigin) {
+    double x = 0, y = 0;
+    int consumed = 0;
+    const std::string& t = *o.checks.drawingOrigin;
+    if (std::sscanf(t.c_str(), "%lf,%lf%n", &x, &y, &consumed) != 2 || consumed != static_cast<int>(t.size()) ||
+        !(std::abs(x) <= 1e6) || !(std::abs(y) <= 1e6)) {
+      error = "--drawing-origin takes X,Y in mm within 1e6 (for example 10,-5.5), not '" + t + "'";
+      return false;
+    }
+    out.drawingCheck.origin = geometry::Vec2(x, y);
+  }
   out.check.maxTaperDegrees = o.checks.maxTaper;
   out.check.uvRange = o.checks.uvRange;
   out.check.speed = o.checks.speed;

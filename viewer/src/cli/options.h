@@ -57,9 +57,12 @@ struct ReadingOptions {
 
 /// The checks' settings (defaults: the machine profile's).
 struct CheckOptions {
-  std::optional<double> maxTaper;  ///< degrees
-  std::optional<double> uvRange;   ///< mm
-  std::optional<double> speed;     ///< --speed, mm/min
+  std::optional<double> maxTaper;            ///< degrees
+  std::optional<double> uvRange;             ///< mm
+  std::optional<double> speed;               ///< --speed, mm/min
+  std::optional<std::string> drawing;        ///< --drawing FILE (DXF)
+  double drawingTolerance = 0.005;           ///< --drawing-tolerance, mm
+  std::optional<std::string> drawingOrigin;  ///< --drawing-origin X,Y
   std::size_t maxDiagnostics = 50;
   std::vector<std::string> codeOptions;  ///< -W values as given: no-K0604, error=K0650, error
   bool quiet = false;                    ///< --quiet: errors only

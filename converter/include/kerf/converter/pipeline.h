@@ -13,6 +13,7 @@
 
 #include "kerf/converter/cam/cam.h"
 #include "kerf/converter/check/checks.h"
+#include "kerf/converter/check/drawing_check.h"
 #include "kerf/converter/check/summary.h"
 #include "kerf/converter/formats/dxf/read_dxf.h"
 #include "kerf/converter/formats/read.h"
@@ -78,6 +79,9 @@ struct PipelineOptions {
   /// Keep how each arc's centre was written (Toolpath::centreWords; `kerf explain` shows it). The
   /// 3B and mill-turn readers always keep it.
   bool centreWords = false;
+  /// --drawing: the DXF the program should cut, compared after the checks (check/drawing_check.h).
+  std::optional<SourceText> drawing;
+  DrawingCheckOptions drawingCheck;
 };
 
 /// Everything a command needs after reading and checking a program. The sources live as long as
@@ -103,6 +107,8 @@ struct Pipeline {
   std::optional<Summary> summary;
   /// false: nothing was read (the machine profile file or the --offsets table is wrong); diags says why.
   bool read = false;
+  std::unique_ptr<SourceFile> drawingSource;    ///< --drawing
+  std::optional<DrawingComparison> comparison;  ///< the program against --drawing
 };
 
 /// The geometry the wire path was made from, where the two differ: a drawing's closed contours

@@ -37,6 +37,10 @@ class DeviationSet {
   /// The chord nearest p (infinite distance when the set is empty).
   [[nodiscard]] Hit nearest(const Vec2& p) const;
   [[nodiscard]] double distanceTo(const Vec2& p, std::size_t chord) const;
+  /// The distance from p to the set's segment that the chord stands for (exact for an arc).
+  [[nodiscard]] double ownerDistance(const Vec2& p, std::size_t chord) const {
+    return segments_[chords_[chord].owner].distanceTo(p);
+  }
   [[nodiscard]] const Chord& chord(std::size_t k) const { return chords_[k]; }
   [[nodiscard]] bool empty() const { return chords_.empty(); }
   [[nodiscard]] bool ok() const { return ok_; }
@@ -44,6 +48,7 @@ class DeviationSet {
 
  private:
   [[nodiscard]] std::size_t cellOf(double v, double lo, std::size_t n) const;
+  std::vector<Segment> segments_;
   std::vector<Chord> chords_;
   double chordDeviation_ = 0.0;
   bool ok_ = true;
@@ -60,7 +65,8 @@ struct Farthest {
 };
 
 /// The farthest point of `s` from the set: its distance is within precision + the set's chord
-/// deviation of the true largest distance (see the file comment).
+/// deviation of the true largest distance (see the file comment); each distance reported is exact
+/// to the segment whose chord was nearest (so an arc of the set against itself is 0 apart).
 Farthest farthestFrom(const Segment& s, const DeviationSet& set, double precision = 1e-4);
 
 }  // namespace kerf::geometry

@@ -1,6 +1,7 @@
 // Numbers about a program: what `kerf check` prints after the diagnostics.
 #pragma once
 
+#include "kerf/converter/check/drawing_check.h"
 #include "kerf/converter/structure/passes.h"
 #include "kerf/converter/toolpath.h"
 #include "kerf/geometry/tessellation.h"
@@ -112,9 +113,10 @@ struct Summary {
   double rapidLength = 0.0;   ///< mm
   geometry::Box bounds;       ///< of the cut path
   geometry::Sampling sampling;
-  geometry::PathSampleStats points;   ///< the cut path sampled at `sampling`
-  std::optional<TaperSummary> taper;  ///< taper programs whose heights are known
-  Structure structure;                ///< its contours and their passes (the pipeline fills it)
+  geometry::PathSampleStats points;             ///< the cut path sampled at `sampling`
+  std::optional<TaperSummary> taper;            ///< taper programs whose heights are known
+  Structure structure;                          ///< its contours and their passes (the pipeline fills it)
+  std::optional<DrawingComparison> comparison;  ///< against --drawing (the pipeline fills it)
 };
 
 Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling,

@@ -122,6 +122,9 @@
   X(612, PartFallsBeforeSkims, Warning, "warning", "a punch is cut free by a pass that closes its contour while skims of it follow: they skim a part that has fallen (leave a tab and cut it off last)") \
   X(613, CutOffWithoutStop, Warning, "warning", "a cut-off through the tab with no stop (M00, M01, a profile's `rethread` code) since the pass before it: the slug or part is not secured when it falls") \
   X(614, SlugFalls, Note, "note", "where a die's slug falls free: the end of the first pass that closes its contour") \
+  X(630, DrawingElementOff, Error, "error", "`--drawing`: a drawing element is cut farther off than `--drawing-tolerance` (at the nearest block, with the deviation and where)") \
+  X(631, DrawingContourNotCut, Error, "error", "`--drawing`: a closed contour of the drawing that no move comes near (a hole or outline not cut)") \
+  X(632, CutNotInDrawing, Warning, "warning", "`--drawing`: moves that cut what the drawing does not have (one finding per run of them)") \
   /* Geometry of the ruled surface (4-axis taper) */ \
   X(650, TaperTooSteep, Error, "error", "the wire's slope exceeds `--max-taper` (default 30°)") \
   X(651, SurfaceSelfIntersection, Error, "error", "two patches that are not neighbours meet between the planes (sampled in z)") \

@@ -1,0 +1,70 @@
+// Does the program cut the drawing? The part edge a program cuts against the drawing's elements,
+// element by element, both ways (issue 43, docs/drawing.md).
+//
+// The part edge: for each contour, the programmed moves along its last pass that is not a cut-off,
+// and its cut-offs (a program written with G41/G42 gives its programmed contour; one written as
+// the wire-centre path is compared as written). The drawing: its lines and arcs in mm, moved by
+// `origin` (the drawing's point at the program's origin). Every distance is certified to within
+// the precision (geometry/deviation.h), not sampled.
+#pragma once
+
+#include "kerf/converter/nc/diagnostics.h"
+#include "kerf/converter/structure/passes.h"
+#include "kerf/converter/toolpath.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace kerf::converter {
+
+/// A drawing element as the comparison needs it (the checks come before the formats: the pipeline
+/// makes these from the DXF reader's elements).
+struct DrawnElement {
+  geometry::Segment segment;  ///< mm, in the drawing's frame
+  std::string entity;         ///< LINE, ARC, LWPOLYLINE ...
+  std::uint32_t line = 0;     ///< the entity's line in the DXF (binary: its byte offset)
+  SourceSpan span;            ///< the entity's type name in the DXF
+};
+
+struct DrawingCheckOptions {
+  double tolerance = 0.005;  ///< mm [decided: a wire machine's positioning is a few µm]
+  geometry::Vec2 origin{0, 0};
+  double precision = 1e-4;  ///< mm: how close to the true largest distance each figure is
+};
+
+/// A drawing element against the part edge.
+struct ElementDeviation {
+  std::size_t element = 0;        ///< in Drawing::elements
+  double deviation = 0.0;         ///< mm: its farthest point from the edge
+  geometry::Vec2 at{0, 0};        ///< that point, in the program's frame
+  std::size_t move = 0;           ///< the move of the edge nearest it
+  std::uint32_t drawingLine = 0;  ///< the element's line in the DXF (binary: its byte offset)
+  std::uint32_t blockLine = 0;    ///< that move's line in the program
+};
+
+/// A move of the part edge against the drawing.
+struct EdgeDeviation {
+  std::size_t move = 0;
+  double deviation = 0.0;  ///< mm: its farthest point from the drawing
+  geometry::Vec2 at{0, 0};
+};
+
+struct DrawingComparison {
+  std::string drawing;  ///< the DXF's name
+  std::vector<ElementDeviation> elements;
+  std::vector<EdgeDeviation> edge;
+  double worst = 0.0;              ///< mm, both ways
+  std::size_t outOfTolerance = 0;  ///< drawing elements off by more than the tolerance
+  double tolerance = 0.0;
+};
+
+/// Compares and reports: an element off by more than the tolerance (K0630, at the nearest block),
+/// a closed drawing contour no move comes near (K0631, at its first entity), moves that cut what
+/// the drawing does not have (K0632, one per run of such moves).
+DrawingComparison compareWithDrawing(const Toolpath& toolpath, const Structure& structure,
+                                     const std::vector<DrawnElement>& drawing, const DrawingCheckOptions& options,
+                                     const SourceFile* program, const SourceFile* drawingSource, Diagnostics& diags);
+
+}  // namespace kerf::converter

@@ -14,6 +14,12 @@ namespace {
 
 Vec2 leftNormal(const Vec2& t) { return {-t.y(), t.x()}; }
 
+/// The largest arc radius a fit makes, mm: the readers take no coordinate beyond 1e6 mm.
+constexpr double kLargestArcRadius = 1e6;
+/// A spline through fit points whose control points lie farther than this many times the points'
+/// extent outside their bounding box swings far from them: refused (BiarcFit::swings).
+constexpr double kMostSwing = 10.0;
+
 /// The arc that leaves p along the unit tangent u and ends at q (a line where q lies on the
 /// tangent, or the circle would be immense).
 Segment tangentArc(const Vec2& p, const Vec2& u, const Vec2& q) {
@@ -22,7 +28,9 @@ Segment tangentArc(const Vec2& p, const Vec2& u, const Vec2& q) {
   const double k = w.dot(n), ww = w.squaredNorm();
   if (std::abs(k) <= 1e-12 * std::max(1.0, ww)) return Segment::line(p, q);
   const double r = ww / (2 * k);  // signed: > 0, the centre on the left (counter-clockwise)
-  if (std::abs(r) > 1e7) return Segment::line(p, q);
+  // Beyond the readers' range (1e6 mm) an arc is its chord: the fit measures the chord against the
+  // curve as it would the arc, so a span it does not fit is shortened.
+  if (std::abs(r) > kLargestArcRadius) return Segment::line(p, q);
   return Segment::arc(p, q, p + r * n, r > 0 ? ArcDirection::CounterClockwise : ArcDirection::Clockwise);
 }
 
@@ -73,9 +81,9 @@ struct BSpline {
 };
 
 /// A step of the walk is the longest span that fits to within this fraction of its length.
-constexpr double kSpanPrecision = 256;
+constexpr double kSpanPrecision = 64;
 /// equalise's target error is the smallest to within this fraction of the tolerance.
-constexpr double kEqualisePrecision = 64;
+constexpr double kEqualisePrecision = 16;
 
 Vec2 unit(const Vec2& v) {
   const double n = v.norm();
@@ -307,6 +315,22 @@ BiarcFit fitPointList(const std::vector<Vec2>& points, const BiarcOptions& optio
   for (std::size_t i = 0; i < pts.size(); ++i) m.col(static_cast<Eigen::Index>(i)) = pts[i];
   const Eigen::Index degree = std::min<Eigen::Index>(3, static_cast<Eigen::Index>(pts.size()) - 1);
   const Spline spline = Eigen::SplineFitting<Spline>::Interpolate(m, degree);
+  // A cubic B-spline lies in the hull of its control points: far outside the points' box, the
+  // interpolation swings out between them (points very unevenly spaced), and the curve is no
+  // drawing's.
+  Box box;
+  for (const Vec2& p : pts) box.add(p);
+  const double reach = kMostSwing * std::max((box.max - box.min).norm(), 1.0);
+  for (Eigen::Index i = 0; i < spline.ctrls().cols(); ++i) {
+    const Vec2 c = spline.ctrls().col(i);
+    const Vec2 outside = (box.min - c).cwiseMax(c - box.max).cwiseMax(Vec2::Zero());
+    if (!std::isfinite(c.x()) || !std::isfinite(c.y()) || outside.norm() > reach) {
+      BiarcFit none;
+      none.ok = false;
+      none.swings = true;
+      return none;
+    }
+  }
   // Its knots and control points, evaluated without allocating (BSpline).
   auto curveOf = std::make_shared<BSpline>();
   curveOf->degree = static_cast<std::size_t>(spline.degree());

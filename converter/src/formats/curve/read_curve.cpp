@@ -220,6 +220,13 @@ bool reportFit(const geometry::BiarcFit& fit, const CurveOptions& o, const Sourc
                 "a larger --curve-tolerance, or a shorter range");
     return false;
   }
+  if (fit.swings) {
+    diags.error(Code::CurveFit, &src, span,
+                "the curve through these points swings out far beyond them (more than ten times their extent): "
+                "the points are very unevenly spaced",
+                "give the points more evenly, or split the list where they jump");
+    return false;
+  }
   if (!fit.ok) {
     double where = fit.spans.empty() ? 0.0 : fit.spans.back().t1;
     diags.error(Code::CurveFit, &src, span,

@@ -545,7 +545,10 @@ class DrawingReader {
   void add(const Entity& e, const std::string& layer, const Segment& s) {
     if (!inRange(s.start) || !inRange(s.end) ||
         (s.isArc() && (!inRange(s.centre) || !(s.radius <= kLargestCoordinate)))) {
-      refuse(e, "it reaches " + outOfRange(inRange(s.start) ? s.end : s.start) + " mm, beyond 1e6 mm");
+      const bool endsIn = inRange(s.start) && inRange(s.end);
+      refuse(e, endsIn ? "an arc of radius " + outOfRange(s.radius) + " mm about " + outOfRange(s.centre) +
+                             " mm, beyond 1e6 mm"
+                       : "it reaches " + outOfRange(inRange(s.start) ? s.end : s.start) + " mm, beyond 1e6 mm");
       return;
     }
     if (!room()) return;
@@ -793,6 +796,10 @@ class DrawingReader {
         geometry::BiarcOptions bo;
         bo.tolerance = o_.curveTolerance;
         const geometry::BiarcFit f = geometry::fitPointList(pts, bo);
+        if (f.swings) {
+          refuse(e, "the curve through its fit points swings out far beyond them (points very unevenly spaced)");
+          return;
+        }
         for (const Segment& seg : f.segments) add(e, layer, seg);
         return;
       }

@@ -10,11 +10,11 @@
 // corner.
 //
 // Nodes: CAWEP's "approximately equal error". From each node the next is the farthest parameter
-// whose biarc stays within the tolerance, to within 1/256 of the span (found by bisection on the
+// whose biarc stays within the tolerance, to within 1/64 of the span (found by bisection on the
 // parameter, starting from twice the span before; the error is measured by sampling the true curve
 // densely and taking each sample's distance to the two arcs). That gives (nearly) the fewest spans
 // n the greedy walk allows; the walk is then repeated with a smaller target error, bisected to
-// 1/64 of the tolerance while it still needs n spans and the last span's error is close to the
+// 1/16 of the tolerance while it still needs n spans and the last span's error is close to the
 // others' — so the errors of all spans come out nearly equal and below the tolerance. Both
 // precisions bound the work: a spline through 1,000 points is fitted in a bounded number of trials.
 #pragma once
@@ -54,6 +54,9 @@ struct BiarcFit {
   double maxError = 0.0;  ///< mm, over every span
   bool ok = true;         ///< false: a span could not be fitted within the tolerance (a cusp, a corner)
   bool overBudget = false;
+  /// fitPointList: the spline through the points swings out far beyond them (its control points
+  /// lie more than ten times the points' extent outside their box): refused, nothing fitted.
+  bool swings = false;
 };
 
 struct BiarcOptions {

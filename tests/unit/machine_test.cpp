@@ -237,7 +237,7 @@ TEST(machine_test, g28_goes_to_the_profiles_home_and_the_path_after_it_is_drawn)
   EXPECT_NEAR(p.toolpath.moves[0].lower.end.x(), 10.0, 1e-12);  // from the home at the origin
   EXPECT_NEAR(p.toolpath.moves[3].lower.end.norm(), 0.0, 1e-12);
   EXPECT_EQ(p.toolpath.moves[5].kind, MoveKind::Rapid);  // G28 X2 Y0 in G90: through (2, 0) ...
-  EXPECT_NEAR((p.toolpath.moves[5].lower.end - Vec2(2, 0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((p.toolpath.moves[5].lower.end - kerf::geometry::Vec2(2, 0)).norm(), 0.0, 1e-12);
   EXPECT_EQ(p.toolpath.moves[6].kind, MoveKind::Rapid);  // ... home; U V named by none: stay
   EXPECT_NEAR(p.toolpath.moves[6].lower.end.norm(), 0.0, 1e-12);
 

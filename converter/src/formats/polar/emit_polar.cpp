@@ -220,7 +220,7 @@ bool setsFacePoint(std::span<const Word> words) {
 }
 
 /// Where the first move after block b starts (in the toolpath's frame): the point a G92 there set.
-std::optional<Vec2> nextStart(const Toolpath& toolpath, const SourceMoves& s, std::size_t b) {
+std::optional<geometry::Vec2> nextStart(const Toolpath& toolpath, const SourceMoves& s, std::size_t b) {
   for (std::size_t k = b + 1; k < s.movesOf.size(); ++k)
     if (s.movesOf[k].first < s.movesOf[k].second) return toolpath.moves[s.movesOf[k].first].lower.start;
   return std::nullopt;
@@ -247,7 +247,7 @@ bool writeInPlace(const Toolpath& toolpath, const SourceMoves& s, PolarState& st
     const std::span<const Word> words = reader.words(block);
     const std::vector<Word> kept(words.begin(), words.end());
     if (first == last && setsFacePoint(kept)) {  // G92 X Y: the same point as X/C
-      if (const std::optional<Vec2> p = nextStart(toolpath, s, b)) {
+      if (const std::optional<geometry::Vec2> p = nextStart(toolpath, s, b)) {
         std::string rest = blockTextWithout(program, reader, block, isConverted, insertAt);
         st.at = geometry::toPolar(*p, st.at.c);
         text += joinAt(rest, insertAt, st.point(st.at));

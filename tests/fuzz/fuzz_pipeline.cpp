@@ -110,5 +110,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       (void)kerf::geometry::meshRuledSurface(lower, a.toolpath.upper, a.toolpath.heights.planes, mo);
     }
   }
+  // Polar X/C with the program's own words kept in place (issue 42): from a program without errors
+  // (convert writes no other without --force), what it writes reads back with no malformed number
+  // and no stray character: the words it makes are well formed, and the ones it copies were.
+  if (!p.diags.hasErrors() && !a.toolpath.isTaper() && p.format == InputFormat::Iso &&
+      a.toolpath.moves.size() <= 2000) {
+    EmitRequest polar;
+    polar.tolerance = 0.01;
+    polar.sourceBlocks = parseOptionsFor(p.machine);
+    if (const auto out = writePolar(a.toolpath, &src, polar, diags)) {
+      const Pipeline back = runPipeline({"back.xc", out->text}, options);
+      for (const Diagnostic& d : back.diags.all())
+        if (d.code == Code::MalformedNumber || d.code == Code::UnexpectedCharacter) __builtin_trap();
+    }
+  }
   return 0;
 }

@@ -60,9 +60,9 @@ struct BiarcFit {
 };
 
 struct BiarcOptions {
-  double tolerance = 0.001;       ///< mm, the largest distance of the arcs from the curve
-  int samples = 64;               ///< samples of the curve per span when measuring the error
-  bool equalise = true;           ///< CAWEP's approximately equal error (off: the greedy walk alone)
+  double tolerance = 0.001;  ///< mm, the largest distance of the arcs from the curve
+  int samples = 64;          ///< samples of the curve per span when measuring the error
+  bool equalise = true;      ///< CAWEP's approximately equal error (off, or past 1,000 spans: the greedy walk alone)
   std::size_t maxSpans = 100000;  ///< refuse past this many spans
   double minSpan = 1e-9;          ///< smallest parameter step: below it the curve has a corner
 };

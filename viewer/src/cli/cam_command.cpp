@@ -82,6 +82,63 @@ std::string mm(double v) { return converter::formatFixed(v, 3); }
 
 }  // namespace
 
+/// The program made, read back from its text and checked as kerf check would: `exit` set (after
+/// printing why) when it must not be written; `summary` what the last line says of it. The pipeline
+/// lives as long as the diagnostics that point into it.
+struct ReadBack {
+  std::optional<int> exit;
+  std::string summary;
+  std::optional<converter::Pipeline> pipeline;
+};
+
+ReadBack readBackMade(const CamArgs& a, const converter::Pipeline& p, const converter::CamResult& made,
+                      const converter::EmitOutput& out, converter::Diagnostics& all) {
+  using namespace converter;
+  ReadBack r;
+  if (a.to != "iso" && a.to != "3b" && a.to != "polar") {
+    r.summary = "; this format is not read back";
+    return r;
+  }
+  const CommonOptions& c = a.common;
+  const std::string name = a.output == "-" ? std::string("<output>") : a.output;
+  PipelineOptions po;
+  std::string error;
+  CommonOptions checkOptions = c;
+  checkOptions.reading = ReadingOptions{};
+  checkOptions.reading.format = a.to == "3b" ? "3b" : "iso";
+  if (a.to == "3b") checkOptions.reading.start = mm(made.toolpath.start.x()) + "," + mm(made.toolpath.start.y());
+  if (!pipelineOptions(checkOptions, po, error)) {
+    reportError(error);
+    r.exit = kExitUsage;
+    return r;
+  }
+  if (a.to != "3b") po.read.machine = p.machine.name;
+  r.pipeline.emplace(runPipeline({name, out.text}, po));
+  double length = 0.0;
+  for (const Move& m : r.pipeline->toolpath.moves)
+    if (m.isCut()) length += m.lower.length();
+  const double allowed = 0.002 * static_cast<double>(r.pipeline->toolpath.moves.size()) + 0.01;
+  r.summary = "; read back: " + std::to_string(r.pipeline->toolpath.moves.size()) + " moves, cut length " + mm(length) +
+              " mm (made " + mm(made.cutLength) + ")";
+  const bool lengthOff = std::abs(length - made.cutLength) > allowed;
+  // Refused, nothing is written: the findings name the program made, not a file that is not there.
+  if (r.pipeline->diags.hasErrors() || lengthOff)
+    r.pipeline.emplace(runPipeline({"<not written: " + name + ">", out.text}, po));
+  for (const Diagnostic& d : r.pipeline->diags.all())
+    if (d.severity != Severity::Note) all.report(d);
+  if (r.pipeline->diags.hasErrors()) {
+    printDiagnostics(all, c);
+    reportError("not writing: the program made has errors when read back (shown above)");
+    r.exit = kExitErrors;
+  } else if (lengthOff) {
+    printDiagnostics(all, c);
+    reportError("not writing: read back, the program cuts " + mm(length) + " mm, not the " + mm(made.cutLength) +
+                " mm made (more than the output's rounding allows)");
+    r.exit = kExitErrors;
+  }
+  return r;
+}
+
 int runCam(const CamArgs& a) {
   using namespace converter;
   const CommonOptions& c = a.common;
@@ -156,46 +213,8 @@ int runCam(const CamArgs& a) {
   }
 
   // Read back what was written, and check it, as kerf check would.
-  const std::string name = a.output == "-" ? std::string("<output>") : a.output;
-  std::string readBack;
-  std::optional<Pipeline> back;  // lives until the diagnostics that point into it are printed
-  bool readable = a.to == "iso" || a.to == "3b" || a.to == "polar";
-  if (readable) {
-    PipelineOptions po;
-    std::string error;
-    CommonOptions checkOptions = c;
-    checkOptions.reading = ReadingOptions{};
-    checkOptions.reading.format = a.to == "3b" ? "3b" : "iso";
-    if (a.to == "3b") checkOptions.reading.start = mm(made->toolpath.start.x()) + "," + mm(made->toolpath.start.y());
-    if (!pipelineOptions(checkOptions, po, error)) {
-      reportError(error);
-      return kExitUsage;
-    }
-    if (a.to != "3b") po.read.machine = p.machine.name;
-    back.emplace(runPipeline({name, out->text}, po));
-    double length = 0.0;
-    for (const Move& m : back->toolpath.moves)
-      if (m.isCut()) length += m.lower.length();
-    const double allowed = 0.002 * static_cast<double>(back->toolpath.moves.size()) + 0.01;
-    readBack = "; read back: " + std::to_string(back->toolpath.moves.size()) + " moves, cut length " + mm(length) +
-               " mm (made " + mm(made->cutLength) + ")";
-    // Refused, nothing is written: the findings name the program made, not a file that is not there.
-    if (back->diags.hasErrors() || std::abs(length - made->cutLength) > allowed)
-      back.emplace(runPipeline({"<not written: " + name + ">", out->text}, po));
-    for (const Diagnostic& d : back->diags.all())
-      if (d.severity != Severity::Note) all.report(d);
-    if (back->diags.hasErrors()) {
-      printDiagnostics(all, c);
-      reportError("not writing: the program made has errors when read back (shown above)");
-      return kExitErrors;
-    }
-    if (std::abs(length - made->cutLength) > allowed) {
-      printDiagnostics(all, c);
-      reportError("not writing: read back, the program cuts " + mm(length) + " mm, not the " + mm(made->cutLength) +
-                  " mm made (more than the output's rounding allows)");
-      return kExitErrors;
-    }
-  }
+  ReadBack back = readBackMade(a, p, *made, *out, all);
+  if (back.exit) return *back.exit;
   printDiagnostics(all, c);
   std::string error;
   if (!writeOutput(a.output, in->inputs, out->text, error)) {
@@ -213,7 +232,7 @@ int runCam(const CamArgs& a) {
                                : ", wire path " + mm(k.wireLength) + " mm")
               << "\n";
   std::cerr << "kerf: wrote " << out->what << " to " << (a.output == "-" ? std::string("standard output") : a.output)
-            << out->detail << readBack << (readable ? "" : "; this format is not read back") << "\n";
+            << out->detail << back.summary << "\n";
   return kExitOk;
 }
 

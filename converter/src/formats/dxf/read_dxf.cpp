@@ -760,6 +760,26 @@ class DrawingReader {
     return true;
   }
 
+  /// A SPLINE given by its fit points alone: the cubic through them (geometry::fitPointList), as
+  /// biarcs; at most kMostFitPoints, and refused when it swings far beyond its points.
+  void fitPointSpline(const Entity& e, const std::string& layer, const Affine& a, const std::vector<Vec2>& fit) {
+    if (fit.size() > geometry::kMostFitPoints) {
+      refuse(e, std::to_string(fit.size()) + " fit points: Kerf fits a curve through at most " +
+                    std::to_string(geometry::kMostFitPoints) + " (without control points and knots)");
+      return;
+    }
+    std::vector<Vec2> pts;
+    for (const Vec2& p : fit) pts.push_back(a(p) * scale_);
+    geometry::BiarcOptions bo;
+    bo.tolerance = o_.curveTolerance;
+    const geometry::BiarcFit f = geometry::fitPointList(pts, bo);
+    if (f.swings) {
+      refuse(e, "the curve through its fit points swings out far beyond them (points very unevenly spaced)");
+      return;
+    }
+    for (const Segment& seg : f.segments) add(e, layer, seg);
+  }
+
   void spline(const Entity& e, const std::string& layer, const Affine& a) {
     const int degree = asInteger(e.number(71, 3), -1);
     std::vector<double> knots, weights;
@@ -785,22 +805,8 @@ class DrawingReader {
                        knots.size() == n + static_cast<std::size_t>(degree) + 1 &&
                        std::is_sorted(knots.begin(), knots.end()) && (weights.empty() || weights.size() == n);
     if (!nurbs) {
-      if (fit.size() > geometry::kMostFitPoints) {
-        refuse(e, std::to_string(fit.size()) + " fit points: Kerf fits a curve through at most " +
-                      std::to_string(geometry::kMostFitPoints) + " (without control points and knots)");
-        return;
-      }
       if (fit.size() >= 2) {
-        std::vector<Vec2> pts;
-        for (const Vec2& p : fit) pts.push_back(a(p) * scale_);
-        geometry::BiarcOptions bo;
-        bo.tolerance = o_.curveTolerance;
-        const geometry::BiarcFit f = geometry::fitPointList(pts, bo);
-        if (f.swings) {
-          refuse(e, "the curve through its fit points swings out far beyond them (points very unevenly spaced)");
-          return;
-        }
-        for (const Segment& seg : f.segments) add(e, layer, seg);
+        fitPointSpline(e, layer, a, fit);
         return;
       }
       warn(e, "its control points, knots and weights do not make a curve (degree " + std::to_string(degree) + ", " +

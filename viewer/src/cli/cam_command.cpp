@@ -67,15 +67,13 @@ namespace {
 
 std::optional<geometry::Vec2> point(const std::optional<std::string>& text, const char* option, bool& ok) {
   if (!text) return std::nullopt;
-  double x = 0, y = 0;
-  int consumed = 0;
-  if (std::sscanf(text->c_str(), "%lf,%lf%n", &x, &y, &consumed) != 2 || consumed != static_cast<int>(text->size()) ||
-      !std::isfinite(x) || !std::isfinite(y)) {
-    reportError(std::string(option) + " takes X,Y in mm (for example 10,-5.5), not '" + *text + "'");
+  std::string error;
+  std::optional<geometry::Vec2> p = pointOption(*text, option, error);
+  if (!p) {
+    reportError(error);
     ok = false;
-    return std::nullopt;
   }
-  return geometry::Vec2(x, y);
+  return p;
 }
 
 std::string mm(double v) { return converter::formatFixed(v, 3); }

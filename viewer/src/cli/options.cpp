@@ -267,6 +267,17 @@ bool diagnosticPolicy(const CheckOptions& options, converter::DiagnosticPolicy& 
   return true;
 }
 
+std::optional<geometry::Vec2> pointOption(const std::string& text, const char* option, std::string& error) {
+  double x = 0, y = 0;
+  int consumed = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf%n", &x, &y, &consumed) != 2 || consumed != static_cast<int>(text.size()) ||
+      !(std::abs(x) <= 1e6) || !(std::abs(y) <= 1e6)) {
+    error = std::string(option) + " takes X,Y in mm within 1e6 (for example 10,-5.5), not '" + text + "'";
+    return std::nullopt;
+  }
+  return geometry::Vec2(x, y);
+}
+
 bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, std::string& error) {
   using namespace converter;
   ReadOptions& r = out.read;
@@ -293,15 +304,8 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
   }
   if (o.reading.format != "auto") r.format = parseInputFormat(o.reading.format);
   if (o.reading.start) {
-    double x = 0, y = 0;
-    int consumed = 0;
-    const std::string& t = *o.reading.start;
-    if (std::sscanf(t.c_str(), "%lf,%lf%n", &x, &y, &consumed) != 2 || consumed != static_cast<int>(t.size()) ||
-        !std::isfinite(x) || !std::isfinite(y)) {
-      error = "--start takes X,Y in mm (for example 10,-5.5), not '" + t + "'";
-      return false;
-    }
-    r.start = geometry::Vec2(x, y);
+    r.start = pointOption(*o.reading.start, "--start", error);
+    if (!r.start) return false;
   }
   if (o.reading.polarX) r.polarXDiameter = *o.reading.polarX == "diameter";
   if (o.reading.polarFrame) r.polarFrameTable = *o.reading.polarFrame == "table";
@@ -321,21 +325,15 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
   if (o.reading.side) r.side = *o.reading.side == "inside" ? WireSide::Inside : WireSide::Outside;
   if (o.reading.upperAxes) r.upperAxesUZ = *o.reading.upperAxes == "uz";
   if (o.checks.drawing) {
-    std::optional<std::string> text = readTextFile(*o.checks.drawing, 512u << 20, error);
+    std::optional<std::string> text = readTextFile(*o.checks.drawing, o.input.maxInputMiB << 20, error);
     if (!text) return false;
     out.drawing = SourceText{*o.checks.drawing, std::move(*text)};
     out.drawingCheck.tolerance = o.checks.drawingTolerance;
   }
   if (o.checks.drawingOrigin) {
-    double x = 0, y = 0;
-    int consumed = 0;
-    const std::string& t = *o.checks.drawingOrigin;
-    if (std::sscanf(t.c_str(), "%lf,%lf%n", &x, &y, &consumed) != 2 || consumed != static_cast<int>(t.size()) ||
-        !(std::abs(x) <= 1e6) || !(std::abs(y) <= 1e6)) {
-      error = "--drawing-origin takes X,Y in mm within 1e6 (for example 10,-5.5), not '" + t + "'";
-      return false;
-    }
-    out.drawingCheck.origin = geometry::Vec2(x, y);
+    const std::optional<geometry::Vec2> origin = pointOption(*o.checks.drawingOrigin, "--drawing-origin", error);
+    if (!origin) return false;
+    out.drawingCheck.origin = *origin;
   }
   out.check.maxTaperDegrees = o.checks.maxTaper;
   out.check.uvRange = o.checks.uvRange;

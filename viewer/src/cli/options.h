@@ -107,6 +107,10 @@ bool sizeOption(const std::string& text, int& width, int& height);
 /// False with a message when a file cannot be read.
 bool pipelineOptions(const CommonOptions& options, converter::PipelineOptions& out, std::string& error);
 
+/// An option's X,Y in mm (`--start`, `--entry`, `--drawing-origin`), each within 1e6 mm; nothing,
+/// with `error` saying why, otherwise.
+std::optional<geometry::Vec2> pointOption(const std::string& text, const char* option, std::string& error);
+
 /// The machine profile names `--machine` accepts besides a file.
 std::vector<std::string> builtinMachineNames();
 

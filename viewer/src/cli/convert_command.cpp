@@ -81,8 +81,9 @@ std::optional<converter::Toolpath> passToConvert(const converter::Pipeline& p, c
   return out;
 }
 
-/// The emitter settings that come straight from the options.
-void fillRequest(const ConvertArgs& a, converter::EmitRequest& request) {
+/// The emitter settings from the options, and from the program read (polar keeps an ISO source's
+/// blocks).
+void fillRequest(const ConvertArgs& a, const converter::Pipeline& p, converter::EmitRequest& request) {
   request.sampling = a.common.sampling.sampling();
   request.maxPoints = a.maxPoints;
   request.startLine = a.startBlock;
@@ -92,6 +93,9 @@ void fillRequest(const ConvertArgs& a, converter::EmitRequest& request) {
   request.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
   request.polarX = a.polarXOut == "radius" ? converter::PolarX::Radius : converter::PolarX::Diameter;
   request.tolerance = a.common.sampling.tolerance.value_or(0.001);
+  // The whole program as its own blocks wrote it: polar output keeps what it does not convert.
+  if (p.format == converter::InputFormat::Iso && a.pass == "all" && !p.toolpath.isTaper())
+    request.sourceBlocks = converter::parseOptionsFor(p.machine);
 }
 
 /// The plane a 2-axis format follows (`plane` stays empty for an emitter that writes both); false
@@ -193,10 +197,7 @@ int runConvert(const ConvertArgs& a) {
       request.target = &*targetFile;
     }
   }
-  fillRequest(a, request);
-  // The whole program as its own blocks wrote it: polar output keeps what it does not convert.
-  if (p.format == InputFormat::Iso && a.pass == "all" && !p.toolpath.isTaper())
-    request.sourceBlocks = parseOptionsFor(p.machine);
+  fillRequest(a, p, request);
 
   const Toolpath* path = &p.toolpath;
   std::optional<Toolpath> onePass;

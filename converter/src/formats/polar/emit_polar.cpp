@@ -136,6 +136,7 @@ struct SourceMoves {
   std::vector<std::pair<std::size_t, std::size_t>> movesOf;  ///< per block: [first, last) move
   bool straight = true;  ///< each block runs at most once, in source order, in the main program
   std::size_t skip = 0;  ///< source bytes already in the output (a leading '%' line)
+  std::unordered_map<std::uint32_t, std::size_t> blockAt;  ///< a block's index by its text's offset
 };
 
 SourceMoves mapMoves(const Toolpath& toolpath, const SourceFile& source, const ParseOptions& options) {
@@ -143,13 +144,12 @@ SourceMoves mapMoves(const Toolpath& toolpath, const SourceFile& source, const P
   Diagnostics scratch(16);  // the pipeline has reported the source's findings
   s.program = parseProgram(source, scratch, options);
   s.movesOf.assign(s.program.blocks.size(), {0, 0});
-  std::unordered_map<std::uint32_t, std::size_t> blockAt;
-  for (std::size_t b = 0; b < s.program.blocks.size(); ++b) blockAt.emplace(s.program.blocks[b].offset, b);
+  for (std::size_t b = 0; b < s.program.blocks.size(); ++b) s.blockAt.emplace(s.program.blocks[b].offset, b);
   std::size_t lastBlock = 0;
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     const Move& m = toolpath.moves[i];
-    const auto it = blockAt.find(m.span.offset);
-    if (it == blockAt.end() || m.callDepth > 0) {
+    const auto it = s.blockAt.find(m.span.offset);
+    if (it == s.blockAt.end() || m.callDepth > 0) {
       s.straight = false;
       continue;
     }
@@ -311,18 +311,16 @@ bool writeInOrder(const Toolpath& toolpath, const SourceMoves* s, PolarState& st
   // The blocks that move nothing are not written here: the units, the distance mode and where the
   // path starts, said once as a wire program says them (a position set, not a move).
   text += std::string(st.toUnit == 1.0 ? "G21" : "G20") + " G90\nG92 " + st.point(st.at) + "\n";
-  std::unordered_map<std::uint32_t, std::size_t> blockAt;
   std::optional<WordReader> reader;
-  if (s) {
-    reader.emplace(s->program);
-    for (std::size_t b = 0; b < s->program.blocks.size(); ++b) blockAt.emplace(s->program.blocks[b].offset, b);
-  }
+  if (s) reader.emplace(s->program);
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     const Move& m = toolpath.moves[i];
     std::string rest;
     std::size_t insertAt = 0;
     const bool firstOfBlock = i == 0 || toolpath.moves[i - 1].span.offset != m.span.offset;
-    if (const auto it = s ? blockAt.find(m.span.offset) : blockAt.end(); firstOfBlock && it != blockAt.end())
+    const auto it =
+        s ? s->blockAt.find(m.span.offset) : std::unordered_map<std::uint32_t, std::size_t>::const_iterator{};
+    if (s && firstOfBlock && it != s->blockAt.end())
       rest = blockTextWithout(
           s->program, *reader, s->program.blocks[it->second],
           [](const Word& w) { return isConverted(w) || isFlowWord(w) || w.letter == 'F'; }, insertAt);

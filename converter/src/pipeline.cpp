@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <optional>
+#include <set>
 
 namespace kerf::converter {
 namespace {
@@ -82,22 +83,37 @@ void summarizeInto(Pipeline& out, const PipelineOptions& options) {
 void compareDrawing(Pipeline& out, const PipelineOptions& options) {
   if (!options.drawing) return;
   out.drawingSource = std::make_unique<SourceFile>(options.drawing->name, options.drawing->text);
-  DxfOptions o;
-  if (options.read.dxfUnit) o.unitToMm = *options.read.dxfUnit;
-  o.curveTolerance = options.read.curveTolerance;
-  o.maxElements = options.read.maxMoves;
-  const Drawing drawing = readDxf(*out.drawingSource, o, out.diags);
+  DxfOptions dxf;
+  if (options.read.dxfUnit) dxf.unitToMm = *options.read.dxfUnit;
+  dxf.curveTolerance = options.read.curveTolerance;
+  dxf.maxElements = options.read.maxMoves;
+  const Drawing drawing = readDxf(*out.drawingSource, dxf, out.diags);
   if (!drawing.ok) return;
   if (drawing.elements.empty()) {
     out.diags.error(Code::NothingCut, out.drawingSource.get(), SourceSpan{0, 0},
                     "the drawing holds no line, arc or curve to compare the program with");
     return;
   }
+  const std::string& layer = options.drawingCheck.layer;
   std::vector<DrawnElement> drawn;
   drawn.reserve(drawing.elements.size());
-  for (const DrawingElement& e : drawing.elements) drawn.push_back({e.segment, e.entity, e.where, e.span});
-  out.comparison = compareWithDrawing(out.toolpath, out.structure, drawn, options.drawingCheck, out.source.get(),
-                                      out.drawingSource.get(), out.diags);
+  for (const DrawingElement& e : drawing.elements)
+    if (layer.empty() || e.layer == layer) drawn.push_back({e.segment, e.entity, e.where, e.span});
+  if (drawn.empty()) {
+    std::set<std::string> layers;
+    for (const DrawingElement& e : drawing.elements) layers.insert(e.layer);
+    std::string names;
+    for (const std::string& l : layers) names += (names.empty() ? "" : ", ") + (l.empty() ? "\"\"" : l);
+    out.diags.error(Code::NothingCut, out.drawingSource.get(), SourceSpan{0, 0},
+                    "the drawing's layer " + layer + " holds no line, arc or curve to compare the program with",
+                    "its layers with elements: " + names);
+    return;
+  }
+  DrawingCheckOptions o = options.drawingCheck;
+  o.wireOffset = options.read.wireOffset;
+  if (options.read.side) o.wireOutside = *options.read.side == WireSide::Outside;
+  out.comparison =
+      compareWithDrawing(out.toolpath, out.structure, drawn, o, out.source.get(), out.drawingSource.get(), out.diags);
 }
 
 /// The checks, with the machine's limits unless the user gave others, then the summary (it reads

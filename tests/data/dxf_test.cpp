@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <regex>
 
 #include <sys/wait.h>
 
@@ -90,6 +91,138 @@ TEST(drawing_test, a_forgotten_hole_and_a_mistyped_corner_are_found_against_the_
   }
   EXPECT_TRUE(holeNotCut) << bad["diagnostics"].dump(1);
   EXPECT_TRUE(cornerOff) << bad["diagnostics"].dump(1);
+}
+
+// Issue 43's twins of one program: samples/plate.dxf as kerf cam makes it for the controller to
+// offset (G42), each with one mistake a programmer makes, checked through kerf against the drawing.
+// Each is found at its line with its deviation, or, for a part turned or mirrored, named.
+class drawing_twins_test : public testing::Test {
+ protected:
+  static std::string made() {
+    return "G90 G21\nG92 X15.000 Y15.000\nG42 G01 X17.000 Y15.000\nG02 X17.000 Y15.000 I-5.000 J0.000\nM00\n"
+           "G40 G00 X26.414 Y11.414\nM00\nG42 G01 X25.000 Y10.000\nG01 X25.000 Y20.000\nG01 X31.000 Y20.000\n"
+           "G01 X31.000 Y10.000\nG01 X25.000 Y10.000\nM00\nG40 G00 X4.000 Y-2.000\nM00\nG42 G01 X4.000 Y0.000\n"
+           "G01 X36.000 Y0.000\nG03 X40.000 Y4.000 I0.000 J4.000\nG01 X40.000 Y26.000\nG03 X36.000 Y30.000 I-4.000 "
+           "J0.000\nG01 X4.000 Y30.000\nG03 X0.000 Y26.000 I0.000 J-4.000\nG01 X0.000 Y4.000\nG03 X4.000 Y0.000 "
+           "I4.000 J0.000\nG40\nM02\n";
+  }
+  static std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+  }
+  /// kerf check NAME --drawing plate.dxf OPTIONS --json: the report, and the exit status.
+  json check(const std::string& name, const std::string& text, const std::string& options, int& exit) const {
+    const fs::path work = fs::path(KERF_DXF_WORK);
+    fs::create_directories(work);
+    kerf::test::writeFile(work / name, text);
+    return json::parse(run("'" + std::string(KERF_PROGRAM) + "' check --json '" + (work / name).string() +
+                               "' --drawing '" + std::string(KERF_SAMPLES_DIR) + "/plate.dxf' " + options +
+                               " 2>/dev/null",
+                           work / (name + ".json"), exit));
+  }
+  /// The diagnostics of one code, on one line (0: any line).
+  static std::vector<json> findings(const json& report, const std::string& code, int line = 0) {
+    std::vector<json> out;
+    for (const json& d : report["diagnostics"])
+      if (d["code"] == code && (line == 0 || d["line"] == line)) out.push_back(d);
+    return out;
+  }
+  static bool says(const json& d, const std::string& words) {
+    return d["message"].get<std::string>().find(words) != std::string::npos;
+  }
+};
+
+TEST_F(drawing_twins_test, an_arc_radius_0_02_mm_too_large_is_found_at_its_block_20_um_off) {
+  int exit = 0;
+  const json r = check("twin_radius.nc",
+                       replaced(made(), "G42 G01 X17.000 Y15.000\nG02 X17.000 Y15.000 I-5.000",
+                                "G42 G01 X17.020 Y15.000\nG02 X17.020 Y15.000 I-5.020"),
+                       "", exit);
+  EXPECT_EQ(exit, 1);
+  const auto off = findings(r, "K0630", 4);
+  ASSERT_EQ(off.size(), 1u) << r["diagnostics"].dump(1);
+  EXPECT_TRUE(says(off[0], "20.0 µm off")) << off[0].dump();
+  EXPECT_NEAR(r["summary"]["comparison"]["worst_mm"].get<double>(), 0.020, 1e-6);
+}
+
+TEST_F(drawing_twins_test, a_line_moved_0_05_mm_is_found_at_its_block) {
+  int exit = 0;
+  const json r = check("twin_line.nc",
+                       replaced(replaced(made(), "G01 X31.000 Y20.000", "G01 X31.050 Y20.000"), "G01 X31.000 Y10.000",
+                                "G01 X31.050 Y10.000"),
+                       "", exit);
+  EXPECT_EQ(exit, 1);
+  const auto off = findings(r, "K0630", 11);
+  ASSERT_EQ(off.size(), 1u) << r["diagnostics"].dump(1);
+  EXPECT_TRUE(says(off[0], "50.0 µm off")) << off[0].dump();
+  EXPECT_EQ(r["summary"]["comparison"]["out_of_tolerance"], 1);
+}
+
+TEST_F(drawing_twins_test, a_part_mirrored_or_turned_is_named) {
+  // x -> -x: X and I change sign, G02 and G03 change places, and G42 becomes G41.
+  std::string mirrored = std::regex_replace(made(), std::regex("([XI])(-?)([0-9])"), "$1-$2$3");
+  mirrored = std::regex_replace(mirrored, std::regex("--"), "");
+  mirrored = std::regex_replace(mirrored, std::regex("G02"), "G0x");
+  mirrored = std::regex_replace(mirrored, std::regex("G03"), "G02");
+  mirrored = std::regex_replace(mirrored, std::regex("G0x"), "G03");
+  mirrored = std::regex_replace(mirrored, std::regex("G42"), "G41");
+  int exit = 0;
+  const json r = check("twin_mirrored.nc", mirrored, "", exit);
+  EXPECT_EQ(exit, 1);
+  const auto named = findings(r, "K0634");
+  ASSERT_EQ(named.size(), 1u) << r["diagnostics"].dump(1);
+  EXPECT_TRUE(says(named[0], "mirrored left to right (x -> -x)")) << named[0].dump();
+  EXPECT_TRUE(findings(r, "K0630").empty()) << "the mirror explains every element: said once";
+  // The drawing placed 5 mm left and 3 mm up of the part (--drawing-origin 5,-3): named without
+  // --align, taken with it.
+  const json named2 = check("twin_placed.nc", made(), "--drawing-origin 5,-3", exit);
+  EXPECT_EQ(exit, 1);
+  ASSERT_EQ(findings(named2, "K0634").size(), 1u) << named2["diagnostics"].dump(1);
+  EXPECT_TRUE(says(findings(named2, "K0634")[0], "shifted by (5.0000, -3.0000) mm")) << named2["diagnostics"].dump(1);
+  const json aligned = check("twin_placed.nc", made(), "--drawing-origin 5,-3 --align", exit);
+  EXPECT_EQ(exit, 0) << aligned["diagnostics"].dump(1);
+  EXPECT_EQ(findings(aligned, "K0634").size(), 1u) << "a note naming the placement";
+  EXPECT_LE(aligned["summary"]["comparison"]["worst_mm"].get<double>(), 1e-6);
+}
+
+TEST_F(drawing_twins_test, a_hole_left_out_is_not_cut) {
+  int exit = 0;
+  const json r =
+      check("twin_hole.nc", replaced(made(), "G42 G01 X17.000 Y15.000\nG02 X17.000 Y15.000 I-5.000 J0.000\nM00\n", ""),
+            "", exit);
+  EXPECT_EQ(exit, 1);
+  const auto uncut = findings(r, "K0631");
+  ASSERT_EQ(uncut.size(), 1u) << r["diagnostics"].dump(1);
+  EXPECT_TRUE(says(uncut[0], "around (12.000, 15.000)"));
+  EXPECT_TRUE(findings(r, "K0630").empty()) << r["diagnostics"].dump(1);
+}
+
+// The outline's wire path at 0.15 mm written with G42 again: the offset is applied twice, and the
+// whole contour is off by 0.15 mm, said once. Moved back as a wire path (no G42, --offset 0.15),
+// the same moves are the drawing's outline.
+TEST_F(drawing_twins_test, an_offset_applied_twice_and_a_wire_path_moved_back) {
+  const std::string outline =
+      "G01 X4.000 Y-0.150\nG01 X36.000 Y-0.150\nG03 X40.150 Y4.000 I0.000 J4.150\nG01 X40.150 Y26.000\n"
+      "G03 X36.000 Y30.150 I-4.150 J0.000\nG01 X4.000 Y30.150\nG03 X-0.150 Y26.000 I0.000 J-4.150\n"
+      "G01 X-0.150 Y4.000\nG03 X4.000 Y-0.150 I4.150 J0.000\n";
+  int exit = 0;
+  const json twice = check("twin_twice.nc", "G90 G21\nG92 X4.000 Y-2.000\nG42 " + outline + "G40\nM02\n", "", exit);
+  EXPECT_EQ(exit, 1);
+  bool sideways = false;
+  for (const json& d : findings(twice, "K0630"))
+    sideways |= says(d, "(8 elements) is cut 150.0 µm to 150.0 µm off: the cut is the contour moved sideways");
+  EXPECT_TRUE(sideways) << twice["diagnostics"].dump(1);
+  const json wire =
+      check("twin_wire.nc", "G90 G21\nG92 X4.000 Y-2.000\n" + outline + "M02\n", "--offset 0.15 --side outside", exit);
+  EXPECT_EQ(findings(wire, "K0633").size(), 1u) << wire["diagnostics"].dump(1);
+  EXPECT_EQ(findings(wire, "K0630").size(), 0u) << wire["diagnostics"].dump(1);
+  EXPECT_EQ(findings(wire, "K0631").size(), 2u) << "the two holes are not in this program";
+  double outlineWorst = 0.0;
+  for (const json& e : wire["summary"]["comparison"]["elements"])
+    if (e["drawing_line"] == 1771) outlineWorst = std::max(outlineWorst, e["deviation_mm"].get<double>());
+  EXPECT_LE(outlineWorst, 1e-6) << wire["summary"]["comparison"].dump();
 }
 
 class DxfAgainstEzdxf : public testing::Test {

@@ -267,12 +267,17 @@ json comparisonJson(const DrawingComparison& c) {
                         {"block_line", e.blockLine}});
   for (const EdgeDeviation& e : c.edge)
     edge.push_back({{"move", e.move}, {"deviation_mm", e.deviation}, {"at", vec(e.at)}});
-  return {{"drawing", c.drawing},
-          {"tolerance_mm", c.tolerance},
-          {"worst_mm", c.worst},
-          {"out_of_tolerance", c.outOfTolerance},
-          {"elements", std::move(elements)},
-          {"edge", std::move(edge)}};
+  json out = {{"drawing", c.drawing},
+              {"tolerance_mm", c.tolerance},
+              {"worst_mm", c.worst},
+              {"out_of_tolerance", c.outOfTolerance},
+              {"elements", std::move(elements)},
+              {"edge", std::move(edge)}};
+  if (c.placement)  // the drawing's point p lands at turn(angle) (mirror ? (-x, y) : p) + shift
+    out["placement"] = {{"mirror", c.placement->mirror},
+                        {"angle_deg", c.placement->angle * geometry::kDegreesPerRadian},
+                        {"shift", vec(c.placement->shift)}};
+  return out;
 }
 
 std::string formatSummaryText(const std::string& file, const Summary& s, const Diagnostics& diags) {

@@ -124,7 +124,9 @@ class StructureFinder {
   }
 
   /// Lead-in and lead-out: the offset run's own start-up and cancel moves; without an offset, a
-  /// first move from the start hole and a last move back to it around a contour that closes.
+  /// first move from the start hole and a last move back to it around a contour that closes, or a
+  /// first move from the start hole alone when the moves after it close (no lead-out: the wire
+  /// stops where the contour began, as kerf cam's wire paths do).
   void findLeads(const Contour& c, Pass& pass, const OffsetSpan* span) const {
     pass.alongFirst = pass.first;
     pass.alongEnd = pass.end;
@@ -133,9 +135,14 @@ class StructureFinder {
       if (span->cancelled && span->end <= pass.end && span->end - 1 > pass.alongFirst) pass.alongEnd = span->end - 1;
       return;
     }
-    if (pass.end - pass.first < 3) return;
+    if (pass.end - pass.first < 2) return;
     const std::size_t last = pass.end - 1;
-    if (!atHole(c, moves_[pass.first].lower.start) || !atHole(c, moves_[last].lower.end)) return;
+    if (!atHole(c, moves_[pass.first].lower.start)) return;
+    if (!atHole(c, moves_[last].lower.end)) {
+      if ((programmed(last).end - programmed(pass.first + 1).start).norm() <= tol_) pass.alongFirst = pass.first + 1;
+      return;
+    }
+    if (pass.end - pass.first < 3) return;
     if ((programmed(last - 1).end - programmed(pass.first + 1).start).norm() > tol_) return;
     pass.alongFirst = pass.first + 1;
     pass.alongEnd = last;

@@ -177,6 +177,11 @@ void addCheckOptions(CLI::App& cmd, CheckOptions& o) {
   cmd.add_option("--drawing-origin", o.drawingOrigin,
                  "the drawing's point at the program's origin, X,Y in mm (default 0,0)")
       ->group(checks);
+  cmd.add_option("--drawing-layer", o.drawingLayer, "compare only this layer of the drawing (default: every layer)")
+      ->group(checks);
+  cmd.add_flag("--align", o.drawingAlign,
+               "place the drawing where it fits the part edge best (a turn and a shift, or a mirror), and say where")
+      ->group(checks);
   cmd.add_option("--max-diagnostics", o.maxDiagnostics, "show at most this many diagnostics (default 50)")
       ->check(CLI::Range(1, 100000))
       ->group(checks);
@@ -329,6 +334,8 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
     if (!text) return false;
     out.drawing = SourceText{*o.checks.drawing, std::move(*text)};
     out.drawingCheck.tolerance = o.checks.drawingTolerance;
+    out.drawingCheck.layer = o.checks.drawingLayer;
+    out.drawingCheck.align = o.checks.drawingAlign;
   }
   if (o.checks.drawingOrigin) {
     const std::optional<geometry::Vec2> origin = pointOption(*o.checks.drawingOrigin, "--drawing-origin", error);

@@ -42,6 +42,8 @@ class DeviationSet {
     return segments_[chords_[chord].owner].distanceTo(p);
   }
   [[nodiscard]] const Chord& chord(std::size_t k) const { return chords_[k]; }
+  /// The set's segment a chord stands for.
+  [[nodiscard]] const Segment& owner(std::size_t chord) const { return segments_[chords_[chord].owner]; }
   [[nodiscard]] bool empty() const { return chords_.empty(); }
   [[nodiscard]] bool ok() const { return ok_; }
   [[nodiscard]] double chordDeviation() const { return chordDeviation_; }

@@ -125,6 +125,8 @@
   X(630, DrawingElementOff, Error, "error", "`--drawing`: a drawing element is cut farther off than `--drawing-tolerance` (at the nearest block, with the deviation and where)") \
   X(631, DrawingContourNotCut, Error, "error", "`--drawing`: a closed contour of the drawing that no move comes near (a hole or outline not cut)") \
   X(632, CutNotInDrawing, Warning, "warning", "`--drawing`: moves that cut what the drawing does not have (one finding per run of them)") \
+  X(633, DrawingWireCentre, Note, "note", "`--drawing`: passes cut with no G41/G42 in force are the wire's path: moved back by `--offset` (to `--side`, or to the side nearer the drawing), or compared as written") \
+  X(634, DrawingPlacedOtherwise, Error, "error", "`--drawing`: the program cuts the drawing turned, shifted or mirrored (named); a note with `--align` unless mirrored") \
   /* Geometry of the ruled surface (4-axis taper) */ \
   X(650, TaperTooSteep, Error, "error", "the wire's slope exceeds `--max-taper` (default 30°)") \
   X(651, SurfaceSelfIntersection, Error, "error", "two patches that are not neighbours meet between the planes (sampled in z)") \

@@ -482,6 +482,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
 }
 
 std::vector<geometry::Segment> referenceGeometry(const Pipeline& p) {
+  if (p.comparison) return p.comparison->drawn;  // --drawing: the drawing the program should cut
   std::vector<geometry::Segment> out;
   if (p.drawing && !p.wires.empty()) {
     for (std::size_t c = 0; c < p.drawing->contours.size() && c < p.wires.size(); ++c)

@@ -225,6 +225,20 @@ TEST_F(drawing_twins_test, an_offset_applied_twice_and_a_wire_path_moved_back) {
   EXPECT_LE(outlineWorst, 1e-6) << wire["summary"]["comparison"].dump();
 }
 
+// --color-by deviation draws what --drawing measured: without a drawing there is nothing to colour.
+TEST_F(drawing_twins_test, colour_by_deviation_needs_a_drawing) {
+  const fs::path work = fs::path(KERF_DXF_WORK);
+  fs::create_directories(work);
+  kerf::test::writeFile(work / "plate_made.nc", made());
+  int exit = 0;
+  const std::string err = run("('" + std::string(KERF_PROGRAM) + "' render '" + (work / "plate_made.nc").string() +
+                                  "' --color-by deviation -o '" + (work / "no.png").string() + "' 2>&1)",
+                              work / "no_drawing.log", exit);
+  EXPECT_EQ(exit, 2) << err;
+  EXPECT_NE(err.find("--color-by deviation needs --drawing"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(work / "no.png"));
+}
+
 class DxfAgainstEzdxf : public testing::Test {
  public:
   explicit DxfAgainstEzdxf(fs::path file) : file_(std::move(file)) {}

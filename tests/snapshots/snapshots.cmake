@@ -30,6 +30,11 @@ kerf_snapshot_test(NAME offset_collapses_more_findings EXIT 1
 # The wire path beside what it was made from (dashed): a drawing's contours, a G41 program as written.
 kerf_snapshot_test(NAME plate_dxf_wire_top ARGS samples/plate.dxf ${s} --offset 1 --side outside --view top)
 kerf_snapshot_test(NAME g41_applied_top ARGS samples/inch_g91_bare_g41.nc ${s} --offset 1 --view top)
+# A program against its drawing (issue 43): the part edge coloured by its deviation, the legend in um
+# with the tolerance marked, the worst point marked, the drawing dashed beside it.
+kerf_snapshot_test(NAME plate_deviation_top EXIT 1
+                   ARGS tests/drawing/plate_radius_off.nc --size 480x360 --drawing samples/plate.dxf
+                        --color-by deviation --view top)
 # The headless back ends must agree: the same picture through EGL.
 kerf_snapshot_test(NAME taper_punch_iso_egl ARGS samples/taper_punch_2deg.nc ${s} --backend egl)
 

@@ -456,6 +456,7 @@ DrawingComparison compareWithDrawing(const Toolpath& tp, const Structure& struct
         m.out.placement = a.placement;
         m.out.drawing = drawingSource ? drawingSource->name() : std::string();
         for (ElementDeviation& e : m.out.elements) e.drawingLine = drawing[e.element].line;
+        m.out.drawn = drawn;
         diags.report(wholePartFinding(Severity::Error, Code::DrawingPlacedOtherwise, m, tp, program,
                                       "the program cuts the drawing " + how + ": " + fit + ", and as placed " +
                                           std::to_string(m.out.outOfTolerance) + " of its " +
@@ -470,6 +471,7 @@ DrawingComparison compareWithDrawing(const Toolpath& tp, const Structure& struct
   m.out.drawing = drawingSource ? drawingSource->name() : std::string();
   for (ElementDeviation& e : m.out.elements) e.drawingLine = drawing[e.element].line;
   reportAll(m, drawing, tp, options, program, drawingSource, diags);
+  m.out.drawn = std::move(drawn);
   return std::move(m.out);
 }
 

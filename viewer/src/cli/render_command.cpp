@@ -17,9 +17,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& a) {
       ->group(g);
   cmd->add_option("--size", a.size, "WIDTHxHEIGHT in pixels (default 800x600)")->group(g);
   cmd->add_option("--color-by,--colour-by", a.colourBy,
-                  "colour the surface by the wire slope, or the surface and contours by pass (rough cut, skims; "
-                  "with a legend)")
-      ->check(CLI::IsMember({"slope", "pass"}))
+                  "colour the surface by the wire slope, the surface and contours by pass (rough cut, skims), or "
+                  "the part edge by its deviation from --drawing (with a legend)")
+      ->check(CLI::IsMember({"slope", "pass", "deviation"}))
       ->group(g);
   cmd->add_flag("--highlight-findings", a.highlight, "tint moves with findings and label the findings")->group(g);
   cmd->add_option("--backend", a.backend, "headless OpenGL: auto (OSMesa, then EGL), osmesa or egl")

@@ -1,5 +1,6 @@
 #include "kerf/render/scene.h"
 
+#include "kerf/converter/nc/number_format.h"
 #include "kerf/geometry/contour.h"
 
 #include "kerf/geometry/tessellation.h"
@@ -47,7 +48,43 @@ std::uint32_t severityColour(Severity s) {
   return rgba(220, 30, 30);
 }
 
+/// --color-by deviation: the part edge's pieces in their deviation's colour, and a marker at the
+/// worst point with its figure.
+void addDeviationEdge(Scene& scene, const SceneOptions& options, double z, const geometry::Sampling& sampling,
+                      std::vector<Vec2>& scratch) {
+  scene.deviation.moveFirst.push_back(0);
+  std::size_t worst = SIZE_MAX;
+  for (std::size_t k = 0; k < options.deviationPieces.size() && k < options.deviations.size(); ++k) {
+    const double d = options.deviations[k];
+    const double x = options.deviationScale > 0 ? d / options.deviationScale : 0.0;
+    addSegment(scene.deviation, options.deviationPieces[k], z, sampling, rampColour(x), scratch);
+    if (worst == SIZE_MAX || d > options.deviations[worst]) worst = k;
+  }
+  scene.deviation.moveFirst.push_back(static_cast<std::uint32_t>(scene.deviation.vertices.size()));
+  if (worst == SIZE_MAX) return;
+  // The worst point: where along the worst piece is the caller's to say; its middle marks it.
+  Marker m;
+  const Vec2 at = options.deviationPieces[worst].pointAt(0.5);
+  m.position = {at.x(), at.y(), z};
+  m.colour = rgba(200, 60, 150);
+  m.sizePixels = 12.0f;
+  m.label = "worst " + converter::formatFixed(options.deviations[worst] * 1000.0, 1) + " um";
+  scene.findings.push_back(std::move(m));
+}
+
 }  // namespace
+
+std::uint32_t rampColour(double x) {
+  constexpr double stops[5][3] = {
+      {0.19, 0.30, 0.80}, {0.10, 0.70, 0.85}, {0.25, 0.75, 0.30}, {0.95, 0.80, 0.15}, {0.85, 0.20, 0.15}};
+  x = std::clamp(x, 0.0, 1.0) * 4.0;
+  const int i = std::min(3, static_cast<int>(x));
+  const double f = x - i;
+  auto channel = [&](int k) {
+    return static_cast<std::uint8_t>(std::lround(255.0 * (stops[i][k] + (stops[i + 1][k] - stops[i][k]) * f)));
+  };
+  return rgba(channel(0), channel(1), channel(2));
+}
 
 void LineSet::add(const Vec3& a, const Vec3& b, std::uint32_t colour) {
   vertices.push_back({toFloat(a), colour});
@@ -341,6 +378,7 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
   scene.reference.moveFirst.push_back(0);
   for (const Segment& s : reference) addSegment(scene.reference, s, planes.lower, sampling, kReferenceColour, scratch);
   scene.reference.moveFirst.push_back(static_cast<std::uint32_t>(scene.reference.vertices.size()));
+  addDeviationEdge(scene, options, planes.lower, sampling, scratch);
 
   scene.start = {toolpath.start.x(), toolpath.start.y(), planes.lower};
   // Bounds of everything drawn.
@@ -351,7 +389,7 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     hi = hi.cwiseMax(v);
   };
   for (const auto& v : scene.surface) grow(v.position);
-  for (const LineSet* set : {&scene.lower, &scene.upper, &scene.rapids, &scene.reference})
+  for (const LineSet* set : {&scene.lower, &scene.upper, &scene.rapids, &scene.reference, &scene.deviation})
     for (const auto& v : set->vertices) grow(v.position);
   lo.z() = std::min(lo.z(), planes.lower);
   hi.z() = std::max(hi.z(), planes.upper);

@@ -15,20 +15,8 @@ constexpr ImU32 kText = IM_COL32(20, 20, 25, 255);
 constexpr ImU32 kPanel = IM_COL32(255, 255, 255, 210);
 
 /// The surface shader's ramp (shaders/surface.frag), for the legend.
-ImU32 rampColour(float x) {
-  static const float stops[5][3] = {{0.19f, 0.30f, 0.80f},
-                                    {0.10f, 0.70f, 0.85f},
-                                    {0.25f, 0.75f, 0.30f},
-                                    {0.95f, 0.80f, 0.15f},
-                                    {0.85f, 0.20f, 0.15f}};
-  x = std::clamp(x, 0.0f, 1.0f) * 4.0f;
-  const int i = std::min(3, static_cast<int>(x));
-  const float f = x - static_cast<float>(i);
-  float c[3];
-  for (int k = 0; k < 3; ++k) c[k] = stops[i][k] + (stops[i + 1][k] - stops[i][k]) * f;
-  return IM_COL32(static_cast<int>(c[0] * 255.0f + 0.5f), static_cast<int>(c[1] * 255.0f + 0.5f),
-                  static_cast<int>(c[2] * 255.0f + 0.5f), 255);
-}
+/// The slope and deviation ramp (render::rampColour, 0xAABBGGRR as ImGui's IM_COL32).
+ImU32 rampColour(float x) { return render::rampColour(x); }
 
 void textWithBackground(ImDrawList& list, ImVec2 at, ImU32 colour, const char* text) {
   const ImVec2 size = ImGui::CalcTextSize(text);
@@ -62,6 +50,32 @@ void drawSlopeLegend(ImDrawList& list, const render::Scene& scene, int width, in
   list.AddRect(ImVec2(x0, y0), ImVec2(x0 + barW, y0 + barH), kText);
   list.AddText(ImVec2(x0 + barW + 3, y0 - 2), kText, hi.c_str());
   list.AddText(ImVec2(x0 + barW + 3, y0 + barH - lineHeight + 2), kText, lo.c_str());
+}
+
+/// The deviation legend at the right edge: the ramp from 0 to the scale in µm, the tolerance marked.
+void drawDeviationLegend(ImDrawList& list, double scaleUm, double toleranceUm, int width, int height) {
+  const float lineHeight = ImGui::GetTextLineHeight();
+  const float barH = std::min(160.0f, static_cast<float>(height) * 0.45f), barW = 12.0f;
+  const float x0 = static_cast<float>(width) - 100.0f, y0 = 30.0f + lineHeight;
+  list.AddRectFilled(ImVec2(x0 - 6, y0 - 2 * lineHeight - 8), ImVec2(static_cast<float>(width) - 4, y0 + barH + 6),
+                     kPanel, 2.0f);
+  list.AddText(ImVec2(x0 - 2, y0 - 2 * lineHeight - 5), kText, "deviation");
+  list.AddText(ImVec2(x0 - 2, y0 - lineHeight - 4), kText, "from drawing");
+  constexpr int kSteps = 16;
+  for (int i = 0; i < kSteps; ++i) {
+    const float a = y0 + barH * static_cast<float>(i) / kSteps, b = y0 + barH * static_cast<float>(i + 1) / kSteps;
+    const ImU32 top = rampColour(1.0f - static_cast<float>(i) / kSteps);
+    const ImU32 bottom = rampColour(1.0f - static_cast<float>(i + 1) / kSteps);
+    list.AddRectFilledMultiColor(ImVec2(x0, a), ImVec2(x0 + barW, b), top, top, bottom, bottom);
+  }
+  list.AddRect(ImVec2(x0, y0), ImVec2(x0 + barW, y0 + barH), kText);
+  list.AddText(ImVec2(x0 + barW + 3, y0 - 2), kText, (formatNumber(scaleUm, 1) + " um").c_str());
+  list.AddText(ImVec2(x0 + barW + 3, y0 + barH - lineHeight + 2), kText, "0 um");
+  if (toleranceUm > 0 && toleranceUm < scaleUm) {  // the tolerance: a tick across the bar
+    const float y = y0 + barH * static_cast<float>(1.0 - toleranceUm / scaleUm);
+    list.AddLine(ImVec2(x0 - 3, y), ImVec2(x0 + barW + 3, y), kText, 2.0f);
+    list.AddText(ImVec2(x0 + barW + 3, y - lineHeight / 2), kText, ("tol " + formatNumber(toleranceUm, 1)).c_str());
+  }
 }
 
 /// The pass legend at the right edge, under the title: a swatch in each pass's colour and its name.
@@ -123,6 +137,8 @@ void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render:
 
   if (annotation.legend && options.colourBySlope && options.surface) drawSlopeLegend(list, scene, width, height);
   if (!annotation.passLegend.empty()) drawPassLegend(list, annotation.passLegend, width);
+  if (annotation.deviationScaleUm > 0)
+    drawDeviationLegend(list, annotation.deviationScaleUm, annotation.toleranceUm, width, height);
 
   // Finding labels beside their markers: errors first, each where it covers no label placed
   // before it and stays in the picture; what finds no place is counted under the title.

@@ -23,6 +23,10 @@ struct Annotation {
   /// Colour by pass: one legend entry a pass number, "pass 1 (rough)", "pass 2", ... (their colours
   /// are render::passColour(1), (2), ...). Empty: no pass legend.
   std::vector<std::string> passLegend;
+  /// --color-by deviation: the ramp from 0 to this many µm (SceneOptions::deviationScale), with a
+  /// mark at the tolerance. 0: no deviation legend.
+  double deviationScaleUm = 0.0;
+  double toleranceUm = 0.0;
   bool labels = false;  ///< finding labels next to their markers
   /// The errors and warnings of the program: those not labelled (no place in the picture, or a
   /// label that would cover another) are counted under the title, "+6 more".

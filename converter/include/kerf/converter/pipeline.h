@@ -111,9 +111,10 @@ struct Pipeline {
   std::optional<DrawingComparison> comparison;  ///< the program against --drawing
 };
 
-/// The geometry the wire path was made from, where the two differ: a drawing's closed contours
-/// under --offset (the toolpath is their wire path), a program's contour as written where G41/G42
-/// was applied (each programmed move once). Empty otherwise. Pictures draw it beside the path.
+/// The geometry the wire path was made from, where the two differ: the drawing of --drawing, placed
+/// as compared; a drawing's closed contours under --offset (the toolpath is their wire path); a
+/// program's contour as written where G41/G42 was applied (each programmed move once). Empty
+/// otherwise. Pictures draw it beside the path.
 std::vector<geometry::Segment> referenceGeometry(const Pipeline& pipeline);
 
 /// Reads, interprets and checks `input` (with `upper` as the upper contour's program: two-file

@@ -98,7 +98,7 @@ class Renderer {
   void releaseBuffers();
 
   unsigned surfaceProgram_ = 0, lineProgram_ = 0, markerProgram_ = 0, overlayProgram_ = 0;
-  Buffer surface_, lower_, upper_, generators_, rapids_, reference_, markers_, extra_, triad_, overlay_;
+  Buffer surface_, lower_, upper_, generators_, rapids_, reference_, deviation_, markers_, extra_, triad_, overlay_;
   unsigned overlayEbo_ = 0, overlayTexture_ = 0;
   std::vector<std::uint32_t> lowerFirst_, upperFirst_;
   float extraWidth_ = 3.0f;

@@ -42,6 +42,10 @@ constexpr std::uint32_t passColour(std::size_t pass) {
   return colours[(pass == 0 ? 0 : pass - 1) % kPassColours];
 }
 
+/// The ramp the slope and deviation colours run along, from 0 (blue) through cyan, green and
+/// yellow to 1 (red); outside [0, 1] clamped. The surface shader's slope ramp has the same stops.
+std::uint32_t rampColour(double x);
+
 struct LineVertex {
   std::array<float, 3> position;
   std::uint32_t colour;
@@ -83,6 +87,12 @@ struct SceneOptions {
   /// (converter::movePasses): the surface carries it for RenderOptions::colourByPass. Empty: none.
   std::vector<std::uint8_t> movePass;
   bool passLines = false;  ///< the contour lines in their pass's colour too (kerf render --color-by pass)
+  /// --color-by deviation: the part edge held against --drawing (converter::DrawingComparison::
+  /// edge), each piece coloured by its deviation along rampColour over [0, deviationScale] mm,
+  /// with a marker at the worst. Empty: none.
+  std::vector<geometry::Segment> deviationPieces;
+  std::vector<double> deviations;  ///< mm, one a piece
+  double deviationScale = 0.0;     ///< mm at the ramp's red end
   /// Moves left out of the picture (the window's hidden passes), one entry a move; empty: none.
   /// They keep their index: picking and the text panel still name moves as the toolpath does.
   std::vector<bool> hiddenMoves;
@@ -98,6 +108,9 @@ struct Scene {
   /// What the wire path was made from (converter::referenceGeometry): a drawing's contours, a
   /// program's contour under G41/G42, on the lower plane. One "move" (moveFirst {0, size}).
   LineSet reference;
+  /// The part edge coloured by its deviation from the drawing (SceneOptions::deviationPieces), on
+  /// the lower plane; one "move".
+  LineSet deviation;
   std::vector<Marker> findings;
   geometry::Vec3 start{0, 0, 0};
   geometry::Vec3 boundsMin{0, 0, 0}, boundsMax{0, 0, 0};

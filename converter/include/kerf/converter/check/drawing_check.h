@@ -78,6 +78,8 @@ struct DrawingComparison {
   /// The drawing's placement onto the program besides `origin`: --align's, or the one found to fit
   /// when it does not fit as placed (then the deviations are still those as placed).
   std::optional<geometry::Placement> placement;
+  /// The drawing's elements in the program's frame, as compared (pictures draw them beside the part).
+  std::vector<geometry::Segment> drawn;
 };
 
 /// Compares and reports: an element off by more than the tolerance (K0630, at the nearest block;

@@ -239,6 +239,41 @@ TEST_F(drawing_twins_test, colour_by_deviation_needs_a_drawing) {
   EXPECT_FALSE(fs::exists(work / "no.png"));
 }
 
+// kerf export with --drawing: the drawing's elements out of tolerance on a DXF layer DEVIATION (the
+// mistyped circle, and nothing else), and a cell array "deviation" in the VTP.
+TEST_F(drawing_twins_test, export_writes_the_deviation_layer_and_array) {
+  const fs::path work = fs::path(KERF_DXF_WORK);
+  fs::create_directories(work);
+  const std::string program = std::string(KERF_SOURCE_DIR) + "/tests/drawing/plate_radius_off.nc";
+  const std::string drawing = std::string(KERF_SAMPLES_DIR) + "/plate.dxf";
+  for (const char* name : {"deviation.dxf", "deviation.vtp"}) {
+    fs::remove(work / name);
+    int exit = 0;
+    run("'" + std::string(KERF_PROGRAM) + "' export '" + program + "' --drawing '" + drawing + "' -o '" +
+            (work / name).string() + "' 2>/dev/null",
+        work / "export.log", exit);
+    EXPECT_EQ(exit, 1) << name << ": the program has an error against its drawing";
+  }
+  // DXF group pairs: code, then value, CRLF line ends. The entities on layer DEVIATION, by type.
+  const std::string dxf = kerf::test::readFile(work / "deviation.dxf");
+  std::vector<std::string> lines;
+  for (std::size_t at = 0, next; at < dxf.size(); at = next + 1) {
+    next = dxf.find('\n', at);
+    if (next == std::string::npos) next = dxf.size();
+    std::string l = dxf.substr(at, next - at);
+    if (!l.empty() && l.back() == '\r') l.pop_back();
+    lines.push_back(l.erase(0, l.find_first_not_of(' ')));
+  }
+  std::vector<std::string> onLayer;
+  std::string entity;
+  for (std::size_t k = 0; k + 1 < lines.size(); k += 2) {
+    if (lines[k] == "0") entity = lines[k + 1];
+    if (lines[k] == "8" && lines[k + 1] == "DEVIATION" && entity != "LAYER") onLayer.push_back(entity);
+  }
+  EXPECT_EQ(onLayer, std::vector<std::string>{"CIRCLE"});
+  EXPECT_NE(kerf::test::readFile(work / "deviation.vtp").find("Name=\"deviation\""), std::string::npos);
+}
+
 class DxfAgainstEzdxf : public testing::Test {
  public:
   explicit DxfAgainstEzdxf(fs::path file) : file_(std::move(file)) {}

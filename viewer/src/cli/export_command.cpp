@@ -51,6 +51,9 @@ int runDxfExport(const ExportArgs& a) {
   options.version = *version;
   options.rapids = a.rapids;
   options.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());
+  if (p.comparison)  // --drawing: its elements out of tolerance on DEVIATION
+    for (const converter::ElementDeviation& e : p.comparison->elements)
+      if (e.deviation > p.comparison->tolerance) options.deviation.push_back(p.comparison->drawn[e.element]);
   converter::DxfWriteCounts counts;
   const std::string text = converter::writeDxf(p.toolpath, options, &counts);
   if (counts.lines + counts.arcs + counts.circles == 0) {

@@ -7,6 +7,7 @@
 #include "kerf/export/mesh_export.h"
 
 #include <iostream>
+#include <limits>
 
 namespace kerf::cli {
 
@@ -21,7 +22,13 @@ int drawExportMesh(const ExportArgs& a) {
   const converter::Pipeline& p = in->pipeline;
   render::SceneOptions options = sceneOptionsOf(a.mesh);
   options.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());
-  const exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags.all(), options, a.caps);
+  exporter::SurfaceData data = exporter::surfaceData(p.toolpath, p.diags.all(), options, a.caps);
+  if (p.comparison) {  // --drawing: each cell's move's deviation
+    const std::vector<float> byMove = exporter::moveDeviations(*p.comparison, p.toolpath.moves.size());
+    data.cellDeviation.assign(data.cellMove.size(), std::numeric_limits<float>::quiet_NaN());
+    for (std::size_t t = 0; t < data.cellMove.size(); ++t)
+      if (data.cellMove[t] >= 0) data.cellDeviation[t] = byMove[static_cast<std::size_t>(data.cellMove[t])];
+  }
   if (data.surface.mesh.triangles.empty()) {
     reportError("nothing is cut, so there is no surface to export");
     return kExitErrors;

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 namespace kerf::exporter {
 
@@ -71,6 +72,14 @@ SurfaceData surfaceData(const converter::Toolpath& toolpath, std::span<const con
   return out;
 }
 
+std::vector<float> moveDeviations(const converter::DrawingComparison& comparison, std::size_t moves) {
+  std::vector<float> out(moves, std::numeric_limits<float>::quiet_NaN());
+  for (const converter::EdgeDeviation& e : comparison.edge)
+    if (e.move < moves && !(out[e.move] >= static_cast<float>(e.deviation)))
+      out[e.move] = static_cast<float>(e.deviation);
+  return out;
+}
+
 namespace {
 
 vtkNew<vtkPolyData> toPolyData(const SurfaceData& data) {
@@ -107,6 +116,14 @@ vtkNew<vtkPolyData> toPolyData(const SurfaceData& data) {
   slope->SetNumberOfValues(static_cast<vtkIdType>(data.cellSlope.size()));
   for (std::size_t i = 0; i < data.cellSlope.size(); ++i) slope->SetValue(static_cast<vtkIdType>(i), data.cellSlope[i]);
   poly->GetCellData()->AddArray(slope);
+  if (!data.cellDeviation.empty()) {
+    vtkNew<vtkFloatArray> deviation;
+    deviation->SetName("deviation");
+    deviation->SetNumberOfValues(static_cast<vtkIdType>(data.cellDeviation.size()));
+    for (std::size_t i = 0; i < data.cellDeviation.size(); ++i)
+      deviation->SetValue(static_cast<vtkIdType>(i), data.cellDeviation[i]);
+    poly->GetCellData()->AddArray(deviation);
+  }
   poly->GetCellData()->SetActiveScalars("slope");
   vtkNew<vtkFloatArray> pointSlope;
   pointSlope->SetName("slope");

@@ -260,12 +260,9 @@ void Renderer::setScene(const Scene& scene) {
                         reinterpret_cast<void*>(offsetof(SurfaceVertex, slopeDegrees)));
   g.EnableVertexAttribArray(3);
   g.VertexAttribIPointer(3, 1, GL_UNSIGNED_INT, stride, reinterpret_cast<void*>(offsetof(SurfaceVertex, flags)));
-  const std::pair<Buffer*, const LineSet*> sets[] = {{&lower_, &scene.lower},
-                                                     {&upper_, &scene.upper},
-                                                     {&generators_, &scene.generators},
-                                                     {&rapids_, &scene.rapids},
-                                                     {&reference_, &scene.reference},
-                                                     {&deviation_, &scene.deviation}};
+  const std::pair<Buffer*, const LineSet*> sets[] = {
+      {&lower_, &scene.lower},   {&upper_, &scene.upper},         {&generators_, &scene.generators},
+      {&rapids_, &scene.rapids}, {&reference_, &scene.reference}, {&deviation_, &scene.deviation}};
   for (const auto& [buffer, set] : sets) {
     upload(buffer->vao, buffer->vbo, set->vertices);
     buffer->count = set->vertices.size();

@@ -33,18 +33,22 @@ struct Layer {
 const Layer kLayers[] = {{"0", 7}, {"LOWER", 5}, {"UPPER", 3}, {"PROGRAMMED", 8}, {"RAPID", 2}};
 enum LayerIndex { kLower = 1, kUpper = 2, kProgrammed = 3, kRapid = 4, kFirstPass = 5 };
 
-/// The layers of a drawing whose moves are in at most `passes` passes (0 or 1: the fixed ones).
+/// The layers of a drawing whose moves are in at most `passes` passes (0 or 1: the fixed ones),
+/// and DEVIATION last when there are elements out of tolerance.
 /// Pass colours: red, blue, green, yellow, magenta, cyan (AutoCAD indices 1 5 3 2 6 4), repeating.
-std::vector<Layer> layersFor(std::size_t passes) {
+std::vector<Layer> layersFor(std::size_t passes, bool deviation) {
   std::vector<Layer> out(std::begin(kLayers), std::end(kLayers));
   constexpr int kPassColours[] = {1, 5, 3, 2, 6, 4};
-  if (passes < 2) return out;
-  for (std::size_t k = 1; k <= passes; ++k)
-    for (const char* plane : {"LOWER", "UPPER"})
-      out.push_back(
-          {std::string(plane) + "_PASS" + std::to_string(k), kPassColours[(k - 1) % std::size(kPassColours)]});
+  if (passes >= 2)
+    for (std::size_t k = 1; k <= passes; ++k)
+      for (const char* plane : {"LOWER", "UPPER"})
+        out.push_back(
+            {std::string(plane) + "_PASS" + std::to_string(k), kPassColours[(k - 1) % std::size(kPassColours)]});
+  if (deviation) out.push_back({"DEVIATION", 6});  // magenta, last (deviationLayer)
   return out;
 }
+/// The DEVIATION layer's index: after the fixed layers and the pass layers (layersFor).
+int deviationLayer(std::size_t passes) { return kFirstPass + (passes >= 2 ? 2 * static_cast<int>(passes) : 0); }
 /// The layer of a cut move of pass `pass` (1-based) on the lower or the upper plane.
 int passLayer(std::size_t pass, bool upper) { return kFirstPass + 2 * static_cast<int>(pass - 1) + (upper ? 1 : 0); }
 
@@ -229,6 +233,8 @@ std::vector<Item> itemsOf(const Toolpath& tp, const DxfWriteOptions& options) {
       items.push_back({tp.programmed[i], zLower, kProgrammed});
     }
   }
+  for (const geometry::Segment& s : options.deviation)
+    if (usable(s)) items.push_back({s, zLower, deviationLayer(passes)});
   return items;
 }
 
@@ -260,7 +266,7 @@ void extents(Out& o, const std::vector<Item>& items) {
 
 std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWriteCounts* countsOut) {
   const std::vector<Item> items = itemsOf(tp, options);
-  const std::vector<Layer> layerList = layersFor(passCount(options));
+  const std::vector<Layer> layerList = layersFor(passCount(options), !options.deviation.empty());
   DxfWriteCounts counts;
   const bool r2000 = options.version == DxfVersion::R2000;
   // The body first (it allocates the handles), then the header that names the next free one.

@@ -3,7 +3,8 @@
 //
 // Layers: LOWER (the wire path on the lower plane: every cut move), UPPER (a taper program's upper
 // contour, at the upper plane's height when the heights are known), PROGRAMMED (where G41/G42 was
-// applied: the contour as programmed, beside the wire-centre path) and, on request, RAPID. Lines are
+// applied: the contour as programmed, beside the wire-centre path), on request RAPID, and, held
+// against a drawing, DEVIATION (the drawing's elements cut out of tolerance, issue 43). Lines are
 // LINE, arcs ARC (DXF arcs run counter-clockwise, so a clockwise move is written from its end
 // angle to its start angle), full circles CIRCLE. Units: millimetres ($INSUNITS 4 in R2000).
 //
@@ -37,6 +38,9 @@ struct DxfWriteOptions {
   /// than one pass, the cut moves of pass k go on LOWER_PASSk and UPPER_PASSk instead of LOWER and
   /// UPPER. Empty: LOWER and UPPER.
   std::vector<std::uint8_t> movePass;
+  /// The drawing's elements cut farther off than the tolerance (kerf check --drawing), in the
+  /// program's frame, on layer DEVIATION. Empty: no such layer.
+  std::vector<geometry::Segment> deviation;
 };
 
 struct DxfWriteCounts {

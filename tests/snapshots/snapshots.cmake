@@ -50,6 +50,11 @@ if(KERF_XVFB_RUN)
   # A program cut in three passes: the pass list, coloured by pass, the skim's block selected.
   kerf_snapshot_test(NAME view_passes WINDOW
                      ARGS tests/passes/die_tab_cut_off.nc --size 900x560 --frames 4 --colour-by pass --line 20)
+  # A program against its drawing (issue 43): the part edge by deviation, the elements out of
+  # tolerance listed, the worst one's block selected.
+  kerf_snapshot_test(NAME view_plate_deviation WINDOW EXIT 1
+                     ARGS tests/drawing/plate_radius_off.nc --size 900x560 --frames 4 --drawing samples/plate.dxf
+                          --colour-by deviation --line 5)
 else()
   message(WARNING "xvfb-run (package xvfb) not found: the window snapshot tests are not built")
 endif()

@@ -23,8 +23,9 @@ CLI::App* addViewCommand(CLI::App& app, ViewArgs& a) {
   addMeshOptions(*cmd, a.mesh, true);
   // Spelt as render spells it; the earlier flag --color-by-slope stays, hidden, for scripts.
   cmd->add_option("--color-by,--colour-by", a.colourByName,
-                  "start with the surface coloured by the wire slope, or by pass (rough cut, skims)")
-      ->check(CLI::IsMember({"slope", "pass"}))
+                  "start with the surface coloured by the wire slope, or by pass (rough cut, skims), or the part edge "
+                  "by its deviation from --drawing")
+      ->check(CLI::IsMember({"slope", "pass", "deviation"}))
       ->group(g);
   cmd->add_flag("--color-by-slope,--colour-by-slope", a.colourBy, "the same as --color-by slope")->group("");
   return cmd;

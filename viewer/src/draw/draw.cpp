@@ -1,7 +1,10 @@
 #include "draw.h"
-
 #include "file_io.h"
+#include "load.h"
+
 #include "kerf/converter/interpret/dialect.h"
+
+#include <algorithm>
 
 namespace kerf::cli {
 
@@ -24,6 +27,22 @@ ui::Annotation annotationOf(const std::string& input, const converter::Pipeline&
   else if (!tp.programmed.empty())
     a.subtitle += " | wire centre; dashed: as programmed";
   return a;
+}
+
+bool colourByDeviation(const converter::Pipeline& p, render::SceneOptions& so, ui::Annotation& legend) {
+  if (!p.comparison) {
+    reportError("--color-by deviation needs --drawing: the drawing the program should cut");
+    return false;
+  }
+  const converter::DrawingComparison& c = *p.comparison;
+  for (const converter::EdgeDeviation& e : c.edge) {
+    so.deviationPieces.push_back(e.segment);
+    so.deviations.push_back(e.deviation);
+  }
+  so.deviationScale = std::max(2.0 * c.tolerance, c.worst);
+  legend.deviationScaleUm = so.deviationScale * 1000.0;
+  legend.toleranceUm = c.tolerance * 1000.0;
+  return true;
 }
 
 render::SceneOptions sceneOptionsOf(const MeshOptions& mesh) {

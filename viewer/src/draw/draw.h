@@ -19,6 +19,11 @@ ui::Annotation annotationOf(const std::string& input, const converter::Pipeline&
 
 render::SceneOptions sceneOptionsOf(const MeshOptions& mesh);
 
+/// --color-by deviation: the part edge coloured by its deviation from --drawing, on a ramp up to
+/// twice the tolerance or the worst deviation, whichever is larger, and the legend's range; false
+/// (said) without --drawing.
+bool colourByDeviation(const converter::Pipeline& pipeline, render::SceneOptions& options, ui::Annotation& legend);
+
 int drawRender(const RenderArgs& args);
 int drawView(const ViewArgs& args);
 int drawExportMesh(const ExportArgs& args);

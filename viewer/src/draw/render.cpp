@@ -9,32 +9,9 @@
 #include "kerf/render/scene.h"
 #include "ui/picture.h"
 
-#include <algorithm>
 #include <iostream>
 
 namespace kerf::cli {
-
-namespace {
-
-/// --color-by deviation: the part edge coloured by its deviation from --drawing, on a ramp up to
-/// twice the tolerance or the worst deviation, whichever is larger; false (said) without --drawing.
-bool colourByDeviation(const converter::Pipeline& p, render::SceneOptions& so, ui::Annotation& legend) {
-  if (!p.comparison) {
-    reportError("--color-by deviation needs --drawing: the drawing the program should cut");
-    return false;
-  }
-  const converter::DrawingComparison& c = *p.comparison;
-  for (const converter::EdgeDeviation& e : c.edge) {
-    so.deviationPieces.push_back(e.segment);
-    so.deviations.push_back(e.deviation);
-  }
-  so.deviationScale = std::max(2.0 * c.tolerance, c.worst);
-  legend.deviationScaleUm = so.deviationScale * 1000.0;
-  legend.toleranceUm = c.tolerance * 1000.0;
-  return true;
-}
-
-}  // namespace
 
 int drawRender(const RenderArgs& a) {
   ui::PictureRequest request;

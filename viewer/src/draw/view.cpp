@@ -39,6 +39,8 @@ int drawView(const ViewArgs& a) {
   request.reference = converter::referenceGeometry(p);
   render::SceneOptions so = sceneOptionsOf(a.mesh);
   so.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());  // the window's colour by pass
+  request.annotation = annotationOf(file, p);
+  if (a.colourByName == "deviation" && !colourByDeviation(p, so, request.annotation)) return kExitUsage;
   const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, request.reference);
   request.structure = &p.structure;
   request.source = p.source.get();
@@ -47,7 +49,7 @@ int drawView(const ViewArgs& a) {
   request.scene = &scene;
   request.sceneOptions = so;
   request.coarseFrames = a.coarse;
-  request.annotation = annotationOf(file, p);
+  request.comparison = p.comparison ? &*p.comparison : nullptr;
   request.annotation.legend = true;
   request.options.colourBySlope = a.colourBy;
   request.options.colourByPass = a.colourByName == "pass";

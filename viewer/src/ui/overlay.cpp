@@ -56,7 +56,7 @@ void drawSlopeLegend(ImDrawList& list, const render::Scene& scene, int width, in
 void drawDeviationLegend(ImDrawList& list, double scaleUm, double toleranceUm, int width, int height) {
   const float lineHeight = ImGui::GetTextLineHeight();
   const float barH = std::min(160.0f, static_cast<float>(height) * 0.45f), barW = 12.0f;
-  const float x0 = static_cast<float>(width) - 100.0f, y0 = 30.0f + lineHeight;
+  const float x0 = static_cast<float>(width) - 100.0f, y0 = 4.0f * lineHeight + 24.0f;  // under the title
   list.AddRectFilled(ImVec2(x0 - 6, y0 - 2 * lineHeight - 8), ImVec2(static_cast<float>(width) - 4, y0 + barH + 6),
                      kPanel, 2.0f);
   list.AddText(ImVec2(x0 - 2, y0 - 2 * lineHeight - 5), kText, "deviation");

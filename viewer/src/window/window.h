@@ -2,6 +2,7 @@
 // at each other: click a segment to select its block, click a line or a finding to see it.
 #pragma once
 
+#include "kerf/converter/check/drawing_check.h"
 #include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/nc/source.h"
 #include "kerf/converter/structure/passes.h"
@@ -24,6 +25,9 @@ struct WindowRequest {
   const converter::Structure* structure = nullptr;
   std::vector<converter::Diagnostic> findings;
   std::vector<geometry::Segment> reference;  ///< converter::referenceGeometry: drawn beside the path
+  /// The program against --drawing: its elements out of tolerance are listed, each selecting its
+  /// nearest block. Null: no drawing.
+  const converter::DrawingComparison* comparison = nullptr;
   const render::Scene* scene = nullptr;
   render::SceneOptions sceneOptions;  ///< what `scene` was built with (the coarse level starts from it)
   bool coarseFrames = false;          ///< draw every frame at the coarse level (benchmarks what orbiting costs)

@@ -77,24 +77,19 @@ void summarizeInto(Pipeline& out, const PipelineOptions& options) {
   out.summary = summarize(out.toolpath, *options.summarize, &out.measures);
   out.summary->structure = out.structure;
   out.summary->comparison = out.comparison;
+  out.summary->comparisonUpper = out.comparisonUpper;
 }
 
-/// --drawing: the DXF read (in mm, its own findings at its lines) and the program held against it.
-void compareDrawing(Pipeline& out, const PipelineOptions& options) {
-  if (!options.drawing) return;
-  out.drawingSource = std::make_unique<SourceFile>(options.drawing->name, options.drawing->text);
+/// One plane's drawing: the DXF read (in mm, its own findings at its lines), the layer asked for
+/// kept, and the part edge on that plane held against it. Nothing when there is nothing to compare.
+std::optional<DrawingComparison> compareOnePlane(Pipeline& out, const PipelineOptions& options,
+                                                 const SourceFile& source, const std::string& layer, bool upper) {
   DxfOptions dxf;
   if (options.read.dxfUnit) dxf.unitToMm = *options.read.dxfUnit;
   dxf.curveTolerance = options.read.curveTolerance;
   dxf.maxElements = options.read.maxMoves;
-  const Drawing drawing = readDxf(*out.drawingSource, dxf, out.diags);
-  if (!drawing.ok) return;
-  if (drawing.elements.empty()) {
-    out.diags.error(Code::NothingCut, out.drawingSource.get(), SourceSpan{0, 0},
-                    "the drawing holds no line, arc or curve to compare the program with");
-    return;
-  }
-  const std::string& layer = options.drawingCheck.layer;
+  const Drawing drawing = readDxf(source, dxf, out.diags);
+  if (!drawing.ok) return std::nullopt;
   std::vector<DrawnElement> drawn;
   drawn.reserve(drawing.elements.size());
   for (const DrawingElement& e : drawing.elements)
@@ -104,16 +99,41 @@ void compareDrawing(Pipeline& out, const PipelineOptions& options) {
     for (const DrawingElement& e : drawing.elements) layers.insert(e.layer);
     std::string names;
     for (const std::string& l : layers) names += (names.empty() ? "" : ", ") + (l.empty() ? "\"\"" : l);
-    out.diags.error(Code::NothingCut, out.drawingSource.get(), SourceSpan{0, 0},
-                    "the drawing's layer " + layer + " holds no line, arc or curve to compare the program with",
-                    "its layers with elements: " + names);
-    return;
+    out.diags.error(Code::NothingCut, &source, SourceSpan{0, 0},
+                    (layer.empty() ? std::string("the drawing") : "the drawing's layer " + layer) +
+                        " holds no line, arc or curve to compare the program with",
+                    names.empty() ? std::string() : "its layers with elements: " + names);
+    return std::nullopt;
   }
   DrawingCheckOptions o = options.drawingCheck;
   o.wireOffset = options.read.wireOffset;
   if (options.read.side) o.wireOutside = *options.read.side == WireSide::Outside;
-  out.comparison =
-      compareWithDrawing(out.toolpath, out.structure, drawn, o, out.source.get(), out.drawingSource.get(), out.diags);
+  o.upperPlane = upper;
+  DrawingComparison c = compareWithDrawing(out.toolpath, out.structure, drawn, o, out.source.get(), &source, out.diags);
+  c.upper = upper;
+  return c;
+}
+
+/// --drawing, and for a taper program --drawing-upper or --drawing-upper-layer: each plane's part
+/// edge against its drawing.
+void compareDrawing(Pipeline& out, const PipelineOptions& options) {
+  if (options.drawing) {
+    out.drawingSource = std::make_unique<SourceFile>(options.drawing->name, options.drawing->text);
+    out.comparison = compareOnePlane(out, options, *out.drawingSource, options.drawingCheck.layer, false);
+  }
+  if (!options.drawingUpper && options.drawingCheck.upperLayer.empty()) return;
+  const SourceFile* upper = out.drawingSource.get();
+  if (options.drawingUpper) {
+    out.drawingUpperSource = std::make_unique<SourceFile>(options.drawingUpper->name, options.drawingUpper->text);
+    upper = out.drawingUpperSource.get();
+  }
+  if (!out.toolpath.isTaper() || upper == nullptr) {
+    out.diags.error(Code::NothingCut, upper ? upper : out.source.get(), SourceSpan{0, 0},
+                    upper ? "the upper plane's drawing needs a taper program: this program has no upper contour"
+                          : "--drawing-upper-layer names a layer of --drawing, and no --drawing is given");
+    return;
+  }
+  out.comparisonUpper = compareOnePlane(out, options, *upper, options.drawingCheck.upperLayer, true);
 }
 
 /// The checks, with the machine's limits unless the user gave others, then the summary (it reads

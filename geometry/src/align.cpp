@@ -121,7 +121,7 @@ Alignment align(SegmentView from, SegmentView to, const AlignOptions& options) {
   const Moments target = momentsOf(targets);
   // The candidates are screened on a tenth of the points; the best is refined on all of them.
   const std::vector<Vec2> few = pointsAlong(from, std::max<std::size_t>(options.samples / 10, 50));
-  Alignment best = refine(few, toSet, Placement{}, options.iterations);  // as placed
+  std::vector<Alignment> found{refine(few, toSet, Placement{}, options.iterations)};  // as placed
   for (const bool mirror : {false, true}) {
     if (mirror && !options.allowMirror) continue;
     std::vector<Vec2> flipped(points.size());
@@ -132,11 +132,20 @@ Alignment align(SegmentView from, SegmentView to, const AlignOptions& options) {
       p.mirror = mirror;
       p.angle = target.axis - source.axis + quarter * kPi / 2;
       p.shift = target.centroid - turned(source.centroid, p.angle);
-      const Alignment a = refine(few, toSet, p, options.iterations);
-      if (a.rms < best.rms) best = a;
+      found.push_back(refine(few, toSet, p, options.iterations));
     }
   }
-  best = refine(points, toSet, best.placement, options.iterations);
+  // A symmetric shape fits as well turned a quarter or mirrored: of the placements that fit as well
+  // as the best, the one without a mirror and with the smallest turn is the one a reader expects.
+  double least = std::numeric_limits<double>::infinity();
+  for (const Alignment& a : found) least = std::min(least, a.rms);
+  auto cost = [](const Alignment& a) {
+    return (a.placement.mirror ? 10.0 : 0.0) + std::abs(std::remainder(a.placement.angle, 2 * kPi));
+  };
+  const Alignment* chosen = nullptr;
+  for (const Alignment& a : found)
+    if (a.rms <= least * (1 + 1e-3) + 1e-7 && (chosen == nullptr || cost(a) < cost(*chosen))) chosen = &a;
+  Alignment best = refine(points, toSet, chosen->placement, options.iterations);
   best.placement.angle = std::remainder(best.placement.angle, 2 * kPi);
   return best;
 }

@@ -274,6 +274,53 @@ TEST_F(drawing_twins_test, export_writes_the_deviation_layer_and_array) {
   EXPECT_NE(kerf::test::readFile(work / "deviation.vtp").find("Name=\"deviation\""), std::string::npos);
 }
 
+// A taper part (XYUV, a 20 mm square below, 18 mm above) against a drawing of both planes on two
+// layers, made by kerf export from the contour alone: the part as drawn fits both planes; with its
+// upper plane turned 1 degree about the centre, the lower plane still fits and the upper plane's
+// drawing is named turned by 1 degree.
+TEST_F(drawing_twins_test, a_taper_part_with_its_upper_plane_turned_1_degree) {
+  const fs::path work = fs::path(KERF_DXF_WORK);
+  fs::create_directories(work);
+  const std::string square = "G01 X10 Y-10 U9 V-9\nG01 X10 Y10 U9 V9\nG01 X-10 Y10 U-9 V9\nG01 X-10 Y-10 U-9 V-9\n";
+  kerf::test::writeFile(work / "taper_drawing.nc",
+                        "G90 G21\nG92 X0 Y-10 U0 V-9\n" + square + "G01 X0 Y-10 U0 V-9\nM02\n");
+  int exit = 0;
+  run("'" + std::string(KERF_PROGRAM) + "' export '" + (work / "taper_drawing.nc").string() + "' -o '" +
+          (work / "taper.dxf").string() + "' --thickness 20 2>/dev/null",
+      work / "taper_export.log", exit);
+  ASSERT_EQ(exit, 0);
+  // The upper plane turned 1 degree: (u, v) -> (u cos 1 - v sin 1, u sin 1 + v cos 1), 4 decimals.
+  const std::string turned =
+      "G01 X10 Y-10 U9.1557 V-8.8416\nG01 X10 Y10 U8.8416 V9.1557\nG01 X-10 Y10 U-9.1557 "
+      "V8.8416\nG01 X-10 Y-10 U-8.8416 V-9.1557\nG01 X0 Y-10 U0.1571 V-8.9986\n";
+  auto check = [&](const std::string& name, const std::string& contour) {
+    kerf::test::writeFile(work / name, "G90 G21\nG92 X0 Y-15 U0 V-15\nG01 X0 Y-10 U" +
+                                           std::string(contour == turned ? "0.1571 V-8.9986" : "0 V-9") + "\n" +
+                                           contour + "G01 X0 Y-15 U0 V-15\nM02\n");
+    return json::parse(run("'" + std::string(KERF_PROGRAM) + "' check --json '" + (work / name).string() +
+                               "' --drawing '" + (work / "taper.dxf").string() +
+                               "' --thickness 20 --drawing-layer LOWER --drawing-upper-layer UPPER 2>/dev/null",
+                           work / (name + ".json"), exit));
+  };
+  const json straight = check("taper_straight.nc", square + "G01 X0 Y-10 U0 V-9\n");
+  EXPECT_EQ(exit, 0) << straight["diagnostics"].dump(1);
+  EXPECT_EQ(straight["summary"]["comparison"]["out_of_tolerance"], 0);
+  EXPECT_EQ(straight["summary"]["comparison_upper"]["out_of_tolerance"], 0);
+  const json r = check("taper_turned.nc", turned);
+  EXPECT_EQ(exit, 1);
+  EXPECT_EQ(r["summary"]["comparison"]["out_of_tolerance"], 0) << "the lower plane is as drawn";
+  EXPECT_EQ(r["summary"]["comparison_upper"]["out_of_tolerance"], r["summary"]["comparison_upper"]["elements"].size());
+  const auto named = findings(r, "K0634");
+  ASSERT_EQ(named.size(), 1u) << r["diagnostics"].dump(1);
+  EXPECT_TRUE(says(named[0], "turned 1.0000°") || says(named[0], "turned 0.9999°")) << named[0].dump();
+  // A drawn corner (9, -9) against the turned sides: 9 (sin 1° + cos 1° - 1) = 155.7 µm from the nearer.
+  double worst = 0;
+  for (const json& e : r["summary"]["comparison_upper"]["elements"])
+    worst = std::max(worst, e["deviation_mm"].get<double>());
+  const double degree = std::acos(-1.0) / 180;
+  EXPECT_NEAR(worst, 9 * (std::sin(degree) + std::cos(degree) - 1), 1e-4);
+}
+
 class DxfAgainstEzdxf : public testing::Test {
  public:
   explicit DxfAgainstEzdxf(fs::path file) : file_(std::move(file)) {}

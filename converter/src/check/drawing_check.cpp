@@ -29,10 +29,11 @@ struct EdgeRun {
   std::vector<std::size_t> moves;
   const Pass* pass = nullptr;
   std::size_t contour = 0;  ///< in Structure::contours
+  bool upper = false;       ///< the moves' upper contour (DrawingCheckOptions::upperPlane)
 };
 
 /// The runs of the part edge (see the header). A move is in one run at most.
-std::vector<EdgeRun> edgeRuns(const Toolpath& tp, const Structure& structure) {
+std::vector<EdgeRun> edgeRuns(const Toolpath& tp, const Structure& structure, bool upper) {
   std::vector<EdgeRun> runs;
   std::set<std::size_t> taken;
   for (std::size_t c = 0; c < structure.contours.size(); ++c) {
@@ -42,7 +43,7 @@ std::vector<EdgeRun> edgeRuns(const Toolpath& tp, const Structure& structure) {
       if (!p.cutOff) last = &p;
     for (const Pass& p : contour.passes) {
       if (&p != last && !p.cutOff) continue;
-      EdgeRun run{{}, &p, c};
+      EdgeRun run{{}, &p, c, upper};
       for (std::size_t i = p.alongFirst; i < p.alongEnd && i < tp.moves.size(); ++i)
         if (tp.moves[i].isCut() && taken.insert(i).second) run.moves.push_back(i);
       if (!run.moves.empty()) runs.push_back(std::move(run));
@@ -51,8 +52,10 @@ std::vector<EdgeRun> edgeRuns(const Toolpath& tp, const Structure& structure) {
   return runs;
 }
 
-/// Move i as programmed: the contour the program wrote where a wire offset was applied.
-geometry::Segment programmedOf(const Toolpath& tp, std::size_t i) {
+/// Move i of the part edge: on the lower plane as programmed (the contour the program wrote where
+/// a wire offset was applied), or its upper contour (a taper program's upper plane).
+geometry::Segment programmedOf(const Toolpath& tp, std::size_t i, bool upper) {
+  if (upper) return tp.upperOf(i);
   return i < tp.programmed.size() ? tp.programmed[i] : tp.moves[i].lower;
 }
 
@@ -63,7 +66,7 @@ bool isWireCentre(const EdgeRun& run) { return run.pass->side == WireOffset::Off
 /// nesting of contours).
 std::vector<geometry::Segment> programmedRun(const Toolpath& tp, const EdgeRun& run) {
   std::vector<geometry::Segment> path;
-  for (const std::size_t i : run.moves) path.push_back(programmedOf(tp, i));
+  for (const std::size_t i : run.moves) path.push_back(programmedOf(tp, i, run.upper));
   return path;
 }
 
@@ -187,7 +190,7 @@ std::vector<EdgeDeviation> partEdge(const Toolpath& tp, const std::vector<EdgeRu
     const int direction = run.pass->direction;
     if (!isWireCentre(run) || !options.wireOffset || *options.wireOffset <= 0 || direction == 0) {
       if (isWireCentre(run)) ++said.asWritten;
-      for (const std::size_t i : run.moves) edge.push_back({i, programmedOf(tp, i)});
+      for (const std::size_t i : run.moves) edge.push_back({i, programmedOf(tp, i, run.upper)});
       continue;
     }
     const double radius = *options.wireOffset;
@@ -198,7 +201,7 @@ std::vector<EdgeDeviation> partEdge(const Toolpath& tp, const std::vector<EdgeRu
       // The wire outside the part: the part lies inside the wire's loop, left of a
       // counter-clockwise one. Nesting turns the side over: the nesting of the drawing contour
       // the run follows (the one nearest its first move), as kerf cam chose the side from it.
-      const geometry::Vec2 probe = programmedOf(tp, run.moves.front()).pointAt(0.5);
+      const geometry::Vec2 probe = programmedOf(tp, run.moves.front(), run.upper).pointAt(0.5);
       const std::size_t element = drawn.empty() ? SIZE_MAX : drawn.chord(drawn.nearest(probe).chord).owner;
       const std::size_t chain = element < dc.chainOf.size() ? dc.chainOf[element] : SIZE_MAX;
       const int depth = chain < dc.depth.size() ? dc.depth[chain] : 0;
@@ -316,7 +319,8 @@ void reportExtraCuts(const DrawingComparison& out, const Toolpath& tp, double to
 /// K0633: how the passes cut with no wire offset in force were taken.
 void reportWireCentre(const MovedBack& said, const DrawingCheckOptions& options, const SourceFile* program,
                       Diagnostics& diags) {
-  auto passes = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " pass" : " passes"); };
+  const std::string plane = options.upperPlane ? " (upper plane)" : "";
+  auto passes = [&](std::size_t n) { return std::to_string(n) + (n == 1 ? " pass" : " passes") + plane; };
   if (said.moved > 0)
     diags.note(Code::DrawingWireCentre, program, SourceSpan::wholeFile(),
                "the part edge of " + passes(said.moved) +
@@ -432,7 +436,7 @@ DrawingComparison compareWithDrawing(const Toolpath& tp, const Structure& struct
   std::vector<geometry::Segment> drawn;
   for (const DrawnElement& e : drawing)
     drawn.push_back(geometry::Placement{false, 0.0, -options.origin}.apply(e.segment));
-  const std::vector<EdgeRun> runs = edgeRuns(tp, structure);
+  const std::vector<EdgeRun> runs = edgeRuns(tp, structure, options.upperPlane && tp.isTaper());
   Measured m = measure(tp, runs, drawn, options);
   // Another placement: asked for (--align), or looked for when the drawing does not fit as placed.
   if ((options.align || m.out.outOfTolerance > 0) && !m.out.edge.empty() && !tp.moves.empty()) {
@@ -443,7 +447,9 @@ DrawingComparison compareWithDrawing(const Toolpath& tp, const Structure& struct
       std::vector<geometry::Segment> moved = placed(drawn, a.placement);
       Measured there = measure(tp, runs, moved, options);
       const std::string how = describePlacement(a.placement);
-      const std::string fit = "placed so, it lies within " + um(there.out.worst) + " of the part edge";
+      double elementsWorst = 0.0;
+      for (const ElementDeviation& e : there.out.elements) elementsWorst = std::max(elementsWorst, e.deviation);
+      const std::string fit = "placed so, its elements lie within " + um(elementsWorst) + " of the part edge";
       if (options.align) {
         m = std::move(there);
         drawn = std::move(moved);

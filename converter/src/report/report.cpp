@@ -242,9 +242,9 @@ std::string structureText(const Structure& st) {
 /// tolerance (JSON lists every element).
 std::string comparisonText(const DrawingComparison& c) {
   auto um = [](double mm) { return formatFixed(mm * 1000.0, 1) + " µm"; };
-  std::string out = "  drawing " + c.drawing + ": " + plural(c.elements.size(), "element") + ", largest deviation " +
-                    um(c.worst) + " (tolerance " + um(c.tolerance) + "), " + std::to_string(c.outOfTolerance) +
-                    " out of tolerance\n";
+  std::string out = "  drawing " + std::string(c.upper ? "(upper plane) " : "") + c.drawing + ": " +
+                    plural(c.elements.size(), "element") + ", largest deviation " + um(c.worst) + " (tolerance " +
+                    um(c.tolerance) + "), " + std::to_string(c.outOfTolerance) + " out of tolerance\n";
   std::vector<const ElementDeviation*> off;
   for (const ElementDeviation& e : c.elements)
     if (e.deviation > c.tolerance) off.push_back(&e);
@@ -317,6 +317,7 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
   }
   if (s.structure.multiPass()) out += structureText(s.structure);
   if (s.comparison) out += comparisonText(*s.comparison);
+  if (s.comparisonUpper) out += comparisonText(*s.comparisonUpper);
   if ((s.format == InputFormat::Iso || s.format == InputFormat::ThreeB) && s.cutMoves > 0)
     out += timeText(s.structure.time);
   out += std::string("verdict: ") + (diags.hasErrors() ? "errors — do not cut" : "ok") + "\n";
@@ -483,6 +484,7 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
   }
   sum["structure"] = structureObject(s.structure);
   if (s.comparison) sum["comparison"] = comparisonJson(*s.comparison);
+  if (s.comparisonUpper) sum["comparison_upper"] = comparisonJson(*s.comparisonUpper);
   j["summary"] = std::move(sum);
   roundNumbers(j);
   return j.dump(2) + "\n";

@@ -179,6 +179,12 @@ void addCheckOptions(CLI::App& cmd, CheckOptions& o) {
       ->group(checks);
   cmd.add_option("--drawing-layer", o.drawingLayer, "compare only this layer of the drawing (default: every layer)")
       ->group(checks);
+  cmd.add_option("--drawing-upper", o.drawingUpper,
+                 "a taper program's upper plane against this drawing (DXF), each plane with its own deviations")
+      ->group(checks);
+  cmd.add_option("--drawing-upper-layer", o.drawingUpperLayer,
+                 "the upper plane against this layer (of --drawing-upper, or of --drawing when it is not given)")
+      ->group(checks);
   cmd.add_flag("--align", o.drawingAlign,
                "place the drawing where it fits the part edge best (a turn and a shift, or a mirror), and say where")
       ->group(checks);
@@ -333,10 +339,16 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
     std::optional<std::string> text = readTextFile(*o.checks.drawing, o.input.maxInputMiB << 20, error);
     if (!text) return false;
     out.drawing = SourceText{*o.checks.drawing, std::move(*text)};
-    out.drawingCheck.tolerance = o.checks.drawingTolerance;
-    out.drawingCheck.layer = o.checks.drawingLayer;
-    out.drawingCheck.align = o.checks.drawingAlign;
   }
+  if (o.checks.drawingUpper) {
+    std::optional<std::string> text = readTextFile(*o.checks.drawingUpper, o.input.maxInputMiB << 20, error);
+    if (!text) return false;
+    out.drawingUpper = SourceText{*o.checks.drawingUpper, std::move(*text)};
+  }
+  out.drawingCheck.tolerance = o.checks.drawingTolerance;
+  out.drawingCheck.layer = o.checks.drawingLayer;
+  out.drawingCheck.upperLayer = o.checks.drawingUpperLayer;
+  out.drawingCheck.align = o.checks.drawingAlign;
   if (o.checks.drawingOrigin) {
     const std::optional<geometry::Vec2> origin = pointOption(*o.checks.drawingOrigin, "--drawing-origin", error);
     if (!origin) return false;

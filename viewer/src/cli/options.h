@@ -65,6 +65,8 @@ struct CheckOptions {
   std::optional<std::string> drawingOrigin;  ///< --drawing-origin X,Y
   std::string drawingLayer;                  ///< --drawing-layer NAME (empty: every layer)
   bool drawingAlign = false;                 ///< --align
+  std::optional<std::string> drawingUpper;   ///< --drawing-upper FILE (DXF)
+  std::string drawingUpperLayer;             ///< --drawing-upper-layer NAME
   std::size_t maxDiagnostics = 50;
   std::vector<std::string> codeOptions;  ///< -W values as given: no-K0604, error=K0650, error
   bool quiet = false;                    ///< --quiet: errors only

@@ -81,6 +81,9 @@ struct PipelineOptions {
   bool centreWords = false;
   /// --drawing: the DXF the program should cut, compared after the checks (check/drawing_check.h).
   std::optional<SourceText> drawing;
+  /// --drawing-upper: a taper program's upper plane against this DXF (with --drawing-upper-layer
+  /// and no file: the upper plane against that layer of --drawing).
+  std::optional<SourceText> drawingUpper;
   DrawingCheckOptions drawingCheck;
 };
 
@@ -107,8 +110,10 @@ struct Pipeline {
   std::optional<Summary> summary;
   /// false: nothing was read (the machine profile file or the --offsets table is wrong); diags says why.
   bool read = false;
-  std::unique_ptr<SourceFile> drawingSource;    ///< --drawing
-  std::optional<DrawingComparison> comparison;  ///< the program against --drawing
+  std::unique_ptr<SourceFile> drawingSource;         ///< --drawing
+  std::optional<DrawingComparison> comparison;       ///< the program against --drawing
+  std::unique_ptr<SourceFile> drawingUpperSource;    ///< --drawing-upper
+  std::optional<DrawingComparison> comparisonUpper;  ///< the upper plane against its drawing
 };
 
 /// The geometry the wire path was made from, where the two differ: the drawing of --drawing, placed

@@ -35,6 +35,7 @@ struct DrawingCheckOptions {
   double tolerance = 0.005;  ///< mm [decided: a wire machine's positioning is a few µm]
   geometry::Vec2 origin{0, 0};
   std::string layer;        ///< --drawing-layer: only this layer's elements (empty: every layer)
+  std::string upperLayer;   ///< --drawing-upper-layer: the upper plane's layer (empty: every layer)
   double precision = 1e-4;  ///< mm: how close to the true largest distance each figure is
   /// mm (--offset): a pass cut with no G41/G42 in force is the wire-centre path, and its part edge
   /// is that path moved back by this much. Nothing: such a pass is compared as written.
@@ -47,6 +48,9 @@ struct DrawingCheckOptions {
   /// placement reported. Without it the drawing stays where `origin` puts it, and a placement is
   /// looked for only to name it when the drawing does not fit there.
   bool align = false;
+  /// The part edge on the upper plane: the upper contour of the same moves (a taper program's;
+  /// --drawing-upper). The drawing is then the upper plane's.
+  bool upperPlane = false;
 };
 
 /// A drawing element against the part edge.
@@ -80,6 +84,7 @@ struct DrawingComparison {
   std::optional<geometry::Placement> placement;
   /// The drawing's elements in the program's frame, as compared (pictures draw them beside the part).
   std::vector<geometry::Segment> drawn;
+  bool upper = false;  ///< the upper plane's comparison (--drawing-upper)
 };
 
 /// Compares and reports: an element off by more than the tolerance (K0630, at the nearest block;

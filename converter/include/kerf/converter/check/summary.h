@@ -113,10 +113,11 @@ struct Summary {
   double rapidLength = 0.0;   ///< mm
   geometry::Box bounds;       ///< of the cut path
   geometry::Sampling sampling;
-  geometry::PathSampleStats points;             ///< the cut path sampled at `sampling`
-  std::optional<TaperSummary> taper;            ///< taper programs whose heights are known
-  Structure structure;                          ///< its contours and their passes (the pipeline fills it)
-  std::optional<DrawingComparison> comparison;  ///< against --drawing (the pipeline fills it)
+  geometry::PathSampleStats points;                  ///< the cut path sampled at `sampling`
+  std::optional<TaperSummary> taper;                 ///< taper programs whose heights are known
+  Structure structure;                               ///< its contours and their passes (the pipeline fills it)
+  std::optional<DrawingComparison> comparison;       ///< against --drawing (the pipeline fills it)
+  std::optional<DrawingComparison> comparisonUpper;  ///< the upper plane against --drawing-upper
 };
 
 Summary summarize(const Toolpath& toolpath, const geometry::Sampling& sampling,

@@ -30,6 +30,18 @@ std::string formatNumber(double v, int decimals) {
   return buf;
 }
 
+/// The ramp as a bar from (x0, y0), w wide and h tall: its red end at the top.
+void rampBar(ImDrawList& list, float x0, float y0, float w, float h) {
+  constexpr int kSteps = 16;
+  for (int i = 0; i < kSteps; ++i) {
+    const float a = y0 + h * static_cast<float>(i) / kSteps, b = y0 + h * static_cast<float>(i + 1) / kSteps;
+    const ImU32 top = rampColour(1.0f - static_cast<float>(i) / kSteps);
+    const ImU32 bottom = rampColour(1.0f - static_cast<float>(i + 1) / kSteps);
+    list.AddRectFilledMultiColor(ImVec2(x0, a), ImVec2(x0 + w, b), top, top, bottom, bottom);
+  }
+  list.AddRect(ImVec2(x0, y0), ImVec2(x0 + w, y0 + h), kText);
+}
+
 /// The slope legend at the right edge: the surface shader's ramp and the slopes at its ends.
 void drawSlopeLegend(ImDrawList& list, const render::Scene& scene, int width, int height) {
   const float lineHeight = ImGui::GetTextLineHeight();
@@ -40,14 +52,7 @@ void drawSlopeLegend(ImDrawList& list, const render::Scene& scene, int width, in
   list.AddRectFilled(ImVec2(x0 - 6, y0 - lineHeight - 8), ImVec2(static_cast<float>(width) - 4, y0 + barH + 6), kPanel,
                      2.0f);
   list.AddText(ImVec2(x0 - 2, y0 - lineHeight - 5), kText, "slope");
-  constexpr int kSteps = 16;
-  for (int i = 0; i < kSteps; ++i) {
-    const float a = y0 + barH * static_cast<float>(i) / kSteps, b = y0 + barH * static_cast<float>(i + 1) / kSteps;
-    const ImU32 top = rampColour(1.0f - static_cast<float>(i) / kSteps);
-    const ImU32 bottom = rampColour(1.0f - static_cast<float>(i + 1) / kSteps);
-    list.AddRectFilledMultiColor(ImVec2(x0, a), ImVec2(x0 + barW, b), top, top, bottom, bottom);
-  }
-  list.AddRect(ImVec2(x0, y0), ImVec2(x0 + barW, y0 + barH), kText);
+  rampBar(list, x0, y0, barW, barH);
   list.AddText(ImVec2(x0 + barW + 3, y0 - 2), kText, hi.c_str());
   list.AddText(ImVec2(x0 + barW + 3, y0 + barH - lineHeight + 2), kText, lo.c_str());
 }
@@ -61,14 +66,7 @@ void drawDeviationLegend(ImDrawList& list, double scaleUm, double toleranceUm, i
                      kPanel, 2.0f);
   list.AddText(ImVec2(x0 - 2, y0 - 2 * lineHeight - 5), kText, "deviation");
   list.AddText(ImVec2(x0 - 2, y0 - lineHeight - 4), kText, "from drawing");
-  constexpr int kSteps = 16;
-  for (int i = 0; i < kSteps; ++i) {
-    const float a = y0 + barH * static_cast<float>(i) / kSteps, b = y0 + barH * static_cast<float>(i + 1) / kSteps;
-    const ImU32 top = rampColour(1.0f - static_cast<float>(i) / kSteps);
-    const ImU32 bottom = rampColour(1.0f - static_cast<float>(i + 1) / kSteps);
-    list.AddRectFilledMultiColor(ImVec2(x0, a), ImVec2(x0 + barW, b), top, top, bottom, bottom);
-  }
-  list.AddRect(ImVec2(x0, y0), ImVec2(x0 + barW, y0 + barH), kText);
+  rampBar(list, x0, y0, barW, barH);
   list.AddText(ImVec2(x0 + barW + 3, y0 - 2), kText, (formatNumber(scaleUm, 1) + " um").c_str());
   list.AddText(ImVec2(x0 + barW + 3, y0 + barH - lineHeight + 2), kText, "0 um");
   if (toleranceUm > 0 && toleranceUm < scaleUm) {  // the tolerance: a tick across the bar

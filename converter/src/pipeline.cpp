@@ -197,7 +197,7 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
   const bool wired = ro.wireOffset && ro.side && *ro.wireOffset > 0;
   if (wired) {
     out.wires.resize(result.contours.size());
-    const std::vector<int> depth = nestingDepths(result.contours);
+    const std::vector<int> depth = geometry::nestingDepths(result.contours);
     for (std::size_t c = 0; c < result.contours.size(); ++c) {
       const geometry::Chain& chain = result.contours[c];
       if (!chain.closed) continue;

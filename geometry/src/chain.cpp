@@ -1,5 +1,7 @@
 #include "kerf/geometry/chain.h"
 
+#include "kerf/geometry/offset.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -161,6 +163,23 @@ double signedArea(std::span<const Segment> path) {
   double twice = 0.0;
   for (const Segment& s : path) addTwiceArea(twice, s);
   return 0.5 * twice;
+}
+
+std::vector<int> nestingDepths(std::span<const Chain> chains) {
+  std::vector<int> depth(chains.size(), 0);
+  std::vector<std::span<const Segment>> loops;
+  std::vector<Vec2> probes;
+  std::vector<std::size_t> self, of;  // of: the chain each closed loop is
+  for (std::size_t c = 0; c < chains.size(); ++c) {
+    if (!chains[c].closed) continue;
+    self.push_back(loops.size());
+    of.push_back(c);
+    loops.emplace_back(chains[c].path);
+    probes.push_back(chains[c].path.front().pointAt(0.5));
+  }
+  const std::vector<int> around = loopsAround(loops, probes, self);
+  for (std::size_t k = 0; k < of.size(); ++k) depth[of[k]] = around[k];
+  return depth;
 }
 
 }  // namespace kerf::geometry

@@ -59,23 +59,6 @@ Vec2 rightNormal(const Vec2& t) { return {t.y(), -t.x()}; }
 
 }  // namespace
 
-std::vector<int> nestingDepths(std::span<const geometry::Chain> contours) {
-  std::vector<int> depth(contours.size(), 0);
-  std::vector<std::span<const Segment>> loops;
-  std::vector<Vec2> probes;
-  std::vector<std::size_t> self, of;  // of: the contour each closed loop is
-  for (std::size_t c = 0; c < contours.size(); ++c) {
-    if (!contours[c].closed) continue;
-    self.push_back(loops.size());
-    of.push_back(c);
-    loops.emplace_back(contours[c].path);
-    probes.push_back(contours[c].path.front().pointAt(0.5));
-  }
-  const std::vector<int> around = geometry::loopsAround(loops, probes, self);
-  for (std::size_t k = 0; k < of.size(); ++k) depth[of[k]] = around[k];
-  return depth;
-}
-
 ContourWire offsetContour(std::span<const Segment> contour, double radius, WireSide side) {
   ContourWire w;
   const double area = geometry::signedArea(contour);
@@ -191,7 +174,7 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
       paths[c].push_back(s);
     }
   }
-  const std::vector<int> depth = nestingDepths(chains);
+  const std::vector<int> depth = geometry::nestingDepths(chains);
   // Holes first (deepest first), then in the drawing's order.
   std::stable_sort(chosen.begin(), chosen.end(), [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
 

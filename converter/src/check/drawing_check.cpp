@@ -152,19 +152,7 @@ DrawnChains chainDrawing(const std::vector<geometry::Segment>& drawn) {
   out.chainOf.assign(drawn.size(), SIZE_MAX);
   for (std::size_t c = 0; c < out.chains.size(); ++c)
     for (const std::size_t k : out.chains[c].elements) out.chainOf[k] = c;
-  std::vector<std::span<const geometry::Segment>> loops;
-  std::vector<geometry::Vec2> probes;
-  std::vector<std::size_t> self, of;
-  for (std::size_t c = 0; c < out.chains.size(); ++c) {
-    if (!out.chains[c].closed) continue;
-    self.push_back(loops.size());
-    of.push_back(c);
-    loops.emplace_back(out.chains[c].path);
-    probes.push_back(out.chains[c].path.front().pointAt(0.5));
-  }
-  const std::vector<int> around = geometry::loopsAround(loops, probes, self);
-  out.depth.assign(out.chains.size(), 0);
-  for (std::size_t k = 0; k < of.size(); ++k) out.depth[of[k]] = around[k];
+  out.depth = geometry::nestingDepths(out.chains);
   return out;
 }
 
@@ -181,22 +169,23 @@ std::vector<EdgeDeviation> partEdge(const Toolpath& tp, const std::vector<EdgeRu
                                     const DrawnChains& dc, MovedBack& said) {
   std::map<std::size_t, double> movedBy;  // contour -> the distance its pass moved by
   std::vector<EdgeDeviation> edge;
-  auto order = [&](std::size_t r) { return runs[r].pass->cutOff; };  // passes first, then cut-offs
-  std::vector<std::size_t> ordered(runs.size());
+  std::vector<std::size_t> ordered(runs.size());  // passes first, then cut-offs (they take their pass's side)
   for (std::size_t r = 0; r < runs.size(); ++r) ordered[r] = r;
-  std::stable_sort(ordered.begin(), ordered.end(), [&](std::size_t a, std::size_t b) { return order(a) < order(b); });
+  std::stable_partition(ordered.begin(), ordered.end(), [&](std::size_t r) { return !runs[r].pass->cutOff; });
   for (const std::size_t r : ordered) {
     const EdgeRun& run = runs[r];
     const int direction = run.pass->direction;
-    if (!isWireCentre(run) || !options.wireOffset || *options.wireOffset <= 0 || direction == 0) {
+    const auto known = movedBy.find(run.contour);
+    if (!isWireCentre(run) || !options.wireOffset || *options.wireOffset <= 0 ||
+        (direction == 0 && known == movedBy.end())) {
       if (isWireCentre(run)) ++said.asWritten;
       for (const std::size_t i : run.moves) edge.push_back({i, programmedOf(tp, i, run.upper)});
       continue;
     }
     const double radius = *options.wireOffset;
     double d = 0.0;
-    if (auto it = movedBy.find(run.contour); it != movedBy.end()) {
-      d = it->second;
+    if (known != movedBy.end()) {
+      d = known->second;
     } else if (options.wireOutside) {
       // The wire outside the part: the part lies inside the wire's loop, left of a
       // counter-clockwise one. Nesting turns the side over: the nesting of the drawing contour

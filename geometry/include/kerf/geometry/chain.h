@@ -32,6 +32,10 @@ struct Chain {
 /// first element in the input.
 std::vector<Chain> chainSegments(std::span<const Segment> segments, const ChainOptions& options = {});
 
+/// For every chain, how many closed chains wind round it (0 for open ones and outermost ones): a
+/// contour's nesting depth, from a point of its first element (geometry/offset.h loopsAround).
+std::vector<int> nestingDepths(std::span<const Chain> chains);
+
 /// The signed area a closed path encloses (> 0 counter-clockwise), arcs included exactly.
 double signedArea(std::span<const Segment> path);
 /// One element's share of signedArea: the triangle it makes with the origin plus, for an arc, the

@@ -35,9 +35,6 @@ struct ContourWire {
   bool degenerate = false;      ///< the contour encloses no area (it runs back over itself): no wire path
 };
 
-/// For every contour, how many closed contours enclose it (0 for open ones and outermost ones).
-std::vector<int> nestingDepths(std::span<const geometry::Chain> contours);
-
 /// The side at a nesting depth, when the outermost contours are on `outermost`: a hole in a part
 /// is cut from inside, an island in a hole from outside.
 inline WireSide sideAtDepth(WireSide outermost, int depth) {

@@ -62,8 +62,7 @@ geometry::Segment programmedOf(const Toolpath& tp, std::size_t i, bool upper) {
 /// A pass cut with no G41/G42 in force: its moves are the wire's centre.
 bool isWireCentre(const EdgeRun& run) { return run.pass->side == WireOffset::Off; }
 
-/// A run's moves as programmed, and its path closed by its chord when it does not close (for the
-/// nesting of contours).
+/// A run's moves as programmed (programmedOf), in order.
 std::vector<geometry::Segment> programmedRun(const Toolpath& tp, const EdgeRun& run) {
   std::vector<geometry::Segment> path;
   for (const std::size_t i : run.moves) path.push_back(programmedOf(tp, i, run.upper));
@@ -332,10 +331,13 @@ struct Measured {
   MovedBack said;
 };
 
-Measured measure(const Toolpath& tp, const std::vector<EdgeRun>& runs, const std::vector<geometry::Segment>& drawn,
-                 const DrawingCheckOptions& options) {
+Measured measure(const Toolpath& tp, const std::vector<EdgeRun>& runs, const std::vector<DrawnElement>& drawing,
+                 const std::vector<geometry::Segment>& drawn, const DrawingCheckOptions& options,
+                 const SourceFile* drawingSource) {
   Measured m;
+  m.out.drawing = drawingSource ? drawingSource->name() : std::string();
   m.out.tolerance = options.tolerance;
+  m.out.drawn = drawn;
   const geometry::DeviationSet drawnSet(drawn);
   m.dc = chainDrawing(drawn);
   m.out.edge = partEdge(tp, runs, options, drawnSet, m.dc, m.said);
@@ -345,7 +347,8 @@ Measured measure(const Toolpath& tp, const std::vector<EdgeRun>& runs, const std
   for (std::size_t k = 0; k < drawn.size(); ++k) {
     const geometry::Farthest f = geometry::farthestFrom(drawn[k], edgeSet, options.precision);
     const std::size_t move = m.out.edge.empty() ? 0 : m.out.edge[f.nearest].move;
-    m.out.elements.push_back({k, f.distance, f.at, move, 0, m.out.edge.empty() ? 0 : tp.moves[move].line});
+    m.out.elements.push_back(
+        {k, f.distance, f.at, move, drawing[k].line, m.out.edge.empty() ? 0 : tp.moves[move].line});
     m.out.worst = std::max(m.out.worst, f.distance);
     if (f.distance > options.tolerance) ++m.out.outOfTolerance;
   }
@@ -389,11 +392,10 @@ bool asPlaced(const geometry::Placement& p, double tolerance) {
   return !p.mirror && std::abs(p.angle) < 1e-7 && p.shift.norm() < 0.1 * tolerance;
 }
 
-/// Every finding of one comparison: K0633, K0631, K0630, K0632.
+/// The findings of one comparison element by element: K0631, K0630, K0632.
 void reportAll(const Measured& m, const std::vector<DrawnElement>& drawing, const Toolpath& tp,
                const DrawingCheckOptions& options, const SourceFile* program, const SourceFile* drawingSource,
                Diagnostics& diags) {
-  reportWireCentre(m.said, options, program, diags);
   const DrawnChains& dc = m.dc;
   const std::set<std::size_t> uncut = reportUncut(drawing, dc, m.nearestOfPiece, drawingSource, diags);
   std::map<std::size_t, std::vector<const ElementDeviation*>> offByChain;
@@ -426,32 +428,29 @@ DrawingComparison compareWithDrawing(const Toolpath& tp, const Structure& struct
   for (const DrawnElement& e : drawing)
     drawn.push_back(geometry::Placement{false, 0.0, -options.origin}.apply(e.segment));
   const std::vector<EdgeRun> runs = edgeRuns(tp, structure, options.upperPlane && tp.isTaper());
-  Measured m = measure(tp, runs, drawn, options);
+  Measured m = measure(tp, runs, drawing, drawn, options, drawingSource);
+  reportWireCentre(m.said, options, program, diags);
   // Another placement: asked for (--align), or looked for when the drawing does not fit as placed.
   if ((options.align || m.out.outOfTolerance > 0) && !m.out.edge.empty() && !tp.moves.empty()) {
     std::vector<geometry::Segment> edge;
     for (const EdgeDeviation& e : m.out.edge) edge.push_back(e.segment);
     const geometry::Alignment a = geometry::align(drawn, edge);
     if (std::isfinite(a.rms) && !asPlaced(a.placement, options.tolerance)) {
-      std::vector<geometry::Segment> moved = placed(drawn, a.placement);
-      Measured there = measure(tp, runs, moved, options);
+      Measured there = measure(tp, runs, drawing, placed(drawn, a.placement), options, drawingSource);
       const std::string how = describePlacement(a.placement);
       double elementsWorst = 0.0;
       for (const ElementDeviation& e : there.out.elements) elementsWorst = std::max(elementsWorst, e.deviation);
       const std::string fit = "placed so, its elements lie within " + um(elementsWorst) + " of the part edge";
       if (options.align) {
         m = std::move(there);
-        drawn = std::move(moved);
         m.out.placement = a.placement;
         diags.report(
             wholePartFinding(a.placement.mirror ? Severity::Error : Severity::Note, Code::DrawingPlacedOtherwise, m, tp,
                              program, "--align: the program cuts the drawing " + how + "; " + fit,
                              a.placement.mirror ? "a mirrored part is another part: mirror the program back" : ""));
       } else if (there.out.outOfTolerance == 0) {
+        // The placement explains every element: it is said once, and the deviations stay as placed.
         m.out.placement = a.placement;
-        m.out.drawing = drawingSource ? drawingSource->name() : std::string();
-        for (ElementDeviation& e : m.out.elements) e.drawingLine = drawing[e.element].line;
-        m.out.drawn = drawn;
         diags.report(wholePartFinding(Severity::Error, Code::DrawingPlacedOtherwise, m, tp, program,
                                       "the program cuts the drawing " + how + ": " + fit + ", and as placed " +
                                           std::to_string(m.out.outOfTolerance) + " of its " +
@@ -463,10 +462,7 @@ DrawingComparison compareWithDrawing(const Toolpath& tp, const Structure& struct
       }
     }
   }
-  m.out.drawing = drawingSource ? drawingSource->name() : std::string();
-  for (ElementDeviation& e : m.out.elements) e.drawingLine = drawing[e.element].line;
   reportAll(m, drawing, tp, options, program, drawingSource, diags);
-  m.out.drawn = std::move(drawn);
   return std::move(m.out);
 }
 

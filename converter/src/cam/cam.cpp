@@ -131,10 +131,12 @@ void reportContourWire(const ContourWire& wire, std::size_t number, const Drawin
   }
 }
 
-std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceFile* source, const CamOptions& o,
-                                     Diagnostics& diags) {
-  const std::vector<geometry::Chain>& chains = drawing.contours;
-  // The contours to cut.
+namespace {
+
+/// The contours kerf cam cuts (indices into chains), as --contour and --open-paths choose them;
+/// nothing (said) when none can be cut.
+std::optional<std::vector<std::size_t>> chooseContours(const std::vector<geometry::Chain>& chains, const CamOptions& o,
+                                                       const SourceFile* source, Diagnostics& diags) {
   std::vector<std::size_t> chosen;
   for (std::size_t c = 0; c < chains.size(); ++c) {
     if (o.contour && *o.contour != c + 1) continue;
@@ -164,9 +166,136 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
                     " contours are cut: choose one with --contour");
     return std::nullopt;
   }
+  return chosen;
+}
+
+/// The toolpath as it is made: where the wire is, a rapid to each new start, cuts along paths.
+struct PathWriter {
+  CamResult& result;
+  bool first = true;
+  Vec2 at = Vec2::Zero();
+
+  /// A rapid from where the wire is to p (the first path starts there).
+  void travelTo(const Vec2& p) {
+    if (first) {
+      result.toolpath.start = p;
+      first = false;
+    } else if ((p - at).norm() > 1e-12) {
+      Move rapid;
+      rapid.kind = MoveKind::Rapid;
+      rapid.lower = Segment::line(at, p);
+      result.toolpath.moves.push_back(rapid);
+    }
+    at = p;
+  }
+
+  /// Cuts along the segments; returns their length.
+  double cut(std::span<const Segment> path, WireOffset code) {
+    double length = 0.0;
+    for (const Segment& s : path) {
+      Move m;
+      m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
+      m.lower = s;
+      m.wireOffset = code;
+      result.toolpath.moves.push_back(m);
+      length += s.length();
+    }
+    if (!path.empty()) at = path.back().end;
+    result.cutLength += length;
+    return length;
+  }
+};
+
+/// --open-paths: an open contour cut as drawn, from its first end, the wire centre on the line.
+void cutOpen(PathWriter& w, CamContour& info, const std::vector<Segment>& contour, const DrawingElement& first,
+             const CamOptions& o, const SourceFile* source, Diagnostics& diags) {
+  info.open = true;
+  for (const Segment& s : contour) info.contourLength += s.length();
+  if (o.offset > 0 && !o.controllerOffset) {
+    diags.warning(Code::ContourOpen, source, first.span.length ? first.span : SourceSpan::wholeFile(),
+                  "contour " + std::to_string(info.number) +
+                      " is open: cut along it as drawn, the wire centre on the line, without the offset",
+                  "an open contour has no inside or outside; close it to cut a part");
+  }
+  w.travelTo(contour.front().start);
+  info.wireLength += w.cut(contour, WireOffset::Off);
+}
+
+/// Where the lead-in to a loop starts, leadIn mm out along n from the loop's first point; where
+/// the scrap is narrower than the lead-in (a small hole), halfway to the loop's other side.
+Vec2 leadInStart(const std::vector<Segment>& loop, const Vec2& n, double leadIn) {
+  const Vec2 begin = loop.front().start;
+  double leadLength = leadIn;
+  if (leadLength > 0) {
+    const Segment ray = Segment::line(begin + 1e-6 * n, begin + (2 * leadLength + 1e-6) * n);
+    double nearest = 2 * leadLength;
+    for (const Segment& s : loop) {
+      const geometry::SegmentIntersection x = geometry::intersect(ray, s, 1e-9);
+      for (int k = 0; k < x.count; ++k) nearest = std::min(nearest, (x.points[k] - begin).norm());
+    }
+    leadLength = std::min(leadLength, 0.5 * nearest);
+  }
+  return begin + leadLength * n;
+}
+
+/// A closed contour: oriented, started at the vertex asked for, its wire path (here or by the
+/// controller), each loop entered by a lead-in from its start hole.
+void cutClosed(PathWriter& w, CamContour& info, std::vector<Segment> contour, const geometry::Chain& chain,
+               const DrawingResult& drawing, const CamOptions& o, const SourceFile* source, Diagnostics& diags) {
+  // Orientation: the wire right of travel unless asked for the left; outside that is counter-clockwise.
+  const bool left = o.wireOnLeft.value_or(false);
+  const bool wantCcw = (info.side == WireSide::Outside) != left;
+  if ((geometry::signedArea(contour) > 0) != wantCcw) contour = reversedPath(contour);
+  info.area = std::abs(geometry::signedArea(contour));
+  for (const Segment& s : contour) info.contourLength += s.length();
+  // Start: the vertex nearest the point asked for (or the start hole).
+  const std::optional<Vec2> near = o.start ? o.start : o.entry;
+  if (near) {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < contour.size(); ++k)
+      if ((contour[k].start - *near).norm() < (contour[best].start - *near).norm()) best = k;
+    contour = rotated(contour, best);
+  }
+  const Vec2 startVertex = contour.front().start;
+  // The wire path.
+  std::vector<std::vector<Segment>> loops;
+  if (o.controllerOffset || o.offset <= 0) {
+    loops.push_back(contour);
+  } else {
+    const ContourWire wire = offsetContour(contour, o.offset, info.side);
+    reportContourWire(wire, info.number, drawing, chain, o.offset, source, diags);
+    for (const auto& loop : wire.loops) loops.push_back(loopFrom(loop, startVertex, o.tolerance));
+  }
+  // The start hole: given, or lead-in mm out from the start vertex on the wire's side.
+  const Vec2 tIn = contour.back().tangentAt(1), tOut = contour.front().tangentAt(0);
+  Vec2 n = rightNormal(tIn) + rightNormal(tOut);
+  if (left) n = -n;
+  if (n.norm() < 1e-9) n = left ? -rightNormal(tOut) : rightNormal(tOut);
+  n.normalize();
+  const WireOffset offsetCode = !o.controllerOffset ? WireOffset::Off : left ? WireOffset::Left : WireOffset::Right;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const std::vector<Segment>& loop = loops[l];
+    const Vec2 begin = loop.front().start;
+    const Vec2 entry = o.entry && l == 0 ? *o.entry : leadInStart(loop, n, o.leadIn);
+    w.travelTo(entry);
+    if ((begin - entry).norm() > 1e-12) {
+      const Segment lead = Segment::line(entry, begin);
+      w.cut(std::span<const Segment>(&lead, 1), offsetCode);
+    }
+    info.wireLength += w.cut(loop, offsetCode);
+  }
+}
+
+}  // namespace
+
+std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceFile* source, const CamOptions& o,
+                                     Diagnostics& diags) {
+  const std::vector<geometry::Chain>& chains = drawing.contours;
+  std::optional<std::vector<std::size_t>> chosen = chooseContours(chains, o, source, diags);
+  if (!chosen) return std::nullopt;
   // Shifted paths, and how deep each sits inside the others.
   std::vector<std::vector<Segment>> paths(chains.size());
-  for (std::size_t c : chosen) {
+  for (std::size_t c : *chosen) {
     for (Segment s : chains[c].path) {
       s.start += o.shift;
       s.end += o.shift;
@@ -176,121 +305,25 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
   }
   const std::vector<int> depth = geometry::nestingDepths(chains);
   // Holes first (deepest first), then in the drawing's order.
-  std::stable_sort(chosen.begin(), chosen.end(), [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
+  std::stable_sort(chosen->begin(), chosen->end(), [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
 
   CamResult result;
-  Toolpath& tp = result.toolpath;
-  tp.format = InputFormat::Iso;
-  bool first = true;
-  Vec2 at = Vec2::Zero();
-  // A rapid from where the wire is to p (the first path starts there).
-  auto travelTo = [&](const Vec2& p) {
-    if (first) {
-      tp.start = p;
-      first = false;
-    } else if ((p - at).norm() > 1e-12) {
-      Move rapid;
-      rapid.kind = MoveKind::Rapid;
-      rapid.lower = Segment::line(at, p);
-      tp.moves.push_back(rapid);
-    }
-    at = p;
-  };
-  // Cuts along the segments; returns their length.
-  auto cut = [&](std::span<const Segment> path, WireOffset code) {
-    double length = 0.0;
-    for (const Segment& s : path) {
-      Move m;
-      m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
-      m.lower = s;
-      m.wireOffset = code;
-      tp.moves.push_back(m);
-      length += s.length();
-    }
-    if (!path.empty()) at = path.back().end;
-    result.cutLength += length;
-    return length;
-  };
-  for (std::size_t c : chosen) {
+  result.toolpath.format = InputFormat::Iso;
+  PathWriter w{result};
+  for (std::size_t c : *chosen) {
     CamContour info;
     info.number = c + 1;
     info.depth = depth[c];
     info.side = sideAtDepth(o.side, depth[c]);
-    std::vector<Segment> contour = paths[c];
-    info.elements = contour.size();
-    if (!chains[c].closed) {  // --open-paths: as drawn, from its first end
-      info.open = true;
-      for (const Segment& s : contour) info.contourLength += s.length();
-      if (o.offset > 0 && !o.controllerOffset) {
-        const DrawingElement& e = drawing.drawing.elements[chains[c].elements.front()];
-        diags.warning(Code::ContourOpen, source, e.span.length ? e.span : SourceSpan::wholeFile(),
-                      "contour " + std::to_string(c + 1) +
-                          " is open: cut along it as drawn, the wire centre on the line, without the offset",
-                      "an open contour has no inside or outside; close it to cut a part");
-      }
-      travelTo(contour.front().start);
-      info.wireLength += cut(contour, WireOffset::Off);
-      result.contours.push_back(info);
-      continue;
-    }
-    // Orientation: the wire right of travel unless asked for the left; outside that is counter-clockwise.
-    const bool left = o.wireOnLeft.value_or(false);
-    const bool wantCcw = (info.side == WireSide::Outside) != left;
-    if ((geometry::signedArea(contour) > 0) != wantCcw) contour = reversedPath(contour);
-    info.area = std::abs(geometry::signedArea(contour));
-    for (const Segment& s : contour) info.contourLength += s.length();
-    // Start: the vertex nearest the point asked for (or the start hole).
-    const std::optional<Vec2> near = o.start ? o.start : o.entry;
-    if (near) {
-      std::size_t best = 0;
-      for (std::size_t k = 1; k < contour.size(); ++k)
-        if ((contour[k].start - *near).norm() < (contour[best].start - *near).norm()) best = k;
-      contour = rotated(contour, best);
-    }
-    const Vec2 startVertex = contour.front().start;
-    // The wire path.
-    std::vector<std::vector<Segment>> loops;
-    if (o.controllerOffset || o.offset <= 0) {
-      loops.push_back(contour);
-    } else {
-      const ContourWire wire = offsetContour(contour, o.offset, info.side);
-      reportContourWire(wire, c + 1, drawing, chains[c], o.offset, source, diags);
-      for (const auto& loop : wire.loops) loops.push_back(loopFrom(loop, startVertex, o.tolerance));
-    }
-    // The start hole: given, or lead-in mm out from the start vertex on the wire's side.
-    const Vec2 tIn = contour.back().tangentAt(1), tOut = contour.front().tangentAt(0);
-    Vec2 n = rightNormal(tIn) + rightNormal(tOut);
-    if (left) n = -n;
-    if (n.norm() < 1e-9) n = left ? -rightNormal(tOut) : rightNormal(tOut);
-    n.normalize();
-    const WireOffset offsetCode = !o.controllerOffset ? WireOffset::Off : left ? WireOffset::Left : WireOffset::Right;
-    for (std::size_t l = 0; l < loops.size(); ++l) {
-      const std::vector<Segment>& loop = loops[l];
-      const Vec2 begin = loop.front().start;
-      // The lead-in stays inside what it starts from: where the scrap is narrower than the lead-in
-      // (a small hole), the start hole goes halfway to the wire path's other side.
-      double leadLength = o.leadIn;
-      if (!(o.entry && l == 0) && leadLength > 0) {
-        const Segment ray = Segment::line(begin + 1e-6 * n, begin + (2 * leadLength + 1e-6) * n);
-        double nearest = 2 * leadLength;
-        for (const Segment& s : loop) {
-          const geometry::SegmentIntersection x = geometry::intersect(ray, s, 1e-9);
-          for (int k = 0; k < x.count; ++k) nearest = std::min(nearest, (x.points[k] - begin).norm());
-        }
-        leadLength = std::min(leadLength, 0.5 * nearest);
-      }
-      const Vec2 entry = o.entry && l == 0 ? *o.entry : begin + leadLength * n;
-      travelTo(entry);
-      if ((begin - entry).norm() > 1e-12) {
-        const Segment lead = Segment::line(entry, begin);
-        cut(std::span<const Segment>(&lead, 1), offsetCode);
-      }
-      info.wireLength += cut(loop, offsetCode);
-    }
+    info.elements = paths[c].size();
+    if (chains[c].closed)
+      cutClosed(w, info, paths[c], chains[c], drawing, o, source, diags);
+    else
+      cutOpen(w, info, paths[c], drawing.drawing.elements[chains[c].elements.front()], o, source, diags);
     result.contours.push_back(info);
   }
-  tp.endedProperly = true;
-  tp.blocks = tp.moves.size();
+  result.toolpath.endedProperly = true;
+  result.toolpath.blocks = result.toolpath.moves.size();
   return result;
 }
 

@@ -98,9 +98,12 @@ class TagReader {
       int code = 0;
       const auto r = std::from_chars(c.data(), c.data() + c.size(), code);
       if (c.empty() || r.ec != std::errc() || r.ptr != c.data() + c.size() || code < 0 || code > 1071) {
+        // Bytes that are not text are not quoted: they would garble the terminal and the reports.
+        const bool text = std::all_of(c.begin(), c.end(), [](char ch) { return ch >= 0x20 && ch < 0x7F; });
         error(codeLine, -1, false,
               c.empty() ? std::string("an empty line where a group code belongs")
-                        : "'" + std::string(c.substr(0, 40)) + "' is not a group code",
+              : text    ? "'" + std::string(c.substr(0, 40)) + "' is not a group code"
+                        : std::string("bytes that are not text where a group code belongs: not a DXF file"),
               {codeStart, static_cast<std::uint32_t>(std::max<std::size_t>(codeText.size(), 1))});
         return false;
       }

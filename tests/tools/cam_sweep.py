@@ -7,9 +7,9 @@ Then each program is held against its own drawing (`kerf check --drawing`, issue
 paths moved back by the offset to their side (ISO at four decimals, 3B read from the start hole the
 ISO program gives), and the same contour made with the offset left to the controller (G41/G42,
 ISO): every piece of the part edge lies within 0.001 mm of the drawing, and at least the contour's
-elements lie within 0.001 mm of it. 3B within 0.005 mm (the default --drawing-tolerance): its whole
-micrometres alone take its arcs up to 4.5 um off the exact wire path (cnc3-Rotor: the 3B program
-held against the ISO one at four decimals exported as DXF), before the path is moved back.
+elements lie within 0.001 mm of it. 3B within 0.002 mm: its end points are whole micrometres, and
+moving the path back by the offset turns a short segment's rounding into more at the part's
+corners (docs/drawing.md).
 
 usage: cam_sweep.py KERF DXF_DIR WORKDIR"""
 import glob
@@ -57,7 +57,7 @@ for path in sorted(glob.glob(os.path.join(dxf_dir, "*.dxf"))):
                 g92 = re.search(r"G92 X(-?[0-9.]+) Y(-?[0-9.]+)", open(os.path.join(work, f"{name}.{side}.iso")).read())
                 start = ["--start", f"{g92.group(1)},{g92.group(2)}"]
             held.append((f"{name} {side} {to}", out, ["--offset", "0.15", "--side", side] + start,
-                         0.005 if to == "3b" else 0.001))
+                         0.002 if to == "3b" else 0.001))
     # The program against its own drawing.
     out = os.path.join(work, f"{name}.controller.iso")
     if os.path.exists(out):

@@ -1,6 +1,7 @@
 // 3B geometry shared by the reader and the writer (three_b.h).
 #include "three_b.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kerf::converter {
@@ -60,9 +61,6 @@ long long firstExtreme(double a, double dir, Axis axis) {
   const double u = (a - extremeOffset(axis)) / kPi;
   return dir > 0 ? static_cast<long long>(std::floor(u + 1e-12)) + 1 : static_cast<long long>(std::ceil(u - 1e-12)) - 1;
 }
-double coordinate(Axis axis, double r, double angle) {
-  return axis == Axis::X ? r * std::cos(angle) : r * std::sin(angle);
-}
 
 }  // namespace
 
@@ -83,6 +81,7 @@ double arcCount(double a0, double sweep, double r, Axis axis, double startValue,
 bool arcEnd(const Vec2& startRel, bool ccw, Axis axis, double count, double slack, Vec2& endRel, double& sweep) {
   const double dir = ccw ? 1.0 : -1.0;
   const double r = startRel.norm();
+  if (!(r > 0)) return false;  // no circle to walk
   const double a0 = std::atan2(startRel.y(), startRel.x());
   const int ax = axis == Axis::X ? 0 : 1;
   double remaining = count, v = startRel[ax], theta = a0;
@@ -97,19 +96,17 @@ bool arcEnd(const Vec2& startRel, bool ccw, Axis axis, double count, double slac
     }
     const double travel = std::abs(ext - v);
     if (remaining <= travel) {
+      // The piece from theta to e lies between the extremes n and n + 1, where the coordinate is
+      // r (-1)^n cos(t - E_n): solved in closed form. The other coordinate follows the circle,
+      // from the count coordinate (better conditioned near an extreme than r sin t).
       const double target = v + (ext >= v ? remaining : -remaining);
-      double lo = theta, hi = e;
-      const double sLo = coordinate(axis, r, lo) - target;
-      for (int i = 0; i < 100; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        const double f = coordinate(axis, r, mid) - target;
-        if ((f >= 0) == (sLo >= 0))
-          lo = mid;
-        else
-          hi = mid;
-      }
-      const double t = 0.5 * (lo + hi);
-      endRel = Vec2(r * std::cos(t), r * std::sin(t));
+      const long long n = dir > 0 ? k - 1 : k;
+      const double base = extremeOffset(axis) + static_cast<double>(n) * kPi;
+      const double c = std::clamp((n % 2 == 0 ? 1.0 : -1.0) * target / r, -1.0, 1.0);
+      const double t = std::clamp(base + std::acos(c), std::min(theta, e), std::max(theta, e));
+      const double other = std::sqrt(std::max(0.0, r * r - target * target));
+      const double otherSign = (axis == Axis::X ? std::sin(t) : std::cos(t)) < 0 ? -1.0 : 1.0;
+      endRel = axis == Axis::X ? Vec2(target, otherSign * other) : Vec2(otherSign * other, target);
       sweep = t - a0;
       if (remaining == travel && last) {  // exactly a full circle
         endRel = startRel;

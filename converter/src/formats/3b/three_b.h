@@ -35,7 +35,8 @@ double arcCount(double a0, double sweep, double r, Axis axis, double startValue,
 
 /// Where an arc's count ends: from the start point relative to the centre, turning in the given
 /// direction on the circle through the start, until `count` has been travelled along `axis`.
-/// Nothing (false) when the count is longer than one full circle (4 r) by more than `slack`.
+/// Nothing (false) when the start is the centre, or the count is longer than one full circle (4 r)
+/// by more than `slack`.
 bool arcEnd(const geometry::Vec2& startRel, bool counterClockwise, Axis axis, double count, double slack,
             geometry::Vec2& endRel, double& sweep);
 

@@ -35,6 +35,12 @@ kerf_snapshot_test(NAME g41_applied_top ARGS samples/inch_g91_bare_g41.nc ${s} -
 kerf_snapshot_test(NAME plate_deviation_top EXIT 1
                    ARGS tests/drawing/plate_radius_off.nc --size 480x360 --drawing samples/plate.dxf
                         --color-by deviation --view top)
+# A taper part's upper plane turned 1 degree against the drawing of both planes: the lower edge
+# within tolerance (blue), the upper edge red, the worst marked on the upper plane.
+kerf_snapshot_test(NAME taper_upper_deviation EXIT 1
+                   ARGS tests/drawing/taper_upper_turned.nc --size 480x360 --thickness 20
+                        --drawing tests/drawing/taper_square.dxf --drawing-layer LOWER --drawing-upper-layer UPPER
+                        --color-by deviation)
 # The headless back ends must agree: the same picture through EGL.
 kerf_snapshot_test(NAME taper_punch_iso_egl ARGS samples/taper_punch_2deg.nc ${s} --backend egl)
 

@@ -35,11 +35,17 @@ bool colourByDeviation(const converter::Pipeline& p, render::SceneOptions& so, u
     return false;
   }
   const converter::DrawingComparison& c = *p.comparison;
-  for (const converter::EdgeDeviation& e : c.edge) {
-    so.deviationPieces.push_back(e.segment);
-    so.deviations.push_back(e.deviation);
-  }
-  so.deviationScale = std::max(2.0 * c.tolerance, c.worst);
+  double worst = c.worst;
+  auto fill = [&worst](const converter::DrawingComparison& comparison, render::SceneOptions::DeviationEdge& edge) {
+    for (const converter::EdgeDeviation& e : comparison.edge) {
+      edge.pieces.push_back(e.segment);
+      edge.deviations.push_back(e.deviation);
+    }
+    worst = std::max(worst, comparison.worst);
+  };
+  fill(c, so.deviationLower);
+  if (p.comparisonUpper) fill(*p.comparisonUpper, so.deviationUpper);
+  so.deviationScale = std::max(2.0 * c.tolerance, worst);
   legend.deviationScaleUm = so.deviationScale * 1000.0;
   legend.toleranceUm = c.tolerance * 1000.0;
   return true;

@@ -38,6 +38,7 @@ int drawView(const ViewArgs& a) {
   }
   request.reference = converter::referenceGeometry(p);
   render::SceneOptions so = sceneOptionsOf(a.mesh);
+  if (p.comparisonUpper) so.referenceUpper = p.comparisonUpper->drawn;
   so.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());  // the window's colour by pass
   request.annotation = annotationOf(file, p);
   if (a.colourByName == "deviation" && !colourByDeviation(p, so, request.annotation)) return kExitUsage;
@@ -50,6 +51,7 @@ int drawView(const ViewArgs& a) {
   request.sceneOptions = so;
   request.coarseFrames = a.coarse;
   request.comparison = p.comparison ? &*p.comparison : nullptr;
+  request.comparisonUpper = p.comparisonUpper ? &*p.comparisonUpper : nullptr;
   request.annotation.legend = true;
   request.options.colourBySlope = a.colourBy;
   request.options.colourByPass = a.colourByName == "pass";

@@ -48,27 +48,35 @@ std::uint32_t severityColour(Severity s) {
   return rgba(220, 30, 30);
 }
 
-/// --color-by deviation: the part edge's pieces in their deviation's colour, and a marker at the
-/// worst point with its figure.
-void addDeviationEdge(Scene& scene, const SceneOptions& options, double z, const geometry::Sampling& sampling,
-                      std::vector<Vec2>& scratch) {
+/// --color-by deviation: the part edge's pieces in their deviation's colour, each plane at its
+/// height, and a marker at the worst point of both with its figure.
+void addDeviationEdge(Scene& scene, const SceneOptions& options, const geometry::Planes& planes,
+                      const geometry::Sampling& sampling, std::vector<Vec2>& scratch) {
   scene.deviation.moveFirst.push_back(0);
-  std::size_t worst = SIZE_MAX;
-  for (std::size_t k = 0; k < options.deviationPieces.size() && k < options.deviations.size(); ++k) {
-    const double d = options.deviations[k];
-    const double x = options.deviationScale > 0 ? d / options.deviationScale : 0.0;
-    addSegment(scene.deviation, options.deviationPieces[k], z, sampling, rampColour(x), scratch);
-    if (worst == SIZE_MAX || d > options.deviations[worst]) worst = k;
-  }
+  const SceneOptions::DeviationEdge* worstPlane = nullptr;
+  std::size_t worst = 0;
+  double worstZ = 0.0;
+  for (const auto& [edge, z] :
+       {std::pair{&options.deviationLower, planes.lower}, std::pair{&options.deviationUpper, planes.upper}})
+    for (std::size_t k = 0; k < edge->pieces.size() && k < edge->deviations.size(); ++k) {
+      const double d = edge->deviations[k];
+      const double x = options.deviationScale > 0 ? d / options.deviationScale : 0.0;
+      addSegment(scene.deviation, edge->pieces[k], z, sampling, rampColour(x), scratch);
+      if (!worstPlane || d > worstPlane->deviations[worst]) {
+        worstPlane = edge;
+        worst = k;
+        worstZ = z;
+      }
+    }
   scene.deviation.moveFirst.push_back(static_cast<std::uint32_t>(scene.deviation.vertices.size()));
-  if (worst == SIZE_MAX) return;
+  if (!worstPlane) return;
   // The worst point: where along the worst piece is the caller's to say; its middle marks it.
   Marker m;
-  const Vec2 at = options.deviationPieces[worst].pointAt(0.5);
-  m.position = {at.x(), at.y(), z};
+  const Vec2 at = worstPlane->pieces[worst].pointAt(0.5);
+  m.position = {at.x(), at.y(), worstZ};
   m.colour = rgba(200, 60, 150);
   m.sizePixels = 12.0f;
-  m.label = "worst " + converter::formatFixed(options.deviations[worst] * 1000.0, 1) + " um";
+  m.label = "worst " + converter::formatFixed(worstPlane->deviations[worst] * 1000.0, 1) + " um";
   scene.findings.push_back(std::move(m));
 }
 
@@ -377,8 +385,10 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     set->moveFirst.push_back(static_cast<std::uint32_t>(set->vertices.size()));
   scene.reference.moveFirst.push_back(0);
   for (const Segment& s : reference) addSegment(scene.reference, s, planes.lower, sampling, kReferenceColour, scratch);
+  for (const Segment& s : options.referenceUpper)
+    addSegment(scene.reference, s, planes.upper, sampling, kReferenceColour, scratch);
   scene.reference.moveFirst.push_back(static_cast<std::uint32_t>(scene.reference.vertices.size()));
-  addDeviationEdge(scene, options, planes.lower, sampling, scratch);
+  addDeviationEdge(scene, options, planes, sampling, scratch);
 
   scene.start = {toolpath.start.x(), toolpath.start.y(), planes.lower};
   // Bounds of everything drawn.

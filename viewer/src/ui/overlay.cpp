@@ -72,7 +72,9 @@ void drawDeviationLegend(ImDrawList& list, double scaleUm, double toleranceUm, i
   if (toleranceUm > 0 && toleranceUm < scaleUm) {  // the tolerance: a tick across the bar
     const float y = y0 + barH * static_cast<float>(1.0 - toleranceUm / scaleUm);
     list.AddLine(ImVec2(x0 - 3, y), ImVec2(x0 + barW + 3, y), kText, 2.0f);
-    list.AddText(ImVec2(x0 + barW + 3, y - lineHeight / 2), kText, ("tol " + formatNumber(toleranceUm, 1)).c_str());
+    // Its label clear of the ends' labels: a tolerance near 0 or the top keeps the tick there.
+    const float labelY = std::max(std::min(y - lineHeight / 2, y0 + barH - 2 * lineHeight + 1), y0 + lineHeight - 1);
+    list.AddText(ImVec2(x0 + barW + 3, labelY), kText, ("tol " + formatNumber(toleranceUm, 1)).c_str());
   }
 }
 

@@ -199,17 +199,17 @@ void passList(State& s) {
 }
 
 /// --drawing: the drawing's elements cut out of tolerance, worst first, each selecting the block
-/// nearest it and framing the point.
-void deviationList(State& s) {
-  const converter::DrawingComparison* c = s.request->comparison;
+/// nearest it and framing the point; a taper's upper plane (--drawing-upper) in a list of its own.
+void deviationList(State& s, const converter::DrawingComparison* c, const char* plane, double z) {
   if (c == nullptr) return;
   std::vector<const converter::ElementDeviation*> off;
   for (const converter::ElementDeviation& e : c->elements)
     if (e.deviation > c->tolerance) off.push_back(&e);
   std::stable_sort(off.begin(), off.end(), [](auto* a, auto* b) { return a->deviation > b->deviation; });
   ImGui::Separator();
-  ImGui::Text("Drawing: %zu of %zu elements off by more than %.1f um", off.size(), c->elements.size(),
+  ImGui::Text("%s: %zu of %zu elements off by more than %.1f um", plane, off.size(), c->elements.size(),
               c->tolerance * 1000.0);
+  ImGui::PushID(plane);
   for (std::size_t i = 0; i < off.size(); ++i) {
     const converter::ElementDeviation& e = *off[i];
     const std::string row = converter::formatFixed(e.deviation * 1000.0, 1) + " um: DXF line " +
@@ -217,11 +217,12 @@ void deviationList(State& s) {
     ImGui::PushID(static_cast<int>(i));
     if (ImGui::Selectable(row.c_str(), s.selected == e.move)) {
       selectMove(s, e.move);
-      s.camera.target = {e.at.x(), e.at.y(), s.request->scene->planes.lower};
+      s.camera.target = {e.at.x(), e.at.y(), z};
       s.camera.halfHeight = std::max(0.25 * s.fitted.halfHeight, 1e-3);
     }
     ImGui::PopID();
   }
+  ImGui::PopID();
 }
 
 void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
@@ -260,7 +261,9 @@ void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
   if (ImGui::Button("screenshot")) screenshot = true;
 
   passList(s);
-  deviationList(s);
+  deviationList(s, s.request->comparison, s.request->comparisonUpper ? "Drawing, lower plane" : "Drawing",
+                s.request->scene->planes.lower);
+  deviationList(s, s.request->comparisonUpper, "Drawing, upper plane", s.request->scene->planes.upper);
   ImGui::Separator();
   ImGui::TextUnformatted("Wire playback");
   float play = static_cast<float>(std::max(0.0, s.playback));

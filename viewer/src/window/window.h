@@ -28,6 +28,7 @@ struct WindowRequest {
   /// The program against --drawing: its elements out of tolerance are listed, each selecting its
   /// nearest block. Null: no drawing.
   const converter::DrawingComparison* comparison = nullptr;
+  const converter::DrawingComparison* comparisonUpper = nullptr;  ///< a taper's upper plane (--drawing-upper)
   const render::Scene* scene = nullptr;
   render::SceneOptions sceneOptions;  ///< what `scene` was built with (the coarse level starts from it)
   bool coarseFrames = false;          ///< draw every frame at the coarse level (benchmarks what orbiting costs)

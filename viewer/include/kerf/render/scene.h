@@ -89,10 +89,17 @@ struct SceneOptions {
   bool passLines = false;  ///< the contour lines in their pass's colour too (kerf render --color-by pass)
   /// --color-by deviation: the part edge held against --drawing (converter::DrawingComparison::
   /// edge), each piece coloured by its deviation along rampColour over [0, deviationScale] mm,
-  /// with a marker at the worst. Empty: none.
-  std::vector<geometry::Segment> deviationPieces;
-  std::vector<double> deviations;  ///< mm, one a piece
-  double deviationScale = 0.0;     ///< mm at the ramp's red end
+  /// with a marker at the worst; the lower plane, and a taper's upper plane against its own
+  /// drawing (--drawing-upper). Empty: none.
+  struct DeviationEdge {
+    std::vector<geometry::Segment> pieces;
+    std::vector<double> deviations;  ///< mm, one a piece
+  };
+  DeviationEdge deviationLower, deviationUpper;
+  double deviationScale = 0.0;  ///< mm at the ramp's red end
+  /// A taper's upper plane as drawn (--drawing-upper), dashed at the upper plane beside the
+  /// program's, as buildScene's reference is at the lower. Empty: none.
+  std::vector<geometry::Segment> referenceUpper;
   /// Moves left out of the picture (the window's hidden passes), one entry a move; empty: none.
   /// They keep their index: picking and the text panel still name moves as the toolpath does.
   std::vector<bool> hiddenMoves;
@@ -108,7 +115,7 @@ struct Scene {
   /// What the wire path was made from (converter::referenceGeometry): a drawing's contours, a
   /// program's contour under G41/G42, on the lower plane. One "move" (moveFirst {0, size}).
   LineSet reference;
-  /// The part edge coloured by its deviation from the drawing (SceneOptions::deviationPieces), on
+  /// The part edge coloured by its deviation from the drawing (SceneOptions::deviationLower, deviationUpper), on
   /// the lower plane; one "move".
   LineSet deviation;
   std::vector<Marker> findings;

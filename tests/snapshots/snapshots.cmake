@@ -41,6 +41,16 @@ kerf_snapshot_test(NAME taper_upper_deviation EXIT 1
                    ARGS tests/drawing/taper_upper_turned.nc --size 480x360 --thickness 20
                         --drawing tests/drawing/taper_square.dxf --drawing-layer LOWER --drawing-upper-layer UPPER
                         --color-by deviation)
+# Teaching (issue 44, docs/teaching.md): a block's construction with its words and modes.
+# Line 15 of the seed's sector, G03 X0 Y40. R40.: the chord, its bisector, both candidate centres.
+kerf_snapshot_test(NAME explain_r_arc ARGS samples/sector_r40.nc --size 640x480 --explain-line 15 --step 5 --view top)
+# An I J arc: the vector from the start to the centre.
+kerf_snapshot_test(NAME explain_ij_arc ARGS samples/punch_outline.nc --size 640x480 --explain-line 14 --step 2 --view top)
+# A taper move: both planes' arcs, the wire at both ends with its slope.
+kerf_snapshot_test(NAME explain_taper_move ARGS samples/taper_punch_2deg.nc --size 640x480 --explain-line 14)
+# A wire-offset move: the programmed arc dashed, the wire's, the offset between them (inch, G91).
+kerf_snapshot_test(NAME explain_offset_move
+                   ARGS samples/inch_g91_bare_g41.nc --size 640x480 --offset 0.1 --explain-line 23 --view top)
 # The headless back ends must agree: the same picture through EGL.
 kerf_snapshot_test(NAME taper_punch_iso_egl ARGS samples/taper_punch_2deg.nc ${s} --backend egl)
 

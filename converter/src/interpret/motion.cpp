@@ -226,6 +226,7 @@ bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, con
 
 void Interpreter::push(Move&& m, const Segment& upper) {
   if (toolpath_.moves.empty()) toolpath_.start = position_;  // the move starts here (in the toolpath frame)
+  m.modes = static_cast<std::uint8_t>((incremental_ ? kModeIncremental : 0) | (inch_ ? kModeInch : 0));
   noteOffsetRun(m, toolpath_.moves.size());
   toolpath_.moves.push_back(std::move(m));
   if (dialect_ != Dialect::Plain) toolpath_.upper.push_back(upper);

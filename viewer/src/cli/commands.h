@@ -58,6 +58,7 @@ struct RenderArgs {
   std::string size = "800x600";
   std::optional<std::string> colourBy;
   bool highlight = false;
+  std::optional<std::uint32_t> explainLine;  ///< --explain-line: that block's construction drawn
   std::string backend = "auto";
   int samples = 0;
   MeshOptions mesh;

@@ -22,6 +22,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& a) {
       ->check(CLI::IsMember({"slope", "pass", "deviation"}))
       ->group(g);
   cmd->add_flag("--highlight-findings", a.highlight, "tint moves with findings and label the findings")->group(g);
+  cmd->add_option("--explain-line", a.explainLine,
+                  "draw how the block on line N follows from its words (as kerf explain says it, at --step), "
+                  "with its words and modes, and print the marks' labels")
+      ->check(CLI::Range(1u, 0xFFFFFFFFu))
+      ->group(g);
   cmd->add_option("--backend", a.backend, "headless OpenGL: auto (OSMesa, then EGL), osmesa or egl")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}))
       ->group(g);

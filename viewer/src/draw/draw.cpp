@@ -3,6 +3,7 @@
 #include "load.h"
 
 #include "kerf/converter/interpret/dialect.h"
+#include "kerf/converter/report/construction.h"
 
 #include <algorithm>
 
@@ -49,6 +50,22 @@ bool colourByDeviation(const converter::Pipeline& p, render::SceneOptions& so, u
   legend.deviationScaleUm = so.deviationScale * 1000.0;
   legend.toleranceUm = c.tolerance * 1000.0;
   return true;
+}
+
+std::optional<std::size_t> moveOnLine(const converter::Pipeline& p, std::size_t line, const std::string& option) {
+  if (line <= UINT32_MAX)
+    if (const auto move = converter::moveOnLine(p.toolpath, static_cast<std::uint32_t>(line))) return move;
+  std::optional<std::uint32_t> before, after;
+  for (const converter::Move& m : p.toolpath.moves) {
+    if (m.line < line && (!before || m.line > *before)) before = m.line;
+    if (m.line > line && (!after || m.line < *after)) after = m.line;
+  }
+  std::string nearest;
+  if (before) nearest += "line " + std::to_string(*before);
+  if (after) nearest += (nearest.empty() ? "line " : " or line ") + std::to_string(*after);
+  reportError(option + " " + std::to_string(line) + ": no move is programmed on that line" +
+              (nearest.empty() ? std::string(": the program has no moves") : "; the nearest moves are on " + nearest));
+  return std::nullopt;
 }
 
 render::SceneOptions sceneOptionsOf(const MeshOptions& mesh) {

@@ -24,6 +24,10 @@ render::SceneOptions sceneOptionsOf(const MeshOptions& mesh);
 /// (said) without --drawing.
 bool colourByDeviation(const converter::Pipeline& pipeline, render::SceneOptions& options, ui::Annotation& legend);
 
+/// The first move on `line`; nothing after saying, for `option`, that no move is programmed there
+/// and which lines nearest have one (a comment, a blank, past the end is said, not ignored).
+std::optional<std::size_t> moveOnLine(const converter::Pipeline& pipeline, std::size_t line, const std::string& option);
+
 int drawRender(const RenderArgs& args);
 int drawView(const ViewArgs& args);
 int drawExportMesh(const ExportArgs& args);

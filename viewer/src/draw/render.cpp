@@ -4,12 +4,16 @@
 #include "file_io.h"
 #include "load.h"
 
+#include "kerf/converter/interpret/machine.h"
 #include "kerf/converter/nc/number_format.h"
+#include "kerf/converter/report/construction.h"
 #include "kerf/headless/context.h"
+#include "kerf/render/construction_scene.h"
 #include "kerf/render/scene.h"
 #include "ui/picture.h"
 
 #include <iostream>
+#include <limits>
 
 namespace kerf::cli {
 
@@ -23,7 +27,7 @@ int drawRender(const RenderArgs& a) {
   request.options.colourByPass = a.colourBy == "pass";
   request.options.highlightFindings = a.highlight;
   const std::string& file = a.common.input.files.front();
-  std::optional<Loaded> in = loadOne(a.common);
+  std::optional<Loaded> in = loadOne(a.common, {.centreWords = a.explainLine.has_value()});
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   const std::vector<geometry::Segment> reference = converter::referenceGeometry(p);
@@ -40,12 +44,35 @@ int drawRender(const RenderArgs& a) {
   }
   request.annotation = annotationOf(file, p);
   if (a.colourBy == "deviation" && !colourByDeviation(p, so, request.annotation)) return kExitUsage;
-  const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, reference);
+  render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, reference);
   request.annotation.legend = request.options.colourBySlope;
   if (request.options.colourByPass)
     for (std::size_t k = 1; k <= std::min(scene.passes, render::kPassColours); ++k)
       request.annotation.passLegend.push_back("pass " + std::to_string(k) + (k == 1 ? " (rough)" : ""));
   request.annotation.labels = a.highlight;
+  render::ConstructionScene construction;
+  if (a.explainLine) {
+    const std::optional<std::size_t> move = moveOnLine(p, *a.explainLine, "--explain-line");
+    if (!move) return kExitUsage;
+    const converter::Construction c =
+        converter::constructionOf(*p.source, p.toolpath, &p.structure, a.common.sampling.sampling(), *move,
+                                  converter::parseOptionsFor(p.machine));
+    construction = render::constructionScene(c, scene.planes, so.lineTolerance > 0 ? so.lineTolerance : so.tolerance);
+    request.annotation.construction = &construction;
+    // The picture frames the construction (with the part's heights), not the whole part.
+    geometry::Vec3 lo = geometry::Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    render::extendBounds(construction, lo, hi);
+    if (lo.allFinite() && hi.allFinite()) {
+      lo.z() = std::min(lo.z(), scene.boundsMin.z());
+      hi.z() = std::max(hi.z(), scene.boundsMax.z());
+      scene.boundsMin = lo;
+      scene.boundsMax = hi;
+    }
+    // The figure's key, for a worksheet: what the picture says, as text.
+    std::cout << "line " << c.line << ": " << c.block << "\n";
+    for (const converter::ConstructionMark& m : c.marks)
+      if (!m.label.empty()) std::cout << "  " << m.label << "\n";
+  }
   const ui::PictureResult result = ui::renderPicture(scene, request);
   if (result.png.empty()) {
     reportError(result.error);

@@ -18,24 +18,7 @@ int drawView(const ViewArgs& a) {
   std::optional<Loaded> in = loadOne(a.common);
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  if (a.line) {  // a line with no move (a comment, a blank, past the end) is said, not ignored
-    std::optional<std::uint32_t> before, after;
-    bool found = false;
-    for (const converter::Move& m : p.toolpath.moves) {
-      found = found || m.line == *a.line;
-      if (m.line < *a.line && (!before || m.line > *before)) before = m.line;
-      if (m.line > *a.line && (!after || m.line < *after)) after = m.line;
-    }
-    if (!found) {
-      std::string nearest;
-      if (before) nearest += "line " + std::to_string(*before);
-      if (after) nearest += (nearest.empty() ? "line " : " or line ") + std::to_string(*after);
-      reportError(
-          "--line " + std::to_string(*a.line) + ": no move is programmed on that line" +
-          (nearest.empty() ? std::string(": the program has no moves") : "; the nearest moves are on " + nearest));
-      return kExitUsage;
-    }
-  }
+  if (a.line && !moveOnLine(p, *a.line, "--line")) return kExitUsage;
   request.reference = converter::referenceGeometry(p);
   render::SceneOptions so = sceneOptionsOf(a.mesh);
   if (p.comparisonUpper) so.referenceUpper = p.comparisonUpper->drawn;

@@ -162,7 +162,7 @@ Renderer::~Renderer() {
     if (p) g.DeleteProgram(p);
   if (overlayEbo_) g.DeleteBuffers(1, &overlayEbo_);
   if (overlayTexture_) g.DeleteTextures(1, &overlayTexture_);
-  for (Buffer* b : {&extra_, &triad_, &overlay_}) {
+  for (Buffer* b : {&extra_, &triad_, &overlay_, &construction_, &constructionDashed_, &constructionDots_}) {
     if (b->vbo) g.DeleteBuffers(1, &b->vbo);
     if (b->ebo) g.DeleteBuffers(1, &b->ebo);
     if (b->vao) g.DeleteVertexArrays(1, &b->vao);
@@ -239,6 +239,24 @@ void lineLayout() {
   g.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(offsetof(LineVertex, colour)));
 }
 
+void markerLayout() {
+  const GlApi& g = gl();
+  constexpr auto stride = static_cast<GLsizei>(sizeof(MarkerVertex));
+  g.EnableVertexAttribArray(0);
+  g.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, position)));
+  g.EnableVertexAttribArray(1);
+  g.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                        reinterpret_cast<void*>(offsetof(MarkerVertex, colour)));
+  g.EnableVertexAttribArray(2);
+  g.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, size)));
+}
+
+MarkerVertex markerVertex(const Marker& m) {
+  return {{static_cast<float>(m.position.x()), static_cast<float>(m.position.y()), static_cast<float>(m.position.z())},
+          m.colour,
+          m.sizePixels};
+}
+
 }  // namespace
 
 void Renderer::setScene(const Scene& scene) {
@@ -271,11 +289,7 @@ void Renderer::setScene(const Scene& scene) {
   lowerFirst_ = scene.lower.moveFirst;
   upperFirst_ = scene.upper.moveFirst;
   std::vector<MarkerVertex> markers;
-  for (const Marker& m : scene.findings)
-    markers.push_back(
-        {{static_cast<float>(m.position.x()), static_cast<float>(m.position.y()), static_cast<float>(m.position.z())},
-         m.colour,
-         m.sizePixels});
+  for (const Marker& m : scene.findings) markers.push_back(markerVertex(m));
   findingMarkers_ = markers.size();
   markers.push_back(
       {{static_cast<float>(scene.start.x()), static_cast<float>(scene.start.y()), static_cast<float>(scene.start.z())},
@@ -283,17 +297,25 @@ void Renderer::setScene(const Scene& scene) {
        9.0f});
   upload(markers_.vao, markers_.vbo, markers);
   markers_.count = markers.size();
-  constexpr auto mstride = static_cast<GLsizei>(sizeof(MarkerVertex));
-  g.EnableVertexAttribArray(0);
-  g.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, mstride, reinterpret_cast<void*>(offsetof(MarkerVertex, position)));
-  g.EnableVertexAttribArray(1);
-  g.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, mstride,
-                        reinterpret_cast<void*>(offsetof(MarkerVertex, colour)));
-  g.EnableVertexAttribArray(2);
-  g.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, mstride, reinterpret_cast<void*>(offsetof(MarkerVertex, size)));
+  markerLayout();
   g.BindVertexArray(0);
   slopeMin_ = scene.minSlopeDegrees;
   slopeMax_ = scene.maxSlopeDegrees;
+}
+
+void Renderer::setConstruction(const ConstructionScene& construction) {
+  for (const auto& [buffer, set] :
+       {std::pair{&construction_, &construction.lines}, std::pair{&constructionDashed_, &construction.dashed}}) {
+    upload(buffer->vao, buffer->vbo, set->vertices);
+    lineLayout();
+    buffer->count = set->vertices.size();
+  }
+  std::vector<MarkerVertex> dots;
+  for (const Marker& m : construction.points) dots.push_back(markerVertex(m));
+  upload(constructionDots_.vao, constructionDots_.vbo, dots);
+  markerLayout();
+  constructionDots_.count = dots.size();
+  gl().BindVertexArray(0);
 }
 
 void Renderer::setExtraLines(const std::vector<LineVertex>& lines, float width) {
@@ -406,6 +428,19 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
               yellow);
   }
   drawLines(extra_, 0, extra_.count, viewProj, extraWidth_, 0.0f, width, height, nullptr);
+  // The selected block's construction (setConstruction), over everything.
+  if (constructionDashed_.count)
+    drawLines(constructionDashed_, 0, constructionDashed_.count, viewProj, 1.5f, 5.0f, width, height, nullptr);
+  if (construction_.count)
+    drawLines(construction_, 0, construction_.count, viewProj, 2.0f, 0.0f, width, height, nullptr);
+  if (constructionDots_.count) {
+    g.Enable(GL_PROGRAM_POINT_SIZE);
+    g.UseProgram(markerProgram_);
+    g.UniformMatrix4fv(uniform(markerProgram_, "uViewProjection"), 1, GL_FALSE, viewProj.data());
+    g.Uniform1f(uniform(markerProgram_, "uScale"), 1.0f);
+    g.BindVertexArray(constructionDots_.vao);
+    g.DrawArrays(GL_POINTS, 0, static_cast<GLsizei>(constructionDots_.count));
+  }
 
   if (options.markers && markers_.count) {
     g.Enable(GL_PROGRAM_POINT_SIZE);

@@ -95,6 +95,43 @@ void drawPassLegend(ImDrawList& list, const std::vector<std::string>& names, int
   }
 }
 
+/// The selected block's construction: each mark's label beside its anchor, in the mark's colour,
+/// where it covers no label placed before it (four places tried: right above, right below, left
+/// above, left below); the caption (the block, its words, its modes) in a box from `top` down at
+/// the left.
+void drawConstruction(ImDrawList& list, const render::ConstructionScene& c, const render::Camera& camera, int width,
+                      int height, float top) {
+  const float lineHeight = ImGui::GetTextLineHeight();
+  std::vector<ImVec4> placed;
+  if (!c.caption.empty()) {
+    float w = 0.0f;
+    for (const std::string& line : c.caption) w = std::max(w, ImGui::CalcTextSize(line.c_str()).x);
+    const float h = static_cast<float>(c.caption.size()) * (lineHeight + 1);
+    list.AddRectFilled(ImVec2(4, top - 2), ImVec2(12 + w, top + h + 2), kPanel, 2.0f);
+    for (std::size_t k = 0; k < c.caption.size(); ++k)
+      list.AddText(ImVec2(8, top + static_cast<float>(k) * (lineHeight + 1)), kText, c.caption[k].c_str());
+    placed.emplace_back(4, top - 2, 12 + w, top + h + 2);
+  }
+  for (const render::Marker& m : c.labels) {
+    const Eigen::Vector2d p = camera.project(m.position, width, height);
+    const ImVec2 size = ImGui::CalcTextSize(m.label.c_str());
+    const auto px = static_cast<float>(p.x()), py = static_cast<float>(p.y());
+    for (const ImVec2 at : {ImVec2(px + 8, py - lineHeight - 2), ImVec2(px + 8, py + 4),
+                            ImVec2(px - 8 - size.x, py - lineHeight - 2), ImVec2(px - 8 - size.x, py + 4)}) {
+      const ImVec4 box(at.x - 2, at.y - 1, at.x + size.x + 2, at.y + size.y + 1);
+      const bool inside =
+          box.x >= 0 && box.y >= 0 && box.z <= static_cast<float>(width) && box.w <= static_cast<float>(height);
+      const bool covers = std::any_of(placed.begin(), placed.end(), [&](const ImVec4& o) {
+        return box.x < o.z && o.x < box.z && box.y < o.w && o.y < box.w;
+      });
+      if (!inside || covers) continue;
+      placed.push_back(box);
+      textWithBackground(list, at, m.colour | IM_COL32(0, 0, 0, 255), m.label.c_str());
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 double niceLength(double maxLength) {
@@ -135,6 +172,7 @@ void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render:
     list.AddText(ImVec2(0.5f * (x0 + x1) - 0.5f * ls.x, yb - ls.y - 5), kText, label.c_str());
   }
 
+  if (annotation.construction) drawConstruction(list, *annotation.construction, camera, width, height, y + 4);
   if (annotation.legend && options.colourBySlope && options.surface) drawSlopeLegend(list, scene, width, height);
   if (!annotation.passLegend.empty()) drawPassLegend(list, annotation.passLegend, width);
   if (annotation.deviationScaleUm > 0)

@@ -31,6 +31,9 @@ struct Annotation {
   /// The errors and warnings of the program: those not labelled (no place in the picture, or a
   /// label that would cover another) are counted under the title, "+6 more".
   std::size_t findings = 0;
+  /// A block's construction (`--explain-line`, the window's selected block): its labels and caption.
+  /// Null: none.
+  const render::ConstructionScene* construction = nullptr;
 };
 
 /// Draws the annotations of `scene` seen through `camera` into `list`, for a width x height image.

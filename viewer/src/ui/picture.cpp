@@ -27,7 +27,11 @@ int autoSamples(const render::Scene& scene, int width, int height, double mmPerP
 }
 
 render::Camera pictureCamera(const geometry::Vec3& lo, const geometry::Vec3& hi, const PictureRequest& request) {
-  return render::fitCamera(lo, hi, request.view, request.width, request.height, 0.08, kTitleBand);
+  // A construction's caption takes a band of its own under the title (a line is 13 pixels and 1 apart).
+  const std::size_t caption = request.annotation.construction ? request.annotation.construction->caption.size() : 0;
+  const int band = kTitleBand + (caption > 0 ? static_cast<int>(caption) * 14 + 8 : 0);
+  return render::fitCamera(lo, hi, request.view, request.width, request.height, 0.08,
+                           std::min(band, request.height / 2));
 }
 
 double picturePixelMm(const converter::Toolpath& toolpath, const render::SceneOptions& options,
@@ -58,6 +62,7 @@ PictureResult renderPicture(const render::Scene& scene, const PictureRequest& re
 
   t0 = std::chrono::steady_clock::now();
   renderer.setScene(scene);
+  if (request.annotation.construction) renderer.setConstruction(*request.annotation.construction);
   result.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();

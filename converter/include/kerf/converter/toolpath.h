@@ -39,6 +39,10 @@ enum class OffsetRole : std::uint8_t {
   Cancel,   ///< the move that cancels it: from the offset path back to the programmed point
 };
 
+/// Move::modes: the distance and unit modes in force when the block ran (an ISO program's G91 and
+/// G20; 3B is incremental in µm).
+enum ModeBit : std::uint8_t { kModeIncremental = 1, kModeInch = 2 };
+
 struct Move {
   // A program holds one move per block, so the move is 96 bytes (it took 192, then 160, then 128).
   // The small fields sit in the segment's tail padding (a [[no_unique_address]] member's padding
@@ -50,6 +54,7 @@ struct Move {
   MoveKind kind = MoveKind::Line;
   CentreForm centreForm = CentreForm::None;
   WireOffset wireOffset = WireOffset::Off;
+  std::uint8_t modes = 0;       ///< the modes in force at the block (ModeBit): what `kerf explain` and the window say
   SourceSpan span;              ///< the block's text
   std::uint32_t line = 0;       ///< 1-based source line of that block
   std::uint32_t feedIndex = 0;  ///< the feed in force: Toolpath::feeds[feedIndex - 1] mm/min; 0: none programmed

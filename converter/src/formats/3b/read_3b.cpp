@@ -239,6 +239,7 @@ class ThreeBReader {
 
   Move moveFor(const ParsedRecord& r) const {
     Move m;
+    m.modes = kModeIncremental;  // each record is relative to where the last one ended
     m.span = SourceSpan{r.begin, r.end - r.begin};
     m.line = src_.locate(r.begin).line;
     return m;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "kerf/render/camera.h"
+#include "kerf/render/construction_scene.h"
 #include "kerf/render/overlay.h"
 #include "kerf/render/scene.h"
 
@@ -78,6 +79,8 @@ class Renderer {
   bool init(std::string& error);
   /// Uploads the scene's buffers; the scene may be dropped afterwards except for what the caller keeps.
   void setScene(const Scene& scene);
+  /// A block's construction, drawn over everything each frame until replaced (an empty one: none).
+  void setConstruction(const ConstructionScene& construction);
   /// Lines drawn on top of the scene each frame (the wire in playback), width in pixels.
   void setExtraLines(const std::vector<LineVertex>& lines, float width);
   /// The overlay's texture: RGBA, width x height (ImGui's font atlas).
@@ -99,6 +102,7 @@ class Renderer {
 
   unsigned surfaceProgram_ = 0, lineProgram_ = 0, markerProgram_ = 0, overlayProgram_ = 0;
   Buffer surface_, lower_, upper_, generators_, rapids_, reference_, deviation_, markers_, extra_, triad_, overlay_;
+  Buffer construction_, constructionDashed_, constructionDots_;
   unsigned overlayEbo_ = 0, overlayTexture_ = 0;
   std::vector<std::uint32_t> lowerFirst_, upperFirst_;
   float extraWidth_ = 3.0f;

@@ -71,6 +71,16 @@ if(KERF_XVFB_RUN)
   kerf_snapshot_test(NAME view_plate_deviation WINDOW EXIT 1
                      ARGS tests/drawing/plate_radius_off.nc --size 900x560 --frames 4 --drawing samples/plate.dxf
                           --colour-by deviation --line 5)
+  # Teaching (issue 44): the selected block's construction in the view, its words and modes in the
+  # block panel; the same four blocks as the pictures (explain_*).
+  kerf_snapshot_test(NAME view_explain_r_arc WINDOW
+                     ARGS samples/sector_r40.nc --size 1100x700 --frames 4 --line 15 --step 5)
+  kerf_snapshot_test(NAME view_explain_ij_arc WINDOW
+                     ARGS samples/punch_outline.nc --size 1100x700 --frames 4 --line 14 --step 2)
+  kerf_snapshot_test(NAME view_explain_taper_move WINDOW
+                     ARGS samples/taper_punch_2deg.nc --size 1100x700 --frames 4 --line 14)
+  kerf_snapshot_test(NAME view_explain_offset_move WINDOW
+                     ARGS samples/inch_g91_bare_g41.nc --size 1100x700 --frames 4 --offset 0.1 --line 23)
 else()
   message(WARNING "xvfb-run (package xvfb) not found: the window snapshot tests are not built")
 endif()

@@ -5,6 +5,8 @@
 
 #include "window/window.h"
 
+#include "kerf/converter/interpret/machine.h"
+
 namespace kerf::cli {
 
 int drawView(const ViewArgs& a) {
@@ -15,7 +17,7 @@ int drawView(const ViewArgs& a) {
     return kExitUsage;
   }
   const std::string& file = a.common.input.files.front();
-  std::optional<Loaded> in = loadOne(a.common);
+  std::optional<Loaded> in = loadOne(a.common, {.centreWords = true});  // the block panel says how arcs were written
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   if (a.line && !moveOnLine(p, *a.line, "--line")) return kExitUsage;
@@ -28,6 +30,7 @@ int drawView(const ViewArgs& a) {
   const render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, request.reference);
   request.structure = &p.structure;
   request.source = p.source.get();
+  request.parse = converter::parseOptionsFor(p.machine);
   request.toolpath = &p.toolpath;
   request.findings = p.diags.all();
   request.scene = &scene;

@@ -4,6 +4,7 @@
 #include "cli/file_io.h"
 #include "kerf/geometry/tessellation.h"
 #include "kerf/headless/png.h"
+#include "kerf/render/construction_scene.h"
 #include "kerf/render/gl.h"
 #include "ui/picture.h"
 
@@ -53,9 +54,12 @@ struct State {
   bool followPlayback = true;
   float step = 0.1f;
   geometry::PathSampleStats stepStats;
-  std::vector<std::size_t> firstMoveOfLine;  // per source line (1-based), SIZE_MAX: none
-  std::vector<bool> passShown;               // per pass, contour after contour (the pass list)
-  bool passesChanged = false;                // a pass was shown or hidden: the scene is built again
+  std::vector<std::size_t> firstMoveOfLine;        // per source line (1-based), SIZE_MAX: none
+  std::vector<bool> passShown;                     // per pass, contour after contour (the pass list)
+  bool passesChanged = false;                      // a pass was shown or hidden: the scene is built again
+  bool construction = true;                        // the selected block's construction drawn (teaching)
+  bool frameConstruction = false;                  // stepped with the keyboard: the view frames the next one
+  const converter::Construction* block = nullptr;  // the selected block's, for the block panel
 };
 
 /// Points along the cut path at the step, and their worst deviation (the seed's experiment).
@@ -225,6 +229,43 @@ void deviationList(State& s, const converter::DrawingComparison* c, const char* 
   ImGui::PopID();
 }
 
+/// The selected block: each word and what it sets, the modes it inherits, its pass, and what the
+/// construction in the view marks (docs/teaching.md).
+void blockPanel(State& s) {
+  if (!s.block) return;
+  const converter::Construction& b = *s.block;
+  ImGui::Separator();
+  ImGui::Checkbox("construction", &s.construction);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("draw how the block's geometry follows from its words");
+  ImGui::SameLine();
+  ImGui::TextDisabled("(Up/Down: step)");
+  if (!ImGui::CollapsingHeader("Block", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::TextWrapped("line %u: %s", b.line, b.block.c_str());
+  if (!b.pass.empty()) ImGui::TextWrapped("%s", b.pass.c_str());
+  for (const converter::WordMeaning& w : b.words) {
+    ImGui::TextColored(ImVec4(0.1f, 0.35f, 0.75f, 1.0f), "%s", w.word.c_str());
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", w.sets.c_str());
+  }
+  ImGui::TextDisabled("inherits");
+  for (const std::string& m : b.modes) {
+    ImGui::Bullet();
+    ImGui::TextWrapped("%s", m.c_str());
+  }
+  if (s.construction) {
+    ImGui::TextDisabled("drawn");
+    for (const converter::ConstructionMark& m : b.marks)
+      if (!m.label.empty()) {
+        const std::uint32_t c = render::constructionColour(m.role);
+        ImGui::PushStyleColor(
+            ImGuiCol_Text, ImVec4(static_cast<float>(c & 0xFF) / 255.0f, static_cast<float>((c >> 8) & 0xFF) / 255.0f,
+                                  static_cast<float>((c >> 16) & 0xFF) / 255.0f, 1.0f));
+        ImGui::TextWrapped("%s", m.label.c_str());
+        ImGui::PopStyleColor();
+      }
+  }
+}
+
 void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
   const WindowRequest& r = *s.request;
   ImGui::SetNextWindowPos(ImVec2(x, 0));
@@ -260,6 +301,7 @@ void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
   ImGui::SameLine();
   if (ImGui::Button("screenshot")) screenshot = true;
 
+  blockPanel(s);
   passList(s);
   deviationList(s, s.request->comparison, s.request->comparisonUpper ? "Drawing, lower plane" : "Drawing",
                 s.request->scene->planes.lower);
@@ -414,6 +456,11 @@ class FrameLoop {
   void showPasses();
   /// The scene drawn now: the request's, or the one without the hidden passes.
   [[nodiscard]] const render::Scene& scene() const { return shownScene_ ? *shownScene_ : *request_.scene; }
+  /// Up and Down (Page Up, Page Down) step the selection block by block.
+  void stepWithKeys();
+  /// The selected block's construction at the step, built when the block or the step changes and
+  /// given to both renderers; framed when the keyboard stepped to it.
+  void construct();
   void annotate(const render::RenderOptions& options, const Layout& l);
   render::Renderer& drawView(const render::RenderOptions& options, bool moving, const Layout& l);
   bool saveScreenshot(const Layout& l, bool last, std::string& error);
@@ -435,6 +482,11 @@ class FrameLoop {
   Drawn shown_;
   bool dragging_ = false;
   Eigen::Vector2d pressAt_{0, 0};
+  converter::Construction block_;
+  render::ConstructionScene construction_;
+  std::optional<std::size_t> constructedMove_;
+  float constructedStep_ = -1.0f;
+  bool constructionShown_ = false;
 };
 
 bool FrameLoop::init(std::string& error) {
@@ -563,6 +615,48 @@ void FrameLoop::showPasses() {
   shown_.valid = false;
 }
 
+void FrameLoop::stepWithKeys() {
+  const std::size_t moves = request_.toolpath->moves.size();
+  if (ImGui::GetIO().WantTextInput || moves == 0) return;
+  const bool next = ImGui::IsKeyPressed(ImGuiKey_DownArrow) || ImGui::IsKeyPressed(ImGuiKey_PageDown);
+  const bool back = ImGui::IsKeyPressed(ImGuiKey_UpArrow) || ImGui::IsKeyPressed(ImGuiKey_PageUp);
+  if (!next && !back) return;
+  std::size_t m = s_.selected ? *s_.selected : (next ? moves - 1 : 0);
+  m = next ? (m + 1) % moves : (m + moves - 1) % moves;
+  selectMove(s_, m);
+  s_.followPlayback = false;
+  s_.frameConstruction = true;
+}
+
+void FrameLoop::construct() {
+  const bool show = s_.construction && s_.selected && *s_.selected < request_.toolpath->moves.size();
+  if (show && (constructedMove_ != s_.selected || constructedStep_ != s_.step)) {
+    block_ = converter::constructionOf(*request_.source, *request_.toolpath, request_.structure,
+                                       geometry::Sampling::step(s_.step), *s_.selected, request_.parse);
+    construction_ = render::constructionScene(block_, scene().planes, 0.25 * s_.camera.mmPerPixel(targetH_), 0);
+    constructedMove_ = s_.selected;
+    constructedStep_ = s_.step;
+    constructionShown_ = false;
+  }
+  s_.block = constructedMove_ && s_.selected == constructedMove_ ? &block_ : nullptr;
+  if (show != constructionShown_ || (show && !shown_.valid)) {
+    const render::ConstructionScene none;
+    renderer_.setConstruction(show ? construction_ : none);
+    coarseRenderer_.setConstruction(show ? construction_ : none);
+    constructionShown_ = show;
+    shown_.valid = false;
+  }
+  if (show && s_.frameConstruction) {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    render::extendBounds(construction_, lo, hi);
+    if (lo.allFinite() && hi.allFinite()) {
+      s_.camera.target = 0.5 * (lo + hi);
+      s_.camera.halfHeight = std::max(0.65 * (hi - lo).head<2>().maxCoeff(), 1e-3);
+    }
+  }
+  s_.frameConstruction = false;
+}
+
 void FrameLoop::annotate(const render::RenderOptions& options, const Layout& l) {
   // Drawn in the view's own coordinates (ImGui culls text against the clip rectangle as it draws),
   // then moved right by the text panel's width, clip rectangles included.
@@ -570,7 +664,9 @@ void FrameLoop::annotate(const render::RenderOptions& options, const Layout& l) 
   fg->PushClipRect(ImVec2(0, 0), ImVec2(static_cast<float>(l.viewW), static_cast<float>(l.viewH)));
   const int vtxStart = fg->VtxBuffer.Size;
   const int cmdStart = fg->CmdBuffer.Size - 1;
-  ui::drawAnnotations(*fg, scene(), s_.camera, options, request_.annotation, l.viewW, l.viewH);
+  ui::Annotation annotation = request_.annotation;
+  if (constructionShown_) annotation.construction = &construction_;
+  ui::drawAnnotations(*fg, scene(), s_.camera, options, annotation, l.viewW, l.viewH);
   for (int v = vtxStart; v < fg->VtxBuffer.Size; ++v) fg->VtxBuffer[v].pos.x += static_cast<float>(l.viewX);
   for (int c = std::max(0, cmdStart); c < fg->CmdBuffer.Size; ++c) {
     fg->CmdBuffer[c].ClipRect.x += static_cast<float>(l.viewX);
@@ -626,6 +722,8 @@ bool FrameLoop::frame(std::string& error, bool& failed) {
   showPasses();
   const bool moving = handleMouse(l);
   advancePlayback();
+  stepWithKeys();
+  construct();
   render::RenderOptions options = s_.options;
   options.selectedMove = s_.selected;
   annotate(options, l);  // the annotations of the picture, in the view's area

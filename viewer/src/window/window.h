@@ -4,6 +4,7 @@
 
 #include "kerf/converter/check/drawing_check.h"
 #include "kerf/converter/nc/diagnostics.h"
+#include "kerf/converter/nc/program.h"
 #include "kerf/converter/nc/source.h"
 #include "kerf/converter/structure/passes.h"
 #include "kerf/converter/toolpath.h"
@@ -34,7 +35,8 @@ struct WindowRequest {
   bool coarseFrames = false;          ///< draw every frame at the coarse level (benchmarks what orbiting costs)
   render::RenderOptions options;
   ui::Annotation annotation;
-  double step = 0.1;  ///< initial interpolation step k, mm
+  double step = 0.1;              ///< initial interpolation step k, mm
+  converter::ParseOptions parse;  ///< the machine's: the selected block's words are read with them
   int width = 1280, height = 800;
   std::optional<std::string> screenshot;  ///< write the window as PNG after `frames` frames, then close
   int frames = 0;                         ///< 0: run until closed

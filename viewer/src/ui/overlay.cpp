@@ -24,6 +24,20 @@ void textWithBackground(ImDrawList& list, ImVec2 at, ImU32 colour, const char* t
   list.AddText(at, colour, text);
 }
 
+/// Whether a label of `size` at `at` stays in the picture and covers no box in `placed`; if so its
+/// box joins them.
+bool placeLabel(std::vector<ImVec4>& placed, ImVec2 at, ImVec2 size, int width, int height) {
+  const ImVec4 box(at.x - 2, at.y - 1, at.x + size.x + 2, at.y + size.y + 1);
+  const bool inside =
+      box.x >= 0 && box.y >= 0 && box.z <= static_cast<float>(width) && box.w <= static_cast<float>(height);
+  const bool covers = std::any_of(placed.begin(), placed.end(), [&](const ImVec4& o) {
+    return box.x < o.z && o.x < box.z && box.y < o.w && o.y < box.w;
+  });
+  if (!inside || covers) return false;
+  placed.push_back(box);
+  return true;
+}
+
 std::string formatNumber(double v, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
@@ -117,18 +131,11 @@ void drawConstruction(ImDrawList& list, const render::ConstructionScene& c, cons
     const ImVec2 size = ImGui::CalcTextSize(m.label.c_str());
     const auto px = static_cast<float>(p.x()), py = static_cast<float>(p.y());
     for (const ImVec2 at : {ImVec2(px + 8, py - lineHeight - 2), ImVec2(px + 8, py + 4),
-                            ImVec2(px - 8 - size.x, py - lineHeight - 2), ImVec2(px - 8 - size.x, py + 4)}) {
-      const ImVec4 box(at.x - 2, at.y - 1, at.x + size.x + 2, at.y + size.y + 1);
-      const bool inside =
-          box.x >= 0 && box.y >= 0 && box.z <= static_cast<float>(width) && box.w <= static_cast<float>(height);
-      const bool covers = std::any_of(placed.begin(), placed.end(), [&](const ImVec4& o) {
-        return box.x < o.z && o.x < box.z && box.y < o.w && o.y < box.w;
-      });
-      if (!inside || covers) continue;
-      placed.push_back(box);
-      textWithBackground(list, at, m.colour | IM_COL32(0, 0, 0, 255), m.label.c_str());
-      break;
-    }
+                            ImVec2(px - 8 - size.x, py - lineHeight - 2), ImVec2(px - 8 - size.x, py + 4)})
+      if (placeLabel(placed, at, size, width, height)) {
+        textWithBackground(list, at, m.colour | IM_COL32(0, 0, 0, 255), m.label.c_str());
+        break;
+      }
   }
 }
 
@@ -190,15 +197,7 @@ void drawAnnotations(ImDrawList& list, const render::Scene& scene, const render:
     for (const render::Marker* m : order) {
       const Eigen::Vector2d p = camera.project(m->position, width, height);
       const ImVec2 at(static_cast<float>(p.x()) + 10, static_cast<float>(p.y()) - lineHeight - 2);
-      const ImVec2 size = ImGui::CalcTextSize(m->label.c_str());
-      const ImVec4 box(at.x - 2, at.y - 1, at.x + size.x + 2, at.y + size.y + 1);
-      const bool inside =
-          box.x >= 0 && box.y >= 0 && box.z <= static_cast<float>(width) && box.w <= static_cast<float>(height);
-      const bool covers = std::any_of(placed.begin(), placed.end(), [&](const ImVec4& o) {
-        return box.x < o.z && o.x < box.z && box.y < o.w && o.y < box.w;
-      });
-      if (!inside || covers) continue;
-      placed.push_back(box);
+      if (!placeLabel(placed, at, ImGui::CalcTextSize(m->label.c_str()), width, height)) continue;
       if (m->severity != converter::Severity::Note) ++labelled;
       const ImU32 colour = m->severity == converter::Severity::Error     ? IM_COL32(190, 0, 0, 255)
                            : m->severity == converter::Severity::Warning ? IM_COL32(150, 90, 0, 255)

@@ -20,6 +20,7 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <utility>
 
 namespace kerf::window {
 
@@ -32,6 +33,15 @@ void* glfwLoader(const char* name) { return reinterpret_cast<void*>(glfwGetProcA
 
 std::string glfwMessage;
 void onGlfwError(int /*code*/, const char* description) { glfwMessage = description ? description : ""; }
+
+// Block steps asked for with the keyboard since the last frame (+ next, - back). Counted from GLFW's
+// own key events: a press and its release within one poll never show in ImGui 1.86's key state.
+int pendingSteps = 0;
+void onKey(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int /*mods*/) {
+  if (action == GLFW_RELEASE) return;
+  if (key == GLFW_KEY_DOWN || key == GLFW_KEY_PAGE_DOWN) ++pendingSteps;
+  if (key == GLFW_KEY_UP || key == GLFW_KEY_PAGE_UP) --pendingSteps;
+}
 
 constexpr float kTextPanel = 0.30f;
 // Above this many triangles the view is drawn from a coarse scene while it moves (orbit, pan, zoom,
@@ -456,7 +466,7 @@ class FrameLoop {
   void showPasses();
   /// The scene drawn now: the request's, or the one without the hidden passes.
   [[nodiscard]] const render::Scene& scene() const { return shownScene_ ? *shownScene_ : *request_.scene; }
-  /// Up and Down (Page Up, Page Down) step the selection block by block.
+  /// Up and Down (Page Up, Page Down) step the selection block by block (onKey counts them).
   void stepWithKeys();
   /// The selected block's construction at the step, built when the block or the step changes and
   /// given to both renderers; framed when the keyboard stepped to it.
@@ -617,13 +627,12 @@ void FrameLoop::showPasses() {
 
 void FrameLoop::stepWithKeys() {
   const std::size_t moves = request_.toolpath->moves.size();
-  if (ImGui::GetIO().WantTextInput || moves == 0) return;
-  const bool next = ImGui::IsKeyPressed(ImGuiKey_DownArrow) || ImGui::IsKeyPressed(ImGuiKey_PageDown);
-  const bool back = ImGui::IsKeyPressed(ImGuiKey_UpArrow) || ImGui::IsKeyPressed(ImGuiKey_PageUp);
-  if (!next && !back) return;
-  std::size_t m = s_.selected ? *s_.selected : (next ? moves - 1 : 0);
-  m = next ? (m + 1) % moves : (m + moves - 1) % moves;
-  selectMove(s_, m);
+  const int steps = std::exchange(pendingSteps, 0);
+  if (ImGui::GetIO().WantTextInput || moves == 0 || steps == 0) return;
+  const auto n = static_cast<long long>(moves);
+  long long m = s_.selected ? static_cast<long long>(*s_.selected) : (steps > 0 ? -1 : n);
+  m = ((m + steps) % n + n) % n;
+  selectMove(s_, static_cast<std::size_t>(m));
   s_.followPlayback = false;
   s_.frameConstruction = true;
 }
@@ -650,8 +659,11 @@ void FrameLoop::construct() {
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     render::extendBounds(construction_, lo, hi);
     if (lo.allFinite() && hi.allFinite()) {
+      // Half the box's larger side, with room for a turned view (a diagonal is up to 1.4 times a
+      // side) and for a view narrower than it is tall.
+      const double aspect = targetH_ > 0 ? static_cast<double>(targetW_) / targetH_ : 1.0;
       s_.camera.target = 0.5 * (lo + hi);
-      s_.camera.halfHeight = std::max(0.65 * (hi - lo).head<2>().maxCoeff(), 1e-3);
+      s_.camera.halfHeight = std::max(0.75 * (hi - lo).head<2>().maxCoeff() / std::min(aspect, 1.0), 1e-3);
     }
   }
   s_.frameConstruction = false;
@@ -778,6 +790,7 @@ bool runWindow(const WindowRequest& request, std::string& error) {
   io.BackendRendererName = "kerf::render";
   io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
   ImGui::StyleColorsLight();
+  glfwSetKeyCallback(window, onKey);  // before ImGui's backend, which calls it from its own
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   {
     FrameLoop loop(request, window, s);  // its GL objects go before the context

@@ -7,6 +7,7 @@
 #include "kerf/geometry/ruled_surface.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace kerf::converter {

@@ -428,19 +428,7 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
               yellow);
   }
   drawLines(extra_, 0, extra_.count, viewProj, extraWidth_, 0.0f, width, height, nullptr);
-  // The selected block's construction (setConstruction), over everything.
-  if (constructionDashed_.count)
-    drawLines(constructionDashed_, 0, constructionDashed_.count, viewProj, 1.5f, 5.0f, width, height, nullptr);
-  if (construction_.count)
-    drawLines(construction_, 0, construction_.count, viewProj, 2.0f, 0.0f, width, height, nullptr);
-  if (constructionDots_.count) {
-    g.Enable(GL_PROGRAM_POINT_SIZE);
-    g.UseProgram(markerProgram_);
-    g.UniformMatrix4fv(uniform(markerProgram_, "uViewProjection"), 1, GL_FALSE, viewProj.data());
-    g.Uniform1f(uniform(markerProgram_, "uScale"), 1.0f);
-    g.BindVertexArray(constructionDots_.vao);
-    g.DrawArrays(GL_POINTS, 0, static_cast<GLsizei>(constructionDots_.count));
-  }
+  drawConstruction(viewProj, width, height);  // the selected block's, over everything
 
   if (options.markers && markers_.count) {
     g.Enable(GL_PROGRAM_POINT_SIZE);
@@ -469,6 +457,22 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
   }
   g.Disable(GL_BLEND);
   g.BindVertexArray(0);
+}
+
+void Renderer::drawConstruction(const Eigen::Matrix4f& viewProj, int width, int height) {
+  const GlApi& g = gl();
+  if (constructionDashed_.count)
+    drawLines(constructionDashed_, 0, constructionDashed_.count, viewProj, 1.5f, 5.0f, width, height, nullptr);
+  if (construction_.count)
+    drawLines(construction_, 0, construction_.count, viewProj, 2.0f, 0.0f, width, height, nullptr);
+  if (constructionDots_.count) {
+    g.Enable(GL_PROGRAM_POINT_SIZE);
+    g.UseProgram(markerProgram_);
+    g.UniformMatrix4fv(uniform(markerProgram_, "uViewProjection"), 1, GL_FALSE, viewProj.data());
+    g.Uniform1f(uniform(markerProgram_, "uScale"), 1.0f);
+    g.BindVertexArray(constructionDots_.vao);
+    g.DrawArrays(GL_POINTS, 0, static_cast<GLsizei>(constructionDots_.count));
+  }
 }
 
 TriadLayout triadLayout(const Camera& camera, int height) {

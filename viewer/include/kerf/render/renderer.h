@@ -99,6 +99,8 @@ class Renderer {
   void drawLines(const Buffer& b, std::size_t first, std::size_t count, const Eigen::Matrix4f& viewProj, float width,
                  float dash, int width_px, int height_px, const float* colourOverride);
   void releaseBuffers();
+  /// The construction's dashed and solid lines and its dots (setConstruction), depth test off.
+  void drawConstruction(const Eigen::Matrix4f& viewProj, int width, int height);
 
   unsigned surfaceProgram_ = 0, lineProgram_ = 0, markerProgram_ = 0, overlayProgram_ = 0;
   Buffer surface_, lower_, upper_, generators_, rapids_, reference_, deviation_, markers_, extra_, triad_, overlay_;

@@ -84,6 +84,16 @@ TEST(teaching_test, ij_taper_and_offset_moves) {
   EXPECT_NE(offset.out.find("as programmed"), std::string::npos) << offset.out;
 }
 
+// A block in a program cut in several passes says which pass it belongs to.
+TEST(teaching_test, a_block_says_its_pass) {
+  const fs::path die = fs::path(KERF_PASSES_DIR) / "die_tab_cut_off.nc";
+  const fs::path out = fs::path(KERF_TEACHING_WORK) / "die_tab_cut_off_20.png";
+  const auto r = runCommand("'" + std::string(KERF_PROGRAM) + "' render '" + die.string() + "' --explain-line 20 -o '" +
+                            out.string() + "' 2>/dev/null");
+  EXPECT_LE(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("pass 2 of contour 1: a skim"), std::string::npos) << r.out;
+}
+
 // A line with no move is said, with the nearest lines that have one.
 TEST(teaching_test, a_line_without_a_move_is_said) {
   const auto r = runCommand("'" + std::string(KERF_PROGRAM) + "' render '" + (kSamples / "sector_r40.nc").string() +

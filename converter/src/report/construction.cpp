@@ -396,6 +396,9 @@ Construction constructionOf(const SourceFile& source, const Toolpath& toolpath, 
   c.words = wordsOf(source, toolpath, move, parse);
   c.modes = modesOf(toolpath, move);
   c.pass = passOf(structure, move);
+  if (!c.pass.empty())  // said beside the block's segment too
+    c.marks.insert(c.marks.begin() + 1, ConstructionMark{ConstructionMark::Kind::Segment, ConstructionMark::Role::Path,
+                                                         m.lower, false, c.pass});
   return c;
 }
 

@@ -228,16 +228,13 @@ CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOption
   return out;
 }
 
-Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter::Diagnostic> findings,
-                 const SceneOptions& options, std::span<const geometry::Segment> reference) {
-  Scene scene;
-  scene.taper = toolpath.isTaper();
-  scene.moves = toolpath.moves.size();
-  const CutSurface cut = meshCutSurface(toolpath, options);
-  scene.planes = cut.planes;
-  const geometry::Planes& planes = scene.planes;
-  const std::size_t n = toolpath.moves.size();
+namespace {
 
+/// The findings' markers (errors and warnings, notes when asked) with their labels; which moves
+/// have an error or a warning (their surface is tinted).
+std::vector<bool> addFindingMarkers(Scene& scene, const converter::Toolpath& toolpath,
+                                    std::span<const converter::Diagnostic> findings, const SceneOptions& options) {
+  const std::size_t n = toolpath.moves.size();
   std::vector<bool> flagged(n, false);
   for (const auto& d : findings) {
     if (d.move && *d.move < n && d.severity != Severity::Note) flagged[*d.move] = true;
@@ -258,6 +255,11 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     scene.findings.push_back(std::move(m));
   }
 
+  return flagged;
+}
+
+/// The cut surface's triangles, each patch with its own vertices, normals and slopes.
+void addSurface(Scene& scene, const CutSurface& cut, const std::vector<bool>& flagged, const SceneOptions& options) {
   const geometry::Mesh& mesh = cut.mesh;
   const std::vector<std::size_t>& cutMove = cut.patchMove;
   scene.truncated = mesh.truncated;
@@ -327,10 +329,14 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     for (std::size_t i = patchFirst; i < scene.surface.size(); ++i) scene.surface[i].flags = flags;
     t0 = t1;
   }
+}
 
-  // Lines, per move, so a move can be drawn again selected.
-  const geometry::Sampling sampling = geometry::Sampling::tolerance(std::max(options.tolerance, options.lineTolerance));
-  std::vector<Vec2> scratch;
+/// The contours, rapids and generator lines, per move, so a move can be drawn again selected.
+void addMoveLines(Scene& scene, const converter::Toolpath& toolpath, const CutSurface& cut, const SceneOptions& options,
+                  const geometry::Sampling& sampling, std::vector<Vec2>& scratch) {
+  const geometry::Planes& planes = scene.planes;
+  const std::size_t n = toolpath.moves.size();
+  const std::vector<std::size_t>& cutMove = cut.patchMove;
   double cutLength = 0.0;
   for (std::size_t i : cutMove) cutLength += toolpath.moves[i].lower.length();
   const double spacing = cutLength / static_cast<double>(std::max<std::size_t>(options.generators, 1));
@@ -383,14 +389,11 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
   }
   for (LineSet* set : {&scene.lower, &scene.upper, &scene.generators, &scene.rapids})
     set->moveFirst.push_back(static_cast<std::uint32_t>(set->vertices.size()));
-  scene.reference.moveFirst.push_back(0);
-  for (const Segment& s : reference) addSegment(scene.reference, s, planes.lower, sampling, kReferenceColour, scratch);
-  for (const Segment& s : options.referenceUpper)
-    addSegment(scene.reference, s, planes.upper, sampling, kReferenceColour, scratch);
-  scene.reference.moveFirst.push_back(static_cast<std::uint32_t>(scene.reference.vertices.size()));
-  addDeviationEdge(scene, options, planes, sampling, scratch);
+}
 
-  scene.start = {toolpath.start.x(), toolpath.start.y(), planes.lower};
+/// The box of everything drawn (the start, the surface, the lines), between the planes at least.
+void setBounds(Scene& scene) {
+  const geometry::Planes& planes = scene.planes;
   // Bounds of everything drawn.
   Vec3 lo = scene.start, hi = scene.start;
   auto grow = [&](const std::array<float, 3>& p) {
@@ -405,6 +408,32 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
   hi.z() = std::max(hi.z(), planes.upper);
   scene.boundsMin = lo;
   scene.boundsMax = hi;
+}
+
+}  // namespace
+
+Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter::Diagnostic> findings,
+                 const SceneOptions& options, std::span<const geometry::Segment> reference) {
+  Scene scene;
+  scene.taper = toolpath.isTaper();
+  scene.moves = toolpath.moves.size();
+  const CutSurface cut = meshCutSurface(toolpath, options);
+  scene.planes = cut.planes;
+  const geometry::Planes& planes = scene.planes;
+  const std::vector<bool> flagged = addFindingMarkers(scene, toolpath, findings, options);
+  addSurface(scene, cut, flagged, options);
+  // Lines within the tolerance (or the picture's finer line tolerance).
+  const geometry::Sampling sampling = geometry::Sampling::tolerance(std::max(options.tolerance, options.lineTolerance));
+  std::vector<Vec2> scratch;
+  addMoveLines(scene, toolpath, cut, options, sampling, scratch);
+  scene.reference.moveFirst.push_back(0);
+  for (const Segment& s : reference) addSegment(scene.reference, s, planes.lower, sampling, kReferenceColour, scratch);
+  for (const Segment& s : options.referenceUpper)
+    addSegment(scene.reference, s, planes.upper, sampling, kReferenceColour, scratch);
+  scene.reference.moveFirst.push_back(static_cast<std::uint32_t>(scene.reference.vertices.size()));
+  addDeviationEdge(scene, options, planes, sampling, scratch);
+  scene.start = {toolpath.start.x(), toolpath.start.y(), planes.lower};
+  setBounds(scene);
   return scene;
 }
 

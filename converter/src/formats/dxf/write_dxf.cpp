@@ -262,17 +262,14 @@ void extents(Out& o, const std::vector<Item>& items) {
   o.point(10, hi, zhi);
 }
 
-}  // namespace
+/// The model and paper space block records' handles (R2000; empty in R12).
+struct BlockRecords {
+  std::string model, paper;
+};
 
-std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWriteCounts* countsOut) {
-  const std::vector<Item> items = itemsOf(tp, options);
-  const std::vector<Layer> layerList = layersFor(passCount(options), !options.deviation.empty());
-  DxfWriteCounts counts;
-  const bool r2000 = options.version == DxfVersion::R2000;
-  // The body first (it allocates the handles), then the header that names the next free one.
-  Out body(r2000);
-  const std::string root = "C", groups = "D";  // fixed handles: the root dictionary, ACAD_GROUP
-
+/// The TABLES section: viewport, line types, the layers, and (R2000) the tables AutoCAD requires.
+BlockRecords writeTables(Out& body, const std::vector<Layer>& layerList, bool r2000) {
+  BlockRecords out;
   section(body, "TABLES");
   if (r2000) {
     const std::string vport = table(body, "VPORT", 1);
@@ -302,7 +299,6 @@ std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWrit
     if (r2000) body.gi(370, -3);  // lineweight: default
   }
   body.g(0, "ENDTAB");
-  std::string modelRecord, paperRecord;
   if (r2000) {
     const std::string styles = table(body, "STYLE", 1);
     record(body, "STYLE", styles, "AcDbTextStyleTableRecord", "Standard");
@@ -325,12 +321,19 @@ std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWrit
     record(body, "DIMSTYLE", dims, "AcDbDimStyleTableRecord", "Standard", 105);
     body.g(0, "ENDTAB");
     const std::string blocks = table(body, "BLOCK_RECORD", 2);
-    modelRecord = record(body, "BLOCK_RECORD", blocks, "AcDbBlockTableRecord", "*Model_Space");
-    paperRecord = record(body, "BLOCK_RECORD", blocks, "AcDbBlockTableRecord", "*Paper_Space");
+    out.model = record(body, "BLOCK_RECORD", blocks, "AcDbBlockTableRecord", "*Model_Space");
+    out.paper = record(body, "BLOCK_RECORD", blocks, "AcDbBlockTableRecord", "*Paper_Space");
     body.g(0, "ENDTAB");
   }
   endsec(body);
 
+  return out;
+}
+
+/// The BLOCKS section: R2000's model and paper space blocks (empty in R12).
+void writeBlocks(Out& body, const BlockRecords& records, bool r2000) {
+  const std::string& modelRecord = records.model;
+  const std::string& paperRecord = records.paper;
   section(body, "BLOCKS");
   if (r2000) {
     for (const auto& [name, owner] : {std::pair{"*Model_Space", modelRecord}, std::pair{"*Paper_Space", paperRecord}}) {
@@ -353,29 +356,28 @@ std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWrit
     }
   }
   endsec(body);
+}
 
-  section(body, "ENTITIES");
-  for (const Item& it : items) writeItem(body, it, layerList, modelRecord, counts);
+/// R2000's OBJECTS section: the root dictionary and its ACAD_GROUP dictionary.
+void writeObjects(Out& body, const std::string& root, const std::string& groups) {
+  section(body, "OBJECTS");
+  body.g(0, "DICTIONARY");
+  body.g(5, root);
+  body.g(330, "0");
+  body.g(100, "AcDbDictionary");
+  body.gi(281, 1);
+  body.g(3, "ACAD_GROUP");
+  body.g(350, groups);
+  body.g(0, "DICTIONARY");
+  body.g(5, groups);
+  body.g(330, root);
+  body.g(100, "AcDbDictionary");
+  body.gi(281, 1);
   endsec(body);
+}
 
-  if (r2000) {
-    section(body, "OBJECTS");
-    body.g(0, "DICTIONARY");
-    body.g(5, root);
-    body.g(330, "0");
-    body.g(100, "AcDbDictionary");
-    body.gi(281, 1);
-    body.g(3, "ACAD_GROUP");
-    body.g(350, groups);
-    body.g(0, "DICTIONARY");
-    body.g(5, groups);
-    body.g(330, root);
-    body.g(100, "AcDbDictionary");
-    body.gi(281, 1);
-    endsec(body);
-  }
-  body.g(0, "EOF");
-
+/// The HEADER (and R2000's empty CLASSES): version, extents, units, and the next free handle.
+Out writeHeader(const std::vector<Item>& items, bool r2000, unsigned long long handleSeed) {
   Out head(false);
   head.g(999, "Kerf: the wire path of a checked program");
   section(head, "HEADER");
@@ -391,7 +393,7 @@ std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWrit
     head.gi(70, 1);  // metric
     head.g(9, "$HANDSEED");
     char buf[24];
-    std::snprintf(buf, sizeof buf, "%llX", body.seed());
+    std::snprintf(buf, sizeof buf, "%llX", handleSeed);
     head.g(5, buf);
   }
   endsec(head);
@@ -399,6 +401,26 @@ std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWrit
     section(head, "CLASSES");
     endsec(head);
   }
+  return head;
+}
+
+}  // namespace
+
+std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWriteCounts* countsOut) {
+  const std::vector<Item> items = itemsOf(tp, options);
+  const std::vector<Layer> layerList = layersFor(passCount(options), !options.deviation.empty());
+  DxfWriteCounts counts;
+  const bool r2000 = options.version == DxfVersion::R2000;
+  // The body first (it allocates the handles), then the header that names the next free one.
+  Out body(r2000);
+  const BlockRecords records = writeTables(body, layerList, r2000);
+  writeBlocks(body, records, r2000);
+  section(body, "ENTITIES");
+  for (const Item& it : items) writeItem(body, it, layerList, records.model, counts);
+  endsec(body);
+  if (r2000) writeObjects(body, "C", "D");  // fixed handles: the root dictionary, ACAD_GROUP
+  body.g(0, "EOF");
+  const Out head = writeHeader(items, r2000, body.seed());
   if (countsOut) *countsOut = counts;
   return head.text_ + body.text_;
 }

@@ -282,6 +282,10 @@ std::string lowerMeaning(const Word& w, const Toolpath& tp, std::size_t i) {
       return std::string("the arc's centre, ") + how + " in " + (axis == 0 ? "x" : "y") + ": the centre's " +
              (axis == 0 ? "x" : "y") + " is " + mm(s.centre[axis]) + " mm";
     }
+    case 'C':  // a mill-turn face program (docs/polar.md)
+      return "the C axis: under polar interpolation (G112) the face plane's second coordinate, else the "
+             "table's angle; the face point's y is " +
+             mm(s.end.y()) + " mm";
     case 'R':
       return "the radius; " + std::string(w.value > 0 ? "positive: the arc of at most 180 degrees"
                                                       : "negative: the arc of more than 180 degrees");

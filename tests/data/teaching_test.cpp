@@ -94,6 +94,26 @@ TEST(teaching_test, a_block_says_its_pass) {
   EXPECT_NE(r.out.find("pass 2 of contour 1: a skim"), std::string::npos) << r.out;
 }
 
+// kerf explain says what each word sets and the modes in force, as the picture's caption does.
+TEST(teaching_test, explain_says_the_words_and_modes) {
+  const std::string sector = (kSamples / "sector_r40.nc").string();
+  const auto text = runCommand("'" + std::string(KERF_PROGRAM) + "' explain '" + sector + "' 2>/dev/null");
+  EXPECT_NE(text.out.find("  R40.: the radius; positive: the arc of at most 180 degrees\n"), std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("modes from line 13:\n  absolute (G90)"), std::string::npos) << text.out;
+  const auto json = runCommand("'" + std::string(KERF_PROGRAM) + "' explain --json '" + sector + "' 2>/dev/null");
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  bool found = false;
+  for (const nlohmann::json& m : j["moves"])
+    if (m["line"] == 15) {
+      found = true;
+      ASSERT_EQ(m["words"].size(), 4u) << m.dump(1);
+      EXPECT_EQ(m["words"][3]["word"], "R40.");
+      EXPECT_EQ(m["modes"][0], "absolute (G90): X Y are the end point in the program's coordinates");
+    }
+  EXPECT_TRUE(found);
+}
+
 // A line with no move is said, with the nearest lines that have one.
 TEST(teaching_test, a_line_without_a_move_is_said) {
   const auto r = runCommand("'" + std::string(KERF_PROGRAM) + "' render '" + (kSamples / "sector_r40.nc").string() +

@@ -297,8 +297,10 @@ std::string lowerMeaning(const Word& w, const Toolpath& tp, std::size_t i) {
   }
 }
 
-std::vector<WordMeaning> wordsOf(const SourceFile& source, const Toolpath& tp, std::size_t i,
-                                 const ParseOptions& parse) {
+}  // namespace
+
+std::vector<WordMeaning> blockWords(const SourceFile& source, const Toolpath& tp, std::size_t i,
+                                    const ParseOptions& parse) {
   const Move& m = tp.moves[i];
   const std::string text = blockTextOf(source, m);
   std::vector<WordMeaning> out;
@@ -336,7 +338,7 @@ std::vector<WordMeaning> wordsOf(const SourceFile& source, const Toolpath& tp, s
 
 // ---- 3. modes and pass ----------------------------------------------------------------------------------
 
-std::vector<std::string> modesOf(const Toolpath& tp, std::size_t i) {
+std::vector<std::string> blockModes(const Toolpath& tp, std::size_t i) {
   const Move& m = tp.moves[i];
   std::vector<std::string> out;
   if (tp.format == InputFormat::ThreeB) {
@@ -372,6 +374,8 @@ std::vector<std::string> modesOf(const Toolpath& tp, std::size_t i) {
   return out;
 }
 
+namespace {
+
 std::string passOf(const Structure* structure, std::size_t i) {
   if (!structure || !structure->multiPass()) return {};
   for (std::size_t c = 0; c < structure->contours.size(); ++c) {
@@ -397,8 +401,8 @@ Construction constructionOf(const SourceFile& source, const Toolpath& toolpath, 
   c.line = m.line;
   c.block = blockTextOf(source, m);
   c.marks = marksOf(toolpath, move, sampling, c.maxDeviation);
-  c.words = wordsOf(source, toolpath, move, parse);
-  c.modes = modesOf(toolpath, move);
+  c.words = blockWords(source, toolpath, move, parse);
+  c.modes = blockModes(toolpath, move);
   c.pass = passOf(structure, move);
   if (!c.pass.empty())  // said beside the block's segment too
     c.marks.insert(c.marks.begin() + 1, ConstructionMark{ConstructionMark::Kind::Segment, ConstructionMark::Role::Path,

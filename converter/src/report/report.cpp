@@ -5,6 +5,7 @@
 #include "kerf/converter/formats/read.h"
 #include "kerf/converter/interpret/machine.h"
 #include "kerf/converter/nc/number_format.h"
+#include "kerf/converter/report/construction.h"
 #include "kerf/geometry/arc.h"
 
 #include <nlohmann/json.hpp>
@@ -700,12 +701,19 @@ PassMarks passMarks(const Structure* structure, std::size_t moves) {
 }  // namespace
 
 std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling,
-                        const Structure* structure) {
+                        const Structure* structure, const ParseOptions& parse) {
   std::string out = explainHeader(source, toolpath, sampling);
   const PassMarks marks = passMarks(structure, toolpath.moves.size());
+  std::vector<std::string> modes;  // in force at the move before: said again where they change
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
     out += marks.before[i];
+    if (std::vector<std::string> now = blockModes(toolpath, i); now != modes) {
+      out += "\nmodes from line " + std::to_string(toolpath.moves[i].line) + ":\n";
+      for (const std::string& m : now) out += "  " + m + "\n";
+      modes = std::move(now);
+    }
     out += "\nline " + std::to_string(toolpath.moves[i].line) + ": " + blockText(source, toolpath.moves[i]) + "\n";
+    for (const WordMeaning& w : blockWords(source, toolpath, i, parse)) out += "  " + w.word + ": " + w.sets + "\n";
     out += marks.role[i];
     out += explainOffsetRole(toolpath, i);
     if (toolpath.isTaper()) out += explainUpper(toolpath, i);
@@ -716,7 +724,7 @@ std::string explainText(const SourceFile& source, const Toolpath& toolpath, cons
 }
 
 std::string explainJson(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling,
-                        const Structure* structure) {
+                        const Structure* structure, const ParseOptions& parse) {
   // A program cut in several passes: each move's contour and pass (1-based) and its role in it.
   std::vector<json> passOf(toolpath.moves.size());
   if (structure && structure->multiPass())
@@ -791,6 +799,11 @@ std::string explainJson(const SourceFile& source, const Toolpath& toolpath, cons
       e["points"] = 1;
     }
     if (!passOf[i].is_null()) e["pass"] = std::move(passOf[i]);
+    json words = json::array();
+    for (const WordMeaning& w : blockWords(source, toolpath, i, parse))
+      words.push_back({{"word", w.word}, {"sets", w.sets}});
+    e["words"] = std::move(words);
+    e["modes"] = blockModes(toolpath, i);
     moves.push_back(std::move(e));
   }
   j["moves"] = std::move(moves);

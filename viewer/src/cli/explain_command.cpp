@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "load.h"
 
+#include "kerf/converter/interpret/machine.h"
 #include "kerf/converter/report/report.h"
 
 #include <CLI/CLI.hpp>
@@ -22,8 +23,9 @@ int runExplain(const ExplainArgs& a) {
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
   const auto sampling = a.common.sampling.sampling();
-  std::cout << (a.json ? converter::explainJson(*p.source, p.toolpath, sampling, &p.structure)
-                       : converter::explainText(*p.source, p.toolpath, sampling, &p.structure));
+  const converter::ParseOptions parse = converter::parseOptionsFor(p.machine);  // the words, read again
+  std::cout << (a.json ? converter::explainJson(*p.source, p.toolpath, sampling, &p.structure, parse)
+                       : converter::explainText(*p.source, p.toolpath, sampling, &p.structure, parse));
   return verdictExit(p);
 }
 

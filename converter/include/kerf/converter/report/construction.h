@@ -76,6 +76,13 @@ struct Construction {
 Construction constructionOf(const SourceFile& source, const Toolpath& toolpath, const Structure* structure,
                             const geometry::Sampling& sampling, std::size_t move, const ParseOptions& parse = {});
 
+/// What each word of move `move`'s block sets, read with `parse` (empty for a move with no block
+/// of its own); `kerf explain` prints the same.
+std::vector<WordMeaning> blockWords(const SourceFile& source, const Toolpath& toolpath, std::size_t move,
+                                    const ParseOptions& parse = {});
+/// The modes move `move` inherits, in sentences.
+std::vector<std::string> blockModes(const Toolpath& toolpath, std::size_t move);
+
 /// The first move programmed on 1-based `line`, or nothing.
 std::optional<std::size_t> moveOnLine(const Toolpath& toolpath, std::uint32_t line);
 

@@ -1,6 +1,8 @@
 // Reports: `kerf check` and `kerf explain` as text and as JSON. Strings out, nothing printed.
 #pragma once
 
+#include "kerf/converter/nc/program.h"
+
 #include "kerf/converter/cam/cam.h"
 #include "kerf/converter/check/summary.h"
 #include "kerf/converter/formats/dxf/read_dxf.h"
@@ -30,14 +32,16 @@ std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags);
 /// (docs/passes.md).
 std::string structureJson(const Structure& structure);
 
-/// `kerf explain`: each move, how its geometry follows from its words. With the structure of a
-/// program cut in several passes, where each pass begins and ends and which moves lead in and out.
+/// `kerf explain`: each move, what each word of its block sets (read with `parse`, the machine's
+/// parse options), how its geometry follows from them, and the modes in force where they change.
+/// With the structure of a program cut in several passes, where each pass begins and ends and
+/// which moves lead in and out.
 std::string explainText(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling,
-                        const Structure* structure = nullptr);
+                        const Structure* structure = nullptr, const ParseOptions& parse = {});
 /// `kerf explain --json`: {"file", "sampling", "moves": [{line, kind, start, end, centre, ...}]};
 /// with a multi-pass structure each move of a pass has "pass": {contour, pass, role}, role
-/// "lead-in", "contour" or "lead-out".
+/// "lead-in", "contour" or "lead-out"; each move's "words" [{word, sets}] and "modes" [sentences].
 std::string explainJson(const SourceFile& source, const Toolpath& toolpath, const geometry::Sampling& sampling,
-                        const Structure* structure = nullptr);
+                        const Structure* structure = nullptr, const ParseOptions& parse = {});
 
 }  // namespace kerf::converter

@@ -505,9 +505,13 @@ struct Tally {
 
 }  // namespace
 
-MachineDetection detectMachine(const Program& program) {
-  std::map<std::string, Tally> t;
-  const std::string_view text = program.source->text();
+namespace {
+
+using Tallies = std::map<std::string, Tally>;
+
+/// Evidence outside the blocks: Robofil's (MEM:...) header, Sodick's condition and offset tables
+/// and TP/TN heights, LinuxCNC's AXIS height comments.
+void fileEvidence(const Program& program, Tallies& t) {
   // Robofil names the program in its first line: % (MEM:F17A15.ISO)
   const std::string_view first = program.source->lineText(1);
   if (const auto at = first.find("(MEM:"); at != std::string_view::npos)
@@ -529,104 +533,122 @@ MachineDetection detectMachine(const Program& program) {
       t["linuxcnc"].add(
           "axis", [&] { return onLine("an (AXIS,..._Z_POS,z) comment", h.line); }, h.span, 3);
   }
-  for (const std::uint32_t k : program.notPlain) {  // a plain block holds no evidence
-    const Block& b = program.blocks[k];
-    if (b.kind == BlockKind::MacroCall) {
-      const std::string_view call = program.textOf(b).substr(0, program.textOf(b).find('('));
-      t["sodick"].add(
-          "call", [&] { return onLine("the macro call " + std::string(call) + "(...)", b.line); }, b.span(), 3);
-      continue;
+}
+
+/// The G, M and T codes of block b that only some machines use. Sets g92 and taper when the block
+/// has G92 or G51/G52 (evidence with other words of the block).
+void codeEvidence(const Program& program, const Block& b, bool p, Tallies& t, bool& g92, bool& taper) {
+  const std::string_view text = program.source->text();
+  for (const Word& w : program.wordsOf(b)) {
+    if (!w.isNumber() || (w.letter != 'G' && w.letter != 'M' && w.letter != 'T')) continue;
+    // The common codes (G00-G03, G90-G92, M02 ...) are no evidence: out before any arithmetic.
+    if (w.value < 28 || (w.value >= 90 && w.value <= 95 && w.letter == 'G')) {
+      if (!(w.letter == 'G' && (std::abs(w.value - 12.1) < 1e-9 || std::abs(w.value - 13.1) < 1e-9)))
+        if (!(w.letter == 'G' && w.value == 92)) continue;
     }
-    if (b.kind == BlockKind::MacroB) {
-      t["fanuc"].add(
-          "macro", [&] { return onLine("macro B", b.line); }, b.span(), 2);
-      continue;
-    }
-    if (b.twoMotions)
-      t["cnc3"].add(
-          "two", [&] { return onLine("two motion words in one block", b.line); }, b.span(), 3);
-    if (b.lowerCase)
-      t["linuxcnc"].add(
-          "lower", [&] { return onLine("lower-case words", b.line); }, b.span(), 1);
-    std::uint32_t letters = 0;  // a bit per letter the block has
-    for (const Word& w : program.wordsOf(b)) letters |= 1u << (w.letter - 'A');
-    auto has = [&](char c) { return (letters & (1u << (c - 'A'))) != 0; };
-    const bool p = has('P'), uv = has('U') || has('V'), kl = has('K') || has('L'), ij = has('I') || has('J');
-    const bool tWord = has('T');
-    bool g92 = false, taper = false;
-    if (b.unusualValues)
-      for (const Word& w : program.wordsOf(b)) {
-        if (w.kind == WordValue::Macro)
-          t["fanuc"].add(
-              "macro", [&] { return onLine("a macro B value", b.line); }, w.span(), 2);
-        if (w.kind == WordValue::Register)
-          t["sodick"].add(
-              "register", [&] { return onLine("a register value", b.line); }, w.span(), 2);
-      }
-    for (const Word& w : program.wordsOf(b)) {
-      if (!w.isNumber() || (w.letter != 'G' && w.letter != 'M' && w.letter != 'T')) continue;
-      // The common codes (G00-G03, G90-G92, M02 ...) are no evidence: out before any arithmetic.
-      if (w.value < 28 || (w.value >= 90 && w.value <= 95 && w.letter == 'G')) {
-        if (!(w.letter == 'G' && (std::abs(w.value - 12.1) < 1e-9 || std::abs(w.value - 13.1) < 1e-9)))
-          if (!(w.letter == 'G' && w.value == 92)) continue;
-      }
-      const long n = roundHalfAway(w.value);
-      const bool whole = std::abs(w.value - static_cast<double>(n)) < 1e-9;
-      if (w.letter == 'G') {
-        const long tenths = roundHalfAway(w.value * 10);
-        if (whole && (n == 60 || n == 38 || n == 39))
-          t["robofil"].add(
-              "G" + std::to_string(n), [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
-        if (whole && n >= 140 && n <= 142)
-          t["sodick"].add(
-              "colon", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
-        if ((whole && (n == 112 || n == 113)) || tenths == 121 || tenths == 131)
-          t["fanuc"].add(
-              "polar",
-              [&] {
-                return onLine("polar interpolation (" + std::string(text.substr(w.offset, w.length)) + ")", b.line);
-              },
-              w.span(), 3);
-        if (whole && (n == 98 || n == 99))
-          t["fanuc"].add(
-              "g98", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 1);
-        if (whole && (n == 61 || n == 64))
-          t["linuxcnc"].add(
-              "path", [&] { return onLine("G" + std::to_string(n) + " path control", b.line); }, w.span(), 1);
-        g92 |= whole && n == 92;
-        taper |= whole && (n == 51 || n == 52);
-      } else if (w.letter == 'M' && whole) {
-        if (n == 28)
-          t["robofil"].add(
-              "M28", [&] { return onLine("M28", b.line); }, w.span(), 2);
-        if ((n == 100 || n == 101) && p)
-          t["cnc3"].add(
-              "geometry", [&] { return onLine("M" + std::to_string(n) + " P (taper geometry)", b.line); }, w.span(), 3);
-        if (n >= 105 && n <= 107 && p)
-          t["cnc3"].add(
-              "generator", [&] { return onLine("M" + std::to_string(n) + " P (generator and wire settings)", b.line); },
-              w.span(), 2);
-        if (n == 40 || n == 41 || (n >= 82 && n <= 85))
-          t["cnc3"].add(
-              "M" + std::to_string(n), [&] { return onLine("M" + std::to_string(n), b.line); }, w.span(), 1);
-        if (n == 199)
-          t["sodick"].add(
-              "M199", [&] { return onLine("M199", b.line); }, w.span(), 1);
-      } else if (w.letter == 'T' && whole && (n == 84 || n == 85 || n == 94)) {
+    const long n = roundHalfAway(w.value);
+    const bool whole = std::abs(w.value - static_cast<double>(n)) < 1e-9;
+    if (w.letter == 'G') {
+      const long tenths = roundHalfAway(w.value * 10);
+      if (whole && (n == 60 || n == 38 || n == 39))
+        t["robofil"].add(
+            "G" + std::to_string(n), [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
+      if (whole && n >= 140 && n <= 142)
         t["sodick"].add(
-            "T" + std::to_string(n), [&] { return onLine("T" + std::to_string(n), b.line); }, w.span(), 1);
-      }
+            "colon", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
+      if ((whole && (n == 112 || n == 113)) || tenths == 121 || tenths == 131)
+        t["fanuc"].add(
+            "polar",
+            [&] {
+              return onLine("polar interpolation (" + std::string(text.substr(w.offset, w.length)) + ")", b.line);
+            },
+            w.span(), 3);
+      if (whole && (n == 98 || n == 99))
+        t["fanuc"].add(
+            "g98", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 1);
+      if (whole && (n == 61 || n == 64))
+        t["linuxcnc"].add(
+            "path", [&] { return onLine("G" + std::to_string(n) + " path control", b.line); }, w.span(), 1);
+      g92 |= whole && n == 92;
+      taper |= whole && (n == 51 || n == 52);
+    } else if (w.letter == 'M' && whole) {
+      if (n == 28)
+        t["robofil"].add(
+            "M28", [&] { return onLine("M28", b.line); }, w.span(), 2);
+      if ((n == 100 || n == 101) && p)
+        t["cnc3"].add(
+            "geometry", [&] { return onLine("M" + std::to_string(n) + " P (taper geometry)", b.line); }, w.span(), 3);
+      if (n >= 105 && n <= 107 && p)
+        t["cnc3"].add(
+            "generator", [&] { return onLine("M" + std::to_string(n) + " P (generator and wire settings)", b.line); },
+            w.span(), 2);
+      if (n == 40 || n == 41 || (n >= 82 && n <= 85))
+        t["cnc3"].add(
+            "M" + std::to_string(n), [&] { return onLine("M" + std::to_string(n), b.line); }, w.span(), 1);
+      if (n == 199)
+        t["sodick"].add(
+            "M199", [&] { return onLine("M199", b.line); }, w.span(), 1);
+    } else if (w.letter == 'T' && whole && (n == 84 || n == 85 || n == 94)) {
+      t["sodick"].add(
+          "T" + std::to_string(n), [&] { return onLine("T" + std::to_string(n), b.line); }, w.span(), 1);
     }
-    if (g92 && ij)
-      t["ncvc"].add(
-          "g92ij", [&] { return onLine("G92 with I J (plane heights)", b.line); }, b.span(), 3);
-    if (uv && kl)
-      t["ncvc"].add(
-          "kl", [&] { return onLine("K L beside U V", b.line); }, b.span(), 2);
-    if (taper && tWord)
-      t["ncvc"].add(
-          "t", [&] { return onLine("G51/G52 with a T angle", b.line); }, b.span(), 2);
   }
+}
+
+/// Block b's evidence: macro calls and macro B, two motion words, lower case, unusual values, its
+/// codes, and the words that go together (G92 with I J, K L beside U V, G51/G52 with T).
+void blockEvidence(const Program& program, const Block& b, Tallies& t) {
+  if (b.kind == BlockKind::MacroCall) {
+    const std::string_view call = program.textOf(b).substr(0, program.textOf(b).find('('));
+    t["sodick"].add(
+        "call", [&] { return onLine("the macro call " + std::string(call) + "(...)", b.line); }, b.span(), 3);
+    return;
+  }
+  if (b.kind == BlockKind::MacroB) {
+    t["fanuc"].add(
+        "macro", [&] { return onLine("macro B", b.line); }, b.span(), 2);
+    return;
+  }
+  if (b.twoMotions)
+    t["cnc3"].add(
+        "two", [&] { return onLine("two motion words in one block", b.line); }, b.span(), 3);
+  if (b.lowerCase)
+    t["linuxcnc"].add(
+        "lower", [&] { return onLine("lower-case words", b.line); }, b.span(), 1);
+  std::uint32_t letters = 0;  // a bit per letter the block has
+  for (const Word& w : program.wordsOf(b)) letters |= 1u << (w.letter - 'A');
+  auto has = [&](char c) { return (letters & (1u << (c - 'A'))) != 0; };
+  const bool p = has('P'), uv = has('U') || has('V'), kl = has('K') || has('L'), ij = has('I') || has('J');
+  const bool tWord = has('T');
+  bool g92 = false, taper = false;
+  if (b.unusualValues)
+    for (const Word& w : program.wordsOf(b)) {
+      if (w.kind == WordValue::Macro)
+        t["fanuc"].add(
+            "macro", [&] { return onLine("a macro B value", b.line); }, w.span(), 2);
+      if (w.kind == WordValue::Register)
+        t["sodick"].add(
+            "register", [&] { return onLine("a register value", b.line); }, w.span(), 2);
+    }
+  codeEvidence(program, b, p, t, g92, taper);
+  if (g92 && ij)
+    t["ncvc"].add(
+        "g92ij", [&] { return onLine("G92 with I J (plane heights)", b.line); }, b.span(), 3);
+  if (uv && kl)
+    t["ncvc"].add(
+        "kl", [&] { return onLine("K L beside U V", b.line); }, b.span(), 2);
+  if (taper && tWord)
+    t["ncvc"].add(
+        "t", [&] { return onLine("G51/G52 with a T angle", b.line); }, b.span(), 2);
+}
+
+}  // namespace
+
+MachineDetection detectMachine(const Program& program) {
+  Tallies t;
+  fileEvidence(program, t);
+  for (const std::uint32_t k : program.notPlain)
+    blockEvidence(program, program.blocks[k], t);  // a plain block holds none
   MachineDetection d;
   d.profile = findBuiltinMachine("generic");
   int best = 1;  // a single weak hint is not enough

@@ -20,6 +20,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kerf::converter {
@@ -263,6 +264,9 @@ bool looksLikeCurve(std::string_view text) {
 
 namespace {
 
+/// A statement's place in the file.
+SourceSpan spanOf(const Statement& s) { return SourceSpan{s.offset, static_cast<std::uint32_t>(s.text.size())}; }
+
 /// Points of a point list lie within this many mm of the origin (as drawings do, K0132).
 constexpr double kLargestCurveCoordinate = 1e6;
 
@@ -270,7 +274,6 @@ constexpr double kLargestCurveCoordinate = 1e6;
 /// their lines, then fitted (K0130, K0131).
 void readPointList(const SourceFile& src, const std::vector<Statement>& st, const CurveOptions& o,
                    const geometry::BiarcOptions& bo, Diagnostics& diags, Drawing& d) {
-  auto spanOf = [](const Statement& s) { return SourceSpan{s.offset, static_cast<std::uint32_t>(s.text.size())}; };
   std::vector<geometry::Vec2> pts;
   bool ok = true;
   for (std::size_t k = 1; k < st.size(); ++k) {
@@ -310,36 +313,21 @@ void readPointList(const SourceFile& src, const std::vector<Statement>& st, cons
   fillDrawing(d, fit, "POINTS", spanOf(st.front()), src.locate(st.front().offset).line);
 }
 
-}  // namespace
+/// A parametric curve's three statements.
+struct CurveStatements {
+  const Statement *x = nullptr, *y = nullptr, *t = nullptr;
+};
 
-Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& diags) {
-  Drawing d;
-  d.version = "curve";
-  const std::string_view all = src.text();
-  const std::vector<Statement> st = statements(all);
-  auto spanOf = [](const Statement& s) { return SourceSpan{s.offset, static_cast<std::uint32_t>(s.text.size())}; };
-  geometry::BiarcOptions bo;
-  bo.tolerance = o.tolerance;
-  bo.maxSpans = o.maxSpans;
-
-  // A point list.
-  if (!st.empty()) {
-    std::string first;
-    for (char c : st.front().text) first += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (first == "points") {
-      readPointList(src, st, o, bo, diags, d);
-      return d;
-    }
-  }
-
-  // A parametric curve.
-  auto state = std::make_shared<CurveState>();
-  const Statement *xs = nullptr, *ys = nullptr, *ts = nullptr;
+/// x = ..., y = ... and t = ... among the statements, each once; nothing after saying what is
+/// wrong or missing.
+std::optional<CurveStatements> curveStatements(const SourceFile& src, const std::vector<Statement>& st,
+                                               Diagnostics& diags) {
+  CurveStatements c;
   bool ok = true;
   for (const Statement& s : st) {
     std::size_t eq = 0;
     const std::string name = nameOf(s.text, eq);
-    const Statement** slot = name == "x" ? &xs : name == "y" ? &ys : name == "t" ? &ts : nullptr;
+    const Statement** slot = name == "x" ? &c.x : name == "y" ? &c.y : name == "t" ? &c.t : nullptr;
     if (!slot) {
       diags.error(Code::CurveSyntax, &src, spanOf(s),
                   "a curve statement is 'x = EXPR', 'y = EXPR' or 't = FROM : TO', not '" + std::string(s.text) + "'");
@@ -353,66 +341,93 @@ Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& dia
     }
     *slot = &s;
   }
-  if (!ok) return d;
-  if (!xs || !ys || !ts) {
+  if (!ok) return std::nullopt;
+  if (!c.x || !c.y || !c.t) {
     diags.error(Code::CurveSyntax, &src, SourceSpan::wholeFile(),
-                std::string("the curve has no ") + (!xs   ? "'x = EXPR'"
-                                                    : !ys ? "'y = EXPR'"
-                                                          : "'t = FROM : TO' (--t)"),
+                std::string("the curve has no ") + (!c.x   ? "'x = EXPR'"
+                                                    : !c.y ? "'y = EXPR'"
+                                                           : "'t = FROM : TO' (--t)"),
                 "a curve is x = EXPR; y = EXPR of the parameter t, and its range t = FROM : TO");
-    return d;
+    return std::nullopt;
   }
-  auto rhs = [](const Statement& s, std::uint32_t& offset) {
-    std::size_t eq = 0;
-    nameOf(s.text, eq);
-    std::string_view r = s.text.substr(eq + 1);
-    std::size_t lead = 0;
-    while (lead < r.size() && std::isspace(static_cast<unsigned char>(r[lead]))) ++lead;
-    offset = s.offset + static_cast<std::uint32_t>(eq + 1 + lead);
-    return r.substr(lead);
-  };
-  std::uint32_t xo = 0, yo = 0, to = 0;
-  const std::string_view xt = rhs(*xs, xo), yt = rhs(*ys, yo), tt = rhs(*ts, to);
-  // The range: FROM : TO.
+  return c;
+}
+
+/// The text after a statement's '=', blanks skipped, and its offset in the file.
+std::string_view rightSide(const Statement& s, std::uint32_t& offset) {
+  std::size_t eq = 0;
+  nameOf(s.text, eq);
+  std::string_view r = s.text.substr(eq + 1);
+  std::size_t lead = 0;
+  while (lead < r.size() && std::isspace(static_cast<unsigned char>(r[lead]))) ++lead;
+  offset = s.offset + static_cast<std::uint32_t>(eq + 1 + lead);
+  return r.substr(lead);
+}
+
+/// The range FROM : TO of the t statement, FROM below TO, both finite; nothing after saying why not.
+std::optional<std::pair<double, double>> curveRange(const SourceFile& src, const Statement& ts, Diagnostics& diags) {
+  std::uint32_t to = 0;
+  const std::string_view tt = rightSide(ts, to);
   const std::size_t colon = tt.find(':');
   if (colon == std::string_view::npos) {
-    diags.error(Code::CurveSyntax, &src, spanOf(*ts), "the range is 't = FROM : TO', with a colon");
-    return d;
+    diags.error(Code::CurveSyntax, &src, spanOf(ts), "the range is 't = FROM : TO', with a colon");
+    return std::nullopt;
   }
   Expression from, to2;
   if (!compile(from, tt.substr(0, colon), to, nullptr, src, diags, "the range's start") ||
       !compile(to2, tt.substr(colon + 1), to + static_cast<std::uint32_t>(colon + 1), nullptr, src, diags,
                "the range's end"))
-    return d;
+    return std::nullopt;
   const double t0 = eval(from), t1 = eval(to2);
   if (!std::isfinite(t0) || !std::isfinite(t1) || !(t1 > t0)) {
-    diags.error(Code::CurveSyntax, &src, spanOf(*ts),
+    diags.error(Code::CurveSyntax, &src, spanOf(ts),
                 "the range " + formatFixed(t0, 6) + " : " + formatFixed(t1, 6) + " is empty: FROM must be below TO");
-    return d;
+    return std::nullopt;
   }
-  state->t = t0;
-  if (!compile(state->x, xt, xo, &state->t, src, diags, "x") || !compile(state->y, yt, yo, &state->t, src, diags, "y"))
-    return d;
-  // Every point of the range must be a finite point (sqrt(-1), 1/0, ln(0) are not).
+  return std::pair{t0, t1};
+}
+
+/// Whether every point of [t0, t1] (probed 2048 times) is finite and within a kilometre; the
+/// first that is not is said at its expression.
+bool curveIsFinite(const SourceFile& src, CurveState& state, double t0, double t1, Diagnostics& diags) {
   constexpr int kProbes = 2048;
   for (int k = 0; k <= kProbes; ++k) {
-    state->t = t0 + (t1 - t0) * k / kProbes;
-    const double x = eval(state->x), y = eval(state->y);
+    state.t = t0 + (t1 - t0) * k / kProbes;
+    const double x = eval(state.x), y = eval(state.y);
     if (!std::isfinite(x) || !std::isfinite(y)) {
-      const Expression& bad = std::isfinite(x) ? state->y : state->x;
+      const Expression& bad = std::isfinite(x) ? state.y : state.x;
       diags.error(
           Code::CurveSyntax, &src, {bad.offset, bad.length},
-          std::string(std::isfinite(x) ? "y" : "x") + " is not a finite number at t = " + formatFixed(state->t, 6));
-      return d;
+          std::string(std::isfinite(x) ? "y" : "x") + " is not a finite number at t = " + formatFixed(state.t, 6));
+      return false;
     }
     if (std::abs(x) > kLargestCurveCoordinate || std::abs(y) > kLargestCurveCoordinate) {
-      const Expression& bad = std::abs(x) <= kLargestCurveCoordinate ? state->y : state->x;
+      const Expression& bad = std::abs(x) <= kLargestCurveCoordinate ? state.y : state.x;
       diags.error(Code::CurveSyntax, &src, {bad.offset, bad.length},
                   std::string(std::abs(x) <= kLargestCurveCoordinate ? "y" : "x") + " reaches beyond 1e6 mm at t = " +
-                      formatFixed(state->t, 6) + ": Kerf reads curves within a kilometre of the origin");
-      return d;
+                      formatFixed(state.t, 6) + ": Kerf reads curves within a kilometre of the origin");
+      return false;
     }
   }
+  return true;
+}
+
+/// A parametric curve (x = EXPR; y = EXPR; t = FROM : TO) into d: its statements, its range, its
+/// expressions compiled and probed, then fitted with biarcs.
+void readParametric(const SourceFile& src, const std::vector<Statement>& st, const CurveOptions& o,
+                    const geometry::BiarcOptions& bo, Diagnostics& diags, Drawing& d) {
+  const std::optional<CurveStatements> c = curveStatements(src, st, diags);
+  if (!c) return;
+  const std::optional<std::pair<double, double>> range = curveRange(src, *c->t, diags);
+  if (!range) return;
+  const auto [t0, t1] = *range;
+  auto state = std::make_shared<CurveState>();
+  state->t = t0;
+  std::uint32_t xo = 0, yo = 0;
+  const std::string_view xt = rightSide(*c->x, xo), yt = rightSide(*c->y, yo);
+  if (!compile(state->x, xt, xo, &state->t, src, diags, "x") || !compile(state->y, yt, yo, &state->t, src, diags, "y"))
+    return;
+  if (!curveIsFinite(src, *state, t0, t1, diags)) return;
   geometry::ParametricCurve curve;
   curve.point = [state](double t) {
     state->t = t;
@@ -420,11 +435,29 @@ Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& dia
   };
   curve.t0 = t0;
   curve.t1 = t1;
-  const SourceSpan where = spanOf(*xs);
+  const SourceSpan where = spanOf(*c->x);
   const geometry::BiarcFit fit = geometry::fitBiarcs(curve, bo);
-  if (!reportFit(fit, o, src, where, diags)) return d;
+  if (!reportFit(fit, o, src, where, diags)) return;
   d.curve = FittedCurve{false, o.tolerance, t0, t1, fit.spans, fit.maxError};
-  fillDrawing(d, fit, "CURVE", where, src.locate(xs->offset).line);
+  fillDrawing(d, fit, "CURVE", where, src.locate(c->x->offset).line);
+}
+
+}  // namespace
+
+Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& diags) {
+  Drawing d;
+  d.version = "curve";
+  const std::vector<Statement> st = statements(src.text());
+  geometry::BiarcOptions bo;
+  bo.tolerance = o.tolerance;
+  bo.maxSpans = o.maxSpans;
+  std::string first;  // a point list starts with the word `points`
+  if (!st.empty())
+    for (char c : st.front().text) first += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (first == "points")
+    readPointList(src, st, o, bo, diags, d);
+  else
+    readParametric(src, st, o, bo, diags, d);
   return d;
 }
 

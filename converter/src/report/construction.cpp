@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iterator>
 
 namespace kerf::converter {
 
@@ -38,9 +39,12 @@ std::string blockTextOf(const SourceFile& source, const Move& m) {
 /// The G41/G42 run move i is cut under, or null (Move::wireOffset is cleared where the offset was
 /// applied: the path is then the wire's centre).
 const OffsetSpan* offsetSpanOf(const Toolpath& tp, std::size_t i) {
-  for (const OffsetSpan& span : tp.offsetSpans)
-    if (i >= span.first && i < span.end) return &span;
-  return nullptr;
+  // The runs are in program order and do not overlap: the last one starting at or before i.
+  const auto after = std::upper_bound(tp.offsetSpans.begin(), tp.offsetSpans.end(), i,
+                                      [](std::size_t move, const OffsetSpan& span) { return move < span.first; });
+  if (after == tp.offsetSpans.begin()) return nullptr;
+  const OffsetSpan& span = *std::prev(after);
+  return i < span.end ? &span : nullptr;
 }
 
 std::string sideName(WireOffset side) {

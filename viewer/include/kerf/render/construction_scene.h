@@ -15,7 +15,6 @@ struct ConstructionScene {
   std::vector<Marker> points;        ///< centres, start and end: a dot each (label empty: said by `labels`)
   std::vector<Marker> labels;        ///< each mark's label at its anchor (sizePixels 0: no dot)
   std::vector<std::string> caption;  ///< the block, its words and modes: a box in the picture's corner
-  [[nodiscard]] bool empty() const { return lines.vertices.empty() && points.empty(); }
 };
 
 /// The marks at their planes' heights (a taper move's upper side at planes.upper), arcs within

@@ -14,6 +14,7 @@ bare_g92 = error
 # Before the codes were renumbered, M106 P L Q H gave the guides and M107 P T the thickness
 # (15831944/cnc3 gcode.cpp at 4ae9a321). A program whose M106 has both P and Q uses that numbering.
 legacy_taper_codes = detect
+corner_r = comma
 max_taper = 30
 uv_range = none
 thickness = none

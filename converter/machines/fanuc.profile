@@ -10,6 +10,7 @@ semicolon = comment
 upper_axes = uv
 bare_g92 = error
 legacy_taper_codes = no
+corner_r = comma
 max_taper = 30
 uv_range = none
 thickness = none

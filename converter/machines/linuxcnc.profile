@@ -10,6 +10,7 @@ semicolon = comment
 upper_axes = uv
 bare_g92 = error
 legacy_taper_codes = no
+corner_r = comma
 # The two planes are independent carriages: no guide limits how far the wire leans. 60 degrees
 # is a decision, not a machine limit: a wire leaning further is probably a program error.
 max_taper = 60

@@ -14,6 +14,7 @@ upper_axes = uv
 # A bare G92 makes the current position the origin (PinZ15, 2K-Filera open with it).
 bare_g92 = origin
 legacy_taper_codes = no
+corner_r = comma
 max_taper = 30
 uv_range = none
 thickness = none

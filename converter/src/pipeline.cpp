@@ -267,44 +267,6 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
   summarizeInto(out, options);
 }
 
-void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::optional<SourceText> upper) {
-  ThreeBOptions tb;
-  if (options.read.start) tb.start = *options.read.start;
-  out.toolpath = readThreeB(*out.source, tb, out.diags);
-  const ReadOptions& ro = options.read;
-  PlaneHeights& h = out.toolpath.heights;  // 3B has no heights: only the options give them
-  h.planes.lower = ro.lowerZ.value_or(0.0);
-  h.programZ = ro.programZ.value_or(h.planes.lower);
-  const std::optional<double> upperZ = ro.upperZ      ? ro.upperZ
-                                       : ro.thickness ? std::optional<double>(h.planes.lower + *ro.thickness)
-                                       : out.machine.thickness
-                                           ? std::optional<double>(h.planes.lower + *out.machine.thickness)
-                                           : std::nullopt;
-  if (upperZ && *upperZ > h.planes.lower) {
-    h.planes.upper = *upperZ;
-    h.known = true;
-    h.source = "the options";
-  }
-  if (upper) {
-    out.upperSource = std::make_unique<SourceFile>(std::move(upper->name), std::move(upper->text));
-    Diagnostics upperDiags(100000);
-    Toolpath upperPath;
-    if (detectFormat(out.upperSource->text()).format == InputFormat::ThreeB) {
-      upperPath = readThreeB(*out.upperSource, tb, upperDiags);
-    } else {
-      MachineReading reading = readForMachine(*out.upperSource, &out.machine, std::nullopt);
-      upperDiags.append(std::move(reading.diags));
-      InterpreterOptions io;
-      io.machine = &out.machine;
-      io.dialect = Dialect::Plain;
-      upperPath = interpret(reading.program, io, upperDiags);
-    }
-    out.diags.append(std::move(upperDiags));
-    pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
-  }
-  runChecks(out, options);
-}
-
 /// The profile the options name: a profile file's text (read here, its errors into out.diags) or a
 /// built-in name. profile is null when none is named: the program's evidence then picks one.
 /// failed is set when the file cannot be read or the name is not built in (the error is in
@@ -424,15 +386,81 @@ void noteHowRead(Pipeline& out, const MachineDetection& detection, const std::ve
       "override with --machine NAME or FILE, --integer-unit, --arc-centre (kerf machines lists the profiles)");
 }
 
-/// The upper program of a two-file taper pair, parsed with the lower one's rules and interpreted
-/// with its conventions, paired move by move with the lower toolpath (interpret/analysis.h).
-void pairUpperProgram(Pipeline& out, SourceText upper, const InterpreterOptions& io, const ParseOptions& parse) {
+/// An --offsets table, when the options name one: its errors (in out.diags) say why nothing is
+/// read, and nothing is returned. An empty table when none is named.
+std::optional<OffsetTable> readOffsetsOption(Pipeline& out, const ReadOptions& ro) {
+  if (!ro.offsetsFile) return OffsetTable{};
+  out.offsetsSource = std::make_unique<SourceFile>(ro.offsetsFile->name, ro.offsetsFile->text);
+  return readOffsetTable(*out.offsetsSource, out.diags);
+}
+
+/// The conventions an ISO lower program was read with, for its upper program.
+struct LowerReading {
+  const InterpreterOptions& io;
+  const ParseOptions& parse;
+};
+
+/// The upper program of a two-file taper pair, whatever the lower one's format: 3B read as 3B; ISO
+/// parsed and interpreted with the lower program's rules and conventions when the lower one is ISO
+/// (lower), else with the options and the machine profile exactly as a lower ISO program would be
+/// (integer unit, I J convention, offsets, limits: issue 55). Its source is kept in out and its
+/// diagnostics go to out.diags.
+Toolpath readUpperProgram(Pipeline& out, SourceText upper, const PipelineOptions& options, const OffsetTable& offsets,
+                          const LowerReading* lower) {
   out.upperSource = std::make_unique<SourceFile>(std::move(upper.name), std::move(upper.text));
   Diagnostics upperDiags(100000);
-  const Program upperProgram = parseProgram(*out.upperSource, upperDiags, parse);
-  const Toolpath upperPath = interpret(upperProgram, io, upperDiags);
+  Toolpath upperPath;
+  if (detectFormat(out.upperSource->text()).format == InputFormat::ThreeB) {
+    ThreeBOptions tb;
+    if (options.read.start) tb.start = *options.read.start;
+    upperPath = readThreeB(*out.upperSource, tb, upperDiags);
+  } else if (lower) {
+    const Program upperProgram = parseProgram(*out.upperSource, upperDiags, lower->parse);
+    upperPath = interpret(upperProgram, lower->io, upperDiags);
+  } else {
+    MachineReading reading = readForMachine(*out.upperSource, &out.machine, options.read.upperAxesUZ);
+    upperDiags.append(std::move(reading.diags));
+    std::vector<std::string> evidence;  // the lower program's note says how the pair was read
+    InterpreterOptions io = interpreterOptions(out.machine, options, offsets, reading.program, true, evidence);
+    upperPath = interpretForMachine(reading.program, out.machine, options.read, io, upperDiags, evidence).toolpath;
+  }
   out.diags.append(std::move(upperDiags));
-  pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
+  return upperPath;
+}
+
+/// 3B code (read_3b.h): its planes from the options alone (3B has no heights), and a two-file
+/// pair's upper program.
+void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::optional<SourceText> upper) {
+  const ReadOptions& ro = options.read;
+  Toolpath upperPath;
+  if (upper) {
+    const std::optional<OffsetTable> offsets = readOffsetsOption(out, ro);
+    if (!offsets) return;
+    upperPath = readUpperProgram(out, std::move(*upper), options, *offsets, nullptr);
+  }
+  // 3B code says no position: it starts at --start, else where its upper program starts (the same
+  // part's other plane, in that program's frame), else at the origin.
+  ThreeBOptions tb;
+  if (ro.start)
+    tb.start = *ro.start;
+  else if (upper)
+    tb.start = upperPath.start;
+  out.toolpath = readThreeB(*out.source, tb, out.diags);
+  PlaneHeights& h = out.toolpath.heights;  // 3B has no heights: only the options give them
+  h.planes.lower = ro.lowerZ.value_or(0.0);
+  h.programZ = ro.programZ.value_or(h.planes.lower);
+  const std::optional<double> upperZ = ro.upperZ      ? ro.upperZ
+                                       : ro.thickness ? std::optional<double>(h.planes.lower + *ro.thickness)
+                                       : out.machine.thickness
+                                           ? std::optional<double>(h.planes.lower + *out.machine.thickness)
+                                           : std::nullopt;
+  if (upperZ && *upperZ > h.planes.lower) {
+    h.planes.upper = *upperZ;
+    h.known = true;
+    h.source = "the options";
+  }
+  if (upper) pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
+  runChecks(out, options);
 }
 
 }  // namespace
@@ -459,15 +487,10 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   }
 
   // An --offsets table: its errors say why nothing is read.
-  OffsetTable offsets;
-  if (ro.offsetsFile) {
-    out.offsetsSource = std::make_unique<SourceFile>(ro.offsetsFile->name, ro.offsetsFile->text);
-    std::optional<OffsetTable> table = readOffsetTable(*out.offsetsSource, out.diags);
-    if (!table) {
-      out.read = false;
-      return out;
-    }
-    offsets = std::move(*table);
+  const std::optional<OffsetTable> offsets = readOffsetsOption(out, ro);
+  if (!offsets) {
+    out.read = false;
+    return out;
   }
 
   // 2. The program parsed with its profile's rules (detected from the program when none is named).
@@ -482,14 +505,18 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
 
   // 3. The conventions, then the program interpreted with them.
   std::vector<std::string> evidence;
-  InterpreterOptions io = interpreterOptions(out.machine, options, offsets, program, upper.has_value(), evidence);
+  InterpreterOptions io = interpreterOptions(out.machine, options, *offsets, program, upper.has_value(), evidence);
   Diagnostics interpretDiags(100000);
   Interpretation in = interpretForMachine(program, out.machine, ro, io, interpretDiags, evidence);
   out.toolpath = std::move(in.toolpath);
   out.diags.append(std::move(reading.diags));
   noteHowRead(out, reading.detection, evidence);
   out.diags.append(std::move(interpretDiags));
-  if (upper) pairUpperProgram(out, std::move(*upper), io, reading.parse);
+  if (upper) {
+    const LowerReading lower{io, reading.parse};
+    const Toolpath upperPath = readUpperProgram(out, std::move(*upper), options, *offsets, &lower);
+    pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
+  }
 
   if (program.blocks.empty() && !out.diags.hasErrors())  // with errors, those say why nothing was read
     out.diags.error(Code::NothingCut, out.source.get(), SourceSpan{0, 0},  // where a program would start

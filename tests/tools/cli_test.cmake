@@ -515,6 +515,34 @@ elseif(CASE STREQUAL "check_quotes_the_line")
   run("${KERF}" check "${SOURCE}/samples/bad/wire_crossing.nc" --json)
   string(FIND "${out}" "\"line\": 8" at)
   expect("JSON keeps the line" NOT at EQUAL -1)
+elseif(CASE STREQUAL "tables_follow_inserted_moves")
+  # Issue 55's two wrong answers. 1. The wire offset inserts corner arcs: each pass keeps the
+  # machining condition selected before it (the second punch was said to be under C003).
+  run("${KERF}" check "${SOURCE}/tests/programs/sodick_three_punches_conditions.nc" --json
+      --machine "${SOURCE}/tests/passes/sodick_shop.profile")
+  expect("the Sodick program should be read clean (${rc})" rc EQUAL 0)
+  foreach(k 0 1 2)
+    math(EXPR n "${k} + 1")
+    string(JSON condition GET "${out}" summary structure contours ${k} passes 0 condition)
+    expect("punch ${n} is cut under C00${n}, not ${condition}" condition STREQUAL "C00${n}")
+  endforeach()
+  string(JSON minutes GET "${out}" summary structure contours 1 passes 0 minutes)
+  # 40.628 mm round the square and 4.9 mm each way between the start hole and the wire path: 50.428 mm
+  # at C002's 12 mm/min (C003's 15 gave 3.362).
+  expect("the second punch at C002's 12 mm/min: 50.428 mm in 4.202 min, not ${minutes}"
+         minutes GREATER 4.20 AND minutes LESS 4.21)
+  # 2. An ISO upper program beside a 3B lower one is read with the options (--integer-unit um):
+  # its length is the lower one's scale, not a thousand times it.
+  set(testdata "${SOURCE}/../shared/testdata/3b")
+  if(NOT EXISTS "${testdata}/set_a.iso")
+    message(FATAL_ERROR "${testdata}/set_a.iso is missing: the shared test data must lie beside the repository")
+  endif()
+  run("${KERF}" check "${testdata}/set_a.3b" --upper "${testdata}/set_a.iso" --thickness 10 --integer-unit um --json)
+  string(JSON lower GET "${out}" summary taper lower_length_mm)
+  string(JSON upper GET "${out}" summary taper upper_length_mm)
+  string(FIND "${out}" "K0650" steep)
+  expect("the upper program is read in um: upper ${upper} mm beside lower ${lower} mm, and no K0650"
+         upper LESS 2000 AND steep EQUAL -1)
 elseif(CASE STREQUAL "threads_do_not_change_findings")
   # The measures and the sections run on every core: one thread or several, the same report, on
   # every sample (the bad ones have section findings) and on a taper part long enough to split.

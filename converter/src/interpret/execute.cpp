@@ -12,6 +12,7 @@ void Interpreter::warnIgnoredWords(const BlockWords& bw, const BlockPlan& plan) 
   for (char c : {'A', 'K', 'Q', 'Z', 'T', 'W'}) {
     if (!bw.has(c) || (c == 'Z' && plan.setPosition) || (c == 'Q' && mCode)) continue;
     if ((c == 'A' || c == 'T') && dialect_ == Dialect::TaperAngle) continue;
+    if (c == 'K' && cornerUpperRadius(bw)) continue;  // the upper plane's corner radius (corner.cpp)
     if (warnedLetters_.insert(c).second)
       diags_.warning(Code::WordIgnored, src_, bw[c]->span(),
                      std::string("word '") + c + "' has no meaning in a " + dialectName(dialect_) +

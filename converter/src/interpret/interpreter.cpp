@@ -76,6 +76,7 @@ Interpretation Interpreter::run() {
     pc = next;
   }
   flushUnknown(nullptr);
+  refusePendingCorner("no cut move follows: there is no corner to round");
   if (!toolpath_.endedProperly && !diags_.hasErrors() && n > 0)
     diags_.warning(Code::MissingProgramEnd, src_, program_.blocks.back().span(), "program ends without M02 or M30");
   if (options_.millTurn) finishFace();
@@ -201,6 +202,13 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
                          " selects a work offset stored in the controller; Kerf takes it as zero");
     }
   }
+  const Word* corner = bw.cornerRound ? bw.cornerRound : bw.cornerChamfer;
+  const bool moves = !options_.millTurn && !plan.homing && !plan.positionCode && !plan.unknownValue && !plan.dwell &&
+                     !plan.setPosition && !plan.noMotion;
+  if (corner && !moves)  // executeMotion holds a corner word; no other block can round one
+    diags_.error(Code::CornerNotMade, src_, corner->span(),
+                 options_.millTurn ? "Kerf does not round or chamfer corners in a mill-turn face program"
+                                   : "this block makes no cut move whose corner the word could round");
   if (options_.millTurn) {
     holdMotion(bw);
     executeFaceBlock(bw, block, plan);

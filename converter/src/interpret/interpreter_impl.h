@@ -6,6 +6,7 @@
 //   check_block.cpp    phase 3: what cannot mean anything
 //   execute.cpp        phase 4: feed, dwell, plane, units, taper, distance, work offset, G92
 //   motion.cpp         phase 4: the motion, arcs from R or I J
+//   corner.cpp         phase 4: the corner at a block's end (,R ,C), made when the next move comes
 //   upper_side.cpp     the upper side of a 4-axis move, by dialect
 //   wire_offset.cpp    G40/G41/G42 with D/H
 //   program_flow.cpp   M codes, M98/M99
@@ -51,6 +52,10 @@ struct BlockWords {
   /// Codes the machine profile knows (G, M, T, C ... and macro calls), in the order written.
   std::array<std::pair<const Word*, const KnownCode*>, 6> machine{};
   std::size_t machineCount = 0;
+  /// The corner at the block's end: Fanuc's `,R` and `,C` (Word::corner), or a bare R on a cut
+  /// block where the profile reads it so (`cut_r = corner`, NCVC).
+  const Word* cornerRound = nullptr;
+  const Word* cornerChamfer = nullptr;
   bool bad = false;
 
   [[nodiscard]] const Word* operator[](char c) const { return letter[static_cast<std::size_t>(c - 'A')]; }
@@ -103,6 +108,17 @@ struct TaperRecord {
   double tanLeft = 0.0;  // tan(angle), > 0 leaning left of travel
   bool start = false;    // the move that starts the taper (its start stays vertical)
   bool end = false;      // the move that ends it (its end is vertical again)
+};
+
+/// taper-angle: a corner made inside a taper, made again on the other planes by its model
+/// (resolveTaperAngle).
+struct TaperCorner {
+  std::size_t move = 0;  // the corner's move
+  CodeEffect model = CodeEffect::CornerEqual;
+  double size = 0.0;  // at the program plane, mm
+  std::optional<double> upperSize;
+  bool chamfer = false;
+  bool leftTurn = false;  // the contour turns left (counter-clockwise) at the corner
 };
 
 struct Height {
@@ -176,7 +192,9 @@ class Interpreter {
     return v * (inch_ ? 25.4 : 1.0);
   }
   // motion.cpp
+  /// The block's motion and the corner at its end.
   bool executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
+  bool executeMove(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
   bool buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
                  const std::string& side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
                  Move* record);
@@ -189,7 +207,20 @@ class Interpreter {
   void tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift, bool closedAsUsed,
                       std::uint32_t line);
   void reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block, const std::string& side);
-  void push(Move&& m, const Segment& upper);
+  void push(Move&& m, Segment upper);
+  // corner.cpp
+  /// bw, or (with the profile's `corner_r = bare`) its copy in bare whose R rounds the corner.
+  const BlockWords& cornerWords(const BlockWords& bw, BlockWords& bare) const;
+  /// The corner word of a block that made a move (moved) or none: held for the next move, or refused.
+  /// upper: NCVC's K, the upper plane's radius (cornerUpperRadius).
+  void holdCorner(const Word& w, const Block& block, bool moved, const Word* upper);
+  /// The held corner between the last move and next: both trimmed, the corner's move pushed.
+  void makeCorner(Move& next, Segment& nextUpper);
+  /// The held corner, if any, refused (K0240) for why.
+  void refusePendingCorner(const std::string& why);
+  /// NCVC's K beside a bare corner R in a taper (`G60 ... R2. K3.`): the upper plane's radius. Null
+  /// when the block has none.
+  const Word* cornerUpperRadius(const BlockWords& bw) const;
   /// The run of moves under one G41/G42 that the move at `index` (about to be, or just, stored)
   /// starts or extends.
   void noteOffsetRun(const Move& m, std::size_t index);
@@ -237,6 +268,8 @@ class Interpreter {
   // taper_offsets.cpp
   void resolveRel();
   void resolveTaperAngle();
+  void resolveTaperRun(std::size_t k, std::size_t e);
+  void makeTaperCorner(const TaperCorner& c, std::size_t runFirst, double z, bool upperPlane);
   // wire_offset.cpp
   void resolveWireOffsets();
   void reportOffsetIssues(const geometry::OffsetChainResult& r, const std::vector<std::size_t>& moveOf,
@@ -283,7 +316,19 @@ class Interpreter {
     std::string offsetRegister;
   };
   std::vector<OffsetRun> offsetRuns_;
-  bool programHasV_ = false;  // some word is V (for the U Z diagnostic)
+  struct PendingCorner {
+    double size = 0.0;                // r or c, mm
+    std::optional<double> upperSize;  // NCVC's K beside R: the upper plane's radius, mm
+    bool chamfer = false;
+    SourceSpan span;  // the corner word
+    std::uint32_t line = 0;
+  };
+  std::optional<PendingCorner> pendingCorner_;  // a corner word waiting for the next move
+  // taper-angle: the corners made inside a taper, each made again on the other planes by its model
+  // (resolveTaperAngle).
+  CodeEffect taperCorner_ = CodeEffect::CornerEqual;  // the model in force (a profile's corner-* code)
+  std::vector<TaperCorner> taperCorners_;             // in move order
+  bool programHasV_ = false;                          // some word is V (for the U Z diagnostic)
 
   // A mill-turn face program's axes (mill_turn.cpp). position_ is the face point.
   struct FaceAxes {

@@ -53,6 +53,10 @@ const char* codeEffectName(CodeEffect e) {
     case CodeEffect::ProgramEnd: return "program-end";
     case CodeEffect::Rethread: return "rethread";
     case CodeEffect::Condition: return "condition";
+    case CodeEffect::CornerEqual: return "corner-equal";
+    case CodeEffect::CornerConicalMin: return "corner-conical-min";
+    case CodeEffect::CornerConicalMean: return "corner-conical-mean";
+    case CodeEffect::CornerConicalMax: return "corner-conical-max";
   }
   return "harmless";
 }
@@ -180,17 +184,18 @@ void readCode(const ProfileLine& l, MachineProfile& p) {
   const std::string effect = trim(l.value.substr(0, colon));
   c.note = colon == std::string::npos ? std::string{} : trim(l.value.substr(colon + 1));
   bool known = false;
-  for (CodeEffect e :
-       {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
-        CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread, CodeEffect::Condition})
+  for (CodeEffect e : {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
+                       CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread,
+                       CodeEffect::Condition, CodeEffect::CornerEqual, CodeEffect::CornerConicalMin,
+                       CodeEffect::CornerConicalMean, CodeEffect::CornerConicalMax})
     if (effect == codeEffectName(e)) {
       c.effect = e;
       known = true;
     }
   if (!known) {
     l.badValue(
-        "harmless, not-modelled, position, no-motion, thickness, guides, program-end, rethread or condition, then "
-        "': note'");
+        "harmless, not-modelled, position, no-motion, thickness, guides, program-end, rethread, condition, "
+        "corner-equal, corner-conical-min, corner-conical-mean or corner-conical-max, then ': note'");
     return;
   }
   if (c.note.empty()) {
@@ -296,6 +301,8 @@ bool readReadingKey(const ProfileLine& l, MachineProfile& p) {
     l.either(p.bareSetPositionIsOrigin, "error", "origin");
   } else if (key == "legacy_taper_codes") {
     l.either(p.legacyTaperCodes, "no", "detect");
+  } else if (key == "corner_r") {
+    l.either(p.bareCornerRadius, "comma", "bare");
   } else if (key == "max_taper") {
     if (auto v = number(value); v && *v >= 0 && *v <= 89)
       p.maxTaperDegrees = *v;
@@ -435,7 +442,8 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
     else if (!readReadingKey(l, p) && !readWritingKey(l, p))
       l.fail(l.lead, l.eq - l.lead, "unknown key '" + l.key + "'",
              "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
-             "upper_axes, bare_g92, legacy_taper_codes, max_taper, uv_range, thickness, home, rough_rate, skim_speed, "
+             "upper_axes, bare_g92, legacy_taper_codes, corner_r, max_taper, uv_range, thickness, home, rough_rate, "
+             "skim_speed, "
              "rapid_speed, thread_time, feed, write_unit, line_end, "
              "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "
              "write_end, polar_x, polar_c, polar_frame, code <CODE>, offset <REGISTER>, condition_speed <CONDITION>");
@@ -621,6 +629,12 @@ void blockEvidence(const Program& program, const Block& b, Tallies& t) {
   const bool p = has('P'), uv = has('U') || has('V'), kl = has('K') || has('L'), ij = has('I') || has('J');
   const bool tWord = has('T');
   bool g92 = false, taper = false;
+  for (const Word& w : program.wordsOf(b))
+    if (w.corner) {
+      t["fanuc"].add(
+          "corner", [&] { return onLine("a corner word (,R or ,C)", b.line); }, w.span(), 2);
+      break;
+    }
   if (b.unusualValues)
     for (const Word& w : program.wordsOf(b)) {
       if (w.kind == WordValue::Macro)

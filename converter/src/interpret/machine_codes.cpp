@@ -74,6 +74,14 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
                          as + " sets the workpiece thickness with P, and has none");
         }
         break;
+      case CodeEffect::CornerEqual:
+      case CodeEffect::CornerConicalMin:
+      case CodeEffect::CornerConicalMean:
+      case CodeEffect::CornerConicalMax:
+        taperCorner_ = effect;
+        if (notedCodes_.insert(key).second)
+          diags_.note(Code::MachineCode, src_, w.span(), as + ": " + code.note + " [" + machine_.name + " profile]");
+        break;
       case CodeEffect::Position:    // executeBlock: the wire goes where only the machine knows
       case CodeEffect::ProgramEnd:  // executeBlock: after the motion, as M02
         break;

@@ -95,7 +95,7 @@ bool hasRotaryMoves(const Program& program) {
     bool x = false, c = false, y = false, home = false;
     for (const Word& w : program.wordsOf(b)) {
       x |= w.letter == 'X';
-      c |= w.letter == 'C';
+      c |= w.letter == 'C' && !w.corner;  // `,C` is a chamfer, not the table
       y |= w.letter == 'Y';
       home |= isG(w, 28) || isG(w, 30);
     }

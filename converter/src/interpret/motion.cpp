@@ -143,8 +143,18 @@ bool Interpreter::buildSegment(const BlockWords& w, Motion motion, const Vec2& s
   return true;
 }
 
-bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block,
+bool Interpreter::executeMotion(const BlockWords& blockWords, const BlockWords& ubw, const Block& block,
                                 const BlockPlan& plan) {
+  BlockWords bare;
+  const BlockWords& bw = cornerWords(blockWords, bare);
+  const Word* corner = bw.cornerRound ? bw.cornerRound : bw.cornerChamfer;
+  const std::size_t before = toolpath_.moves.size();
+  const bool ok = executeMove(bw, ubw, block, plan);
+  if (corner && ok) holdCorner(*corner, block, toolpath_.moves.size() > before, cornerUpperRadius(bw));
+  return ok;
+}
+
+bool Interpreter::executeMove(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan) {
   const bool hasEnd = bw.has('X') || bw.has('Y');
   if (!plan.lowerWords && !plan.upperWords) return true;  // modal words only
   if (motion_ == Motion::None) {
@@ -224,8 +234,9 @@ bool Interpreter::executeMotion(const BlockWords& bw, const BlockWords& ubw, con
   return true;
 }
 
-void Interpreter::push(Move&& m, const Segment& upper) {
+void Interpreter::push(Move&& m, Segment upper) {
   if (toolpath_.moves.empty()) toolpath_.start = position_;  // the move starts here (in the toolpath frame)
+  if (pendingCorner_) makeCorner(m, upper);
   m.modes = static_cast<std::uint8_t>((incremental_ ? kModeIncremental : 0) | (inch_ ? kModeInch : 0));
   noteOffsetRun(m, toolpath_.moves.size());
   toolpath_.moves.push_back(std::move(m));

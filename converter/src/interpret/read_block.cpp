@@ -54,6 +54,16 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
     }
     bw.machine[bw.machineCount++] = {&w, k};
   };
+  if (w.corner) {
+    const Word*& slot = w.letter == 'R' ? bw.cornerRound : bw.cornerChamfer;
+    if (slot || (w.letter == 'R' ? bw.cornerChamfer : bw.cornerRound)) {
+      diags_.error(Code::RepeatedWord, src_, w.span(), "a block rounds or chamfers its corner once: one ,R or ,C");
+      bw.bad = true;
+      return;
+    }
+    slot = &w;
+    return;
+  }
   if (w.letter == 'G') {
     int number = 0, fraction = 0;
     if (!w.isNumber() || !splitGNumber(w.value, number, fraction)) {

@@ -2,6 +2,9 @@
 // contours from U V and K L, once the plane heights are known.
 #include "interpreter_impl.h"
 
+#include "kerf/geometry/corner.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace kerf::converter::interp {
@@ -42,36 +45,105 @@ void Interpreter::reportOffsetIssues(const geometry::OffsetChainResult& r, const
 /// taper-angle: each run of leaning moves becomes an offset chain on each plane.
 void Interpreter::resolveTaperAngle() {
   if (!toolpath_.heights.known) return;  // the upper contour stays vertical; an error says why
-  const double zl = toolpath_.heights.planes.lower, zu = toolpath_.heights.planes.upper;
-  const double zp = toolpath_.heights.programZ;
   std::size_t k = 0;
   while (k < taperRecords_.size()) {
     std::size_t e = k + 1;
     while (e < taperRecords_.size() && taperRecords_[e].index == taperRecords_[e - 1].index + 1 &&
            !taperRecords_[e].start && !taperRecords_[e - 1].end)
       ++e;
-    std::vector<Segment> chain;
-    std::vector<double> up, down;
-    std::vector<std::size_t> moveOf;
-    for (std::size_t q = k; q < e; ++q) {
-      chain.push_back(toolpath_.moves[taperRecords_[q].index].lower);
-      up.push_back(taperRecords_[q].tanLeft * (zu - zp));
-      down.push_back(taperRecords_[q].tanLeft * (zl - zp));
-      moveOf.push_back(taperRecords_[q].index);
-    }
-    geometry::OffsetChainOptions opts;
-    opts.anchorStart = taperRecords_[k].start;
-    opts.anchorEnd = taperRecords_[e - 1].end;
-    const geometry::OffsetChainResult upper = geometry::offsetChain(chain, up, opts);
-    reportOffsetIssues(upper, moveOf, up, "upper");
-    for (std::size_t q = 0; q < chain.size(); ++q) toolpath_.upper[moveOf[q]] = upper.segments[q];
-    if (zp != zl) {
-      const geometry::OffsetChainResult lower = geometry::offsetChain(chain, down, opts);
-      reportOffsetIssues(lower, moveOf, down, "lower");
-      for (std::size_t q = 0; q < chain.size(); ++q) toolpath_.moves[moveOf[q]].lower = lower.segments[q];
-    }
+    resolveTaperRun(k, e);
     k = e;
   }
+}
+
+/// The run of taper records [k, e) (consecutive moves): the programmed contour without its rounded
+/// corners offset on each plane with sharp corners, then each corner made on that plane by its model.
+void Interpreter::resolveTaperRun(std::size_t k, std::size_t e) {
+  const double zl = toolpath_.heights.planes.lower, zu = toolpath_.heights.planes.upper;
+  const double zp = toolpath_.heights.programZ;
+  const std::size_t firstMove = taperRecords_[k].index, endMove = taperRecords_[e - 1].index + 1;
+  auto byMove = [](const TaperCorner& c, std::size_t m) { return c.move < m; };
+  const auto cornersBegin = std::lower_bound(taperCorners_.begin(), taperCorners_.end(), firstMove, byMove);
+  const auto cornersEnd = std::lower_bound(cornersBegin, taperCorners_.end(), endMove, byMove);
+  std::vector<Segment> chain;
+  std::vector<double> up, down;
+  std::vector<std::size_t> moveOf;
+  auto corner = cornersBegin;
+  for (std::size_t q = k; q < e; ++q) {
+    const std::size_t m = taperRecords_[q].index;
+    if (corner != cornersEnd && corner->move == m) {  // made on each plane below, from its neighbours
+      ++corner;
+      continue;
+    }
+    chain.push_back(toolpath_.moves[m].lower);
+    up.push_back(taperRecords_[q].tanLeft * (zu - zp));
+    down.push_back(taperRecords_[q].tanLeft * (zl - zp));
+    moveOf.push_back(m);
+  }
+  geometry::OffsetChainOptions opts;
+  opts.anchorStart = taperRecords_[k].start;
+  opts.anchorEnd = taperRecords_[e - 1].end;
+  const geometry::OffsetChainResult upper = geometry::offsetChain(chain, up, opts);
+  reportOffsetIssues(upper, moveOf, up, "upper");
+  for (std::size_t q = 0; q < chain.size(); ++q) toolpath_.upper[moveOf[q]] = upper.segments[q];
+  for (auto c = cornersBegin; c != cornersEnd; ++c) makeTaperCorner(*c, k, zu, true);
+  if (zp != zl) {
+    const geometry::OffsetChainResult lower = geometry::offsetChain(chain, down, opts);
+    reportOffsetIssues(lower, moveOf, down, "lower");
+    for (std::size_t q = 0; q < chain.size(); ++q) toolpath_.moves[moveOf[q]].lower = lower.segments[q];
+    for (auto c = cornersBegin; c != cornersEnd; ++c) makeTaperCorner(*c, k, zl, false);
+  }
+}
+
+/// One rounded (or chamfered) corner of a taper on the plane at z, between its neighbours' offsets
+/// there (which meet sharp): the size its model gives at z (docs/taper.md, "Corners"). A conical
+/// corner whose offset swallows its radius is a point; a corner that does not fit is an error
+/// (K0240) and stays sharp.
+void Interpreter::makeTaperCorner(const TaperCorner& c, std::size_t runFirst, double z, bool upperPlane) {
+  const double zp = toolpath_.heights.programZ, zu = toolpath_.heights.planes.upper;
+  auto segmentOf = [&](std::size_t m) -> Segment& {
+    return upperPlane ? toolpath_.upper[m] : toolpath_.moves[m].lower;
+  };
+  Segment& a = segmentOf(c.move - 1);
+  Segment& made = segmentOf(c.move);
+  Segment& b = segmentOf(c.move + 1);
+  const std::size_t first = taperRecords_[runFirst].index;
+  const double dPrev = taperRecords_[runFirst + (c.move - 1 - first)].tanLeft * (z - zp);
+  const double dNext = taperRecords_[runFirst + (c.move + 1 - first)].tanLeft * (z - zp);
+  double size = c.size;
+  switch (c.model) {
+    case CodeEffect::CornerConicalMin:
+    case CodeEffect::CornerConicalMean:
+    case CodeEffect::CornerConicalMax: {
+      const double p = std::abs(dPrev), n = std::abs(dNext);
+      const double t = c.model == CodeEffect::CornerConicalMin    ? std::min(p, n)
+                       : c.model == CodeEffect::CornerConicalMean ? (p + n) / 2
+                                                                  : std::max(p, n);
+      const double d = (dPrev + dNext >= 0 ? 1.0 : -1.0) * t;  // left positive, as the neighbours lean
+      size = c.size - (c.leftTurn ? d : -d);                   // an offset towards the fillet's centre shrinks it
+      break;
+    }
+    default:
+      if (c.upperSize) size = c.size + (*c.upperSize - c.size) * (z - zp) / (zu - zp);
+      break;
+  }
+  if (size <= 1e-9) {  // the cone's apex: the corner is a point on this plane
+    made = Segment::line(a.end, a.end);
+    return;
+  }
+  const geometry::Corner m = c.chamfer ? geometry::chamferCorner(a, b, size) : geometry::roundCorner(a, b, size);
+  if (m.status != geometry::CornerStatus::Ok) {
+    const Move& mv = toolpath_.moves[c.move];
+    diags_.error(Code::CornerNotMade, src_, mv.span,
+                 std::string("on the ") + (upperPlane ? "upper" : "lower") + " plane the corner's " +
+                     (c.chamfer ? "chamfer " : "radius ") + formatFixed(size, 3) +
+                     " mm does not fit between the taper's offset elements: it is left sharp there");
+    made = Segment::line(a.end, a.end);
+    return;
+  }
+  a = m.first;
+  made = m.corner;
+  b = m.second;
 }
 
 /// xyuv-rel: the programmed contour and the U V offsets give both planes. With the program

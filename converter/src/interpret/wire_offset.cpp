@@ -99,10 +99,10 @@ void Interpreter::resolveWireOffsets() {
   std::size_t next = 0;  // first move not yet copied
   bool applied = false;
   // Per programmed move, the first applied move made from it (for Toolpath::stops).
-  std::vector<std::size_t> firstOut(moves.size() + 1, SIZE_MAX);
+  std::vector<std::uint32_t> firstOut(moves.size() + 1, UINT32_MAX);
   auto copyUpTo = [&](std::size_t end) {
     for (; next < end; ++next) {
-      firstOut[next] = out.size();
+      firstOut[next] = static_cast<std::uint32_t>(out.size());
       out.push_back(moves[next]);
       keepCentre(next);
       role.push_back(OffsetRole::None);
@@ -135,7 +135,7 @@ void Interpreter::resolveWireOffsets() {
     const std::vector<geometry::WirePiece>& path = r.paths.front();
     Move startUp = moves[run.first];
     startUp.lower = Segment::line(startUp.lower.start, path.front().segment.start);
-    firstOut[run.first] = out.size();
+    firstOut[run.first] = static_cast<std::uint32_t>(out.size());
     out.push_back(startUp);
     keepCentre(run.first);
     role.push_back(OffsetRole::StartUp);
@@ -146,7 +146,7 @@ void Interpreter::resolveWireOffsets() {
       Move m = moves[from];
       m.lower = piece.segment;
       m.kind = piece.segment.isArc() ? MoveKind::Arc : MoveKind::Line;
-      if (!piece.corner && firstOut[source] == SIZE_MAX) firstOut[source] = out.size();
+      if (!piece.corner && firstOut[source] == UINT32_MAX) firstOut[source] = static_cast<std::uint32_t>(out.size());
       out.push_back(m);
       keepCentre(from);
       role.push_back(piece.corner ? OffsetRole::Corner : OffsetRole::Element);
@@ -158,7 +158,7 @@ void Interpreter::resolveWireOffsets() {
     if (run.end < moves.size() && moves[run.end].kind == MoveKind::Line) {
       Move cancel = moves[run.end];
       cancel.lower = Segment::line(path.back().segment.end, cancel.lower.end);
-      firstOut[run.end] = out.size();
+      firstOut[run.end] = static_cast<std::uint32_t>(out.size());
       out.push_back(cancel);
       keepCentre(run.end);
       role.push_back(OffsetRole::Cancel);
@@ -188,17 +188,13 @@ void Interpreter::resolveWireOffsets() {
   // The moves are the wire-centre path now: an output written from them must not offset again.
   for (std::size_t i = 0; i < out.size(); ++i)
     if (role[i] != OffsetRole::None) out[i].wireOffset = WireOffset::Off;
-  // Stops keep their place: before the first applied move of the programmed move they preceded
-  // (a move the wire cannot reach takes the place of the next one that is cut).
-  firstOut[moves.size()] = out.size();
+  // Stops, conditions and offset runs keep their place: before the first applied move of the
+  // programmed move they preceded (a move the wire cannot reach takes the place of the next one that
+  // is cut).
+  firstOut[moves.size()] = static_cast<std::uint32_t>(out.size());
   for (std::size_t k = moves.size(); k-- > 0;)
-    if (firstOut[k] == SIZE_MAX) firstOut[k] = firstOut[k + 1];
-  for (std::uint32_t& s : toolpath_.stops)
-    s = static_cast<std::uint32_t>(firstOut[std::min<std::size_t>(s, moves.size())]);
-  for (OffsetSpan& s : toolpath_.offsetSpans) {
-    s.first = static_cast<std::uint32_t>(firstOut[s.first]);
-    s.end = static_cast<std::uint32_t>(firstOut[s.end]);
-  }
+    if (firstOut[k] == UINT32_MAX) firstOut[k] = firstOut[k + 1];
+  toolpath_.renumberMoveLists(firstOut);
   moves = std::move(out);
   if (!centres.empty()) toolpath_.centreWords = std::move(outCentres);
   toolpath_.offsetRole = std::move(role);

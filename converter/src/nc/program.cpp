@@ -295,6 +295,11 @@ class LineParser {
         ++i;
         continue;
       }
+      if (c == ',' && i + 1 < end && (upper(text_[i + 1]) == 'R' || upper(text_[i + 1]) == 'C')) {
+        i = parseCornerWord(block, i, end);
+        if (block.hasError) break;
+        continue;
+      }
       if (!isLetter(c)) {
         strayCharacter(block, i, end);
         break;
@@ -682,6 +687,22 @@ class LineParser {
     return stop;
   }
 
+  /// Fanuc's optional corner word at text_[i] (the comma): `,R r` or `,C c`, read as the word R or C
+  /// marked Word::corner, its span from the comma. The block keeps its words (never plain). The
+  /// index after it.
+  std::size_t parseCornerWord(Block& block, std::size_t i, std::size_t end) {
+    plainWords_ = false;
+    const std::size_t before = program_.words.size();
+    const std::size_t next = parseWord(block, i + 1, end);
+    if (program_.words.size() == before + 1) {
+      Word& w = program_.words.back();
+      w.corner = true;
+      w.offset = static_cast<std::uint32_t>(i);
+      w.length = static_cast<std::uint16_t>(std::min<std::size_t>(next - i, 0xFFFF));
+    }
+    return next;
+  }
+
   /// A letter that is no word: one diagnostic for it and the number after it.
   std::size_t unknownLetter(Block& block, std::size_t start, std::size_t i, std::size_t end, char letter) {
     // Skip the number that follows, if any, so one bad word is one diagnostic.
@@ -810,6 +831,7 @@ class LineParser {
       for (std::size_t k = 0; k < n; ++k) {
         const char c = words[k].letter;
         const std::uint32_t bit = 1u << (c - 'A');
+        if (words[k].corner) continue;  // a corner word belongs to the block's end, on the lower side
         if (c == 'U' || c == 'V' || c == 'K' || c == 'L') {
           side[k] = 1;
         } else if ((c == 'I' || c == 'J' || c == 'R') && (seenLower & bit)) {
@@ -824,10 +846,11 @@ class LineParser {
     std::uint32_t placed = 0;
     for (std::size_t k = 0; k < n; ++k) {
       const Word& w = words[k];
-      const std::uint32_t bit = 1u << (w.letter - 'A');
+      // A corner word has bits of its own (26 for ,R, 27 for ,C): `R5. ,R2.` is no repeat.
+      const std::uint32_t bit = w.corner ? (1u << 26) << (w.letter == 'C') : 1u << (w.letter - 'A');
       if ((seen[side[k]] & bit) && w.letter != 'G' && w.letter != 'M') {
         error(block, Code::RepeatedWord, w.offset, w.length,
-              std::string("word '") + w.letter + "' appears twice in one block");
+              std::string("word '") + (w.corner ? "," : "") + w.letter + "' appears twice in one block");
         return;
       }
       seen[side[k]] |= bit;

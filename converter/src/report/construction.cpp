@@ -1,6 +1,8 @@
 // A block's construction (construction.h). Sections: 1. marks  2. words  3. modes and pass
 #include "kerf/converter/report/construction.h"
 
+#include "figures.h"
+
 #include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/nc/number_format.h"
 #include "kerf/geometry/arc.h"
@@ -20,8 +22,8 @@ using geometry::Segment;
 using geometry::Vec2;
 using Mark = ConstructionMark;
 
-std::string mm(double v) { return formatFixed(v, 3); }
-std::string deg(double radians) { return formatFixed(radians * 180.0 / kPi, 3); }
+using figures::deg;
+using figures::mm;
 /// An angle in [0, 2 pi), counter-clockwise from +X.
 double ccwAngle(double a) {
   a = std::fmod(a, 2 * kPi);
@@ -193,6 +195,40 @@ void offsetConstruction(std::vector<Mark>& marks, const Toolpath& tp, std::size_
         "offset " + mm((to - from).norm()) + " mm " + side);
 }
 
+/// The corner a block's `,R` / `,C` (or NCVC's R) made that move i is, or is followed by; null.
+const Toolpath::CornerMade* cornerOf(const Toolpath& tp, std::size_t i, bool following) {
+  return tp.cornerAt(following ? i + 1 : i);
+}
+
+/// A corner rounded or chamfered at a block's end: where the elements met, the ends trimmed from
+/// them, and a fillet's centre and radii to its tangent points.
+void cornerConstruction(std::vector<Mark>& marks, const Toolpath::CornerMade& c, const Segment& s) {
+  add(marks, Mark::Kind::Point, Mark::Role::Programmed, Segment::line(c.sharp, c.sharp),
+      "the sharp corner " + formatPoint(c.sharp));
+  add(marks, Mark::Kind::Segment, Mark::Role::Programmed, Segment::line(s.start, c.sharp), "trimmed");
+  add(marks, Mark::Kind::Segment, Mark::Role::Programmed, Segment::line(c.sharp, s.end), "trimmed");
+  if (!s.isArc()) return;
+  add(marks, Mark::Kind::Point, Mark::Role::Centre, Segment::line(s.centre, s.centre),
+      "fillet centre " + formatPoint(s.centre));
+  add(marks, Mark::Kind::Segment, Mark::Role::Radius, Segment::line(s.centre, s.start), "R " + mm(c.size));
+  add(marks, Mark::Kind::Segment, Mark::Role::Radius, Segment::line(s.centre, s.end));
+}
+
+/// What a corner word says: the fillet or chamfer it made (lowerMeaning, kerf explain).
+std::string cornerMeaning(const Toolpath& tp, std::size_t i) {
+  const Toolpath::CornerMade* c = cornerOf(tp, i, false);
+  if (!c) c = cornerOf(tp, i, true);
+  if (!c || c->move >= tp.moves.size())
+    return "rounds or chamfers the corner at the block's end (not made: see the error)";
+  const Segment& s = tp.moves[c->move].lower;
+  if (c->chamfer)
+    return "chamfers the corner at the block's end: the elements met at " + formatPoint(c->sharp) + "; a line from " +
+           formatPoint(s.start) + " to " + formatPoint(s.end) + ", each " + mm(c->size) + " mm from that corner";
+  return "rounds the corner at the block's end with radius " + mm(c->size) + " mm: the elements met at " +
+         formatPoint(c->sharp) + "; the fillet's centre is " + formatPoint(s.centre) + ", its tangent points " +
+         formatPoint(s.start) + " and " + formatPoint(s.end) + " (both elements trimmed to them)";
+}
+
 std::vector<Mark> marksOf(const Toolpath& tp, std::size_t i, const geometry::Sampling& sampling,
                           std::optional<double>& maxDeviation) {
   std::vector<Mark> marks;
@@ -220,6 +256,13 @@ std::vector<Mark> marksOf(const Toolpath& tp, std::size_t i, const geometry::Sam
     maxDeviation = chordConstruction(marks, s, sampling, seed);
   } else {
     marks[0].label = std::string(m.kind == MoveKind::Rapid ? "rapid" : "line") + ", length " + mm(s.length()) + " mm";
+  }
+  if (const Toolpath::CornerMade* c = cornerOf(tp, i, false)) cornerConstruction(marks, *c, s);
+  if (const Toolpath::CornerMade* c = cornerOf(tp, i, true)) {  // the block's corner word made the next move
+    const Segment& corner = tp.moves[c->move].lower;
+    add(marks, Mark::Kind::Segment, Mark::Role::Path, corner,
+        std::string(c->chamfer ? "chamfer " : "corner R ") + mm(c->size));
+    cornerConstruction(marks, *c, corner);
   }
   if (tp.isTaper() && i < tp.upper.size()) taperConstruction(marks, tp, i);
   return marks;
@@ -267,15 +310,21 @@ std::string lowerMeaning(const Word& w, const Toolpath& tp, std::size_t i) {
   const bool offset = i < tp.offsetRole.size() && tp.offsetRole[i] != OffsetRole::None;
   const Segment& s = offset ? tp.programmed[i] : m.lower;
   const bool incremental = (m.modes & kModeIncremental) != 0;
+  if (w.corner) return cornerMeaning(tp, i);
   switch (w.letter) {
     case 'G': return gMeaning(std::lround(w.value));
     case 'M': return mMeaning(std::lround(w.value));
     case 'X':
     case 'Y': {
       const int axis = w.letter == 'X' ? 0 : 1;
+      const Toolpath::CornerMade* corner = cornerOf(tp, i, true);
+      const std::string end = corner
+                                  ? mm(corner->sharp[axis]) + " mm, where the corner at the block's end trims it to " +
+                                        mm(s.end[axis]) + " mm"
+                                  : mm(s.end[axis]) + " mm";
       return std::string(incremental ? "the distance from the start along " : "the end point's ") + w.letter +
              (incremental ? "" : " (absolute)") + ": the end's " + static_cast<char>(std::tolower(w.letter)) + " is " +
-             mm(s.end[axis]) + " mm";
+             end;
     }
     case 'I':
     case 'J': {
@@ -291,6 +340,8 @@ std::string lowerMeaning(const Word& w, const Toolpath& tp, std::size_t i) {
              "table's angle; the face point's y is " +
              mm(s.end.y()) + " mm";
     case 'R':
+      if (m.centreForm != CentreForm::Radius && (cornerOf(tp, i, false) || cornerOf(tp, i, true)))
+        return cornerMeaning(tp, i);  // NCVC's bare R: the corner (profile corner_r = bare)
       return "the radius; " + std::string(w.value > 0 ? "positive: the arc of at most 180 degrees"
                                                       : "negative: the arc of more than 180 degrees");
     case 'F': return "the feed, " + mm(tp.feedOf(i)) + " mm/min (modal)";

@@ -1,6 +1,8 @@
 // Sections: 1. number formatting  2. check (text, JSON)  3. explain (text, JSON)
 #include "kerf/converter/report/report.h"
 
+#include "figures.h"
+
 #include "kerf/converter/formats/points/points.h"
 #include "kerf/converter/formats/read.h"
 #include "kerf/converter/interpret/machine.h"
@@ -21,8 +23,8 @@ using nlohmann::json;
 
 // ---- 1. numbers --------------------------------------------------------------------------------
 
-std::string mm(double v) { return formatFixed(v, 3); }
-std::string deg(double radians) { return formatFixed(radians * 180.0 / geometry::kPi, 3); }
+using figures::deg;
+using figures::mm;
 std::string sci(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3e", v);
@@ -616,6 +618,9 @@ void explainLower(std::string& out, const Toolpath& toolpath, std::size_t i, con
   if (role == OffsetRole::Corner) {
     out += "  centre " + formatPoint(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius) +
            " mm\n";
+  } else if (const Toolpath::CornerMade* corner = toolpath.cornerAt(i); corner && m.centreForm == CentreForm::None) {
+    out += "  centre " + formatPoint(d.centre) + ": the fillet of the corner word, radius " + mm(corner->size) +
+           " mm, tangent to the elements that met at " + formatPoint(corner->sharp) + "\n";
   } else if (m.centreForm == CentreForm::Radius) {
     const double r = toolpath.programmedRadius(i);
     const int zn =

@@ -237,8 +237,6 @@ std::optional<Toolpath> toolpathOfPass(const Toolpath& toolpath, const Structure
   out.offsetRole.clear();
   out.taperDegrees.clear();
   out.centreWords.clear();
-  out.stops.clear();
-  out.offsetSpans.clear();
   std::vector<std::uint32_t> newIndex(toolpath.moves.size() + 1, 0);
   // One move of the source toolpath, with its per-move data.
   auto append = [&](std::size_t i, const Move& move) {
@@ -270,18 +268,7 @@ std::optional<Toolpath> toolpathOfPass(const Toolpath& toolpath, const Structure
     append(i, m);
   }
   newIndex[toolpath.moves.size()] = static_cast<std::uint32_t>(out.moves.size());
-  for (const std::uint32_t s : toolpath.stops)
-    if (s <= toolpath.moves.size() && (out.stops.empty() || out.stops.back() != newIndex[s]))
-      out.stops.push_back(newIndex[s]);
-  out.conditions.clear();
-  for (const Toolpath::ConditionChange& change : toolpath.conditions)
-    out.conditions.push_back({newIndex[std::min<std::size_t>(change.from, toolpath.moves.size())], change.name});
-  for (const OffsetSpan& span : toolpath.offsetSpans) {
-    OffsetSpan kept = span;
-    kept.first = newIndex[std::min<std::size_t>(span.first, toolpath.moves.size())];
-    kept.end = newIndex[std::min<std::size_t>(span.end, toolpath.moves.size())];
-    if (kept.end > kept.first) out.offsetSpans.push_back(std::move(kept));
-  }
+  out.renumberMoveLists(newIndex);
   return out;
 }
 

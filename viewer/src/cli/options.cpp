@@ -88,7 +88,9 @@ void addReadingOptions(CLI::App& cmd, ReadingOptions& o) {
   cmd.add_option("--input-format", o.format, "input format; auto: detected from the content (docs/formats.md)")
       ->check(CLI::IsMember({"auto", "iso", "3b", "dxf", "curve"}))
       ->group(reading);
-  cmd.add_option("--start", o.start, "where a 3B program starts, X,Y in mm (default 0,0)")->group(reading);
+  cmd.add_option("--start", o.start,
+                 "where a 3B program starts, X,Y in mm (default: where its --upper program starts, else 0,0)")
+      ->group(reading);
   cmd.add_option("--polar-x", o.polarX,
                  "X inside G12.1/G112 polar interpolation: radius or diameter (default: the machine profile's)")
       ->check(CLI::IsMember({"radius", "diameter"}))

@@ -155,6 +155,18 @@ struct Toolpath {
   std::vector<geometry::Segment> programmed;
   std::vector<OffsetSpan> offsetSpans;  ///< every G41/G42 run, in order (applied or not)
 
+  /// A corner rounded or chamfered at a block's end (`,R r`, `,C c`, NCVC's bare R): the move the
+  /// interpreter inserted for it, between the two elements it trimmed.
+  struct CornerMade {
+    std::uint32_t move = 0;      ///< the fillet (an arc) or the chamfer (a line)
+    double size = 0.0;           ///< r or c, mm
+    bool chamfer = false;        ///< `,C`
+    geometry::Vec2 sharp{0, 0};  ///< where the two elements met (the sharp corner), program plane
+  };
+  std::vector<CornerMade> corners;  ///< in move order
+  /// The corner made as move i, or null.
+  [[nodiscard]] const CornerMade* cornerAt(std::size_t i) const;
+
   /// The feeds programmed, in the order they came into force (Move::feedIndex counts from 1), mm/min.
   std::vector<double> feeds;
   /// The taper-angle dialect: per move (same index), the angle in force in degrees, > 0 leaning
@@ -190,6 +202,14 @@ struct Toolpath {
   [[nodiscard]] double programmedRadius(std::size_t i) const {
     return i < centreWords.size() && moves[i].centreForm == CentreForm::Radius ? centreWords[i].x() : 0.0;
   }
+
+  /// Renumbers the lists that name moves by number (stops, conditions, offsetSpans, corners) after the
+  /// moves were rebuilt: newIndex[i] is the new number of old move i, newIndex[old count] the new
+  /// count (newIndex has one entry more than the old moves; an old move that became none maps
+  /// where the next one does). A stop that lands on the one before it is dropped, an offset span
+  /// that had moves and has none left, and a corner whose move became none. The tables indexed by move
+  /// are the caller's to rebuild with the moves.
+  void renumberMoveLists(const std::vector<std::uint32_t>& newIndex);
 
   [[nodiscard]] bool isTaper() const { return !upper.empty(); }
   /// The upper segment of move i: the lower one where the wire is vertical.

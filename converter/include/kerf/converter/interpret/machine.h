@@ -38,6 +38,12 @@ enum class CodeEffect : std::uint8_t {
   ProgramEnd,   ///< ends the program, as M02 does
   Rethread,     ///< cuts or threads the wire: a rapid next to it goes to a new start hole (as after M00)
   Condition,    ///< selects a machining condition (Sodick C001): each pass reports the one in force
+  // The taper corner model in force from the code on (docs/taper.md, "Corners"): how a corner
+  // rounded at the program plane (`,R`, NCVC's R) is made on the other planes.
+  CornerEqual,        ///< the same radius on every plane (an oblique cylinder); K beside R: the upper plane's own
+  CornerConicalMin,   ///< the taper's offset of the fillet (a cone), its offset the smaller of the neighbours'
+  CornerConicalMean,  ///< the same, the mean of the neighbours' offsets
+  CornerConicalMax,   ///< the same, the larger
 };
 const char* codeEffectName(CodeEffect e);
 
@@ -82,9 +88,11 @@ struct MachineProfile {
   bool upperAxesUZ = false;              ///< the second plane's axes are named U Z
   bool bareSetPositionIsOrigin = false;  ///< a bare `G92`: the current position becomes the origin (Robofil)
   bool legacyTaperCodes = false;         ///< cnc3's earlier M106 P L Q H / M107 P T, recognised by M106 with P and Q
-  double maxTaperDegrees = 30.0;         ///< the machine's largest wire slope
-  std::optional<double> uvRange;         ///< largest |upper - lower| per axis, mm
-  std::optional<double> thickness;       ///< default workpiece thickness, mm
+  bool bareCornerRadius =
+      false;  ///< an R beside a G01, or beside a G02/G03's I J, rounds the block's corner (NCVC wire mode)
+  double maxTaperDegrees = 30.0;    ///< the machine's largest wire slope
+  std::optional<double> uvRange;    ///< largest |upper - lower| per axis, mm
+  std::optional<double> thickness;  ///< default workpiece thickness, mm
   /// `home = X, Y`: where G28/G30 take the wire, mm in the program's frame [decided: the origin, as
   /// GRBL and LinuxCNC home to machine zero unless set]; `home = unknown`: only the machine knows.
   std::optional<std::array<double, 2>> home = std::array<double, 2>{0.0, 0.0};

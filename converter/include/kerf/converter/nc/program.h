@@ -43,9 +43,12 @@ struct Word {
   // One byte for both, so that a word stays 16 bytes (a program holds millions of them).
   bool hasPoint : 1 = false;               ///< the number was written with a decimal point
   WordValue kind : 3 = WordValue::Number;  ///< what the value is
+  /// Written after a comma: Fanuc's optional corner words `,R r` (round the corner at the block's
+  /// end) and `,C c` (chamfer it). The span starts at the comma.
+  bool corner : 1 = false;
   /// The byte's other bits, unused; named so that copying a word writes whole bytes (unnamed, GCC
   /// reads the byte first to keep them).
-  std::uint8_t unusedBits : 4 = 0;
+  std::uint8_t unusedBits : 3 = 0;
   std::uint16_t length = 0;  ///< bytes of the whole word in the source (letter + value)
   std::uint32_t offset = 0;  ///< byte offset of the letter
   double value = 0.0;        ///< as written (no unit conversion); 0 unless a Number

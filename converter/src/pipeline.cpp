@@ -311,6 +311,7 @@ InterpreterOptions interpreterOptions(const MachineProfile& machine, const Pipel
   io.upperZ = ro.upperZ;
   io.thickness = ro.thickness;
   io.programZ = ro.programZ;
+  io.guides = ro.guides;
   io.wireOffset = ro.wireOffset;
   io.offsets = offsets;
   io.offsets.insert(machine.offsets.begin(), machine.offsets.end());  // the file's first: insert keeps them

@@ -50,6 +50,7 @@ void Interpreter::resolveHeights() {
                : fileProgramZ_   ? lower.value + fileProgramZ_->value
                : sodickProgram   ? lower.value + *sodickProgram
                                  : lower.value;
+  resolveGuides(lower.value);
   const SourceSpan where = program_.blocks.empty() ? SourceSpan::wholeFile() : program_.blocks.front().span();
   if (upper && upper->value > lower.value) {
     h.planes.upper = upper->value;
@@ -73,6 +74,34 @@ void Interpreter::resolveHeights() {
                              "the distance between them (the machine's width)"
                            : ""));
   }
+}
+
+/// The guides: --guides, else cnc3's M100 P Q in the program, else the profile's `guides`; each
+/// measured from the part's lower face (z = lowerZ). A spacing not above 0, or guides that do not
+/// hold the part between them, are an error that names where they came from.
+void Interpreter::resolveGuides(double lowerZ) {
+  PlaneHeights& h = toolpath_.heights;
+  std::optional<std::array<double, 2>> g;
+  std::string source;
+  if (options_.guides) {
+    g = options_.guides;
+    source = "--guides";
+  } else if (fileGuideSpacing_ && fileGuideBelow_) {
+    g = std::array<double, 2>{-fileGuideBelow_->value, fileGuideSpacing_->value - fileGuideBelow_->value};
+    source = fileGuideSpacing_->source + ", " + fileGuideBelow_->source;
+  } else if (machine_.guides) {
+    g = machine_.guides;
+    source = "the " + machine_.name + " profile's guides";
+  }
+  if (!g) return;
+  if (!((*g)[1] > (*g)[0]) || std::abs((*g)[0]) > 1e5 || std::abs((*g)[1]) > 1e5) {
+    diags_.error(Code::HeightsMissing, src_, program_.blocks.empty() ? SourceSpan::wholeFile() : program_.blocks.front().span(),
+                 "the guides (" + source + ") are at z " + formatFixed((*g)[0], 3) + " and " + formatFixed((*g)[1], 3) +
+                     " mm: the upper must be above the lower, both within 100 m");
+    return;
+  }
+  h.guides = geometry::Planes{lowerZ + (*g)[0], lowerZ + (*g)[1]};
+  h.guidesSource = source;
 }
 
 }  // namespace kerf::converter::interp

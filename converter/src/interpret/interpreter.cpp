@@ -82,8 +82,10 @@ Interpretation Interpreter::run() {
   if (options_.millTurn) finishFace();
   resolveHeights();
   if (dialect_ == Dialect::XyuvRel) resolveRel();
-  if (dialect_ == Dialect::TaperAngle) resolveTaperAngle();
+  // The wire offset applies to the programmed contour; a taper-angle taper is taken from the offset
+  // path, a two-contour program's offset applies to both its contours (docs/taper.md).
   resolveWireOffsets();
+  if (dialect_ == Dialect::TaperAngle) resolveTaperAngle();
   return {std::move(toolpath_), tally_};
 }
 

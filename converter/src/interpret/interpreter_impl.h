@@ -110,6 +110,14 @@ struct TaperRecord {
   bool end = false;      // the move that ends it (its end is vertical again)
 };
 
+/// A run of moves under one G41/G42 as the interpreter records it (wire_offset.cpp applies it).
+struct OffsetRun {
+  std::size_t first = 0, end = 0;  // moves [first, end) carry the offset; first starts it up
+  WireOffset side = WireOffset::Off;
+  std::optional<double> value;
+  std::string offsetRegister;
+};
+
 /// taper-angle: a corner made inside a taper, made again on the other planes by its model
 /// (resolveTaperAngle).
 struct TaperCorner {
@@ -239,6 +247,8 @@ class Interpreter {
   std::uint64_t blocksOfCall(std::size_t target, std::uint64_t cap, std::size_t depth);
   // machine_codes.cpp
   Flow executeMachineCodes(const BlockWords& bw, const Block& block);
+  /// cnc3's guides (M100 P L Q H, or M106 in its earlier numbering): recorded; false without P and Q.
+  bool recordGuides(const BlockWords& bw, const Block& block);
   Flow executeMacroCall(const Block& block);
   void positionUnknown(std::string cause, SourceSpan span, std::string help = {}, bool silent = false);
   /// G28/G30 with the profile's home known: a rapid through the point the axis words give, then
@@ -265,13 +275,42 @@ class Interpreter {
   // heights.cpp
   Height heightOf(const HeightWord& w) const;
   void resolveHeights();
+  void resolveGuides(double lowerZ);
   // taper_offsets.cpp
   void resolveRel();
   void resolveTaperAngle();
   void resolveTaperRun(std::size_t k, std::size_t e);
   void makeTaperCorner(const TaperCorner& c, std::size_t runFirst, double z, bool upperPlane);
-  // wire_offset.cpp
+  // wire_offset.cpp, after the last block: each G41/G42 run's moves replaced by the wire's path
   void resolveWireOffsets();
+  /// One piece of a run's wire path on each plane (the upper the lower one's where the program has
+  /// no upper contour of its own, or in taper-angle, where the taper is taken after the offset).
+  struct PairedPiece {
+    geometry::WirePiece lower;
+    Segment upper;
+  };
+  /// The run's wire path, both planes paired; nothing when it cannot be made (the error said why).
+  std::optional<std::vector<PairedPiece>> offsetRun(const OffsetRun& run);
+  static std::vector<PairedPiece> pairPieces(const std::vector<geometry::WirePiece>& lower,
+                                             const std::vector<geometry::WirePiece>* upper);
+  void reportLostRuns(const OffsetRun& run, const std::vector<geometry::LostRun>& lost);
+  /// The moves and their tables being rebuilt with the wire's path.
+  struct OffsetBuild {
+    MoveList out;
+    std::vector<Segment> upper;       ///< per move, the upper plane's
+    std::vector<std::size_t> source;  ///< per move, the move it was made from
+    std::vector<OffsetRole> role;
+    std::vector<Segment> programmed;
+    std::vector<std::uint32_t> firstOut;  ///< per old move, its first new move (UINT32_MAX: none yet)
+    std::size_t next = 0;                 ///< the first old move not yet copied
+    bool applied = false;
+    void push(const Move& m, const Segment& upperSegment, std::size_t from, OffsetRole r,
+              const Segment& programmedSegment);
+    void copyUpTo(std::size_t end, const Toolpath& tp);
+    void addRun(const OffsetRun& run, const std::vector<PairedPiece>& path, const Toolpath& tp);
+  };
+  /// The toolpath's moves replaced by b's, every table indexed by move or naming moves following.
+  void renumberAfterOffset(OffsetBuild& b);
   void reportOffsetIssues(const geometry::OffsetChainResult& r, const std::vector<std::size_t>& moveOf,
                           const std::vector<double>& distance, const char* plane);
 
@@ -309,12 +348,6 @@ class Interpreter {
   HeldWord pendingOffset_;             // G40/G41/G42 not yet carried out by a move
   std::optional<double> offsetValue_;  // the wire offset in force (D/H register or --offset), mm
   std::string offsetRegister_;         // the register that gave it ("H001"); empty: none named
-  struct OffsetRun {
-    std::size_t first = 0, end = 0;  // moves [first, end) carry the offset; first starts it up
-    WireOffset side = WireOffset::Off;
-    std::optional<double> value;
-    std::string offsetRegister;
-  };
   std::vector<OffsetRun> offsetRuns_;
   struct PendingCorner {
     double size = 0.0;                // r or c, mm
@@ -356,6 +389,7 @@ class Interpreter {
   std::vector<RelRecord> relRecords_;
   std::vector<TaperRecord> taperRecords_;
   std::optional<Height> fileThickness_, fileProgramZ_;
+  std::optional<Height> fileGuideSpacing_, fileGuideBelow_;  // cnc3's M100 P (L) Q (H)
   bool legacyTaperCodes_ = false;  // cnc3's earlier M106/M107 numbering is in use
 
   // Say it once.

@@ -333,6 +333,17 @@ bool readReadingKey(const ProfileLine& l, MachineProfile& p) {
       p.home = std::array<double, 2>{*x, *y};
     else
       l.badValue("unknown, or X, Y in mm within 1e6");
+  } else if (key == "guides") {
+    const std::size_t comma = value.find(',');
+    const std::optional<double> lo = number(trim(value.substr(0, comma)));
+    std::optional<double> hi;
+    if (comma != std::string::npos) hi = number(trim(value.substr(comma + 1)));
+    if (value == "none")
+      p.guides.reset();
+    else if (lo && hi && *lo < *hi && std::abs(*lo) <= 1e5 && std::abs(*hi) <= 1e5)
+      p.guides = std::array<double, 2>{*lo, *hi};
+    else
+      l.badValue("none, or LOWER_Z, UPPER_Z in mm within 1e5, the lower below the upper (the part's lower face at 0)");
   } else if (key == "uv_range" || key == "thickness") {
     std::optional<double>& slot = key == "uv_range" ? p.uvRange : p.thickness;
     if (value == "none")
@@ -442,7 +453,7 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
     else if (!readReadingKey(l, p) && !readWritingKey(l, p))
       l.fail(l.lead, l.eq - l.lead, "unknown key '" + l.key + "'",
              "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
-             "upper_axes, bare_g92, legacy_taper_codes, corner_r, max_taper, uv_range, thickness, home, rough_rate, "
+             "upper_axes, bare_g92, legacy_taper_codes, corner_r, guides, max_taper, uv_range, thickness, home, rough_rate, "
              "skim_speed, "
              "rapid_speed, thread_time, feed, write_unit, line_end, "
              "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "

@@ -20,6 +20,16 @@ std::string conditionName(std::string word) {
 
 }  // namespace
 
+bool Interpreter::recordGuides(const BlockWords& bw, const Block& block) {
+  const Word* p = bw['P'];
+  const Word* q = bw['Q'];
+  if (!p || !q || !p->isNumber() || !q->isNumber()) return false;
+  const std::string where = " on line " + std::to_string(block.line);
+  fileGuideSpacing_ = Height{length(*p), "P" + where};
+  fileGuideBelow_ = Height{length(*q), "Q" + where};
+  return true;
+}
+
 Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) {
   for (std::size_t k = 0; k < bw.machineCount; ++k) {
     const Word& w = *bw.machine[k].first;
@@ -29,20 +39,28 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
     CodeEffect effect = code.effect;
     // cnc3's earlier numbering: M106 P L Q H gave the guides (said once, with the numbering) and
     // M107 P T the thickness.
-    if (legacyTaperCodes_ && key == "M106") continue;
+    if (legacyTaperCodes_ && key == "M106") {  // the guides, said with the numbering (interpreter.cpp)
+      recordGuides(bw, block);
+      continue;
+    }
     if (legacyTaperCodes_ && key == "M107") effect = CodeEffect::Thickness;
     switch (effect) {
-      case CodeEffect::Guides:
+      case CodeEffect::Guides: {
+        // P the guides' spacing L, Q the lower guide below the work's lower face H: the guides at
+        // (-H, L - H) above it (papayaved/cnc3: uv_sizing_widget.cpp names them L and H).
+        const Word* p = bw['P'];
+        const Word* q = bw['Q'];
+        const bool given = recordGuides(bw, block);
         if (notedCodes_.insert(key).second)
           diags_.note(Code::MachineCode, src_, w.span(),
-                      bw.has('P') || bw.has('Q')
-                          ? as + ": " + code.note + " (accepted: the part's geometry does not need it) [" +
-                                machine_.name + " profile]"
-                          : as +
-                                " without P and Q gives no guide geometry (older cnc3 programs write it alone, "
-                                "as 'Apply') [" +
-                                machine_.name + " profile]");
+                      given ? as + ": " + code.note + ": the guides " + formatFixed(length(*p), 3) + " mm apart, the lower " +
+                                  formatFixed(length(*q), 3) + " mm below the work [" + machine_.name + " profile]"
+                            : as +
+                                  " without P and Q gives no guide geometry (older cnc3 programs write it alone, "
+                                  "as 'Apply') [" +
+                                  machine_.name + " profile]");
         break;
+      }
       case CodeEffect::Rethread:
         toolpath_.stops.push_back(static_cast<std::uint32_t>(toolpath_.moves.size()));
         if (notedCodes_.insert(key).second)

@@ -71,7 +71,9 @@ void Interpreter::resolveTaperRun(std::size_t k, std::size_t e) {
   auto corner = cornersBegin;
   for (std::size_t q = k; q < e; ++q) {
     const std::size_t m = taperRecords_[q].index;
-    if (corner != cornersEnd && corner->move == m) {  // made on each plane below, from its neighbours
+    while (corner != cornersEnd && corner->move < m) ++corner;
+    if (corner != cornersEnd && corner->move == m && m > firstMove && m + 1 < endMove) {
+      // made on each plane below, between its neighbours' offsets
       ++corner;
       continue;
     }
@@ -86,12 +88,15 @@ void Interpreter::resolveTaperRun(std::size_t k, std::size_t e) {
   const geometry::OffsetChainResult upper = geometry::offsetChain(chain, up, opts);
   reportOffsetIssues(upper, moveOf, up, "upper");
   for (std::size_t q = 0; q < chain.size(); ++q) toolpath_.upper[moveOf[q]] = upper.segments[q];
-  for (auto c = cornersBegin; c != cornersEnd; ++c) makeTaperCorner(*c, k, zu, true);
+  auto inside = [&](const TaperCorner& c) { return c.move > firstMove && c.move + 1 < endMove; };
+  for (auto c = cornersBegin; c != cornersEnd; ++c)
+    if (inside(*c)) makeTaperCorner(*c, k, zu, true);
   if (zp != zl) {
     const geometry::OffsetChainResult lower = geometry::offsetChain(chain, down, opts);
     reportOffsetIssues(lower, moveOf, down, "lower");
     for (std::size_t q = 0; q < chain.size(); ++q) toolpath_.moves[moveOf[q]].lower = lower.segments[q];
-    for (auto c = cornersBegin; c != cornersEnd; ++c) makeTaperCorner(*c, k, zl, false);
+    for (auto c = cornersBegin; c != cornersEnd; ++c)
+      if (inside(*c)) makeTaperCorner(*c, k, zl, false);
   }
 }
 

@@ -73,138 +73,229 @@ void Interpreter::recordOffsetSpans() {
   }
 }
 
+namespace {
+
+/// Where two wire paths' pieces are paired: the element (twice, plus one for the corner after it).
+std::size_t pairKey(const geometry::WirePiece& p) { return 2 * p.element + (p.corner ? 1 : 0); }
+
+}  // namespace
+
+std::vector<Interpreter::PairedPiece> Interpreter::pairPieces(const std::vector<geometry::WirePiece>& lower,
+                                                               const std::vector<geometry::WirePiece>* upper) {
+  std::vector<PairedPiece> out;
+  if (!upper) {
+    for (const geometry::WirePiece& p : lower) out.push_back({p, p.segment});
+    return out;
+  }
+  // Pieces of the same element (or corner) are paired in order; where one plane has a piece the
+  // other has not (a corner convex on one plane only, an element lost on one), the other plane's
+  // wire stands still where it is.
+  std::size_t i = 0, j = 0;
+  auto still = [](const std::vector<geometry::WirePiece>& side, std::size_t k) {
+    const Vec2 at = k > 0 ? side[k - 1].segment.end : side.front().segment.start;
+    return Segment::line(at, at);
+  };
+  while (i < lower.size() || j < upper->size()) {
+    const std::size_t kl = i < lower.size() ? pairKey(lower[i]) : SIZE_MAX;
+    const std::size_t ku = j < upper->size() ? pairKey((*upper)[j]) : SIZE_MAX;
+    if (kl == ku) {
+      out.push_back({lower[i++], (*upper)[j++].segment});
+    } else if (kl < ku) {
+      out.push_back({lower[i], still(*upper, j)});
+      ++i;
+    } else {
+      geometry::WirePiece moved = (*upper)[j++];
+      moved.segment = still(lower, i);
+      out.push_back({moved, (*upper)[j - 1].segment});
+    }
+  }
+  return out;
+}
+
+std::optional<std::vector<Interpreter::PairedPiece>> Interpreter::offsetRun(const OffsetRun& run) {
+  const MoveList& moves = toolpath_.moves;
+  const bool twoContours = toolpath_.isTaper() && dialect_ != Dialect::TaperAngle;
+  const double d = run.side == WireOffset::Left ? *run.value : -*run.value;
+  geometry::WireOffsetOptions wo;
+  wo.closed = false;
+  std::vector<Segment> chain, upperChain;
+  for (std::size_t i = run.first + 1; i < run.end; ++i) {
+    chain.push_back(moves[i].lower);
+    if (twoContours) upperChain.push_back(toolpath_.upper[i]);
+  }
+  geometry::WireOffsetResult r = geometry::wireOffset(chain, d, wo);
+  geometry::WireOffsetResult u;
+  if (twoContours) u = geometry::wireOffset(upperChain, d, wo);
+  const bool split = r.paths.size() != 1 || (twoContours && u.paths.size() != 1);
+  if (r.refused || u.refused || split) {
+    const geometry::WireOffsetResult& bad = r.refused || r.paths.size() != 1 ? r : u;
+    const std::string plane = twoContours ? (&bad == &r ? " on the lower plane" : " on the upper plane") : "";
+    diags_.error(Code::WirePathSplits, src_, moves[run.first].span,
+                 bad.tooMuchWork
+                     ? "the wire offset of this run of moves needs more than " + std::to_string(bad.tests - 1) +
+                           " exact tests of pieces whose boxes overlap (long moves side by side, as in a "
+                           "star of thin spikes): refused"
+                 : bad.refused ? std::string("the wire offset of this run of moves needs more pieces than the budget")
+                               : "at an offset of " + formatFixed(*run.value, 3) + " mm the wire path of these " +
+                                     std::to_string(chain.size()) + " moves" + plane + " breaks into " +
+                                     std::to_string(bad.paths.size()) + " pieces: the wire cannot follow them",
+                 "the moves keep their programmed geometry");
+    return std::nullopt;
+  }
+  reportLostRuns(run, r.lost);
+  return pairPieces(r.paths.front(), twoContours ? &u.paths.front() : nullptr);
+}
+
+void Interpreter::reportLostRuns(const OffsetRun& run, const std::vector<geometry::LostRun>& lostRuns) {
+  for (const geometry::LostRun& lost : lostRuns) {
+    const Move& m = toolpath_.moves[run.first + 1 + lost.first];
+    if (lost.fillet)
+      diags_.note(Code::InsideCornerRadius, src_, m.span,
+                  "this arc's radius " + formatFixed(m.lower.radius, 3) + " mm is smaller than the wire offset " +
+                      formatFixed(*run.value, 3) + " mm: the wire cuts the corner with radius " +
+                      formatFixed(*run.value, 3) + " mm");
+    else
+      diags_.warning(Code::WireCannotReach, src_, m.span,
+                     "the wire (offset " + formatFixed(*run.value, 3) + " mm) cannot reach " +
+                         std::to_string(lost.count) + (lost.count == 1 ? " move" : " moves") +
+                         " from here: a slot or recess narrower than the "
+                         "wire; up to " +
+                         formatFixed(lost.uncut, 3) + " mm of material stays",
+                     "the wire path leaves it out");
+  }
+}
+
 void Interpreter::resolveWireOffsets() {
   recordOffsetSpans();
   std::vector<OffsetRun> runs;
   for (const OffsetRun& r : offsetRuns_)
     if (r.value && *r.value > 0) runs.push_back(r);
   if (runs.empty()) return;
-  MoveList& moves = toolpath_.moves;
-  if (toolpath_.isTaper()) {
-    diags_.warning(Code::WireOffsetNotApplied, src_, moves[runs.front().first].span,
-                   "the wire offset is read but not applied to a 4-axis program: geometry and pictures show the "
-                   "programmed contours");
-    return;
-  }
-  MoveList out;
-  std::vector<OffsetRole> role;
-  std::vector<Segment> programmed;
-  // The centres as written stay with the moves they came from (when they are kept).
-  const std::vector<Vec2>& centres = toolpath_.centreWords;
-  std::vector<Vec2> outCentres;
-  auto keepCentre = [&](std::size_t from) {
-    if (!centres.empty()) outCentres.push_back(centres[from]);
-  };
-  out.reserve(moves.size() + moves.size() / 2);
-  std::size_t next = 0;  // first move not yet copied
-  bool applied = false;
-  // Per programmed move, the first applied move made from it (for Toolpath::stops).
-  std::vector<std::uint32_t> firstOut(moves.size() + 1, UINT32_MAX);
-  auto copyUpTo = [&](std::size_t end) {
-    for (; next < end; ++next) {
-      firstOut[next] = static_cast<std::uint32_t>(out.size());
-      out.push_back(moves[next]);
-      keepCentre(next);
-      role.push_back(OffsetRole::None);
-      programmed.push_back(moves[next].lower);
-    }
-  };
+  OffsetBuild b;
+  const MoveList& moves = toolpath_.moves;
+  b.firstOut.assign(moves.size() + 1, UINT32_MAX);
   for (const OffsetRun& run : runs) {
     // The start-up move and the moves it compensates; a rapid or an arc start-up is reported elsewhere.
     if (run.end - run.first < 2 || moves[run.first].kind != MoveKind::Line) continue;
-    std::vector<Segment> chain;
-    for (std::size_t i = run.first + 1; i < run.end; ++i) chain.push_back(moves[i].lower);
-    const double d = run.side == WireOffset::Left ? *run.value : -*run.value;
-    geometry::WireOffsetOptions wo;
-    wo.closed = false;
-    const geometry::WireOffsetResult r = geometry::wireOffset(chain, d, wo);
-    if (r.refused || r.paths.size() != 1) {
-      diags_.error(Code::WirePathSplits, src_, moves[run.first].span,
-                   r.tooMuchWork
-                       ? "the wire offset of this run of moves needs more than " + std::to_string(r.tests - 1) +
-                             " exact tests of pieces whose boxes overlap (long moves side by side, as in a "
-                             "star of thin spikes): refused"
-                   : r.refused ? std::string("the wire offset of this run of moves needs more pieces than the budget")
-                               : "at an offset of " + formatFixed(*run.value, 3) + " mm the wire path of these " +
-                                     std::to_string(chain.size()) + " moves breaks into " +
-                                     std::to_string(r.paths.size()) + " pieces: the wire cannot follow them",
-                   "the moves keep their programmed geometry");
-      continue;
-    }
-    copyUpTo(run.first);
-    const std::vector<geometry::WirePiece>& path = r.paths.front();
-    Move startUp = moves[run.first];
-    startUp.lower = Segment::line(startUp.lower.start, path.front().segment.start);
-    firstOut[run.first] = static_cast<std::uint32_t>(out.size());
-    out.push_back(startUp);
-    keepCentre(run.first);
-    role.push_back(OffsetRole::StartUp);
-    programmed.push_back(moves[run.first].lower);
-    for (const geometry::WirePiece& piece : path) {
-      const std::size_t source = run.first + 1 + piece.element;
-      const std::size_t from = piece.corner && source + 1 < run.end ? source + 1 : source;
-      Move m = moves[from];
-      m.lower = piece.segment;
-      m.kind = piece.segment.isArc() ? MoveKind::Arc : MoveKind::Line;
-      if (!piece.corner && firstOut[source] == UINT32_MAX) firstOut[source] = static_cast<std::uint32_t>(out.size());
-      out.push_back(m);
-      keepCentre(from);
-      role.push_back(piece.corner ? OffsetRole::Corner : OffsetRole::Element);
-      programmed.push_back(piece.corner ? Segment::line(chain[piece.element].end, chain[piece.element].end)
-                                        : chain[piece.element]);
-    }
-    next = run.end;
-    // The cancel move (G40 on a line) leaves the offset path for its programmed end.
-    if (run.end < moves.size() && moves[run.end].kind == MoveKind::Line) {
-      Move cancel = moves[run.end];
-      cancel.lower = Segment::line(path.back().segment.end, cancel.lower.end);
-      firstOut[run.end] = static_cast<std::uint32_t>(out.size());
-      out.push_back(cancel);
-      keepCentre(run.end);
-      role.push_back(OffsetRole::Cancel);
-      programmed.push_back(moves[run.end].lower);
-      next = run.end + 1;
-    }
-    for (const geometry::LostRun& lost : r.lost) {
-      const Move& m = moves[run.first + 1 + lost.first];
-      if (lost.fillet)
-        diags_.note(Code::InsideCornerRadius, src_, m.span,
-                    "this arc's radius " + formatFixed(m.lower.radius, 3) + " mm is smaller than the wire offset " +
-                        formatFixed(*run.value, 3) + " mm: the wire cuts the corner with radius " +
-                        formatFixed(*run.value, 3) + " mm");
-      else
-        diags_.warning(Code::WireCannotReach, src_, m.span,
-                       "the wire (offset " + formatFixed(*run.value, 3) + " mm) cannot reach " +
-                           std::to_string(lost.count) + (lost.count == 1 ? " move" : " moves") +
-                           " from here: a slot or recess narrower than the "
-                           "wire; up to " +
-                           formatFixed(lost.uncut, 3) + " mm of material stays",
-                       "the wire path leaves it out");
-    }
-    applied = true;
+    const std::optional<std::vector<PairedPiece>> path = offsetRun(run);
+    if (!path) continue;
+    b.copyUpTo(run.first, toolpath_);
+    b.addRun(run, *path, toolpath_);
+    b.applied = true;
   }
-  if (!applied) return;
-  copyUpTo(moves.size());
+  if (!b.applied) return;
+  b.copyUpTo(moves.size(), toolpath_);
   // The moves are the wire-centre path now: an output written from them must not offset again.
-  for (std::size_t i = 0; i < out.size(); ++i)
-    if (role[i] != OffsetRole::None) out[i].wireOffset = WireOffset::Off;
-  // Stops, conditions and offset runs keep their place: before the first applied move of the
-  // programmed move they preceded (a move the wire cannot reach takes the place of the next one that
-  // is cut).
-  firstOut[moves.size()] = static_cast<std::uint32_t>(out.size());
-  for (std::size_t k = moves.size(); k-- > 0;)
-    if (firstOut[k] == UINT32_MAX) firstOut[k] = firstOut[k + 1];
-  toolpath_.renumberMoveLists(firstOut);
-  moves = std::move(out);
-  if (!centres.empty()) toolpath_.centreWords = std::move(outCentres);
-  toolpath_.offsetRole = std::move(role);
-  toolpath_.programmed = std::move(programmed);
+  for (std::size_t i = 0; i < b.out.size(); ++i)
+    if (b.role[i] != OffsetRole::None) b.out[i].wireOffset = WireOffset::Off;
+  renumberAfterOffset(b);
   const OffsetRun& first = runs.front();
   diags_.note(Code::WireOffsetNotApplied, src_, toolpath_.moves.empty() ? SourceSpan::wholeFile() : moves[0].span,
               std::string("wire offset applied (") + (first.side == WireOffset::Left ? "G41" : "G42") + ", " +
-                  formatFixed(*first.value, 3) + " mm" + (runs.size() > 1 ? " first" : "") +
-                  "): checks, pictures and outputs use the wire-centre path",
+                  formatFixed(*first.value, 3) + " mm" + (runs.size() > 1 ? " first" : "") + ")" +
+                  (toolpath_.isTaper() ? (dialect_ == Dialect::TaperAngle
+                                              ? " on the program plane, the taper taken from the offset path"
+                                              : " to both planes' contours, their pieces paired")
+                                       : std::string()) +
+                  ": checks, pictures and outputs use the wire-centre path",
               "kerf explain shows each move's programmed geometry beside it");
+}
+
+void Interpreter::OffsetBuild::push(const Move& m, const Segment& upperSegment, std::size_t from, OffsetRole r,
+                                    const Segment& programmedSegment) {
+  out.push_back(m);
+  upper.push_back(upperSegment);
+  source.push_back(from);
+  role.push_back(r);
+  programmed.push_back(programmedSegment);
+}
+
+void Interpreter::OffsetBuild::copyUpTo(std::size_t end, const Toolpath& tp) {
+  for (; next < end; ++next) {
+    firstOut[next] = static_cast<std::uint32_t>(out.size());
+    push(tp.moves[next], tp.upperOf(next), next, OffsetRole::None, tp.moves[next].lower);
+  }
+}
+
+void Interpreter::OffsetBuild::addRun(const OffsetRun& run, const std::vector<PairedPiece>& path, const Toolpath& tp) {
+  const MoveList& moves = tp.moves;
+  Move startUp = moves[run.first];
+  startUp.lower = Segment::line(startUp.lower.start, path.front().lower.segment.start);
+  firstOut[run.first] = static_cast<std::uint32_t>(out.size());
+  push(startUp, Segment::line(tp.upperOf(run.first).start, path.front().upper.start), run.first, OffsetRole::StartUp,
+       moves[run.first].lower);
+  for (const PairedPiece& pp : path) {
+    const geometry::WirePiece& piece = pp.lower;
+    const std::size_t element = run.first + 1 + piece.element;
+    const std::size_t from = piece.corner && element + 1 < run.end ? element + 1 : element;
+    Move m = moves[from];
+    m.lower = piece.segment;
+    m.kind = piece.segment.isArc() || pp.upper.isArc() ? MoveKind::Arc : MoveKind::Line;
+    if (!piece.corner && firstOut[element] == UINT32_MAX) firstOut[element] = static_cast<std::uint32_t>(out.size());
+    const Segment& programmedElement = moves[element].lower;
+    push(m, pp.upper, from, piece.corner ? OffsetRole::Corner : OffsetRole::Element,
+         piece.corner ? Segment::line(programmedElement.end, programmedElement.end) : programmedElement);
+  }
+  next = run.end;
+  // The cancel move (G40 on a line) leaves the offset path for its programmed end.
+  if (run.end < moves.size() && moves[run.end].kind == MoveKind::Line) {
+    Move cancel = moves[run.end];
+    cancel.lower = Segment::line(path.back().lower.segment.end, cancel.lower.end);
+    firstOut[run.end] = static_cast<std::uint32_t>(out.size());
+    push(cancel, Segment::line(path.back().upper.end, tp.upperOf(run.end).end), run.end, OffsetRole::Cancel,
+         moves[run.end].lower);
+    next = run.end + 1;
+  }
+}
+
+void Interpreter::renumberAfterOffset(OffsetBuild& b) {
+  const std::size_t oldCount = toolpath_.moves.size();
+  // A move the wire cannot reach takes the place of the next one that is cut.
+  b.firstOut[oldCount] = static_cast<std::uint32_t>(b.out.size());
+  for (std::size_t k = oldCount; k-- > 0;)
+    if (b.firstOut[k] == UINT32_MAX) b.firstOut[k] = b.firstOut[k + 1];
+  // The tables indexed by move follow each move's source.
+  auto follow = [&](auto& table) {
+    if (table.empty()) return;
+    std::remove_reference_t<decltype(table)> moved;
+    moved.reserve(b.out.size());
+    for (const std::size_t s : b.source) moved.push_back(table[s]);
+    table = std::move(moved);
+  };
+  follow(toolpath_.centreWords);
+  follow(toolpath_.taperDegrees);
+  if (toolpath_.isTaper()) toolpath_.upper = std::move(b.upper);  // taper-angle: placeholders, resolved next
+  // taper-angle: each applied move leans as the move it came from; the taper starts on the first
+  // move made from its start move and ends on the last made from its end move.
+  if (!taperRecords_.empty()) {
+    std::vector<std::size_t> recordOf(oldCount, SIZE_MAX);
+    for (std::size_t k = 0; k < taperRecords_.size(); ++k) recordOf[taperRecords_[k].index] = k;
+    std::vector<TaperRecord> records;
+    for (std::size_t o = 0; o < b.out.size(); ++o) {
+      const std::size_t s = b.source[o];
+      if (recordOf[s] == SIZE_MAX) continue;
+      TaperRecord r = taperRecords_[recordOf[s]];
+      r.index = o;
+      r.start = r.start && (o == 0 || b.source[o - 1] != s);
+      r.end = r.end && (o + 1 == b.out.size() || b.source[o + 1] != s);
+      records.push_back(r);
+    }
+    taperRecords_ = std::move(records);
+  }
+  // A taper's rounded corner, offset with its neighbours, keeps its place; its radius on the wire's
+  // path is the part's less (or more) the wire offset, on every plane alike.
+  for (TaperCorner& c : taperCorners_) {
+    c.move = b.firstOut[c.move];
+    if (c.chamfer || c.move >= b.out.size() || b.role[c.move] != OffsetRole::Element || !b.out[c.move].lower.isArc())
+      continue;
+    const double grown = b.out[c.move].lower.radius - c.size;
+    c.size += grown;
+    if (c.upperSize) *c.upperSize += grown;
+  }
+  toolpath_.renumberMoveLists(b.firstOut);
+  toolpath_.moves = std::move(b.out);
+  toolpath_.offsetRole = std::move(b.role);
+  toolpath_.programmed = std::move(b.programmed);
 }
 
 }  // namespace kerf::converter::interp

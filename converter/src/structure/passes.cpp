@@ -44,7 +44,10 @@ class StructureFinder {
       }
       i = j;
     }
-    for (Contour& c : out.contours) markCutOffs(c);
+    for (Contour& c : out.contours) {
+      markCutOffs(c);
+      orientOpenPasses(c);
+    }
     return out;
   }
 
@@ -110,6 +113,48 @@ class StructureFinder {
             ps[p].alongLength < 0.5 * ps[q].alongLength)
           ps[p].cutOff = true;
     }
+  }
+
+  /// A pass that does not close runs along part of its contour: its direction is the way it travels
+  /// along the pass that closes the contour (or the longest), not the sign of the area its stretch
+  /// and the chord enclose — over a notch that sign is the other (a skim forward over a tooth of a
+  /// counter-clockwise die encloses clockwise area). Its elements (at most 64, evenly spread) that
+  /// lie on the reference's programmed path vote by their tangents, weighted by length; a pass none
+  /// of whose elements lies there keeps its area's direction.
+  void orientOpenPasses(Contour& c) const {
+    std::vector<Pass>& ps = c.passes;
+    std::size_t ref = ps.size();
+    for (std::size_t p = 0; p < ps.size() && ref == ps.size(); ++p)
+      if (ps[p].closes && !ps[p].cutOff) ref = p;
+    if (ref == ps.size())
+      for (std::size_t p = 0; p < ps.size(); ++p)
+        if (ref == ps.size() || ps[p].alongLength > ps[ref].alongLength) ref = p;
+    if (ref == ps.size() || ps[ref].direction == 0) return;
+    for (std::size_t p = 0; p < ps.size(); ++p) {
+      if (p == ref || ps[p].closes || ps[p].cutOff) continue;
+      const double vote = travelAlong(ps[p], ps[ref]);
+      if (vote != 0) ps[p].direction = vote > 0 ? ps[ref].direction : -ps[ref].direction;
+    }
+  }
+
+  /// > 0 where pass p's elements run the same way as ref's programmed path, < 0 the other way, 0
+  /// where none of them lies on it.
+  double travelAlong(const Pass& p, const Pass& ref) const {
+    constexpr std::size_t kMostVoters = 64;
+    const std::size_t count = p.alongEnd - p.alongFirst;
+    const std::size_t stride = std::max<std::size_t>(1, count / kMostVoters);
+    double vote = 0.0;
+    for (std::size_t k = p.alongFirst; k < p.alongEnd; k += stride) {
+      const Segment& s = programmed(k);
+      const Vec2 mid = s.pointAt(0.5);
+      for (std::size_t r = ref.alongFirst; r < ref.alongEnd; ++r) {
+        const Segment& on = programmed(r);
+        if (on.distanceTo(mid) > tol_) continue;
+        vote += s.length() * s.tangentAt(0.5).dot(on.tangentAt(on.parameterOf(mid)));
+        break;
+      }
+    }
+    return vote;
   }
 
   void splitPasses(Contour& c) const {

@@ -25,6 +25,7 @@
 #include "kerf/converter/toolpath.h"
 #include "kerf/geometry/chain.h"
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +52,7 @@ struct ReadOptions {
   std::optional<ArcCentreMode> arcCentre;
   std::optional<Dialect> dialect;
   std::optional<double> lowerZ, upperZ, thickness, programZ;  ///< mm
+  std::optional<std::array<double, 2>> guides;                 ///< --guides LOWER_Z,UPPER_Z, mm (lower face at 0)
   std::optional<double> wireOffset;                           ///< --offset, mm
   /// --side: a drawing's closed contours get the wire path at --offset on this side (cam.h).
   std::optional<WireSide> side;

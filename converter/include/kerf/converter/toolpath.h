@@ -101,6 +101,11 @@ struct PlaneHeights {
   double programZ = 0.0;    ///< z of the programmed contour (taper-angle, xyuv-rel), mm
   bool known = false;       ///< both planes are known (a taper program needs them)
   std::string source;       ///< "M101 P (line 3)", "--thickness", ...
+  /// The wire guides' heights (the machine's lower and upper guide, or a foam cutter's carriages),
+  /// z in the planes' frame, mm: what the axes move (docs/taper.md, "The wire between its guides").
+  /// From --guides, cnc3's M100 P Q, or the profile's `guides`; nothing when none gives them.
+  std::optional<geometry::Planes> guides;
+  std::string guidesSource;
 };
 
 /// How the program was read: the machine profile and the conventions in force (machine.h).

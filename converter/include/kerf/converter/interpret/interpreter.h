@@ -28,6 +28,7 @@
 #include "kerf/converter/nc/program.h"
 #include "kerf/converter/toolpath.h"
 
+#include <array>
 #include <cstddef>
 #include <optional>
 
@@ -43,6 +44,8 @@ struct InterpreterOptions {
   std::optional<double> upperZ;     ///< --upper-z
   std::optional<double> thickness;  ///< --thickness: upper - lower
   std::optional<double> programZ;   ///< --program-z: z of the programmed contour
+  /// --guides: the wire guides' z, mm, the part's lower face at 0.
+  std::optional<std::array<double, 2>> guides;
 
   IntegerUnit integerUnit = IntegerUnit::Millimetre;
   ArcCentreMode arcCentre = ArcCentreMode::Incremental;

@@ -88,6 +88,8 @@ struct MachineProfile {
   bool upperAxesUZ = false;              ///< the second plane's axes are named U Z
   bool bareSetPositionIsOrigin = false;  ///< a bare `G92`: the current position becomes the origin (Robofil)
   bool legacyTaperCodes = false;         ///< cnc3's earlier M106 P L Q H / M107 P T, recognised by M106 with P and Q
+  /// `guides = LOWER_Z, UPPER_Z`: the wire guides' heights, mm, the part's lower face at 0.
+  std::optional<std::array<double, 2>> guides;
   bool bareCornerRadius =
       false;  ///< an R beside a G01, or beside a G02/G03's I J, rounds the block's corner (NCVC wire mode)
   double maxTaperDegrees = 30.0;    ///< the machine's largest wire slope

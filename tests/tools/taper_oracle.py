@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""Corners rounded and chamfered (`,R`, `,C`, NCVC's R and its taper corner models) against GEOS
-(Debian's python3-shapely): an independent construction of each plane's contour.
+"""Corners rounded and chamfered (`,R`, `,C`, NCVC's R and its taper corner models) and the wire
+offset on 4-axis programs, against GEOS (Debian's python3-shapely): an independent construction
+of each plane's contour (issue 55).
 
-usage: corner_oracle.py KERF CORNERS_DIR WORKDIR
+usage: taper_oracle.py KERF TAPER_DIR WORKDIR
 
 For each case below: `KERF export PROGRAM -o WORKDIR/NAME.dxf`, its LOWER and UPPER layers read
 with ezdxf, the moves from and to the start hole left out (a taper's start-up and cancel), and the
@@ -11,7 +12,9 @@ rest held against the contour GEOS builds from the sharp programmed polygon:
     (+r with mitre joins, then -r round) rounds concave ones;
   - the taper's offset d = H tan(angle) of the sharp polygon is buffer(-d) with mitre joins (sharp
     corners, the offset elements extended to meet); of a rounded contour, buffer(-d) (a cone);
-  - a chamfer c is the polygon less the corner triangles of legs c.
+  - a chamfer c is the polygon less the corner triangles of legs c;
+  - the wire's path w outside a contour is buffer(w) with round joins (arcs about convex corners),
+    inside a rounded contour buffer(-w).
 Both ways (Kerf to GEOS, GEOS to Kerf, except on the upper plane within the start-up's gap), the
 largest distance must be within 2 um. Prints one line a case; exit 1 if any fails.
 """
@@ -66,19 +69,41 @@ _cap = [(_cx + 15 * math.cos(a), 10 + 15 * math.sin(a))
 CAP = Polygon([(0, 0)] + _cap + [(0, 20)])
 D = 20 * math.tan(math.radians(3))  # the NCVC dies: 20 mm thick, 3 degrees
 
+D2 = 20 * math.tan(math.radians(2))  # the die cut with the wire offset: 2 degrees
+RECT2 = Polygon([(2, 2), (38, 2), (38, 18), (2, 18)])  # the frustum's upper face
+W = 0.15  # the wire offset, mm
+
+
+def outward(p, w):
+    """The wire's path outside a contour: its offsets joined by arcs about the convex corners."""
+    return p.buffer(w, join_style=ROUND, resolution=RES)
+
+
+# Each case: its program, the options to read it with, each layer's expected polygon, the start hole
+# (moves from and to it are left out), and on the upper plane the start-up's gap (centre, radius).
 CASES = [
-    # name, program, {layer: expected polygon}, start hole (x, y) or None, upper gap centre or None
-    ("rectangle_r", "rectangle_corner_r.nc", {"LOWER": opening(RECT, 2)}, None, None),
-    ("rectangle_c", "rectangle_chamfer.nc", {"LOWER": chamfered(RECT, 1.5)}, None, None),
-    ("l_shape", "l_shape_corner_r_c.nc", {"LOWER": opening(closing(L_SHAPE, 3), 1)}, None, None),
-    ("cap_line_arc", "cap_line_arc.nc", {"LOWER": opening(CAP, 1)}, None, None),
-    ("taper_equal", "ncvc_taper_equal.nc",
-     {"LOWER": opening(RECT, 2), "UPPER": opening(inset(RECT, D), 2)}, (20, 10), (20, D)),
-    ("taper_conical", "ncvc_taper_conical.nc",
-     {"LOWER": opening(RECT, 2), "UPPER": opening(RECT, 2).buffer(-D, join_style=ROUND, resolution=RES)},
-     (20, 10), (20, D)),
-    ("taper_independent", "ncvc_taper_independent.nc",
-     {"LOWER": opening(RECT, 2), "UPPER": opening(inset(RECT, D), 3)}, (20, 10), (20, D)),
+    dict(name="rectangle_r", program="rectangle_corner_r.nc", layers={"LOWER": opening(RECT, 2)}),
+    dict(name="rectangle_c", program="rectangle_chamfer.nc", layers={"LOWER": chamfered(RECT, 1.5)}),
+    dict(name="l_shape", program="l_shape_corner_r_c.nc", layers={"LOWER": opening(closing(L_SHAPE, 3), 1)}),
+    dict(name="cap_line_arc", program="cap_line_arc.nc", layers={"LOWER": opening(CAP, 1)}),
+    dict(name="taper_equal", program="ncvc_taper_equal.nc", hole=(20, 10), gap=((20, D), D),
+         layers={"LOWER": opening(RECT, 2), "UPPER": opening(inset(RECT, D), 2)}),
+    dict(name="taper_conical", program="ncvc_taper_conical.nc", hole=(20, 10), gap=((20, D), D),
+         layers={"LOWER": opening(RECT, 2),
+                 "UPPER": opening(RECT, 2).buffer(-D, join_style=ROUND, resolution=RES)}),
+    dict(name="taper_independent", program="ncvc_taper_independent.nc", hole=(20, 10), gap=((20, D), D),
+         layers={"LOWER": opening(RECT, 2), "UPPER": opening(inset(RECT, D), 3)}),
+    # The wire offset on a taper-angle program: the programmed contour offset on the program plane
+    # (inside the die: its rounded corners shrink to R 1.85), the taper from that path (outwards
+    # by 20 tan 2), its corners equal-radius: R 1.85 on the upper plane too.
+    dict(name="taper_die_offset", program="ncvc_taper_die_offset.nc", options=["--offset", str(W)], hole=(20, 10),
+         gap=((20, W - D2), D2),
+         layers={"LOWER": opening(RECT, 2).buffer(-W, join_style=ROUND, resolution=RES),
+                 "UPPER": opening(inset(RECT, W - D2), 2 - W)}),
+    # The wire offset on a two-contour program: each plane's contour offset by the same value.
+    dict(name="xyuv_frustum_offset", program="xyuv_frustum_offset.nc",
+         options=["--offset", str(W), "--thickness", "10"], hole=(-5, 10),
+         layers={"LOWER": outward(RECT, W), "UPPER": outward(RECT2, W)}),
 ]
 
 
@@ -97,6 +122,16 @@ def sample(e):
             for k in range(n + 1)]
 
 
+def densify(coords):
+    """The ring's vertices and points at most STEP apart between them: a side Kerf left out is found."""
+    pts = list(coords)
+    out = []
+    for a, b in zip(pts, pts[1:]):
+        n = max(1, int(math.ceil(math.hypot(b[0] - a[0], b[1] - a[1]) / STEP)))
+        out += [(a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n) for k in range(n)]
+    return out
+
+
 def touches(pts, hole):
     return hole is not None and any(math.hypot(p[0] - hole[0], p[1] - hole[1]) < 1e-6 for p in (pts[0], pts[-1]))
 
@@ -105,9 +140,12 @@ def main():
     kerf, corners, work = sys.argv[1], sys.argv[2], sys.argv[3]
     os.makedirs(work, exist_ok=True)
     failed = 0
-    for name, program, layers, hole, gap in CASES:
+    for case in CASES:
+        name, layers = case["name"], case["layers"]
+        hole, gap = case.get("hole"), case.get("gap")
         out = os.path.join(work, name + ".dxf")
-        r = subprocess.run([kerf, "export", os.path.join(corners, program), "-o", out], capture_output=True, text=True)
+        r = subprocess.run([kerf, "export", os.path.join(corners, case["program"]), "-o", out] + case.get("options", []),
+                           capture_output=True, text=True)
         if r.returncode != 0:
             print(f"{name}: kerf export failed ({r.returncode}): {r.stderr[-2000:]}")
             failed += 1
@@ -123,11 +161,10 @@ def main():
                 continue
             kerf_to_geos = max(ring.distance(Point(p)) for piece in pieces for p in piece)
             cut = MultiLineString([LineString(p) for p in pieces])
-            skip = 1.01 * D + 1e-3 if layer == "UPPER" and gap else 0.0
-            probes = [Point(q) for q in ring.coords
-                      if not skip or math.hypot(q[0] - gap[0], q[1] - gap[1]) > skip]
-            dense = ring.segmentize(STEP) if hasattr(ring, "segmentize") else ring
-            probes += [Point(q) for q in dense.coords if not skip or math.hypot(q[0] - gap[0], q[1] - gap[1]) > skip]
+            centre, skip = gap if layer == "UPPER" and gap else ((0, 0), 0.0)
+            skip = 1.01 * skip + 1e-3 if skip else 0.0
+            probes = [Point(q) for q in densify(ring.coords)
+                      if not skip or math.hypot(q[0] - centre[0], q[1] - centre[1]) > skip]
             geos_to_kerf = max(cut.distance(p) for p in probes)
             worst = max(kerf_to_geos, geos_to_kerf)
             ok = worst <= TOLERANCE

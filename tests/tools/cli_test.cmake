@@ -543,6 +543,36 @@ elseif(CASE STREQUAL "tables_follow_inserted_moves")
   string(FIND "${out}" "K0650" steep)
   expect("the upper program is read in um: upper ${upper} mm beside lower ${lower} mm, and no K0650"
          upper LESS 2000 AND steep EQUAL -1)
+elseif(CASE STREQUAL "guides")
+  # The wire between its guides (issue 55): US 4700314's extrapolation d1 = h tan a below the program
+  # plane, d2 = (H - h) tan a above it, and cnc3's own sizing of its calibration cone.
+  set(die "${SOURCE}/tests/taper/taper_die_guides.nc")
+  run("${KERF}" convert "${die}" --to points4 --plane guides --guides -30,50 -o "${WORK}/die.txt")
+  file(READ "${WORK}/die.txt" rows)
+  string(FIND "${rows}" "42.625 -2.625 35.626 4.374" at)
+  expect("the corner (40, 0) at the guides: 30 tan 5 right of it below, 50 tan 5 left above (${rows})"
+         rc EQUAL 0 AND NOT at EQUAL -1)
+  run("${KERF}" check "${die}" --guides -30,50 --json)
+  string(JSON uv GET "${out}" summary taper guides uv_max_x_mm)
+  expect("U/V between the guides 80 tan 5 = 6.999093 mm, not ${uv}" uv GREATER 6.999092 AND uv LESS 6.999094)
+  run("${KERF}" check "${die}" --guides -30,50 --uv-range 6)
+  string(FIND "${err}" "the upper guide is 6.999 mm from the lower one along" at)
+  expect("--uv-range 6 is checked between the guides (K0656)" rc EQUAL 1 AND NOT at EQUAL -1)
+  run("${KERF}" check "${die}" --uv-range 6)
+  expect("without guides the faces are 1.750 mm apart: within --uv-range 6" rc EQUAL 0)
+  run("${KERF}" convert "${die}" --to points4 --plane guides -o "${WORK}/none.txt")
+  string(FIND "${err}" "[K0812]" at)
+  expect("--plane guides without guide heights is refused (K0812)" NOT rc EQUAL 0 AND NOT at EQUAL -1)
+  # cnc3: M100 P L Q H puts the guides at (-H, L - H); its sizing made the faces' circles so that the
+  # U V motors travel UV_MAX = 15 mm from the lower guide.
+  run("${KERF}" check "${SOURCE}/tests/taper/cnc3_cone_guides.nc" --json)
+  string(JSON lower GET "${out}" summary taper guides lower_z)
+  string(JSON upper GET "${out}" summary taper guides upper_z)
+  string(JSON ux GET "${out}" summary taper guides uv_max_x_mm)
+  string(JSON uy GET "${out}" summary taper guides uv_max_y_mm)
+  expect("M100 P100 Q30: guides at -30 and 70 (${lower}, ${upper})" lower EQUAL -30 AND upper EQUAL 70)
+  expect("the U V travel is cnc3's UV_MAX, 15 mm (${ux}, ${uy})"
+         ux GREATER 14.999999 AND ux LESS 15.000001 AND uy GREATER 14.999999 AND uy LESS 15.000001)
 elseif(CASE STREQUAL "threads_do_not_change_findings")
   # The measures and the sections run on every core: one thread or several, the same report, on
   # every sample (the bad ones have section findings) and on a taper part long enough to split.

@@ -85,6 +85,43 @@ void addBounds(geometry::Box& box, const geometry::Segment& s) {
   box.add(s.bounds());
 }
 
+/// The wire of each cut move extended to the guides: their paths' boxes (17 positions a move, the
+/// ends exact) and the largest U/V between them (the patch measures' offsets, scaled).
+GuideTravel guideTravel(const Toolpath& toolpath, const SurfaceMeasures& m) {
+  GuideTravel g;
+  const geometry::Planes& planes = toolpath.heights.planes;
+  const geometry::Planes& guides = *toolpath.heights.guides;
+  const double a = (guides.lower - planes.lower) / planes.height();
+  const double b = (guides.upper - planes.lower) / planes.height();
+  const double spread = guides.height() / planes.height();
+  constexpr int kPositions = 16;
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    const Move& move = toolpath.moves[i];
+    if (!move.isCut()) continue;
+    const geometry::Segment& lo = move.lower;
+    const geometry::Segment& up = toolpath.upper[i];
+    for (int k = 0; k <= kPositions; ++k) {
+      const double t = static_cast<double>(k) / kPositions;
+      const geometry::Vec2 l = k == kPositions ? lo.end : lo.pointAt(t);
+      const geometry::Vec2 u = k == kPositions ? up.end : up.pointAt(t);
+      g.lower.add(l + a * (u - l));
+      g.upper.add(l + b * (u - l));
+    }
+    const geometry::PatchMeasures& p = m.patches[i];
+    if (p.maxOffsetX.value * spread > g.uvX) {
+      g.uvX = p.maxOffsetX.value * spread;
+      g.uvXMove = i;
+      g.uvXLine = move.line;
+    }
+    if (p.maxOffsetY.value * spread > g.uvY) {
+      g.uvY = p.maxOffsetY.value * spread;
+      g.uvYMove = i;
+      g.uvYLine = move.line;
+    }
+  }
+  return g;
+}
+
 TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) {
   TaperSummary t;
   t.dialect = toolpath.dialect;
@@ -110,6 +147,7 @@ TaperSummary summarizeTaper(const Toolpath& toolpath, const SurfaceMeasures& m) 
     }
     first = false;
   }
+  if (toolpath.heights.guides && toolpath.heights.known) t.guides = guideTravel(toolpath, m);
   return t;
 }
 

@@ -26,6 +26,7 @@ PointRequest pointRequest(const EmitRequest& r) {
   p.sampling = r.sampling;
   p.maxPoints = r.maxPoints;
   p.startLine = r.startLine;
+  p.atGuides = r.atGuides;
   return p;
 }
 

@@ -88,7 +88,7 @@ void Interpreter::resolveGuides(double lowerZ) {
     source = "--guides";
   } else if (fileGuideSpacing_ && fileGuideBelow_) {
     g = std::array<double, 2>{-fileGuideBelow_->value, fileGuideSpacing_->value - fileGuideBelow_->value};
-    source = fileGuideSpacing_->source + ", " + fileGuideBelow_->source;
+    source = fileGuideSpacing_->source + " (spacing), " + fileGuideBelow_->source + " (below the work)";
   } else if (machine_.guides) {
     g = machine_.guides;
     source = "the " + machine_.name + " profile's guides";

@@ -25,8 +25,11 @@ bool Interpreter::recordGuides(const BlockWords& bw, const Block& block) {
   const Word* q = bw['Q'];
   if (!p || !q || !p->isNumber() || !q->isNumber()) return false;
   const std::string where = " on line " + std::to_string(block.line);
-  fileGuideSpacing_ = Height{length(*p), "P" + where};
-  fileGuideBelow_ = Height{length(*q), "Q" + where};
+  const std::string code = bw.machineCount > 0 ? std::string(src_->text().substr(bw.machine[0].first->offset,
+                                                                                bw.machine[0].first->length))
+                                                : std::string("M100");
+  fileGuideSpacing_ = Height{length(*p), code + " P" + where};
+  fileGuideBelow_ = Height{length(*q), code + " Q" + where};
   return true;
 }
 

@@ -205,6 +205,19 @@ std::string offsetText(const Pass& p) {
   return t + " (offset at the machine)";
 }
 
+/// A box as "X a .. b, Y c .. d".
+std::string boxText(const geometry::Box& b) {
+  return "X " + mm(b.min.x()) + " .. " + mm(b.max.x()) + ", Y " + mm(b.min.y()) + " .. " + mm(b.max.y());
+}
+
+/// The wire at its guides, two lines: where they are, what they travel, and U/V between them.
+std::string guidesText(const PlaneHeights& h, const GuideTravel& g) {
+  return "  guides: lower z " + mm(h.guides->lower) + ", upper z " + mm(h.guides->upper) + " — " + h.guidesSource +
+         "\n    the lower guide travels " + boxText(g.lower) + "; the upper " + boxText(g.upper) +
+         "; U/V between them up to " + mm(g.uvX) + " mm along X (line " + std::to_string(g.uvXLine) + "), " +
+         mm(g.uvY) + " along Y (line " + std::to_string(g.uvYLine) + ")\n";
+}
+
 /// Minutes as the report writes them: one decimal, two below ten minutes.
 std::string minutesText(double minutes) { return formatFixed(minutes, minutes < 10 ? 2 : 1); }
 
@@ -317,6 +330,7 @@ std::string formatSummaryText(const std::string& file, const Summary& s, const D
            std::to_string(t.minSlopeLine) + ")\n";
     out += "  lower length " + mm(t.lowerLength) + " mm, upper length " + mm(t.upperLength) + " mm, surface " +
            mm(t.area) + " mm² in " + plural(t.patches, "patch") + "\n";
+    if (t.guides) out += guidesText(t.heights, *t.guides);
   }
   if (s.structure.multiPass()) out += structureText(s.structure);
   if (s.comparison) out += comparisonText(*s.comparison);
@@ -484,6 +498,15 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
                     {"min_slope_move", t.minSlopeMove},    {"min_slope_line", t.minSlopeLine},
                     {"lower_length_mm", t.lowerLength},    {"upper_length_mm", t.upperLength},
                     {"surface_area_mm2", t.area},          {"patches", t.patches}};
+    if (t.guides) {
+      const GuideTravel& g = *t.guides;
+      auto box = [&](const geometry::Box& b) { return json{{"min", vec(b.min)}, {"max", vec(b.max)}}; };
+      sum["taper"]["guides"] = {{"lower_z", t.heights.guides->lower}, {"upper_z", t.heights.guides->upper},
+                                {"from", t.heights.guidesSource},    {"lower_bounds_mm", box(g.lower)},
+                                {"upper_bounds_mm", box(g.upper)},    {"uv_max_x_mm", g.uvX},
+                                {"uv_max_x_line", g.uvXLine},         {"uv_max_y_mm", g.uvY},
+                                {"uv_max_y_line", g.uvYLine}};
+    }
   }
   sum["structure"] = structureObject(s.structure);
   if (s.comparison) sum["comparison"] = comparisonJson(*s.comparison);

@@ -24,7 +24,7 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
   for (const converter::Emitter& e : converter::emitters()) names.emplace_back(e.name);
   cmd->add_flag("--list", a.list, "list the output formats and exit")->group("Output");
   cmd->add_option("--to", a.to, "output format (--list shows them)")->check(CLI::IsMember(names))->group("Output");
-  cmd->add_option("--plane", a.plane, "taper input to a 2-axis format: lower, upper or z=HEIGHT")->group("Output");
+  cmd->add_option("--plane", a.plane, "taper input to a 2-axis format: lower, upper or z=HEIGHT; points4: guides (X Y at the lower guide, U V at the upper)")->group("Output");
   cmd->add_option("--uv", a.uv, "points4: U V as the upper point (absolute) or upper minus lower (relative)")
       ->check(CLI::IsMember({"absolute", "relative"}))
       ->group("Output");
@@ -88,6 +88,7 @@ void fillRequest(const ConvertArgs& a, const converter::Pipeline& p, converter::
   request.maxPoints = a.maxPoints;
   request.startLine = a.startBlock;
   request.relativeUv = a.uv == "relative";
+  request.atGuides = a.plane == "guides";
   request.decimals = a.decimals;
   request.compact = a.compact;
   request.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
@@ -103,8 +104,9 @@ void fillRequest(const ConvertArgs& a, const converter::Pipeline& p, converter::
 bool planeFor(const ConvertArgs& a, const converter::Emitter& emitter, const converter::Toolpath& toolpath,
               std::optional<converter::PlaneChoice>& plane) {
   if (emitter.planes == converter::PlaneNeed::Both) {
-    if (!a.plane) return true;
-    reportError("--plane chooses one plane for a 2-axis file; " + std::string(emitter.name) + " writes both");
+    if (!a.plane || (*a.plane == "guides" && std::string_view(emitter.name) == "points4")) return true;
+    reportError("--plane chooses one plane for a 2-axis file; " + std::string(emitter.name) + " writes both" +
+                (std::string_view(emitter.name) == "points4" ? " (or both guides: --plane guides)" : ""));
     return false;
   }
   plane = converter::parsePlane(a.plane.value_or("lower"));

@@ -152,6 +152,10 @@ void addReadingOptions(CLI::App& cmd, ReadingOptions& o) {
   cmd.add_option("--program-z", o.programZ, "z of the programmed contour (taper-angle, xyuv-rel), mm")
       ->check(kHeight)
       ->group(reading);
+  cmd.add_option("--guides", o.guides,
+                 "LOWER_Z,UPPER_Z: the wire guides' heights, mm, the part's lower face at 0 (default: the program's "
+                 "M100 P Q, else the machine profile's guides)")
+      ->group(reading);
 }
 
 /// The check group: the machine's limits, the time estimate's speed, which diagnostics show and how.
@@ -334,6 +338,14 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
   r.upperZ = o.reading.upperZ;
   r.thickness = o.reading.thickness;
   r.programZ = o.reading.programZ;
+  if (o.reading.guides) {
+    const std::optional<geometry::Vec2> g = pointOption(*o.reading.guides, "--guides", error);
+    if (!g || !(g->y() > g->x())) {
+      if (g) error = "--guides takes LOWER_Z,UPPER_Z with the upper above the lower, not '" + *o.reading.guides + "'";
+      return false;
+    }
+    r.guides = std::array<double, 2>{g->x(), g->y()};
+  }
   r.wireOffset = o.reading.offset;
   if (o.reading.side) r.side = *o.reading.side == "inside" ? WireSide::Inside : WireSide::Outside;
   if (o.reading.upperAxes) r.upperAxesUZ = *o.reading.upperAxes == "uz";

@@ -52,6 +52,7 @@ struct ReadingOptions {
   std::optional<std::string> side;         ///< --side outside|inside (drawings)
   std::string dialect = "auto";
   std::optional<double> lowerZ, upperZ, thickness, programZ;
+  std::optional<std::string> guides;     ///< LOWER_Z,UPPER_Z: the wire guides, mm (lower face at 0)
   std::optional<std::string> upperAxes;  ///< uv | uz
 };
 

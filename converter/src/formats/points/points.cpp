@@ -232,6 +232,17 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
                 "points4 writes both planes, and this program has no upper contour", "use --to bp95d");
     return std::nullopt;
   }
+  if (request.atGuides && !(toolpath.heights.guides && toolpath.heights.known)) {
+    diags.error(Code::GuidesUnknown, source, SourceSpan::wholeFile(),
+                "--plane guides writes the wire at its guides, and no guide heights are given",
+                "give --guides LOWER_Z,UPPER_Z (the part's lower face at 0), cnc3's M100 P Q in the program, or a "
+                "machine profile with guides");
+    return std::nullopt;
+  }
+  // At the guides each row's wire is extended: lower + (upper - lower) (z - z_lower) / H.
+  const geometry::Planes& faces = toolpath.heights.planes;
+  const double a = request.atGuides ? (toolpath.heights.guides->lower - faces.lower) / faces.height() : 0.0;
+  const double b = request.atGuides ? (toolpath.heights.guides->upper - faces.lower) / faces.height() : 1.0;
   constexpr double kJoin = 1e-9;
   // Counted in closed form before anything is sampled: a budget is refused before it is spent.
   auto samplesOf = [&](std::size_t i) {
@@ -281,17 +292,24 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
     const geometry::Segment& lo = toolpath.moves[i].lower;
     const geometry::Segment& up = toolpath.upper[i];
     const std::size_t n = samplesOf(i);
-    auto push = [&](const geometry::Vec2& l, const geometry::Vec2& u) {
+    auto push = [&](const geometry::Vec2& faceLower, const geometry::Vec2& faceUpper) {
+      const geometry::Vec2 l = faceLower + a * (faceUpper - faceLower);
+      const geometry::Vec2 u = faceLower + b * (faceUpper - faceLower);
       const geometry::Vec2 uv = relativeUv ? geometry::Vec2(u - l) : u;
       rows.push_back({l.x(), l.y(), uv.x(), uv.y()});
     };
     if (!joins) push(lo.start, up.start);
-    // The chords of n equal steps of an arc lie r (1 - cos(sweep / 2n)) from it at most.
-    for (const geometry::Segment* side : {&lo, &up})
-      if (side->isArc())
-        out.stats.maxDeviation =
-            std::max(out.stats.maxDeviation,
-                     side->radius * (1.0 - std::cos(std::abs(side->sweep) / (2.0 * static_cast<double>(n)))));
+    // The chords of n equal steps of an arc lie r (1 - cos(sweep / 2n)) from it at most; a guide's
+    // path, lower + s (upper - lower), from its chords by at most |1 - s| and |s| times the two.
+    double deviation[2] = {0.0, 0.0};
+    for (int side = 0; side < 2; ++side) {
+      const geometry::Segment& seg = side == 0 ? lo : up;
+      if (seg.isArc())
+        deviation[side] = seg.radius * (1.0 - std::cos(std::abs(seg.sweep) / (2.0 * static_cast<double>(n))));
+    }
+    for (const double s : {a, b})
+      out.stats.maxDeviation =
+          std::max(out.stats.maxDeviation, std::abs(1.0 - s) * deviation[0] + std::abs(s) * deviation[1]);
     // Both planes at the same t, so each pair is one position of the wire.
     for (std::size_t k = 1; k <= n; ++k) {
       const double t = static_cast<double>(k) / static_cast<double>(n);

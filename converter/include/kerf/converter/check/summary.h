@@ -84,6 +84,17 @@ struct SurfaceMeasures {
 };
 SurfaceMeasures measureSurface(const Toolpath& toolpath);
 
+/// Where the axes move a taper part's wire: the wire extended to its guides (PlaneHeights::guides).
+struct GuideTravel {
+  geometry::Box lower, upper;  ///< the guides' paths over the cut moves, mm (each move at 17 points)
+  /// The largest |upper guide - lower guide| along X and along Y over the cut moves (what U V travel
+  /// between the guides), mm, with the move and line where it is reached: the offset between the
+  /// part's faces times the guides' spacing over the part's height.
+  double uvX = 0.0, uvY = 0.0;
+  std::size_t uvXMove = 0, uvYMove = 0;
+  std::uint32_t uvXLine = 0, uvYLine = 0;
+};
+
 /// What `kerf check` says about a taper part.
 struct TaperSummary {
   Dialect dialect = Dialect::Plain;
@@ -94,6 +105,7 @@ struct TaperSummary {
   std::uint32_t maxSlopeLine = 0, minSlopeLine = 0;
   double lowerLength = 0.0, upperLength = 0.0;  ///< mm, cut moves
   double area = 0.0;                            ///< mm^2, cut moves
+  std::optional<GuideTravel> guides;            ///< when the guides' heights are known
 };
 
 struct Summary {

@@ -55,6 +55,7 @@ struct EmitRequest {
   std::optional<std::size_t> maxPoints;
   std::optional<std::uint32_t> startLine;  ///< begin at the cut move of this source line
   bool relativeUv = false;                 ///< points4: U V as upper minus lower
+  bool atGuides = false;                   ///< points4: X Y at the lower guide, U V at the upper (--plane guides)
   // ISO: the target controller's conventions (null: generic).
   const MachineProfile* target = nullptr;
   std::optional<int> decimals;  ///< iso, polar: digits after the point (default: the target's, 3)

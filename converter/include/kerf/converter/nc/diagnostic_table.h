@@ -151,5 +151,6 @@
   X(809, OutputExpanded, Note, "note", "subprogram calls and repeats written out in a converted program") \
   X(810, MachineProfileError, Error, "error", "a wrong line in a machine profile file, or an unknown profile name") \
   X(811, OffsetTableError, Error, "error", "a wrong line in an `--offsets` table: not `H001 = 0.180`, a value that is no offset from 0 to 10 mm, a register given twice") \
+  X(812, GuidesUnknown, Error, "error", "`--plane guides` (the wire at its guides) where no guide heights are given: `--guides`, cnc3's `M100 P Q` or the profile's `guides`") \
   X(899, TooManyDiagnostics, Warning, "warning", "more self-intersections than reported")
 // clang-format on

@@ -48,6 +48,9 @@ struct PointRequest {
   geometry::Sampling sampling = geometry::Sampling::step(0.1);
   std::optional<std::size_t> maxPoints;    ///< overrides the profile's; fits the step to it
   std::optional<std::uint32_t> startLine;  ///< begin at the cut move of this source line
+  /// points4: the wire at its guides (PlaneHeights::guides), what the axes move, not at the part's
+  /// faces: each row one position of the wire, extended to both guides.
+  bool atGuides = false;
 };
 
 struct PointOutput {

@@ -19,6 +19,10 @@ kerf_snapshot_test(NAME circle_under_square_slope ARGS samples/circle_under_squa
 # Colour by pass, with its legend (below the title): a die and a punch, each with a tab and its cut-off.
 kerf_snapshot_test(NAME die_tab_cut_off_passes ARGS tests/passes/die_tab_cut_off.nc ${s} --color-by pass)
 kerf_snapshot_test(NAME punch_tab_cut_off_passes ARGS tests/passes/punch_tab_cut_off.nc ${s} --color-by pass)
+# A taper die cut with G41/G42 in a rough cut and two skims: three passes on both planes (issue 55).
+kerf_snapshot_test(NAME taper_die_skims_passes ARGS tests/passes/taper_die_skims.nc ${s} --color-by pass)
+# The wire at its guides (--show guides): cnc3's calibration cone, its guides from M100 P Q.
+kerf_snapshot_test(NAME cnc3_cone_guides ARGS tests/taper/cnc3_cone_guides.nc ${s} --show guides)
 # Findings highlighted: a 2-axis crossing, and taper faults.
 kerf_snapshot_test(NAME path_crosses_highlight EXIT 1 ARGS tests/bad/path_crosses_itself.nc ${s} --highlight-findings --view top)
 kerf_snapshot_test(NAME too_steep_highlight EXIT 1 ARGS samples/bad/too_steep.nc ${s} --highlight-findings --color-by slope)

@@ -563,6 +563,10 @@ elseif(CASE STREQUAL "guides")
   run("${KERF}" convert "${die}" --to points4 --plane guides -o "${WORK}/none.txt")
   string(FIND "${err}" "[K0812]" at)
   expect("--plane guides without guide heights is refused (K0812)" NOT rc EQUAL 0 AND NOT at EQUAL -1)
+  run("${KERF}" render "${die}" --show guides -o "${WORK}/none.png")
+  string(FIND "${err}" "--show guides: no guide heights are given" at)
+  expect("--show guides without guide heights is refused, no picture" rc EQUAL 2 AND NOT at EQUAL -1
+         AND NOT EXISTS "${WORK}/none.png")
   # cnc3: M100 P L Q H puts the guides at (-H, L - H); its sizing made the faces' circles so that the
   # U V motors travel UV_MAX = 15 mm from the lower guide.
   run("${KERF}" check "${SOURCE}/tests/taper/cnc3_cone_guides.nc" --json)
@@ -573,6 +577,22 @@ elseif(CASE STREQUAL "guides")
   expect("M100 P100 Q30: guides at -30 and 70 (${lower}, ${upper})" lower EQUAL -30 AND upper EQUAL 70)
   expect("the U V travel is cnc3's UV_MAX, 15 mm (${ux}, ${uy})"
          ux GREATER 14.999999 AND ux LESS 15.000001 AND uy GREATER 14.999999 AND uy LESS 15.000001)
+elseif(CASE STREQUAL "hot_wire_homing")
+  # Carriages homed as axes of their own are absolute (xyuv-abs), not K0215; a homed rotary B is a
+  # note (K0241); the same program without the homing block is ambiguous (issue 55).
+  set(program "${SOURCE}/tests/programs/hot_wire_homes_uv.nc")
+  run("${KERF}" check "${program}" --thickness 300)
+  string(FIND "${err}" "read as xyuv-abs (4-axis taper), from U V homed as axes of their own" abs)
+  string(FIND "${err}" "[K0241]" rotary)
+  expect("G28 X Y U V reads as xyuv-abs, G28 B is a note (exit ${rc})"
+         rc EQUAL 0 AND NOT abs EQUAL -1 AND NOT rotary EQUAL -1)
+  file(STRINGS "${program}" lines)
+  list(FILTER lines EXCLUDE REGEX "^G28 X Y U V")
+  string(REPLACE ";" "\n" text "${lines}")
+  file(WRITE "${WORK}/no_homing.nc" "${text}\n")
+  run("${KERF}" check "${WORK}/no_homing.nc" --thickness 300)
+  string(FIND "${err}" "[K0215]" ambiguous)
+  expect("without the homing the numbers cannot tell (K0215)" rc EQUAL 1 AND NOT ambiguous EQUAL -1)
 elseif(CASE STREQUAL "threads_do_not_change_findings")
   # The measures and the sections run on every core: one thread or several, the same report, on
   # every sample (the bad ones have section findings) and on a taper part long enough to split.

@@ -298,17 +298,15 @@ void checkPatches(const SurfaceCheck& c, const SurfaceMeasures& m) {
       const double spread = guides ? guides->height() / planes.height() : 1.0;
       const geometry::Extreme& e = pm.maxOffsetX.value >= pm.maxOffsetY.value ? pm.maxOffsetX : pm.maxOffsetY;
       if (e.value * spread > *c.options.uvRange)
-        c.diags.report(finding(Severity::Error, Code::UvOutOfRange, c.src, moves[i], i,
-                               at3(lo.pointAt(e.t), planes.lower),
-                               (guides ? "the upper guide is " : "the upper face is ") +
-                                   formatFixed(e.value * spread, 3) + " mm from the lower " +
-                                   (guides ? "one" : "face") + " along " + (&e == &pm.maxOffsetX ? "X" : "Y") +
-                                   ", beyond the U/V range " + formatFixed(*c.options.uvRange, 3) + " mm" +
-                                   (guides ? " (the guides at z " + formatFixed(guides->lower, 3) + " and " +
-                                                 formatFixed(guides->upper, 3) + ", " + c.toolpath.heights.guidesSource +
-                                                 ")"
-                                           : std::string(": give the guides' heights (--guides) to check it where "
-                                                         "the axes are"))));
+        c.diags.report(finding(
+            Severity::Error, Code::UvOutOfRange, c.src, moves[i], i, at3(lo.pointAt(e.t), planes.lower),
+            (guides ? "the upper guide is " : "the upper face is ") + formatFixed(e.value * spread, 3) +
+                " mm from the lower " + (guides ? "one" : "face") + " along " + (&e == &pm.maxOffsetX ? "X" : "Y") +
+                ", beyond the U/V range " + formatFixed(*c.options.uvRange, 3) + " mm" +
+                (guides ? " (the guides at z " + formatFixed(guides->lower, 3) + " and " +
+                              formatFixed(guides->upper, 3) + ", " + c.toolpath.heights.guidesSource + ")"
+                        : std::string(": give the guides' heights (--guides) to check it where "
+                                      "the axes are"))));
     }
     const geometry::TwistMeasure tw = geometry::measureTwist(lo, up);
     if (tw.defined && !lo.isArc() && !up.isArc() && tw.maxAngle >= geometry::kPi - 1e-12) {

@@ -105,11 +105,11 @@ NumberEvidence compareNumbers(const Program& program) {
 }  // namespace
 
 DialectDetection detectDialect(const Program& program, const MachineProfile& machine) {
-  Evidence colon, taperAngle, colonMode, uv, abs, rel, linuxcnc;
+  Evidence colon, taperAngle, colonMode, uv, abs, rel, linuxcnc, homesUv;
   for (const std::uint32_t index : program.notPlain) {  // a plain block holds no evidence
     const Block& b = program.blocks[index];
     if (b.colon) colon.set(onLine("':'", b.line), b.span());
-    bool setPosition = false, hasUv = false, upperCentre = false, kl = false, g92ij = false;
+    bool setPosition = false, homing = false, hasUv = false, upperCentre = false, kl = false, g92ij = false;
     const auto words = program.wordsOf(b);
     for (std::size_t k = 0; k < words.size(); ++k) {
       const Word& w = words[k];
@@ -120,6 +120,7 @@ DialectDetection detectDialect(const Program& program, const MachineProfile& mac
         if (tenths >= 1400 && tenths <= 1420 && tenths % 10 == 0)
           colonMode.set(onLine("G" + std::to_string(tenths / 10), b.line), w.span());
         if (tenths == 920) setPosition = true;
+        if (tenths == 280 || tenths == 300) homing = true;
       } else if (w.letter == 'M' && w.isNumber()) {
         const long m = roundHalfAway(w.value);
         if (m == 100 || m == 101) abs.set(onLine("M" + std::to_string(m), b.line), w.span());
@@ -139,7 +140,11 @@ DialectDetection detectDialect(const Program& program, const MachineProfile& mac
       if (kl && !upperCentre) rel.set(onLine("K L with U V", b.line), b.span());
     }
     if (g92ij) rel.set(onLine("G92 with I J (NCVC plane heights)", b.line), b.span());
+    if (homing && hasUv) homesUv.set(onLine("U V homed as axes of their own (G28/G30)", b.line), b.span());
   }
+  // Carriages homed as axes are absolute positions (a hot-wire foam cutter): evidence for xyuv-abs
+  // where nothing else says which (LinuxCNC's foam configs home them too, and say so in comments).
+  if (homesUv.found() && !abs.found() && !linuxcnc.found()) abs = homesUv;
   for (const HeightWord& h : program.heights)
     if (h.kind == HeightWord::Kind::LinuxCncUvPlane || h.kind == HeightWord::Kind::LinuxCncXyPlane)
       linuxcnc.set(onLine(h.kind == HeightWord::Kind::LinuxCncUvPlane ? "(AXIS,UV_Z_POS)" : "(AXIS,XY_Z_POS)", h.line),

@@ -18,6 +18,10 @@ void Interpreter::warnIgnoredWords(const BlockWords& bw, const BlockPlan& plan) 
                      std::string("word '") + c + "' has no meaning in a " + dialectName(dialect_) +
                          " wire program and is ignored");
   }
+  if (const Word* b = bw['B']; b && warnedLetters_.insert('B').second)  // the parser lets B stand only after G28/G30
+    diags_.note(Code::RotaryAxisNotModelled, src_, b->span(),
+                "'" + std::string(src_->text().substr(b->offset, b->length)) +
+                    "': the rotary axis B is homed here; Kerf does not model it (the wire's path is read without it)");
   if (plan.dwell && !plan.setPosition && (bw.has('Y') || bw.has('I') || bw.has('J') || bw.has('R'))) {
     const Word* w = bw.has('Y') ? bw['Y'] : bw.has('I') ? bw['I'] : bw.has('J') ? bw['J'] : bw['R'];
     diags_.warning(Code::DwellWordsIgnored, src_, w->span(), "coordinates in a G04 block are ignored");

@@ -95,7 +95,8 @@ void Interpreter::resolveGuides(double lowerZ) {
   }
   if (!g) return;
   if (!((*g)[1] > (*g)[0]) || std::abs((*g)[0]) > 1e5 || std::abs((*g)[1]) > 1e5) {
-    diags_.error(Code::HeightsMissing, src_, program_.blocks.empty() ? SourceSpan::wholeFile() : program_.blocks.front().span(),
+    diags_.error(Code::HeightsMissing, src_,
+                 program_.blocks.empty() ? SourceSpan::wholeFile() : program_.blocks.front().span(),
                  "the guides (" + source + ") are at z " + formatFixed((*g)[0], 3) + " and " + formatFixed((*g)[1], 3) +
                      " mm: the upper must be above the lower, both within 100 m");
     return;

@@ -234,6 +234,11 @@ class Interpreter {
   void noteOffsetRun(const Move& m, std::size_t index);
   // upper_side.cpp
   bool buildUpper(const BlockWords& bw, const BlockWords& ubw, const Block& block, Move& move, Segment& upper);
+  bool buildUpperAbsolute(const BlockWords& bw, const BlockWords& ubw, const Block& block, Segment& upper);
+  bool buildUpperLinuxCnc(const BlockWords& ubw, Segment& upper);
+  bool buildUpperColon(const BlockWords& ubw, const Block& block, const Move& move, Segment& upper);
+  bool recordUpperRelative(const BlockWords& ubw, const Move& move, Segment& upper);
+  bool recordTaper(const Block& block, const Move& move);
   // wire_offset.cpp
   void executeWireOffset(const BlockWords& bw, const Word& o);
   void recordOffsetSpans();

@@ -303,7 +303,18 @@ bool readReadingKey(const ProfileLine& l, MachineProfile& p) {
     l.either(p.legacyTaperCodes, "no", "detect");
   } else if (key == "corner_r") {
     l.either(p.bareCornerRadius, "comma", "bare");
-  } else if (key == "max_taper") {
+  } else {
+    return false;
+  }
+  return true;
+}
+
+/// The keys of the machine itself: its limits, speeds, home and guides, and the thickness it holds;
+/// false for a key that is none of them.
+bool readMachineKey(const ProfileLine& l, MachineProfile& p) {
+  const std::string& key = l.key;
+  const std::string& value = l.value;
+  if (key == "max_taper") {
     if (auto v = number(value); v && *v >= 0 && *v <= 89)
       p.maxTaperDegrees = *v;
     else
@@ -450,10 +461,11 @@ std::optional<MachineProfile> parseMachineProfile(const SourceFile& file, Diagno
       readOffset(l, p);
     else if (l.key.rfind("condition_speed ", 0) == 0 || l.key.rfind("condition_speed\t", 0) == 0)
       readConditionSpeed(l, p);
-    else if (!readReadingKey(l, p) && !readWritingKey(l, p))
+    else if (!readReadingKey(l, p) && !readMachineKey(l, p) && !readWritingKey(l, p))
       l.fail(l.lead, l.eq - l.lead, "unknown key '" + l.key + "'",
              "keys: name, summary, source, arc_centre, integer_unit, integer_threshold, uv_words, semicolon, "
-             "upper_axes, bare_g92, legacy_taper_codes, corner_r, guides, max_taper, uv_range, thickness, home, rough_rate, "
+             "upper_axes, bare_g92, legacy_taper_codes, corner_r, guides, max_taper, uv_range, thickness, home, "
+             "rough_rate, "
              "skim_speed, "
              "rapid_speed, thread_time, feed, write_unit, line_end, "
              "write_taper, write_decimals, write_comment, write_g, write_start, write_offset, write_cancel, "

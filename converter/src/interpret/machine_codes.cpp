@@ -25,9 +25,9 @@ bool Interpreter::recordGuides(const BlockWords& bw, const Block& block) {
   const Word* q = bw['Q'];
   if (!p || !q || !p->isNumber() || !q->isNumber()) return false;
   const std::string where = " on line " + std::to_string(block.line);
-  const std::string code = bw.machineCount > 0 ? std::string(src_->text().substr(bw.machine[0].first->offset,
-                                                                                bw.machine[0].first->length))
-                                                : std::string("M100");
+  const std::string code =
+      bw.machineCount > 0 ? std::string(src_->text().substr(bw.machine[0].first->offset, bw.machine[0].first->length))
+                          : std::string("M100");
   fileGuideSpacing_ = Height{length(*p), code + " P" + where};
   fileGuideBelow_ = Height{length(*q), code + " Q" + where};
   return true;
@@ -56,8 +56,9 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
         const bool given = recordGuides(bw, block);
         if (notedCodes_.insert(key).second)
           diags_.note(Code::MachineCode, src_, w.span(),
-                      given ? as + ": " + code.note + ": the guides " + formatFixed(length(*p), 3) + " mm apart, the lower " +
-                                  formatFixed(length(*q), 3) + " mm below the work [" + machine_.name + " profile]"
+                      given ? as + ": " + code.note + ": the guides " + formatFixed(length(*p), 3) +
+                                  " mm apart, the lower " + formatFixed(length(*q), 3) + " mm below the work [" +
+                                  machine_.name + " profile]"
                             : as +
                                   " without P and Q gives no guide geometry (older cnc3 programs write it alone, "
                                   "as 'Apply') [" +

@@ -81,7 +81,7 @@ std::size_t pairKey(const geometry::WirePiece& p) { return 2 * p.element + (p.co
 }  // namespace
 
 std::vector<Interpreter::PairedPiece> Interpreter::pairPieces(const std::vector<geometry::WirePiece>& lower,
-                                                               const std::vector<geometry::WirePiece>* upper) {
+                                                              const std::vector<geometry::WirePiece>* upper) {
   std::vector<PairedPiece> out;
   if (!upper) {
     for (const geometry::WirePiece& p : lower) out.push_back({p, p.segment});

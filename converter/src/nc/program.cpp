@@ -49,7 +49,7 @@ bool isLengthLetter(char u) { return u == 'X' || u == 'Y' || u == 'U' || u == 'V
 
 /// Axis letters that may stand alone after G28 / G30 (home these axes).
 bool isAxisLetter(char u) {
-  return u == 'X' || u == 'Y' || u == 'Z' || u == 'U' || u == 'V' || u == 'W' || u == 'A' || u == 'C';
+  return u == 'X' || u == 'Y' || u == 'Z' || u == 'U' || u == 'V' || u == 'W' || u == 'A' || u == 'B' || u == 'C';
 }
 
 /// Numbers of this many significant digits before the point or more (1e9 and larger) are refused
@@ -662,7 +662,8 @@ class LineParser {
     if (letter == 'Z' && options_.upperAxesUZ) letter = 'V';
     ++i;
     while (i < end && isBlank(text_[i])) ++i;  // "X 10." is accepted
-    if (!isWordLetter(letter)) return unknownLetter(block, start, i, end, letter);
+    // B is no wire word (3B code starts with it), except a rotary axis homed with G28/G30 (`G28 B`).
+    if (!isWordLetter(letter) && !(letter == 'B' && homing_)) return unknownLetter(block, start, i, end, letter);
     if (std::size_t next = 0; letter == 'T' && tryHeightWord(block, start, i, end, next)) return next;
     if (const std::size_t next = valueAtMachine(block, start, i, end, letter); next != i) return next;
     // A plain letter's number with a point is converted only if the block turns out not to be
@@ -708,8 +709,15 @@ class LineParser {
     // Skip the number that follows, if any, so one bad word is one diagnostic.
     const NumberScan n = scanNumber(text_, i, end);
     const std::size_t stop = n.status == NumberScan::Missing ? start + 1 : n.end;
-    error(block, Code::UnknownWord, start, stop - start, std::string("unknown word letter '") + letter + "'",
-          letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code" : std::string{});
+    // A B after other words of a block moves a rotary axis; a B that starts one is likely 3B code.
+    const bool axisMove = letter == 'B' && wordsSoFar(block) > 0;
+    error(block, Code::UnknownWord, start, stop - start,
+          axisMove ? std::string("'B' turns a rotary axis while the wire moves: Kerf does not model it, so this move "
+                                 "cannot be checked")
+                   : std::string("unknown word letter '") + letter + "'",
+          axisMove        ? "a B that only homes the axis (G28 B) is read as a note"
+          : letter == 'B' ? "this looks like 3B code (B x B y B J G Z), not ISO G-code"
+                          : std::string{});
     return std::max(stop, start + 1);
   }
 

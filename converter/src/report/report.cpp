@@ -502,7 +502,7 @@ std::string checkReportJson(const std::string& file, const Summary& s, const Dia
       const GuideTravel& g = *t.guides;
       auto box = [&](const geometry::Box& b) { return json{{"min", vec(b.min)}, {"max", vec(b.max)}}; };
       sum["taper"]["guides"] = {{"lower_z", t.heights.guides->lower}, {"upper_z", t.heights.guides->upper},
-                                {"from", t.heights.guidesSource},    {"lower_bounds_mm", box(g.lower)},
+                                {"from", t.heights.guidesSource},     {"lower_bounds_mm", box(g.lower)},
                                 {"upper_bounds_mm", box(g.upper)},    {"uv_max_x_mm", g.uvX},
                                 {"uv_max_x_line", g.uvXLine},         {"uv_max_y_mm", g.uvY},
                                 {"uv_max_y_line", g.uvYLine}};

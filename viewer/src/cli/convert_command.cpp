@@ -24,7 +24,10 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
   for (const converter::Emitter& e : converter::emitters()) names.emplace_back(e.name);
   cmd->add_flag("--list", a.list, "list the output formats and exit")->group("Output");
   cmd->add_option("--to", a.to, "output format (--list shows them)")->check(CLI::IsMember(names))->group("Output");
-  cmd->add_option("--plane", a.plane, "taper input to a 2-axis format: lower, upper or z=HEIGHT; points4: guides (X Y at the lower guide, U V at the upper)")->group("Output");
+  cmd->add_option("--plane", a.plane,
+                  "taper input to a 2-axis format: lower, upper or z=HEIGHT; points4: guides (X Y at the lower guide, "
+                  "U V at the upper)")
+      ->group("Output");
   cmd->add_option("--uv", a.uv, "points4: U V as the upper point (absolute) or upper minus lower (relative)")
       ->check(CLI::IsMember({"absolute", "relative"}))
       ->group("Output");

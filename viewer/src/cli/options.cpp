@@ -238,6 +238,12 @@ void addMeshOptions(CLI::App& cmd, MeshOptions& o, bool generators) {
     cmd.add_option("--generators", o.generators, "about this many wire lines along the cut (default 72; 0: none)")
         ->check(CLI::Range(std::size_t{0}, std::size_t{100000}))
         ->group("Mesh");
+  if (generators)
+    cmd.add_option("--show", o.show,
+                   "more to draw: guides (the guides' paths and the wire extended to them: --guides, M100 P Q or "
+                   "the profile's)")
+        ->check(CLI::IsMember({"guides"}))
+        ->group("Mesh");
 }
 
 bool sizeOption(const std::string& text, int& w, int& h) {

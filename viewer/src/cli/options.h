@@ -88,6 +88,7 @@ struct SamplingOptions {
 struct MeshOptions {
   std::optional<double> tolerance;        ///< --mesh-tolerance, mm (default 0.01, render/scene.h)
   std::optional<std::size_t> generators;  ///< --generators: wire lines drawn along the cut
+  std::vector<std::string> show;          ///< --show: more to draw (guides: the wire at its guides)
 };
 
 /// What every command that reads a program takes.

@@ -72,7 +72,17 @@ render::SceneOptions sceneOptionsOf(const MeshOptions& mesh) {
   render::SceneOptions so;
   if (mesh.tolerance) so.tolerance = *mesh.tolerance;
   if (mesh.generators) so.generators = *mesh.generators;
+  so.showGuides = std::find(mesh.show.begin(), mesh.show.end(), "guides") != mesh.show.end();
   return so;
+}
+
+bool guidesShowable(const converter::Pipeline& p, const render::SceneOptions& so) {
+  if (!so.showGuides || (p.toolpath.heights.guides && p.toolpath.heights.known)) return true;
+  reportError(p.toolpath.isTaper()
+                  ? "--show guides: no guide heights are given (--guides LOWER_Z,UPPER_Z, cnc3's M100 P Q, or a "
+                    "profile's guides)"
+                  : "--show guides: a 2-axis program's wire stands upright; the guides matter to a taper program");
+  return false;
 }
 
 }  // namespace kerf::cli

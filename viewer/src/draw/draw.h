@@ -18,6 +18,8 @@ namespace kerf::cli {
 ui::Annotation annotationOf(const std::string& input, const converter::Pipeline& pipeline);
 
 render::SceneOptions sceneOptionsOf(const MeshOptions& mesh);
+/// --show guides can be drawn (a taper program whose guide heights are known); false after saying why.
+bool guidesShowable(const converter::Pipeline& p, const render::SceneOptions& so);
 
 /// --color-by deviation: the part edge coloured by its deviation from --drawing, on a ramp up to
 /// twice the tolerance or the worst deviation, whichever is larger, and the legend's range; false

@@ -35,6 +35,7 @@ int drawRender(const RenderArgs& a) {
   // quarter of one (half a pixel shows the surface's edge beside the line): finer shows nothing
   // (docs/rendering.md).
   render::SceneOptions so = sceneOptionsOf(a.mesh);
+  if (!guidesShowable(p, so)) return kExitUsage;
   if (p.comparisonUpper) so.referenceUpper = p.comparisonUpper->drawn;
   so.minForcedPieceLength = ui::picturePixelMm(p.toolpath, so, request);
   so.lineTolerance = 0.25 * so.minForcedPieceLength;

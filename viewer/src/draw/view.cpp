@@ -23,6 +23,7 @@ int drawView(const ViewArgs& a) {
   if (a.line && !moveOnLine(p, *a.line, "--line")) return kExitUsage;
   request.reference = converter::referenceGeometry(p);
   render::SceneOptions so = sceneOptionsOf(a.mesh);
+  if (!guidesShowable(p, so)) return kExitUsage;
   if (p.comparisonUpper) so.referenceUpper = p.comparisonUpper->drawn;
   so.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());  // the window's colour by pass
   request.annotation = annotationOf(file, p);

@@ -210,7 +210,8 @@ bool Renderer::init(std::string& error) {
 
 void Renderer::releaseBuffers() {
   const GlApi& g = gl();
-  for (Buffer* b : {&surface_, &lower_, &upper_, &generators_, &rapids_, &reference_, &deviation_, &markers_}) {
+  for (Buffer* b :
+       {&surface_, &lower_, &upper_, &generators_, &rapids_, &reference_, &deviation_, &guides_, &markers_}) {
     if (b->vbo) g.DeleteBuffers(1, &b->vbo);
     if (b->ebo) g.DeleteBuffers(1, &b->ebo);
     if (b->vao) g.DeleteVertexArrays(1, &b->vao);
@@ -278,9 +279,10 @@ void Renderer::setScene(const Scene& scene) {
                         reinterpret_cast<void*>(offsetof(SurfaceVertex, slopeDegrees)));
   g.EnableVertexAttribArray(3);
   g.VertexAttribIPointer(3, 1, GL_UNSIGNED_INT, stride, reinterpret_cast<void*>(offsetof(SurfaceVertex, flags)));
-  const std::pair<Buffer*, const LineSet*> sets[] = {
-      {&lower_, &scene.lower},   {&upper_, &scene.upper},         {&generators_, &scene.generators},
-      {&rapids_, &scene.rapids}, {&reference_, &scene.reference}, {&deviation_, &scene.deviation}};
+  const std::pair<Buffer*, const LineSet*> sets[] = {{&lower_, &scene.lower},           {&upper_, &scene.upper},
+                                                     {&generators_, &scene.generators}, {&rapids_, &scene.rapids},
+                                                     {&reference_, &scene.reference},   {&deviation_, &scene.deviation},
+                                                     {&guides_, &scene.guides}};
   for (const auto& [buffer, set] : sets) {
     upload(buffer->vao, buffer->vbo, set->vertices);
     buffer->count = set->vertices.size();
@@ -414,6 +416,8 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
     drawLines(lower_, 0, lower_.count, viewProj, w, 0.0f, width, height, nullptr);
     drawLines(upper_, 0, upper_.count, viewProj, w, 0.0f, width, height, nullptr);
   }
+  if (guides_.count)
+    drawLines(guides_, 0, guides_.count, viewProj, std::max(1.0f, 0.75f * w), 0.0f, width, height, nullptr);
   // The part edge in its deviation's colours, over the contours (--color-by deviation).
   if (deviation_.count) drawLines(deviation_, 0, deviation_.count, viewProj, 2.0f * w, 0.0f, width, height, nullptr);
   g.Disable(GL_DEPTH_TEST);

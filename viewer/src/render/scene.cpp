@@ -24,6 +24,8 @@ constexpr std::uint32_t kUpperColour = rgba(200, 90, 20);
 constexpr std::uint32_t kGeneratorColour = rgba(70, 75, 90, 70);
 constexpr std::uint32_t kRapidColour = rgba(110, 110, 110, 200);
 constexpr std::uint32_t kReferenceColour = rgba(200, 60, 150, 230);  // the drawing: magenta, dashed
+constexpr std::uint32_t kGuideColour = rgba(20, 150, 160, 255);      // the guides' paths: teal
+constexpr std::uint32_t kGuideWireColour = rgba(20, 150, 160, 110);  // the wire extended between them
 constexpr std::uint32_t kVertexDone = 0x80000000u;                   // buildScene's mark while it finishes a patch
 
 std::array<float, 3> toFloat(const Vec3& v) {
@@ -391,6 +393,37 @@ void addMoveLines(Scene& scene, const converter::Toolpath& toolpath, const CutSu
     set->moveFirst.push_back(static_cast<std::uint32_t>(set->vertices.size()));
 }
 
+/// The wire at its guides: each cut move's positions at the guides (its lower and upper segments at
+/// the same t, extended: lower + (upper - lower)(z - z_lower)/H) drawn at the guides' heights, and
+/// the whole wire from guide to guide at each move's start.
+void addGuides(Scene& scene, const converter::Toolpath& toolpath, const geometry::Sampling& sampling) {
+  scene.guides.moveFirst.push_back(0);
+  const geometry::Planes& faces = toolpath.heights.planes;
+  const geometry::Planes& guides = *toolpath.heights.guides;
+  const double a = (guides.lower - faces.lower) / faces.height(), b = (guides.upper - faces.lower) / faces.height();
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    if (!toolpath.moves[i].isCut()) continue;
+    const Segment& lo = toolpath.moves[i].lower;
+    const Segment& up = toolpath.upper[i];
+    const std::size_t n = std::max<std::size_t>(
+        1, std::min<std::size_t>(4096,
+                                 std::max(geometry::sampleCount(lo, sampling), geometry::sampleCount(up, sampling))));
+    auto at = [&](double t, double s, double z) {
+      const Vec2 l = lo.pointAt(t), u = up.pointAt(t);
+      const Vec2 p = l + s * (u - l);
+      return Vec3{p.x(), p.y(), z};
+    };
+    scene.guides.add(at(0.0, a, guides.lower), at(0.0, b, guides.upper), kGuideWireColour);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double t0 = static_cast<double>(k) / static_cast<double>(n),
+                   t1 = static_cast<double>(k + 1) / static_cast<double>(n);
+      scene.guides.add(at(t0, a, guides.lower), at(t1, a, guides.lower), kGuideColour);
+      scene.guides.add(at(t0, b, guides.upper), at(t1, b, guides.upper), kGuideColour);
+    }
+  }
+  scene.guides.moveFirst.push_back(static_cast<std::uint32_t>(scene.guides.vertices.size()));
+}
+
 /// The box of everything drawn (the start, the surface, the lines), between the planes at least.
 void setBounds(Scene& scene) {
   const geometry::Planes& planes = scene.planes;
@@ -402,7 +435,8 @@ void setBounds(Scene& scene) {
     hi = hi.cwiseMax(v);
   };
   for (const auto& v : scene.surface) grow(v.position);
-  for (const LineSet* set : {&scene.lower, &scene.upper, &scene.rapids, &scene.reference, &scene.deviation})
+  for (const LineSet* set :
+       {&scene.lower, &scene.upper, &scene.rapids, &scene.reference, &scene.deviation, &scene.guides})
     for (const auto& v : set->vertices) grow(v.position);
   lo.z() = std::min(lo.z(), planes.lower);
   hi.z() = std::max(hi.z(), planes.upper);
@@ -432,6 +466,8 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
     addSegment(scene.reference, s, planes.upper, sampling, kReferenceColour, scratch);
   scene.reference.moveFirst.push_back(static_cast<std::uint32_t>(scene.reference.vertices.size()));
   addDeviationEdge(scene, options, planes, sampling, scratch);
+  if (options.showGuides && scene.taper && toolpath.heights.guides && toolpath.heights.known)
+    addGuides(scene, toolpath, sampling);
   scene.start = {toolpath.start.x(), toolpath.start.y(), planes.lower};
   setBounds(scene);
   return scene;

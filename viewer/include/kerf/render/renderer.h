@@ -103,7 +103,8 @@ class Renderer {
   void drawConstruction(const Eigen::Matrix4f& viewProj, int width, int height);
 
   unsigned surfaceProgram_ = 0, lineProgram_ = 0, markerProgram_ = 0, overlayProgram_ = 0;
-  Buffer surface_, lower_, upper_, generators_, rapids_, reference_, deviation_, markers_, extra_, triad_, overlay_;
+  Buffer surface_, lower_, upper_, generators_, rapids_, reference_, deviation_, guides_, markers_, extra_, triad_,
+      overlay_;
   Buffer construction_, constructionDashed_, constructionDots_;
   unsigned overlayEbo_ = 0, overlayTexture_ = 0;
   std::vector<std::uint32_t> lowerFirst_, upperFirst_;

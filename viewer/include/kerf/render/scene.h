@@ -83,6 +83,9 @@ struct SceneOptions {
   /// detail under half a pixel, lines and surface alike, left out (displayRuns).
   double mergeTolerance = 0.0;
   bool noteMarkers = false;  ///< notes get markers too (errors and warnings always do)
+  /// --show guides: a taper program's guide paths (PlaneHeights::guides) and the wire extended to
+  /// them at every move's start, in Scene::guides. Nothing where the heights are unknown.
+  bool showGuides = false;
   /// Each move's pass in its contour (1 = the first, the rough cut; 0 = in none), one entry a move
   /// (converter::movePasses): the surface carries it for RenderOptions::colourByPass. Empty: none.
   std::vector<std::uint8_t> movePass;
@@ -118,6 +121,9 @@ struct Scene {
   /// The part edge coloured by its deviation from the drawing (SceneOptions::deviationLower, deviationUpper), on
   /// the lower plane; one "move".
   LineSet deviation;
+  /// The wire at its guides (SceneOptions::showGuides): both guides' paths and the wire extended
+  /// between them at each cut move's start; one "move".
+  LineSet guides;
   std::vector<Marker> findings;
   geometry::Vec3 start{0, 0, 0};
   geometry::Vec3 boundsMin{0, 0, 0}, boundsMax{0, 0, 0};

@@ -87,6 +87,7 @@
   X(238, PolarAxisValue, Note, "note", "how a mill-turn program's polar frame or X/C spirals were drawn") \
   X(239, HomePositionTaken, Note, "note", "G28/G30 go to the machine profile's home position (`home`, default the origin), drawn as rapids; once per program") \
   X(240, CornerNotMade, Error, "error", "a corner `,R r` or `,C c` (or NCVC's bare R on a cut block) that cannot be made: no cut move follows, the elements meet tangent or turn back, r or c is more than an element has, or the program's dialect has its own upper contour; nothing is drawn in its place") \
+  X(241, RotaryAxisNotModelled, Note, "note", "a rotary axis word that only homes (`G28 B`): Kerf does not model the axis (a B that moves while cutting is K0107)") \
   /* Arcs */ \
   X(301, ArcWithoutCentre, Error, "error", "an arc with neither I J nor R") \
   X(302, RadiusTooSmall, Error, "error", "\\|R\\| shorter than half the chord") \

@@ -593,6 +593,25 @@ elseif(CASE STREQUAL "hot_wire_homing")
   run("${KERF}" check "${WORK}/no_homing.nc" --thickness 300)
   string(FIND "${err}" "[K0215]" ambiguous)
   expect("without the homing the numbers cannot tell (K0215)" rc EQUAL 1 AND NOT ambiguous EQUAL -1)
+elseif(CASE STREQUAL "corner_words")
+  # A corner ,R made as a move of its block: kerf explain says its centre and tangent points, and
+  # render --explain-line draws and labels them (issue 55); NCVC's bare R on an arc with I J too.
+  set(program "${SOURCE}/tests/taper/rectangle_corner_r.nc")
+  run("${KERF}" explain "${program}")
+  string(FIND "${out}" ",R2.: rounds the corner at the block's end with radius 2.000 mm: the elements met at (40.000, 0.000); the fillet's centre is (38.000, 2.000), its tangent points (38.000, 0.000) and (40.000, 2.000)" said)
+  string(FIND "${out}" "X40.: the end point's X (absolute): the end's x is 40.000 mm, where the corner at the block's end trims it to 38.000 mm" trimmed)
+  expect("kerf explain says the fillet and the trimmed end" rc EQUAL 0 AND NOT said EQUAL -1 AND NOT trimmed EQUAL -1)
+  run("${KERF}" render "${program}" --explain-line 6 -o "${WORK}/corner.png" --size 320x240)
+  string(FIND "${out}" "fillet centre (38.000, 2.000)" centre)
+  string(FIND "${out}" "the sharp corner (40.000, 0.000)" sharp)
+  expect("--explain-line labels the fillet's centre and the sharp corner"
+         rc EQUAL 0 AND NOT centre EQUAL -1 AND NOT sharp EQUAL -1 AND EXISTS "${WORK}/corner.png")
+  file(WRITE "${WORK}/ncvc_arc.nc" "G92 X0 Y0 I10. J0\nG90 G01 X10. Y0 R1.\nG03 X20. Y10. I10. J0 R1.\nG01 Y20.\nM02\n")
+  run("${KERF}" check "${WORK}/ncvc_arc.nc" --machine ncvc --json)
+  string(JSON arcs GET "${out}" summary arcs)
+  string(FIND "${out}" "K0222" ignored)
+  expect("NCVC: R beside G01 and beside a G03 with I J rounds both corners (3 arcs, not ${arcs}; no K0222)"
+         arcs EQUAL 3 AND ignored EQUAL -1)
 elseif(CASE STREQUAL "threads_do_not_change_findings")
   # The measures and the sections run on every core: one thread or several, the same report, on
   # every sample (the bad ones have section findings) and on a taper part long enough to split.

@@ -120,7 +120,9 @@ class StructureFinder {
   /// and the chord enclose — over a notch that sign is the other (a skim forward over a tooth of a
   /// counter-clockwise die encloses clockwise area). Its elements (at most 64, evenly spread) that
   /// lie on the reference's programmed path vote by their tangents, weighted by length; a pass none
-  /// of whose elements lies there keeps its area's direction.
+  /// of whose elements lies there keeps its area's direction. Each vote looks through the
+  /// reference's elements: the votes of a contour are bounded by kVoteBudget element visits, shared
+  /// by its open passes (a pass past the budget keeps its area's direction).
   void orientOpenPasses(Contour& c) const {
     std::vector<Pass>& ps = c.passes;
     std::size_t ref = ps.size();
@@ -130,19 +132,25 @@ class StructureFinder {
       for (std::size_t p = 0; p < ps.size(); ++p)
         if (ref == ps.size() || ps[p].alongLength > ps[ref].alongLength) ref = p;
     if (ref == ps.size() || ps[ref].direction == 0) return;
+    constexpr std::size_t kVoteBudget = 20'000'000;
+    const std::size_t refElements = std::max<std::size_t>(1, ps[ref].alongEnd - ps[ref].alongFirst);
+    std::size_t open = 0;
+    for (std::size_t p = 0; p < ps.size(); ++p) open += p != ref && !ps[p].closes && !ps[p].cutOff;
+    if (open == 0) return;
+    const std::size_t voters = std::min<std::size_t>(64, kVoteBudget / (refElements * open));
+    if (voters == 0) return;
     for (std::size_t p = 0; p < ps.size(); ++p) {
       if (p == ref || ps[p].closes || ps[p].cutOff) continue;
-      const double vote = travelAlong(ps[p], ps[ref]);
+      const double vote = travelAlong(ps[p], ps[ref], voters);
       if (vote != 0) ps[p].direction = vote > 0 ? ps[ref].direction : -ps[ref].direction;
     }
   }
 
-  /// > 0 where pass p's elements run the same way as ref's programmed path, < 0 the other way, 0
-  /// where none of them lies on it.
-  double travelAlong(const Pass& p, const Pass& ref) const {
-    constexpr std::size_t kMostVoters = 64;
+  /// > 0 where pass p's elements (at most `voters`, evenly spread) run the same way as ref's
+  /// programmed path, < 0 the other way, 0 where none of them lies on it.
+  double travelAlong(const Pass& p, const Pass& ref, std::size_t voters) const {
     const std::size_t count = p.alongEnd - p.alongFirst;
-    const std::size_t stride = std::max<std::size_t>(1, count / kMostVoters);
+    const std::size_t stride = std::max<std::size_t>(1, (count + voters - 1) / voters);
     double vote = 0.0;
     for (std::size_t k = p.alongFirst; k < p.alongEnd; k += stride) {
       const Segment& s = programmed(k);

@@ -94,6 +94,17 @@ CornerStatus turnOf(const Segment& a, const Segment& b, double joinTolerance, do
   return CornerStatus::Ok;
 }
 
+/// What every corner checks before it is made: joined, not tangent, not turned straight back, a
+/// size above 0. Status Ok when it may be made (turn: the cross product of the tangents there),
+/// else why not; sharp is the corner either way.
+Corner precheck(const Segment& a, const Segment& b, double size, double joinTolerance, double& turn) {
+  Corner c;
+  c.sharp = a.end;
+  c.status = turnOf(a, b, joinTolerance, turn);
+  if (c.status == CornerStatus::Ok && !(size > 0)) c.status = CornerStatus::DoesNotFit;
+  return c;
+}
+
 /// Where the corner's segments say, or DoesNotFit when an element keeps too little.
 Corner assemble(const Segment& a, const Segment& b, const Vec2& ta, const Vec2& tb, const Segment& corner,
                 double keep) {
@@ -115,13 +126,10 @@ Corner assemble(const Segment& a, const Segment& b, const Vec2& ta, const Vec2& 
 }  // namespace
 
 Corner roundCorner(const Segment& a, const Segment& b, double r, double joinTolerance, double keep) {
-  Corner fail;
-  fail.sharp = a.end;
   double turn = 0.0;
-  fail.status = turnOf(a, b, joinTolerance, turn);
+  Corner fail = precheck(a, b, r, joinTolerance, turn);
   if (fail.status != CornerStatus::Ok) return fail;
   fail.status = CornerStatus::DoesNotFit;
-  if (!(r > 0)) return fail;
   // The fillet's centre lies r inside the turn from both elements: on both offset curves.
   const double side = turn > 0 ? 1.0 : -1.0;
   const std::optional<Segment> oa = offsetSegment(a, side * r), ob = offsetSegment(b, side * r);
@@ -146,13 +154,10 @@ Corner roundCorner(const Segment& a, const Segment& b, double r, double joinTole
 }
 
 Corner chamferCorner(const Segment& a, const Segment& b, double c, double joinTolerance, double keep) {
-  Corner fail;
-  fail.sharp = a.end;
   double turn = 0.0;
-  fail.status = turnOf(a, b, joinTolerance, turn);
+  Corner fail = precheck(a, b, c, joinTolerance, turn);
   if (fail.status != CornerStatus::Ok) return fail;
   fail.status = CornerStatus::DoesNotFit;
-  if (!(c > 0)) return fail;
   // The point of s at the straight distance c from its end (towards = -1) or start (+1).
   auto at = [&](const Segment& s, const Vec2& corner, double towards) -> std::optional<Vec2> {
     if (!s.isArc()) return corner + towards * c * (s.end - s.start).normalized();

@@ -122,28 +122,28 @@ bool Interpreter::recordTaper(const Block& block, const Move& move) {
   TaperRecord t;
   t.index = toolpath_.moves.size();
   t.tanLeft = taperSide_ * std::tan(taperDegrees_ * geometry::kPi / 180.0);
+  // The wire starts and ends its lean on a straight move (K0219, NCVC's rule).
+  auto onArc = [&](const char* what, const char* help) {
+    if (!move.lower.isArc()) return false;
+    diags_.error(Code::TaperOnArc, src_, block.span(), what, help);
+    return true;
+  };
   switch (taperPhase_) {
     case TaperPhase::Off: return true;
     case TaperPhase::Starting:
       t.start = true;
       taperPhase_ = TaperPhase::On;
-      if (move.lower.isArc()) {
-        diags_.error(Code::TaperOnArc, src_, block.span(),
-                     "the taper starts on an arc: the wire cannot lean while it follows a circle",
-                     "start the taper (G51/G52) on a straight move, as NC controls require");
+      if (onArc("the taper starts on an arc: the wire cannot lean while it follows a circle",
+                "start the taper (G51/G52) on a straight move, as NC controls require"))
         return false;
-      }
       break;
     case TaperPhase::On: break;
     case TaperPhase::Ending:
       t.end = true;
       taperPhase_ = TaperPhase::Off;
-      if (move.lower.isArc()) {
-        diags_.error(Code::TaperOnArc, src_, block.span(),
-                     "the taper ends (G50) on an arc: the wire cannot straighten while it follows a circle",
-                     "cancel the taper before a straight move");
+      if (onArc("the taper ends (G50) on an arc: the wire cannot straighten while it follows a circle",
+                "cancel the taper before a straight move"))
         return false;
-      }
       break;
   }
   moveTaper_ = static_cast<float>(taperSide_ * taperDegrees_);

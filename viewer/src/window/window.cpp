@@ -2,6 +2,7 @@
 #include "window/window.h"
 
 #include "cli/file_io.h"
+#include "kerf/converter/nc/number_format.h"
 #include "kerf/geometry/tessellation.h"
 #include "kerf/headless/png.h"
 #include "kerf/render/construction_scene.h"

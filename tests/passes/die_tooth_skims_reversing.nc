@@ -4,7 +4,7 @@
 ; wire inside the die: G41 forward and G42 backward are the same side of each element. Their
 ; direction is the way they travel along the rough cut: over the tooth the area a stretch and its
 ; chord enclose turns the other way, which used to say "clockwise" for the forward skim and report
-; K0610 at both (issue 55).
+; the error K0610 at both (issue 55).
 ; options: --machine sodick
 ; expect exit: 0
 ; expect: pass 1: lines 17-27, G41 H001 = 0.180 mm, counter-clockwise, closes

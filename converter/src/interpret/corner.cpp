@@ -57,9 +57,8 @@ void Interpreter::refusePendingCorner(const std::string& why) {
 }
 
 void Interpreter::makeCorner(Move& next, Segment& nextUpper) {
-  const PendingCorner pc = *pendingCorner_;
   if (!next.isCut()) return refusePendingCorner("a rapid follows, not a cut move: there is no corner to round");
-  pendingCorner_.reset();
+  const PendingCorner pc = *pendingCorner_;
   Move& prev = toolpath_.moves.back();
   const geometry::Corner c = pc.chamfer ? geometry::chamferCorner(prev.lower, next.lower, pc.size)
                                         : geometry::roundCorner(prev.lower, next.lower, pc.size);
@@ -72,9 +71,9 @@ void Interpreter::makeCorner(Move& next, Segment& nextUpper) {
             ? "the next move turns straight back along this one"
             : "a " + what + formatFixed(pc.size, 3) + " mm corner needs more than this block's element or the " +
                   "next one (line " + std::to_string(next.line) + ") has";
-    pendingCorner_ = pc;
     return refusePendingCorner(why);
   }
+  pendingCorner_.reset();
   prev.lower = c.first;
   if (dialect_ != Dialect::Plain) toolpath_.upper.back() = c.first;  // taper-angle: the programmed contour
   next.lower = c.second;

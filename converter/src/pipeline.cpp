@@ -5,6 +5,7 @@
 #include "kerf/converter/formats/curve/read_curve.h"
 #include "kerf/converter/interpret/analysis.h"
 #include "kerf/converter/interpret/mill_turn.h"
+#include "kerf/converter/interpret/workpiece.h"
 #include "kerf/converter/nc/number_format.h"
 #include "kerf/converter/structure/cutting_time.h"
 
@@ -134,6 +135,15 @@ void compareDrawing(Pipeline& out, const PipelineOptions& options) {
     return;
   }
   out.comparisonUpper = compareOnePlane(out, options, *upper, options.drawingCheck.upperLayer, true);
+}
+
+/// --workpiece: the part between the work's faces, the program's planes the machine's. Its sections
+/// are within the curve tolerance (0.001 mm unless --curve-tolerance says). False when refused.
+bool cutWorkpiece(Pipeline& out, const PipelineOptions& options) {
+  const std::optional<std::array<double, 2>>& w = options.read.workpiece;
+  if (!w) return true;
+  return cutBetweenFaces(out.toolpath, (*w)[0], (*w)[1], options.read.curveTolerance, options.read.maxMoves,
+                         out.source.get(), out.diags);
 }
 
 /// The checks, with the machine's limits unless the user gave others, then the summary (it reads
@@ -461,6 +471,7 @@ void readThreeBPipeline(Pipeline& out, const PipelineOptions& options, std::opti
     h.source = "the options";
   }
   if (upper) pairUpper(out.toolpath, upperPath, out.source.get(), out.upperSource.get(), out.diags);
+  cutWorkpiece(out, options);
   runChecks(out, options);
 }
 
@@ -524,7 +535,8 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
                     "the file holds no program (no block of words): nothing to cut");
   program = Program{};  // the checks need the toolpath alone
 
-  // 4. The checks and the summary.
+  // 4. The part between the work's faces (--workpiece), the checks and the summary.
+  cutWorkpiece(out, options);
   runChecks(out, options);
   return out;
 }

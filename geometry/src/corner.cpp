@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace kerf::geometry {
@@ -137,7 +138,7 @@ Corner roundCorner(const Segment& a, const Segment& b, double r, double joinTole
   const Meets m = meet(*oa, *ob);
   // Of the centres, the nearest the corner whose feet lie on both elements and leave each enough.
   Corner best = fail;
-  double bestDistance = INFINITY;
+  double bestDistance = std::numeric_limits<double>::infinity();
   for (int k = 0; k < m.count; ++k) {
     const Vec2 centre = m.at[static_cast<std::size_t>(k)];
     const double distance = (centre - a.end).norm();

@@ -79,6 +79,22 @@ def outward(p, w):
     return p.buffer(w, join_style=ROUND, resolution=RES)
 
 
+def wing_section(s):
+    """tests/taper/foam_wing_workpiece.nc cut at s of the way from the X Y carriage to the U V one: each
+    move's two sides at the same t (proportional to length), the nose's XY arc with its straight U V."""
+    def mix(a, b):
+        return ((1 - s) * a[0] + s * b[0], (1 - s) * a[1] + s * b[1])
+    pts = [mix((0, 0), (20, 4)), mix((100, 0), (80, 4))]
+    for k in range(1, 20000):
+        t = k / 20000
+        a = math.pi * (-0.5 + t)
+        pts.append(mix((100 + 10 * math.cos(a), 10 + 10 * math.sin(a)), (80, 4 + 12 * t)))
+    pts += [mix((100, 20), (80, 16)), mix((0, 20), (20, 16))]
+    return Polygon(pts)
+
+
+S0, S1 = 100 / 600, 400 / 600  # the foam block's faces between the carriages at z 0 and 600
+
 # Each case: its program, the options to read it with, each layer's expected polygon, the start hole
 # (moves from and to it are left out), and on the upper plane the start-up's gap (centre, radius).
 CASES = [
@@ -100,6 +116,11 @@ CASES = [
          gap=((20, W - D2), D2),
          layers={"LOWER": opening(RECT, 2).buffer(-W, join_style=ROUND, resolution=RES),
                  "UPPER": opening(inset(RECT, W - D2), 2 - W)}),
+    # --workpiece: a foam program's carriages are the machine's planes; the part is cut between the
+    # block's faces (exact sections of the straight moves, the nose's within 1 um).
+    dict(name="foam_workpiece", program="foam_wing_workpiece.nc", options=["--workpiece", "100,400"],
+         holes=[(-10 + 20 * S0, 4 * S0), (-10 + 20 * S1, 4 * S1)],
+         layers={"LOWER": wing_section(S0), "UPPER": wing_section(S1)}),
     # The wire offset on a two-contour program: each plane's contour offset by the same value.
     dict(name="xyuv_frustum_offset", program="xyuv_frustum_offset.nc",
          options=["--offset", str(W), "--thickness", "10"], hole=(-5, 10),
@@ -142,7 +163,7 @@ def main():
     failed = 0
     for case in CASES:
         name, layers = case["name"], case["layers"]
-        hole, gap = case.get("hole"), case.get("gap")
+        holes, gap = case.get("holes", [case["hole"]] if "hole" in case else []), case.get("gap")
         out = os.path.join(work, name + ".dxf")
         r = subprocess.run([kerf, "export", os.path.join(corners, case["program"]), "-o", out] + case.get("options", []),
                            capture_output=True, text=True)
@@ -154,7 +175,7 @@ def main():
         for layer, expected in layers.items():
             ring = expected.exterior
             pieces = [sample(e) for e in doc.modelspace() if e.dxf.layer == layer and e.dxftype() in ("LINE", "ARC")]
-            pieces = [p for p in pieces if not touches(p, hole)]
+            pieces = [p for p in pieces if not any(touches(p, h) for h in holes)]
             if not pieces:
                 print(f"{name} {layer}: no elements")
                 failed += 1

@@ -156,6 +156,10 @@ void addReadingOptions(CLI::App& cmd, ReadingOptions& o) {
                  "LOWER_Z,UPPER_Z: the wire guides' heights, mm, the part's lower face at 0 (default: the program's "
                  "M100 P Q, else the machine profile's guides)")
       ->group(reading);
+  cmd.add_option("--workpiece", o.workpiece,
+                 "Z0,Z1: the work's faces, mm, where the program's planes are the machine's (a hot-wire foam "
+                 "cutter's carriages): the part is the wire's cut between them, the planes become the guides")
+      ->group(reading);
 }
 
 /// The check group: the machine's limits, the time estimate's speed, which diagnostics show and how.
@@ -351,6 +355,14 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
       return false;
     }
     r.guides = std::array<double, 2>{g->x(), g->y()};
+  }
+  if (o.reading.workpiece) {
+    const std::optional<geometry::Vec2> w = pointOption(*o.reading.workpiece, "--workpiece", error);
+    if (!w || !(w->y() > w->x())) {
+      if (w) error = "--workpiece takes Z0,Z1 with the upper face above the lower, not '" + *o.reading.workpiece + "'";
+      return false;
+    }
+    r.workpiece = std::array<double, 2>{w->x(), w->y()};
   }
   r.wireOffset = o.reading.offset;
   if (o.reading.side) r.side = *o.reading.side == "inside" ? WireSide::Inside : WireSide::Outside;

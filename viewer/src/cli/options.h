@@ -53,6 +53,7 @@ struct ReadingOptions {
   std::string dialect = "auto";
   std::optional<double> lowerZ, upperZ, thickness, programZ;
   std::optional<std::string> guides;     ///< LOWER_Z,UPPER_Z: the wire guides, mm (lower face at 0)
+  std::optional<std::string> workpiece;  ///< Z0,Z1: the work's faces where the planes are the machine's
   std::optional<std::string> upperAxes;  ///< uv | uz
 };
 

@@ -23,6 +23,10 @@ thickness = none
 code G60 = harmless: written at the start of every program and contour (a corner or start-hole function); meaning not modelled [assumed: no effect on the path]
 code G38 = harmless: written after G60 before the wire offset starts; meaning not modelled [assumed: no effect on the path]
 code G39 = harmless: written before G40 between contours (the post's compensation cycle); meaning not modelled [assumed: no effect on the path]
+# Taper corners (Autodesk FeatureCAM's wire taper options for a Charmilles machine: "Rounded" is
+# G28, "ISO" is G29). Not the standard G28 (return home): on a Charmilles they choose the corners.
+code G28 = corner-rounded: taper corners rounded: sharp corners tapered into arcs about the corner, arcs into cones [sourced: FeatureCAM help, medium]
+code G29 = corner-cylindrical: ISO taper corners: sharp corners kept sharp, arcs tapered into cylinders [sourced: FeatureCAM help, medium]
 code M28 = harmless: written after G60 at the start of a program; meaning not modelled [assumed: no effect on the path]
 # Writing for a Robofil (kerf convert --to iso --for robofil, kerf cam --machine robofil): the
 # layout of the post whose output cut a real part on a Robofil 100 (wireedm-gcode-parser's

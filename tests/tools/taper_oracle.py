@@ -116,6 +116,16 @@ CASES = [
          gap=((20, W - D2), D2),
          layers={"LOWER": opening(RECT, 2).buffer(-W, join_style=ROUND, resolution=RES),
                  "UPPER": opening(inset(RECT, W - D2), 2 - W)}),
+    # Charmilles (robofil profile) G28: sharp corners tapered into arcs about each corner (the upper
+    # face: the sides offset outwards by 20 tan 3, joined by arcs of that radius: buffer with round
+    # joins); G29: arcs tapered into cylinders (R 2 on both faces, tangent to each face's sides).
+    dict(name="robofil_g28", program="robofil_g28_die.nc", options=["--machine", "robofil", "--thickness", "20"],
+         hole=(20, 10), gap=((20, -D), D),
+         layers={"LOWER": RECT, "UPPER": RECT.buffer(D, join_style=ROUND, resolution=RES)}),
+    dict(name="robofil_g29", program="robofil_g29_die.nc", options=["--machine", "robofil", "--thickness", "20"],
+         hole=(20, 10), gap=((20, -D), D),
+         layers={"LOWER": opening(RECT, 2), "UPPER": opening(RECT.buffer(D, join_style=MITRE, mitre_limit=10,
+                                                                        resolution=RES), 2)}),
     # --workpiece: a foam program's carriages are the machine's planes; the part is cut between the
     # block's faces (exact sections of the straight moves, the nose's within 1 um).
     dict(name="foam_workpiece", program="foam_wing_workpiece.nc", options=["--workpiece", "100,400"],

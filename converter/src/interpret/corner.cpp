@@ -60,8 +60,18 @@ void Interpreter::makeCorner(Move& next, Segment& nextUpper) {
   if (!next.isCut()) return refusePendingCorner("a rapid follows, not a cut move: there is no corner to round");
   const PendingCorner pc = *pendingCorner_;
   Move& prev = toolpath_.moves.back();
-  const geometry::Corner c = pc.chamfer ? geometry::chamferCorner(prev.lower, next.lower, pc.size)
-                                        : geometry::roundCorner(prev.lower, next.lower, pc.size);
+  const bool apex = pc.size == 0;  // corner-rounded: a point here, rounded on the other planes
+  geometry::Corner c;
+  if (apex) {
+    c.status = geometry::CornerStatus::Ok;
+    c.first = prev.lower;
+    c.second = next.lower;
+    c.sharp = prev.lower.end;
+    c.corner = Segment::line(c.sharp, c.sharp);
+  } else {
+    c = pc.chamfer ? geometry::chamferCorner(prev.lower, next.lower, pc.size)
+                   : geometry::roundCorner(prev.lower, next.lower, pc.size);
+  }
   if (c.status != geometry::CornerStatus::Ok) {
     const std::string what = pc.chamfer ? "chamfer " : "radius ";
     const std::string why =
@@ -99,15 +109,30 @@ void Interpreter::makeCorner(Move& next, Segment& nextUpper) {
     nextRecord.index = at + 1;
     taperRecords_.push_back(nextRecord);
     if (taperRecords_.size() >= 2 && taperRecords_[taperRecords_.size() - 2].index == at)
-      taperCorners_.push_back({at, taperCorner_, pc.size, pc.upperSize, pc.chamfer,
-                               geometry::cross(c.first.tangentAt(1.0), c.second.tangentAt(0.0)) > 0});
+      taperCorners_.push_back({at, apex ? CodeEffect::CornerConicalMean : taperCorner_, pc.size, pc.upperSize,
+                               pc.chamfer, geometry::cross(c.first.tangentAt(1.0), c.second.tangentAt(0.0)) > 0});
   }
   noteOffsetRun(corner, at);
   toolpath_.moves.push_back(corner);
   if (dialect_ != Dialect::Plain) toolpath_.upper.push_back(c.corner);
   if (dialect_ == Dialect::TaperAngle) toolpath_.taperDegrees.push_back(toolpath_.taperDegrees.back());
   if (options_.recordCentreWords) toolpath_.centreWords.push_back(Vec2::Zero());
-  toolpath_.corners.push_back({static_cast<std::uint32_t>(at), pc.size, pc.chamfer, c.sharp});
+  if (!apex) toolpath_.corners.push_back({static_cast<std::uint32_t>(at), pc.size, pc.chamfer, c.sharp});
+}
+
+bool Interpreter::roundsProgramCorner(const Move& next) const {
+  if (dialect_ != Dialect::TaperAngle || programCorners_ != CodeEffect::CornerRounded || !next.isCut() ||
+      toolpath_.moves.empty() || !toolpath_.moves.back().isCut() || taperRecords_.size() < 2)
+    return false;
+  // Both moves lean and neither starts or ends the taper (the next one's record is the last; the
+  // one before belongs to the move before): the start-up and the cancel keep their sharp joints.
+  const std::size_t at = toolpath_.moves.size();
+  const TaperRecord& mine = taperRecords_.back();
+  const TaperRecord& before = taperRecords_[taperRecords_.size() - 2];
+  if (mine.index != at || mine.start || mine.end || before.index + 1 != at || before.start || before.end) return false;
+  const Segment& a = toolpath_.moves.back().lower;
+  if ((a.end - next.lower.start).norm() > 1e-6) return false;
+  return std::abs(geometry::cross(a.tangentAt(1.0), next.lower.tangentAt(0.0))) > 1e-9;  // a corner, not tangent
 }
 
 }  // namespace kerf::converter::interp

@@ -105,9 +105,10 @@ struct RelRecord {
 /// taper-angle: the lean of a move, resolved into offsets once the heights are known.
 struct TaperRecord {
   std::size_t index = 0;
-  double tanLeft = 0.0;  // tan(angle), > 0 leaning left of travel
-  bool start = false;    // the move that starts the taper (its start stays vertical)
-  bool end = false;      // the move that ends it (its end is vertical again)
+  double tanLeft = 0.0;          // tan(angle), > 0 leaning left of travel
+  bool start = false;            // the move that starts the taper (its start stays vertical)
+  bool end = false;              // the move that ends it (its end is vertical again)
+  bool cylindricalArcs = false;  // corner-cylindrical in force: an arc between tangent neighbours keeps its radius
 };
 
 /// A run of moves under one G41/G42 as the interpreter records it (wire_offset.cpp applies it).
@@ -224,6 +225,9 @@ class Interpreter {
   void holdCorner(const Word& w, const Block& block, bool moved, const Word* upper);
   /// The held corner between the last move and next: both trimmed, the corner's move pushed.
   void makeCorner(Move& next, Segment& nextUpper);
+  /// corner-rounded is in force and next turns a sharp corner of a taper from the last move: a
+  /// corner move (a point here) goes between them.
+  bool roundsProgramCorner(const Move& next) const;
   /// The held corner, if any, refused (K0240) for why.
   void refusePendingCorner(const std::string& why);
   /// NCVC's K beside a bare corner R in a taper (`G60 ... R2. K3.`): the upper plane's radius. Null
@@ -285,6 +289,7 @@ class Interpreter {
   void resolveRel();
   void resolveTaperAngle();
   void resolveTaperRun(std::size_t k, std::size_t e);
+  std::vector<TaperCorner> cornersOfRun(std::size_t k, std::size_t e) const;
   void makeTaperCorner(const TaperCorner& c, std::size_t runFirst, double z, bool upperPlane);
   // wire_offset.cpp, after the last block: each G41/G42 run's moves replaced by the wire's path
   void resolveWireOffsets();
@@ -365,8 +370,11 @@ class Interpreter {
   // taper-angle: the corners made inside a taper, each made again on the other planes by its model
   // (resolveTaperAngle).
   CodeEffect taperCorner_ = CodeEffect::CornerEqual;  // the model in force (a profile's corner-* code)
-  std::vector<TaperCorner> taperCorners_;             // in move order
-  bool programHasV_ = false;                          // some word is V (for the U Z diagnostic)
+  // What a taper does with the program's own corners and arcs: Harmless (sharp corners, conical
+  // arcs: the default), CornerRounded or CornerCylindrical (a profile's code: Charmilles' G28/G29).
+  CodeEffect programCorners_ = CodeEffect::Harmless;
+  std::vector<TaperCorner> taperCorners_;  // in move order
+  bool programHasV_ = false;               // some word is V (for the U Z diagnostic)
 
   // A mill-turn face program's axes (mill_turn.cpp). position_ is the face point.
   struct FaceAxes {
@@ -395,7 +403,7 @@ class Interpreter {
   std::vector<TaperRecord> taperRecords_;
   std::optional<Height> fileThickness_, fileProgramZ_;
   std::optional<Height> fileGuideSpacing_, fileGuideBelow_;  // cnc3's M100 P (L) Q (H)
-  bool legacyTaperCodes_ = false;  // cnc3's earlier M106/M107 numbering is in use
+  bool legacyTaperCodes_ = false;                            // cnc3's earlier M106/M107 numbering is in use
 
   // Say it once.
   std::unordered_set<char> warnedLetters_;

@@ -57,6 +57,8 @@ const char* codeEffectName(CodeEffect e) {
     case CodeEffect::CornerConicalMin: return "corner-conical-min";
     case CodeEffect::CornerConicalMean: return "corner-conical-mean";
     case CodeEffect::CornerConicalMax: return "corner-conical-max";
+    case CodeEffect::CornerRounded: return "corner-rounded";
+    case CodeEffect::CornerCylindrical: return "corner-cylindrical";
   }
   return "harmless";
 }
@@ -184,10 +186,11 @@ void readCode(const ProfileLine& l, MachineProfile& p) {
   const std::string effect = trim(l.value.substr(0, colon));
   c.note = colon == std::string::npos ? std::string{} : trim(l.value.substr(colon + 1));
   bool known = false;
-  for (CodeEffect e : {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
-                       CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread,
-                       CodeEffect::Condition, CodeEffect::CornerEqual, CodeEffect::CornerConicalMin,
-                       CodeEffect::CornerConicalMean, CodeEffect::CornerConicalMax})
+  for (CodeEffect e :
+       {CodeEffect::Harmless, CodeEffect::NotModelled, CodeEffect::Position, CodeEffect::NoMotion,
+        CodeEffect::Thickness, CodeEffect::Guides, CodeEffect::ProgramEnd, CodeEffect::Rethread, CodeEffect::Condition,
+        CodeEffect::CornerEqual, CodeEffect::CornerConicalMin, CodeEffect::CornerConicalMean,
+        CodeEffect::CornerConicalMax, CodeEffect::CornerRounded, CodeEffect::CornerCylindrical})
     if (effect == codeEffectName(e)) {
       c.effect = e;
       known = true;
@@ -195,7 +198,8 @@ void readCode(const ProfileLine& l, MachineProfile& p) {
   if (!known) {
     l.badValue(
         "harmless, not-modelled, position, no-motion, thickness, guides, program-end, rethread, condition, "
-        "corner-equal, corner-conical-min, corner-conical-mean or corner-conical-max, then ': note'");
+        "corner-equal, corner-conical-min, corner-conical-mean, corner-conical-max, corner-rounded or "
+        "corner-cylindrical, then ': note'");
     return;
   }
   if (c.note.empty()) {

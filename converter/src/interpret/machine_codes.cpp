@@ -104,6 +104,12 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
         if (notedCodes_.insert(key).second)
           diags_.note(Code::MachineCode, src_, w.span(), as + ": " + code.note + " [" + machine_.name + " profile]");
         break;
+      case CodeEffect::CornerRounded:
+      case CodeEffect::CornerCylindrical:
+        programCorners_ = effect;
+        if (notedCodes_.insert(key).second)
+          diags_.note(Code::MachineCode, src_, w.span(), as + ": " + code.note + " [" + machine_.name + " profile]");
+        break;
       case CodeEffect::Position:    // executeBlock: the wire goes where only the machine knows
       case CodeEffect::ProgramEnd:  // executeBlock: after the motion, as M02
         break;

@@ -236,7 +236,13 @@ bool Interpreter::executeMove(const BlockWords& bw, const BlockWords& ubw, const
 
 void Interpreter::push(Move&& m, Segment upper) {
   if (toolpath_.moves.empty()) toolpath_.start = position_;  // the move starts here (in the toolpath frame)
-  if (pendingCorner_) makeCorner(m, upper);
+  if (pendingCorner_) {
+    makeCorner(m, upper);
+  } else if (roundsProgramCorner(m)) {  // corner-rounded (Charmilles G28): every sharp corner of a taper
+    const Move& before = toolpath_.moves.back();
+    pendingCorner_ = PendingCorner{0.0, std::nullopt, false, before.span, before.line};
+    makeCorner(m, upper);
+  }
   m.modes = static_cast<std::uint8_t>((incremental_ ? kModeIncremental : 0) | (inch_ ? kModeInch : 0));
   noteOffsetRun(m, toolpath_.moves.size());
   toolpath_.moves.push_back(std::move(m));

@@ -61,22 +61,15 @@ void Interpreter::resolveTaperAngle() {
 void Interpreter::resolveTaperRun(std::size_t k, std::size_t e) {
   const double zl = toolpath_.heights.planes.lower, zu = toolpath_.heights.planes.upper;
   const double zp = toolpath_.heights.programZ;
-  const std::size_t firstMove = taperRecords_[k].index, endMove = taperRecords_[e - 1].index + 1;
-  auto byMove = [](const TaperCorner& c, std::size_t m) { return c.move < m; };
-  const auto cornersBegin = std::lower_bound(taperCorners_.begin(), taperCorners_.end(), firstMove, byMove);
-  const auto cornersEnd = std::lower_bound(cornersBegin, taperCorners_.end(), endMove, byMove);
+  const std::vector<TaperCorner> corners = cornersOfRun(k, e);
   std::vector<Segment> chain;
   std::vector<double> up, down;
   std::vector<std::size_t> moveOf;
-  auto corner = cornersBegin;
+  auto corner = corners.begin();
   for (std::size_t q = k; q < e; ++q) {
     const std::size_t m = taperRecords_[q].index;
-    while (corner != cornersEnd && corner->move < m) ++corner;
-    if (corner != cornersEnd && corner->move == m && m > firstMove && m + 1 < endMove) {
-      // made on each plane below, between its neighbours' offsets
-      ++corner;
-      continue;
-    }
+    while (corner != corners.end() && corner->move < m) ++corner;
+    if (corner != corners.end() && corner->move == m) continue;  // made on each plane below
     chain.push_back(toolpath_.moves[m].lower);
     up.push_back(taperRecords_[q].tanLeft * (zu - zp));
     down.push_back(taperRecords_[q].tanLeft * (zl - zp));
@@ -88,16 +81,47 @@ void Interpreter::resolveTaperRun(std::size_t k, std::size_t e) {
   const geometry::OffsetChainResult upper = geometry::offsetChain(chain, up, opts);
   reportOffsetIssues(upper, moveOf, up, "upper");
   for (std::size_t q = 0; q < chain.size(); ++q) toolpath_.upper[moveOf[q]] = upper.segments[q];
-  auto inside = [&](const TaperCorner& c) { return c.move > firstMove && c.move + 1 < endMove; };
-  for (auto c = cornersBegin; c != cornersEnd; ++c)
-    if (inside(*c)) makeTaperCorner(*c, k, zu, true);
+  for (const TaperCorner& c : corners) makeTaperCorner(c, k, zu, true);
   if (zp != zl) {
     const geometry::OffsetChainResult lower = geometry::offsetChain(chain, down, opts);
     reportOffsetIssues(lower, moveOf, down, "lower");
     for (std::size_t q = 0; q < chain.size(); ++q) toolpath_.moves[moveOf[q]].lower = lower.segments[q];
-    for (auto c = cornersBegin; c != cornersEnd; ++c)
-      if (inside(*c)) makeTaperCorner(*c, k, zl, false);
+    for (const TaperCorner& c : corners) makeTaperCorner(c, k, zl, false);
   }
+}
+
+/// The corners of the run of taper records [k, e) made again on each plane, in move order: the ones
+/// corner words (and corner-rounded) made, and, where corner-cylindrical was in force, each arc
+/// that meets both its neighbours tangent (a programmed fillet) as an equal-radius corner of its
+/// own radius. Only corners with a neighbour on both sides inside the run.
+std::vector<TaperCorner> Interpreter::cornersOfRun(std::size_t k, std::size_t e) const {
+  const std::size_t firstMove = taperRecords_[k].index, endMove = taperRecords_[e - 1].index + 1;
+  auto inside = [&](std::size_t m) { return m > firstMove && m + 1 < endMove; };
+  auto byMove = [](const TaperCorner& c, std::size_t m) { return c.move < m; };
+  const auto from = std::lower_bound(taperCorners_.begin(), taperCorners_.end(), firstMove, byMove);
+  const auto to = std::lower_bound(from, taperCorners_.end(), endMove, byMove);
+  std::vector<TaperCorner> out;
+  for (auto c = from; c != to; ++c)
+    if (inside(c->move)) out.push_back(*c);
+  const MoveList& moves = toolpath_.moves;
+  auto tangent = [](const geometry::Vec2& a, const geometry::Vec2& b) {
+    return std::abs(geometry::cross(a, b)) <= 1e-9 && a.dot(b) > 0;
+  };
+  const std::size_t made = out.size();
+  for (std::size_t q = k; q < e; ++q) {
+    const std::size_t m = taperRecords_[q].index;
+    if (!taperRecords_[q].cylindricalArcs || !inside(m) || !moves[m].lower.isArc()) continue;
+    if (std::any_of(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(made),
+                    [&](const TaperCorner& c) { return c.move == m; }))
+      continue;
+    const Segment& arc = moves[m].lower;
+    if (!tangent(moves[m - 1].lower.tangentAt(1.0), arc.tangentAt(0.0)) ||
+        !tangent(arc.tangentAt(1.0), moves[m + 1].lower.tangentAt(0.0)))
+      continue;
+    out.push_back({m, CodeEffect::CornerEqual, arc.radius, std::nullopt, false, arc.sweep > 0});
+  }
+  std::sort(out.begin(), out.end(), [](const TaperCorner& a, const TaperCorner& b) { return a.move < b.move; });
+  return out;
 }
 
 /// One rounded (or chamfered) corner of a taper on the plane at z, between its neighbours' offsets

@@ -122,6 +122,7 @@ bool Interpreter::recordTaper(const Block& block, const Move& move) {
   TaperRecord t;
   t.index = toolpath_.moves.size();
   t.tanLeft = taperSide_ * std::tan(taperDegrees_ * geometry::kPi / 180.0);
+  t.cylindricalArcs = programCorners_ == CodeEffect::CornerCylindrical;
   // The wire starts and ends its lean on a straight move (K0219, NCVC's rule).
   auto onArc = [&](const char* what, const char* help) {
     if (!move.lower.isArc()) return false;

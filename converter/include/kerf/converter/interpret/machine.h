@@ -44,6 +44,10 @@ enum class CodeEffect : std::uint8_t {
   CornerConicalMin,   ///< the taper's offset of the fillet (a cone), its offset the smaller of the neighbours'
   CornerConicalMean,  ///< the same, the mean of the neighbours' offsets
   CornerConicalMax,   ///< the same, the larger
+  // What a taper does with the corners and arcs the program writes without corner words, from the
+  // code on (Charmilles' G28/G29 as FeatureCAM describes them).
+  CornerRounded,      ///< sharp corners rounded away from the program plane (a cone, its apex the corner); arcs conical
+  CornerCylindrical,  ///< sharp corners kept sharp; an arc tangent to both neighbours keeps its radius on every plane
 };
 const char* codeEffectName(CodeEffect e);
 

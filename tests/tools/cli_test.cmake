@@ -601,6 +601,12 @@ elseif(CASE STREQUAL "hot_wire_homing")
   run("${KERF}" check "${WORK}/no_homing.nc" --thickness 300)
   string(FIND "${err}" "[K0215]" ambiguous)
   expect("without the homing the numbers cannot tell (K0215)" rc EQUAL 1 AND NOT ambiguous EQUAL -1)
+  # LinuxCNC's foam configs home U V too and name their planes in AXIS comments: those decide.
+  file(READ "${program}" text)
+  file(WRITE "${WORK}/linuxcnc.nc" "(AXIS,XY_Z_POS,0)\n(AXIS,UV_Z_POS,300)\n${text}")
+  run("${KERF}" check "${WORK}/linuxcnc.nc")
+  string(FIND "${err}" "read as xyuv-linuxcnc" linuxcnc)
+  expect("homed U V beside AXIS comments read as xyuv-linuxcnc, not K0215 (exit ${rc})" rc EQUAL 0 AND NOT linuxcnc EQUAL -1)
 elseif(CASE STREQUAL "corner_words")
   # A corner ,R made as a move of its block: kerf explain says its centre and tangent points, and
   # render --explain-line draws and labels them (issue 55); NCVC's bare R on an arc with I J too.

@@ -102,13 +102,16 @@ NumberEvidence compareNumbers(const Program& program) {
   return e;
 }
 
-}  // namespace
-
-DialectDetection detectDialect(const Program& program, const MachineProfile& machine) {
+/// Everything in the program that points at a dialect (docs/taper.md, "Dialects").
+struct DialectEvidence {
   Evidence colon, taperAngle, colonMode, uv, abs, rel, linuxcnc, homesUv;
+};
+
+DialectEvidence gatherEvidence(const Program& program) {
+  DialectEvidence e;
   for (const std::uint32_t index : program.notPlain) {  // a plain block holds no evidence
     const Block& b = program.blocks[index];
-    if (b.colon) colon.set(onLine("':'", b.line), b.span());
+    if (b.colon) e.colon.set(onLine("':'", b.line), b.span());
     bool setPosition = false, homing = false, hasUv = false, upperCentre = false, kl = false, g92ij = false;
     const auto words = program.wordsOf(b);
     for (std::size_t k = 0; k < words.size(); ++k) {
@@ -116,14 +119,14 @@ DialectDetection detectDialect(const Program& program, const MachineProfile& mac
       const bool upperSide = k >= b.upperFrom;
       if (w.letter == 'G' && w.isNumber()) {
         const long tenths = roundHalfAway(w.value * 10);
-        if (tenths == 510 || tenths == 520) taperAngle.set(onLine(tenths == 510 ? "G51" : "G52", b.line), w.span());
+        if (tenths == 510 || tenths == 520) e.taperAngle.set(onLine(tenths == 510 ? "G51" : "G52", b.line), w.span());
         if (tenths >= 1400 && tenths <= 1420 && tenths % 10 == 0)
-          colonMode.set(onLine("G" + std::to_string(tenths / 10), b.line), w.span());
+          e.colonMode.set(onLine("G" + std::to_string(tenths / 10), b.line), w.span());
         if (tenths == 920) setPosition = true;
         if (tenths == 280 || tenths == 300) homing = true;
       } else if (w.letter == 'M' && w.isNumber()) {
         const long m = roundHalfAway(w.value);
-        if (m == 100 || m == 101) abs.set(onLine("M" + std::to_string(m), b.line), w.span());
+        if (m == 100 || m == 101) e.abs.set(onLine("M" + std::to_string(m), b.line), w.span());
       } else if (w.letter == 'U' || w.letter == 'V') {
         hasUv = true;
       } else if (upperSide && (w.letter == 'I' || w.letter == 'J' || w.letter == 'R')) {
@@ -134,22 +137,30 @@ DialectDetection detectDialect(const Program& program, const MachineProfile& mac
       if (setPosition && (w.letter == 'I' || w.letter == 'J')) g92ij = true;
     }
     if (hasUv && !setPosition) {
-      uv.set(onLine("U/V", b.line), b.span());
-      if (b.twoMotions) abs.set(onLine("a second motion word for U V", b.line), b.span());
-      if (upperCentre) abs.set(onLine("a second I J / R for the upper arc", b.line), b.span());
-      if (kl && !upperCentre) rel.set(onLine("K L with U V", b.line), b.span());
+      e.uv.set(onLine("U/V", b.line), b.span());
+      if (b.twoMotions) e.abs.set(onLine("a second motion word for U V", b.line), b.span());
+      if (upperCentre) e.abs.set(onLine("a second I J / R for the upper arc", b.line), b.span());
+      if (kl && !upperCentre) e.rel.set(onLine("K L with U V", b.line), b.span());
     }
-    if (g92ij) rel.set(onLine("G92 with I J (NCVC plane heights)", b.line), b.span());
-    if (homing && hasUv) homesUv.set(onLine("U V homed as axes of their own (G28/G30)", b.line), b.span());
+    if (g92ij) e.rel.set(onLine("G92 with I J (NCVC plane heights)", b.line), b.span());
+    if (homing && hasUv) e.homesUv.set(onLine("U V homed as axes of their own (G28/G30)", b.line), b.span());
   }
-  // Carriages homed as axes are absolute positions (a hot-wire foam cutter): evidence for xyuv-abs
-  // where nothing else says which (LinuxCNC's foam configs home them too, and say so in comments).
-  if (homesUv.found() && !abs.found() && !linuxcnc.found()) abs = homesUv;
   for (const HeightWord& h : program.heights)
     if (h.kind == HeightWord::Kind::LinuxCncUvPlane || h.kind == HeightWord::Kind::LinuxCncXyPlane)
-      linuxcnc.set(onLine(h.kind == HeightWord::Kind::LinuxCncUvPlane ? "(AXIS,UV_Z_POS)" : "(AXIS,XY_Z_POS)", h.line),
-                   h.span);
+      e.linuxcnc.set(
+          onLine(h.kind == HeightWord::Kind::LinuxCncUvPlane ? "(AXIS,UV_Z_POS)" : "(AXIS,XY_Z_POS)", h.line), h.span);
+  // Carriages homed as axes are absolute positions (a hot-wire foam cutter): evidence for xyuv-abs
+  // where nothing else says which (LinuxCNC's foam configs home them too, and say so in comments).
+  if (e.homesUv.found() && !e.abs.found() && !e.linuxcnc.found()) e.abs = e.homesUv;
+  return e;
+}
 
+}  // namespace
+
+DialectDetection detectDialect(const Program& program, const MachineProfile& machine) {
+  const DialectEvidence ev = gatherEvidence(program);
+  const Evidence &colon = ev.colon, &taperAngle = ev.taperAngle, &colonMode = ev.colonMode, &uv = ev.uv, &abs = ev.abs,
+                 &rel = ev.rel, &linuxcnc = ev.linuxcnc;
   DialectDetection d;
   auto choose = [&](Dialect dialect, const Evidence& e) {
     d.dialect = dialect;

@@ -256,8 +256,9 @@ class Interpreter {
   std::uint64_t blocksOfCall(std::size_t target, std::uint64_t cap, std::size_t depth);
   // machine_codes.cpp
   Flow executeMachineCodes(const BlockWords& bw, const Block& block);
-  /// cnc3's guides (M100 P L Q H, or M106 in its earlier numbering): recorded; false without P and Q.
-  bool recordGuides(const BlockWords& bw, const Block& block);
+  /// cnc3's guides (M100 P L Q H, or M106 in its earlier numbering), said as `code`: recorded;
+  /// false without P and Q.
+  bool recordGuides(const BlockWords& bw, const Block& block, const std::string& code);
   Flow executeMacroCall(const Block& block);
   void positionUnknown(std::string cause, SourceSpan span, std::string help = {}, bool silent = false);
   /// G28/G30 with the profile's home known: a rapid through the point the axis words give, then
@@ -360,7 +361,7 @@ class Interpreter {
   std::string offsetRegister_;         // the register that gave it ("H001"); empty: none named
   std::vector<OffsetRun> offsetRuns_;
   struct PendingCorner {
-    double size = 0.0;                // r or c, mm
+    double size = 0.0;                // r or c, mm; 0: corner-rounded's point (a cone's apex)
     std::optional<double> upperSize;  // NCVC's K beside R: the upper plane's radius, mm
     bool chamfer = false;
     SourceSpan span;  // the corner word

@@ -20,14 +20,11 @@ std::string conditionName(std::string word) {
 
 }  // namespace
 
-bool Interpreter::recordGuides(const BlockWords& bw, const Block& block) {
+bool Interpreter::recordGuides(const BlockWords& bw, const Block& block, const std::string& code) {
   const Word* p = bw['P'];
   const Word* q = bw['Q'];
   if (!p || !q || !p->isNumber() || !q->isNumber()) return false;
   const std::string where = " on line " + std::to_string(block.line);
-  const std::string code =
-      bw.machineCount > 0 ? std::string(src_->text().substr(bw.machine[0].first->offset, bw.machine[0].first->length))
-                          : std::string("M100");
   fileGuideSpacing_ = Height{length(*p), code + " P" + where};
   fileGuideBelow_ = Height{length(*q), code + " Q" + where};
   return true;
@@ -43,7 +40,7 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
     // cnc3's earlier numbering: M106 P L Q H gave the guides (said once, with the numbering) and
     // M107 P T the thickness.
     if (legacyTaperCodes_ && key == "M106") {  // the guides, said with the numbering (interpreter.cpp)
-      recordGuides(bw, block);
+      recordGuides(bw, block, as);
       continue;
     }
     if (legacyTaperCodes_ && key == "M107") effect = CodeEffect::Thickness;
@@ -53,7 +50,7 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
         // (-H, L - H) above it (papayaved/cnc3: uv_sizing_widget.cpp names them L and H).
         const Word* p = bw['P'];
         const Word* q = bw['Q'];
-        const bool given = recordGuides(bw, block);
+        const bool given = recordGuides(bw, block, as);
         if (notedCodes_.insert(key).second)
           diags_.note(Code::MachineCode, src_, w.span(),
                       given ? as + ": " + code.note + ": the guides " + formatFixed(length(*p), 3) +
@@ -100,13 +97,11 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
       case CodeEffect::CornerConicalMin:
       case CodeEffect::CornerConicalMean:
       case CodeEffect::CornerConicalMax:
-        taperCorner_ = effect;
-        if (notedCodes_.insert(key).second)
-          diags_.note(Code::MachineCode, src_, w.span(), as + ": " + code.note + " [" + machine_.name + " profile]");
-        break;
       case CodeEffect::CornerRounded:
       case CodeEffect::CornerCylindrical:
-        programCorners_ = effect;
+        // The model of the corners words make, or what the program's own corners and arcs become.
+        (effect == CodeEffect::CornerRounded || effect == CodeEffect::CornerCylindrical ? programCorners_
+                                                                                        : taperCorner_) = effect;
         if (notedCodes_.insert(key).second)
           diags_.note(Code::MachineCode, src_, w.span(), as + ": " + code.note + " [" + machine_.name + " profile]");
         break;

@@ -104,9 +104,10 @@ std::vector<Interpreter::PairedPiece> Interpreter::pairPieces(const std::vector<
       out.push_back({lower[i], still(*upper, j)});
       ++i;
     } else {
-      geometry::WirePiece moved = (*upper)[j++];
-      moved.segment = still(lower, i);
-      out.push_back({moved, (*upper)[j - 1].segment});
+      const geometry::WirePiece& up = (*upper)[j++];
+      geometry::WirePiece standing = up;  // the element's pairing, the lower wire where it stands
+      standing.segment = still(lower, i);
+      out.push_back({standing, up.segment});
     }
   }
   return out;

@@ -305,6 +305,25 @@ std::optional<geometry::Vec2> pointOption(const std::string& text, const char* o
   return geometry::Vec2(x, y);
 }
 
+namespace {
+
+/// LOWER,UPPER: two heights in mm within 1e6, the upper above the lower (--guides, --workpiece);
+/// nothing, with error saying why, otherwise.
+std::optional<std::array<double, 2>> heightsOption(const std::string& text, const char* option, std::string& error) {
+  double lower = 0, upper = 0;
+  int consumed = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf%n", &lower, &upper, &consumed) != 2 ||
+      consumed != static_cast<int>(text.size()) || !(std::abs(lower) <= 1e6) || !(std::abs(upper) <= 1e6) ||
+      !(upper > lower)) {
+    error = std::string(option) + " takes LOWER,UPPER in mm within 1e6, the upper above the lower (for example " +
+            "-30,50), not '" + text + "'";
+    return std::nullopt;
+  }
+  return std::array<double, 2>{lower, upper};
+}
+
+}  // namespace
+
 bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, std::string& error) {
   using namespace converter;
   ReadOptions& r = out.read;
@@ -348,22 +367,8 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
   r.upperZ = o.reading.upperZ;
   r.thickness = o.reading.thickness;
   r.programZ = o.reading.programZ;
-  if (o.reading.guides) {
-    const std::optional<geometry::Vec2> g = pointOption(*o.reading.guides, "--guides", error);
-    if (!g || !(g->y() > g->x())) {
-      if (g) error = "--guides takes LOWER_Z,UPPER_Z with the upper above the lower, not '" + *o.reading.guides + "'";
-      return false;
-    }
-    r.guides = std::array<double, 2>{g->x(), g->y()};
-  }
-  if (o.reading.workpiece) {
-    const std::optional<geometry::Vec2> w = pointOption(*o.reading.workpiece, "--workpiece", error);
-    if (!w || !(w->y() > w->x())) {
-      if (w) error = "--workpiece takes Z0,Z1 with the upper face above the lower, not '" + *o.reading.workpiece + "'";
-      return false;
-    }
-    r.workpiece = std::array<double, 2>{w->x(), w->y()};
-  }
+  if (o.reading.guides && !(r.guides = heightsOption(*o.reading.guides, "--guides", error))) return false;
+  if (o.reading.workpiece && !(r.workpiece = heightsOption(*o.reading.workpiece, "--workpiece", error))) return false;
   r.wireOffset = o.reading.offset;
   if (o.reading.side) r.side = *o.reading.side == "inside" ? WireSide::Inside : WireSide::Outside;
   if (o.reading.upperAxes) r.upperAxesUZ = *o.reading.upperAxes == "uz";

@@ -361,6 +361,35 @@ void Renderer::drawLines(const Buffer& b, std::size_t first, std::size_t count, 
   }
 }
 
+/// The cut surface, pushed back a little so the contours drawn over it win the depth test: its
+/// colours by slope or pass, the findings' moves tinted; in chunks of drawChunk_ triangles.
+void Renderer::drawSurface(const RenderOptions& options, const Eigen::Matrix4f& view, const Eigen::Matrix4f& viewProj) {
+  const GlApi& g = gl();
+  g.Enable(GL_POLYGON_OFFSET_FILL);
+  g.PolygonOffset(1.0f, 1.0f);
+  g.UseProgram(surfaceProgram_);
+  g.UniformMatrix4fv(uniform(surfaceProgram_, "uViewProjection"), 1, GL_FALSE, viewProj.data());
+  g.UniformMatrix4fv(uniform(surfaceProgram_, "uView"), 1, GL_FALSE, view.data());
+  g.Uniform3f(uniform(surfaceProgram_, "uBaseColour"), 0.72f, 0.78f, 0.86f);
+  g.Uniform1i(uniform(surfaceProgram_, "uColourBySlope"), options.colourBySlope ? 1 : 0);
+  g.Uniform1i(uniform(surfaceProgram_, "uColourByPass"), options.colourByPass ? 1 : 0);
+  for (std::size_t k = 0; k < kPassColours; ++k) {
+    const std::uint32_t c = passColour(k + 1);
+    const std::string name = "uPassColours[" + std::to_string(k) + "]";
+    g.Uniform3f(uniform(surfaceProgram_, name.c_str()), static_cast<float>(c & 0xFF) / 255.0f,
+                static_cast<float>((c >> 8) & 0xFF) / 255.0f, static_cast<float>((c >> 16) & 0xFF) / 255.0f);
+  }
+  g.Uniform2f(uniform(surfaceProgram_, "uSlopeRange"), static_cast<float>(slopeMin_), static_cast<float>(slopeMax_));
+  g.Uniform1i(uniform(surfaceProgram_, "uHighlight"), options.highlightFindings ? 1 : 0);
+  g.BindVertexArray(surface_.vao);
+  for (std::size_t at = 0; at < surface_.count; at += drawChunk_ * 3) {
+    if (at > 0) g.Finish();
+    g.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(std::min<std::size_t>(surface_.count - at, drawChunk_ * 3)),
+                   GL_UNSIGNED_INT, reinterpret_cast<const void*>(at * sizeof(std::uint32_t)));
+  }
+  g.Disable(GL_POLYGON_OFFSET_FILL);
+}
+
 void Renderer::render(const Camera& camera, const RenderOptions& options, int width, int height) {
   const GlApi& g = gl();
   drawChunk_ = std::max<std::size_t>(1, options.drawChunk);
@@ -378,31 +407,7 @@ void Renderer::render(const Camera& camera, const RenderOptions& options, int wi
   const Eigen::Matrix4f view = camera.viewMatrix();
   const Eigen::Matrix4f viewProj = camera.projectionMatrix(aspect) * view;
 
-  if (options.surface && surface_.count) {
-    g.Enable(GL_POLYGON_OFFSET_FILL);
-    g.PolygonOffset(1.0f, 1.0f);
-    g.UseProgram(surfaceProgram_);
-    g.UniformMatrix4fv(uniform(surfaceProgram_, "uViewProjection"), 1, GL_FALSE, viewProj.data());
-    g.UniformMatrix4fv(uniform(surfaceProgram_, "uView"), 1, GL_FALSE, view.data());
-    g.Uniform3f(uniform(surfaceProgram_, "uBaseColour"), 0.72f, 0.78f, 0.86f);
-    g.Uniform1i(uniform(surfaceProgram_, "uColourBySlope"), options.colourBySlope ? 1 : 0);
-    g.Uniform1i(uniform(surfaceProgram_, "uColourByPass"), options.colourByPass ? 1 : 0);
-    for (std::size_t k = 0; k < kPassColours; ++k) {
-      const std::uint32_t c = passColour(k + 1);
-      const std::string name = "uPassColours[" + std::to_string(k) + "]";
-      g.Uniform3f(uniform(surfaceProgram_, name.c_str()), static_cast<float>(c & 0xFF) / 255.0f,
-                  static_cast<float>((c >> 8) & 0xFF) / 255.0f, static_cast<float>((c >> 16) & 0xFF) / 255.0f);
-    }
-    g.Uniform2f(uniform(surfaceProgram_, "uSlopeRange"), static_cast<float>(slopeMin_), static_cast<float>(slopeMax_));
-    g.Uniform1i(uniform(surfaceProgram_, "uHighlight"), options.highlightFindings ? 1 : 0);
-    g.BindVertexArray(surface_.vao);
-    for (std::size_t at = 0; at < surface_.count; at += drawChunk_ * 3) {
-      if (at > 0) g.Finish();
-      g.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(std::min<std::size_t>(surface_.count - at, drawChunk_ * 3)),
-                     GL_UNSIGNED_INT, reinterpret_cast<const void*>(at * sizeof(std::uint32_t)));
-    }
-    g.Disable(GL_POLYGON_OFFSET_FILL);
-  }
+  if (options.surface && surface_.count) drawSurface(options, view, viewProj);
 
   g.Enable(GL_BLEND);
   g.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);

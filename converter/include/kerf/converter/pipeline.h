@@ -52,11 +52,11 @@ struct ReadOptions {
   std::optional<ArcCentreMode> arcCentre;
   std::optional<Dialect> dialect;
   std::optional<double> lowerZ, upperZ, thickness, programZ;  ///< mm
-  std::optional<std::array<double, 2>> guides;                 ///< --guides LOWER_Z,UPPER_Z, mm (lower face at 0)
+  std::optional<std::array<double, 2>> guides;                ///< --guides LOWER_Z,UPPER_Z, mm (lower face at 0)
   /// --workpiece Z0,Z1: the work's faces, mm, where the program's planes are the machine's (a foam
   /// cutter's carriages): the part is cut between them (interpret/workpiece.h).
   std::optional<std::array<double, 2>> workpiece;
-  std::optional<double> wireOffset;                           ///< --offset, mm
+  std::optional<double> wireOffset;  ///< --offset, mm
   /// --side: a drawing's closed contours get the wire path at --offset on this side (cam.h).
   std::optional<WireSide> side;
   std::optional<bool> upperAxesUZ;             ///< --upper-axes uz

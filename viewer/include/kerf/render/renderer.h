@@ -100,6 +100,7 @@ class Renderer {
                  float dash, int width_px, int height_px, const float* colourOverride);
   void releaseBuffers();
   /// The construction's dashed and solid lines and its dots (setConstruction), depth test off.
+  void drawSurface(const RenderOptions& options, const Eigen::Matrix4f& view, const Eigen::Matrix4f& viewProj);
   void drawConstruction(const Eigen::Matrix4f& viewProj, int width, int height);
 
   unsigned surfaceProgram_ = 0, lineProgram_ = 0, markerProgram_ = 0, overlayProgram_ = 0;

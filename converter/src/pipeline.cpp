@@ -1,4 +1,5 @@
-// Sections: 1. the machine profile  2. the conventions from the evidence  3. the pipeline
+// The one pipeline every command runs (pipeline.h).
+// Sections: 1. conventions from the evidence  2. the pipeline
 #include "kerf/converter/pipeline.h"
 
 #include "kerf/converter/formats/3b/read_3b.h"
@@ -23,7 +24,7 @@ std::string evidenceNumber(double v) {
   return buf;
 }
 
-// ---- 2. conventions from the evidence --------------------------------------------------------
+// ---- 1. conventions from the evidence --------------------------------------------------------
 
 /// Integers without a decimal point: micrometres when no length word has a point and the largest
 /// is above the profile's threshold (docs/machines.md).
@@ -33,13 +34,10 @@ std::optional<std::string> integerEvidence(const Program& p, const MachineProfil
          evidenceNumber(p.largestInteger);
 }
 
-const char* centreAdjective(ArcCentreMode m) {
-  switch (m) {
-    case ArcCentreMode::Incremental: return "incremental";
-    case ArcCentreMode::Reversed: return "reversed (start minus centre)";
-    case ArcCentreMode::Absolute: return "absolute";
-  }
-  return "";
+/// "incremental", "reversed (start minus centre)", "absolute": the convention named in a note.
+std::string centreAdjective(ArcCentreMode m) {
+  return m == ArcCentreMode::Reversed ? std::string(arcCentreName(m)) + " (" + arcCentreMeaning(m) + ")"
+                                      : std::string(arcCentreName(m));
 }
 
 /// Another I J convention, when the evidence decides for it: some arc closes that way only, none
@@ -62,13 +60,13 @@ std::string centreEvidence(const ArcCentreTally& t, ArcCentreMode m) {
   std::size_t others = 0;
   for (int k = 0; k < 3; ++k)
     if (k != static_cast<int>(m)) others = std::max(others, t.closes[k]);
-  return std::string(centreAdjective(m)) + " centres: " + std::to_string(closes) + " of " + std::to_string(t.arcs) +
+  return centreAdjective(m) + " centres: " + std::to_string(closes) + " of " + std::to_string(t.arcs) +
          (t.arcs == 1 ? " arc closes" : " arcs close") + (others == 0 ? " only that way" : " that way");
 }
 
 }  // namespace
 
-// ---- 3. the pipeline -----------------------------------------------------------------------
+// ---- 2. the pipeline -----------------------------------------------------------------------
 
 namespace {
 
@@ -100,7 +98,7 @@ std::optional<DrawingComparison> compareOnePlane(Pipeline& out, const PipelineOp
     for (const DrawingElement& e : drawing.elements) layers.insert(e.layer);
     std::string names;
     for (const std::string& l : layers) names += (names.empty() ? "" : ", ") + (l.empty() ? "\"\"" : l);
-    out.diags.error(Code::NothingCut, &source, SourceSpan{0, 0},
+    out.diags.error(Code::DrawingEmpty, &source, SourceSpan{0, 0},
                     (layer.empty() ? std::string("the drawing") : "the drawing's layer " + layer) +
                         " holds no line, arc or curve to compare the program with",
                     names.empty() ? std::string() : "its layers with elements: " + names);
@@ -129,7 +127,7 @@ void compareDrawing(Pipeline& out, const PipelineOptions& options) {
     upper = out.drawingUpperSource.get();
   }
   if (!out.toolpath.isTaper() || upper == nullptr) {
-    out.diags.error(Code::NothingCut, upper ? upper : out.source.get(), SourceSpan{0, 0},
+    out.diags.error(Code::OptionDoesNotFit, upper ? upper : out.source.get(), SourceSpan{0, 0},
                     upper ? "the upper plane's drawing needs a taper program: this program has no upper contour"
                           : "--drawing-upper-layer names a layer of --drawing, and no --drawing is given");
     return;

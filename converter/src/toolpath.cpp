@@ -1,9 +1,59 @@
-// Toolpath: the lists that name moves by number, kept with the moves (toolpath.h).
+// Toolpath: the tables indexed by move kept aligned, and the lists that name moves renumbered,
+// through one operation (toolpath.h).
 #include "kerf/converter/toolpath.h"
 
 #include <algorithm>
+#include <tuple>
 
 namespace kerf::converter {
+namespace {
+
+/// Every table of MoveTables but `moves`, with its MoveRow field: the one list rowOf and
+/// replaceMoves walk.
+constexpr auto kRowTables = std::make_tuple(std::pair{&MoveTables::upper, &MoveRow::upper},
+                                            std::pair{&MoveTables::programmed, &MoveRow::programmed},
+                                            std::pair{&MoveTables::offsetRole, &MoveRow::offsetRole},
+                                            std::pair{&MoveTables::taperDegrees, &MoveRow::taperDegrees},
+                                            std::pair{&MoveTables::centreWords, &MoveRow::centreWords});
+
+// Every member of MoveTables is a vector; one more than kRowTables lists is a table replaceMoves
+// would leave misaligned: give it its MoveRow field and its entry above.
+static_assert(sizeof(MoveTables) == (std::tuple_size_v<decltype(kRowTables)> + 1) * sizeof(std::vector<char>),
+              "a table indexed by move must be listed in kRowTables");
+
+template <class F>
+void forEachRowTable(F&& f) {
+  std::apply([&](const auto&... table) { (f(table.first, table.second), ...); }, kRowTables);
+}
+
+}  // namespace
+
+MoveRow Toolpath::rowOf(std::size_t i) const {
+  MoveRow row{moves[i], moves[i].lower, moves[i].lower};
+  forEachRowTable([&](auto table, auto field) {
+    if (i < (this->*table).size()) row.*field = (this->*table)[i];
+  });
+  return row;
+}
+
+void Toolpath::replaceMoves(std::vector<MoveRow>&& rows, const std::vector<std::uint32_t>& newIndex,
+                            bool offsetApplied) {
+  if (offsetApplied && offsetRole.empty()) {  // kept from now on: made non-empty, filled below
+    offsetRole.resize(1);
+    programmed.resize(1);
+  }
+  forEachRowTable([&](auto table, auto field) {
+    auto& t = this->*table;
+    if (t.empty()) return;
+    t.clear();
+    t.reserve(rows.size());
+    for (const MoveRow& r : rows) t.push_back(r.*field);
+  });
+  moves.clear();
+  moves.reserve(rows.size());
+  for (MoveRow& r : rows) moves.push_back(r.move);
+  renumberMoveLists(newIndex);
+}
 
 void Toolpath::renumberMoveLists(const std::vector<std::uint32_t>& newIndex) {
   if (newIndex.empty()) return;

@@ -1,7 +1,7 @@
-// Sections: 1. primitive intersections (line-line, line-arc, arc-arc)
-//           2. classification of a pair within a path
-//           3. the decision sweep (Shamos-Hoey over x-monotone pieces)
-//           4. the report sweep over boxes
+// Self-intersection of paths of lines and arcs, exact (intersection.h): the primitive
+// intersections (line-line, line-arc, arc-arc), the classification of a pair within a path, the
+// decision sweep (Shamos-Hoey over x-monotone pieces) and the report sweep over boxes.
+// Sections: 1. primitive intersections  2. classification  3. decision sweep  4. report sweep
 #include "kerf/geometry/intersection.h"
 
 #include "angles.h"

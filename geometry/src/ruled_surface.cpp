@@ -1,3 +1,6 @@
+// Ruled surfaces (ruled_surface.h): the wire between its two contours, its measures, its sections
+// at a height and its mesh.
+// Sections: 1. points, normals and slope  2. measures of a patch  3. sections at a height  4. the mesh
 #include "kerf/geometry/ruled_surface.h"
 
 #include "kerf/geometry/tessellation.h"
@@ -13,6 +16,8 @@
 
 namespace kerf::geometry {
 namespace {
+
+// ---- 1. points, normals and slope ---------------------------------------------------------------
 
 /// dL/dt: the tangent scaled by the length (t runs over [0, 1]).
 Vec2 derivative(const Segment& s, double t) { return s.tangentAt(t) * s.length(); }
@@ -121,6 +126,8 @@ Vec3 surfaceNormal(const Segment& lower, const Segment& upper, const Planes& pla
 double slopeAt(const Segment& lower, const Segment& upper, const Planes& planes, double t) {
   return std::atan2(offsetAt(lower, upper, t).norm(), planes.height());
 }
+
+// ---- 2. measures of a patch ---------------------------------------------------------------------
 
 PatchMeasures measurePatch(const Segment& lower, const Segment& upper, const Planes& planes) {
   PatchMeasures m;
@@ -290,6 +297,8 @@ std::optional<double> foldAtJoint(const Segment& lowerA, const Segment& upperA, 
 
 namespace {
 
+// ---- 3. sections at a height --------------------------------------------------------------------
+
 /// The section of a patch at s as one exact segment (a line, or an arc), if it is one.
 std::optional<Segment> singleSection(const Segment& lower, const Segment& upper, double s, double tolerance,
                                      bool& exact) {
@@ -353,7 +362,7 @@ bool appendSection(const Segment& lower, const Segment& upper, double s, double 
   return false;
 }
 
-// ---- meshes ------------------------------------------------------------------------------------
+// ---- 4. the mesh --------------------------------------------------------------------------------
 
 namespace {
 

@@ -1,5 +1,7 @@
 // The wire offset: exact element offsets, arc joins at convex corners, interference removed over
 // the whole path (offset.h; docs/geometry.md, "The wire offset").
+// Sections: 1. element offsets and their joins  2. winding and nesting  3. offset and join
+//           4. interference removed  5. what the wire cannot reach  6. the entry point
 #include "kerf/geometry/chain.h"
 #include "kerf/geometry/intersection.h"
 #include "kerf/geometry/offset.h"
@@ -15,6 +17,8 @@
 
 namespace kerf::geometry {
 namespace {
+
+// ---- 1. element offsets and their joins ---------------------------------------------------------
 
 Vec2 leftOf(const Vec2& v) { return {-v.y(), v.x()}; }
 
@@ -87,6 +91,8 @@ Segment subSegment(const Segment& s, double t0, double t1) {
 }
 
 namespace {
+
+// ---- 2. winding and nesting ---------------------------------------------------------------------
 
 /// What one segment adds to the winding number of p: its crossings of the ray from p towards +x.
 /// Only a segment whose box meets that ray adds anything.
@@ -161,6 +167,8 @@ std::vector<int> loopsAround(std::span<const std::span<const Segment>> loops, st
 }
 
 namespace {
+
+// ---- 3. offset and join -------------------------------------------------------------------------
 
 /// wireOffset in its stages (docs/geometry.md, "The wire offset"): each element offset exactly and
 /// the corners joined (offsetAndJoin), the raw path split where it meets itself (split), the pieces
@@ -271,6 +279,8 @@ void WireOffsetBuilder::offsetAndJoin() {
   }
   result_.rawPieces = raw_.size();
 }
+
+// ---- 4. interference removed --------------------------------------------------------------------
 
 bool WireOffsetBuilder::split() {
   // 3: split where the raw_ path meets itself.
@@ -434,6 +444,8 @@ void WireOffsetBuilder::link() {
   }
 }
 
+// ---- 5. what the wire cannot reach --------------------------------------------------------------
+
 void WireOffsetBuilder::findLost() {
   std::vector<std::size_t> dead;
   for (std::size_t k = 0; k < n_; ++k)
@@ -497,6 +509,8 @@ void WireOffsetBuilder::findLost() {
 }
 
 }  // namespace
+
+// ---- 6. the entry point -------------------------------------------------------------------------
 
 WireOffsetResult wireOffset(std::span<const Segment> contour, double d, const WireOffsetOptions& options) {
   return WireOffsetBuilder(contour, d, options).run();

@@ -29,21 +29,26 @@ std::string run(const std::string& command, const fs::path& out, int& exit) {
 }
 
 // Issue 41: kerf cam that refuses to write (its program crosses itself when read back) names the
-// program it made, not the output file it did not write.
+// program it made, not the output file it did not write. The part: a limaçon with its inner loop
+// (r = 10 + 20 cos t), whose curve crosses itself at the origin; with the offset left to the
+// controller the program cuts the curve as drawn, so the program made crosses itself (K0601).
 TEST(cam_test, a_refused_program_is_named_as_not_written) {
-  const fs::path drawing = fs::path(KERF_REALWORLD_DIR) / "dxf" / "cnc3-12345.dxf";
-  ASSERT_TRUE(fs::exists(drawing)) << "the real corpus is missing: " << drawing;
   const fs::path work = fs::path(KERF_DXF_WORK);
   fs::create_directories(work);
   const fs::path out = work / "refused.nc";
   fs::remove(out);
   int exit = 0;
-  const std::string err = run("('" + std::string(KERF_PROGRAM) + "' cam '" + drawing.string() + "' --offset 0.1 -o '" +
-                                  out.string() + "' 2>&1)",
-                              work / "refused.log", exit);
+  const std::string err =
+      run("('" + std::string(KERF_PROGRAM) +
+              "' cam --curve 'x = (10+20*cos(t))*cos(t); y = (10+20*cos(t))*sin(t)' --t 0:2*pi --offset-by controller "
+              "-o '" +
+              out.string() + "' 2>&1)",
+          work / "refused.log", exit);
   EXPECT_EQ(exit, 1) << err;
   EXPECT_FALSE(fs::exists(out));
-  EXPECT_NE(err.find("<not written: " + out.string() + ">:16:1: error:"), std::string::npos) << err;
+  EXPECT_NE(err.find("<not written: " + out.string() + ">:42:1: error: the cut path crosses itself at (0.000, 0.000)"),
+            std::string::npos)
+      << err;
   EXPECT_EQ(err.find(out.string() + ":"), std::string::npos) << "a line of a file that is not there: " << err;
 }
 

@@ -3,7 +3,7 @@
 ; left of travel, G52 to the right, T the angle; G92 I the thickness). The rough cut and the last
 ; skim run counter-clockwise under G41 and G51; the middle skim runs clockwise, so it takes G42
 ; and G52 to stay inside with the same lean.
-; The wire offset applies on the program plane and the taper is taken from the offset path (K0210,
+; The wire offset applies on the program plane and the taper is taken from the offset path (K0901,
 ; a note; issue 55): on the program plane each pass is the 2-axis die's wire path, four sides of
 ; 20 - 2d and the lead-in and lead-out of 10 - d, 100 - 10d mm: 98.200, 98.900 and 99.150 mm.
 ; expect exit: 0
@@ -12,7 +12,7 @@
 ; expect: pass 2: lines 31-38, G42 H002 = 0.110 mm, clockwise, closes, 98.900 mm
 ; expect: pass 3: lines 40-47, G41 H003 = 0.085 mm, counter-clockwise, closes, 99.150 mm
 ; expect: wire slope max 1.414
-; expect diagnostic: 22 K0210
+; expect diagnostic: 22 K0901
 ; expect diagnostic: 27 K0614
 H001 = +000000.1800
 H002 = +000000.1100

@@ -533,16 +533,13 @@ elseif(CASE STREQUAL "tables_follow_inserted_moves")
          minutes GREATER 4.20 AND minutes LESS 4.21)
   # 2. An ISO upper program beside a 3B lower one is read with the options (--integer-unit um):
   # its length is the lower one's scale, not a thousand times it.
-  set(testdata "${SOURCE}/../shared/testdata/3b")
-  if(NOT EXISTS "${testdata}/set_a.iso")
-    message(FATAL_ERROR "${testdata}/set_a.iso is missing: the shared test data must lie beside the repository")
-  endif()
-  run("${KERF}" check "${testdata}/set_a.3b" --upper "${testdata}/set_a.iso" --thickness 10 --integer-unit um --json)
+  run("${KERF}" check "${SOURCE}/tests/programs/square_lower.3b" --upper "${SOURCE}/tests/programs/square_upper_um.iso"
+      --thickness 10 --integer-unit um --json)
   string(JSON lower GET "${out}" summary taper lower_length_mm)
   string(JSON upper GET "${out}" summary taper upper_length_mm)
   string(FIND "${out}" "K0650" steep)
   expect("the upper program is read in um: upper ${upper} mm beside lower ${lower} mm, and no K0650"
-         upper LESS 2000 AND steep EQUAL -1)
+         upper GREATER 79.19 AND upper LESS 79.21 AND steep EQUAL -1)
 elseif(CASE STREQUAL "guides")
   # The wire between its guides (issue 55): US 4700314's extrapolation d1 = h tan a below the program
   # plane, d2 = (H - h) tan a above it, and cnc3's own sizing of its calibration cone.

@@ -174,7 +174,7 @@ def main():
                     "area_slack": contour.length * SAGITTA,
                     "hausdorff": hausdorff,
                     "lost": len(wire["lost"]),
-                    "lost_codes": [d["code"] for d in report["diagnostics"] if d["code"] in ("K0126", "K0127")],
+                    "lost_codes": [d["code"] for d in report["diagnostics"] if d["code"] in ("K0902", "K0903")],
                 })
     print(json.dumps({"cases": cases}))
 

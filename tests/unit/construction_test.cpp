@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../corpus.h"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -65,12 +67,7 @@ std::size_t checkFile(const fs::path& file) {
 }  // namespace
 
 TEST(construction_test, every_move_of_every_sample_and_real_program) {
-  const fs::path realworld(KERF_REALWORLD_DIR);
-  if (!fs::is_directory(realworld)) {
-    const char* ci = std::getenv("CI");
-    if (ci && *ci && std::string_view(ci) != "false" && std::string_view(ci) != "0")
-      FAIL() << realworld << " is not there: under CI the real programs must be checked";
-  }
+  const fs::path realworld = kerf::test::realworldDir();
   std::size_t files = 0, moves = 0;
   for (const fs::path& folder : {fs::path(KERF_SAMPLES_DIR), fs::path(KERF_SAMPLES_DIR) / "bad", realworld / "iso2d",
                                  realworld / "xyuv", realworld / "polar"}) {
@@ -81,6 +78,7 @@ TEST(construction_test, every_move_of_every_sample_and_real_program) {
       ++files;
     }
   }
+  KERF_NEEDS_CORPUS();  // the samples were checked; the counts below are the corpus's
   EXPECT_GT(files, 20u);
   EXPECT_GT(moves, 1000u);
   std::printf("constructions of %zu moves in %zu files\n", moves, files);

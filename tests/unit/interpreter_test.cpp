@@ -143,7 +143,8 @@ TEST(interpreter_test, g41_with_an_h_register_is_applied_with_arcs_at_convex_cor
   EXPECT_EQ(corners, 3);
   EXPECT_NEAR(t.moves[1].lower.start.x(), -0.13, 1e-12);   // the first side, moved left of travel
   EXPECT_NEAR(t.moves.back().lower.end.x(), -5.0, 1e-12);  // the cancel returns to the programmed point
-  EXPECT_TRUE(r->hasCode(Code::WireOffsetNotApplied));     // the note that it was applied
+  EXPECT_TRUE(r->hasCode(Code::WireOffsetApplied));        // the note that it was applied
+  EXPECT_FALSE(r->hasCode(Code::WireOffsetNotApplied));
 }
 
 TEST(interpreter_test, explain_derives_an_offset_arc_from_its_programmed_words) {

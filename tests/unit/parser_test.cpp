@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../corpus.h"
+
 #include <charconv>
 #include <cstdint>
 #include <cstdlib>
@@ -537,8 +539,9 @@ std::string readAll(const std::filesystem::path& path) {
 TEST(parser_test, plain_blocks_read_again_as_the_parse_read_them) {
   namespace fs = std::filesystem;
   std::vector<fs::path> files;
-  for (const fs::path& folder : {fs::path(KERF_SAMPLES_DIR), fs::path(KERF_REALWORLD_DIR) / "iso2d",
-                                 fs::path(KERF_REALWORLD_DIR) / "xyuv", fs::path(KERF_REALWORLD_DIR) / "polar"})
+  const fs::path realworld = kerf::test::realworldDir();
+  for (const fs::path& folder :
+       {fs::path(KERF_SAMPLES_DIR), realworld / "iso2d", realworld / "xyuv", realworld / "polar"})
     if (fs::is_directory(folder))
       for (const auto& f : fs::directory_iterator(folder))
         if (f.is_regular_file() && f.path().extension() != ".dxf") files.push_back(f.path());
@@ -570,6 +573,7 @@ TEST(parser_test, plain_blocks_read_again_as_the_parse_read_them) {
       ++checked;
     }
   }
+  KERF_NEEDS_CORPUS();  // the samples were checked; the count below is the corpus's
   EXPECT_GT(checked, 1000u) << "too few plain blocks to hold the reader to the parse";
 }
 

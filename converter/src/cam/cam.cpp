@@ -149,7 +149,7 @@ std::optional<std::vector<std::size_t>> chooseContours(const std::vector<geometr
     chosen.push_back(c);
   }
   if (o.contour && *o.contour > chains.size()) {
-    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(),
+    diags.error(Code::OptionDoesNotFit, source, SourceSpan::wholeFile(),
                 "--contour " + std::to_string(*o.contour) + ": the drawing has " + std::to_string(chains.size()) +
                     " contour" + (chains.size() == 1 ? "" : "s"));
     return std::nullopt;
@@ -161,7 +161,7 @@ std::optional<std::vector<std::size_t>> chooseContours(const std::vector<geometr
     return std::nullopt;
   }
   if (o.entry && chosen.size() > 1) {
-    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(),
+    diags.error(Code::OptionDoesNotFit, source, SourceSpan::wholeFile(),
                 "--entry gives one start hole, but " + std::to_string(chosen.size()) +
                     " contours are cut: choose one with --contour");
     return std::nullopt;

@@ -1,3 +1,6 @@
+// The checks of a toolpath (checks.h): each plane's contours, the ruled surface, the cut runs.
+// Sections: 1. contacts that close a contour  2. a contour's self-intersection and closure
+//           3. the ruled surface  4. the cut runs and the toolpath
 #include "kerf/converter/check/checks.h"
 #include "finding.h"
 
@@ -21,6 +24,8 @@
 
 namespace kerf::converter {
 namespace {
+
+// ---- 1. contacts that close a contour -----------------------------------------------------------
 
 std::string deg(double radians) { return formatFixed(radians * geometry::kDegreesPerRadian, 3) + "°"; }
 
@@ -129,6 +134,8 @@ class SeamNote {
   std::vector<std::pair<std::size_t, std::size_t>> pairs_;
   geometry::Vec3 point_ = geometry::Vec3::Zero();
 };
+
+// ---- 2. a contour's self-intersection and closure -----------------------------------------------
 
 /// One plane's contour: the segments of the cut moves in order and each one's move.
 /// One contour to test: views of segments and their moves held elsewhere (the cut path is not
@@ -273,6 +280,8 @@ struct SurfaceCheck {
   const CheckOptions& options;
   Diagnostics& diags;
 };
+
+// ---- 3. the ruled surface -----------------------------------------------------------------------
 
 /// Each patch on its own: the wire's slope against --max-taper, the guides' distance against the
 /// U/V range, and an upper side that runs against the lower one (a twist or a crossing).
@@ -485,6 +494,8 @@ struct CutRun {
   std::string upperName;
   bool warnOpen = true;  ///< warn when the lower contour closes no loop (K0605)
 };
+
+// ---- 4. the cut runs and the toolpath -----------------------------------------------------------
 
 /// The lower contour's self-intersections and closure; on a taper program the upper contour's,
 /// their closures against each other and, with the heights known, the surface's (measures are then

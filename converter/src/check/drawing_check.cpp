@@ -1,3 +1,6 @@
+// A program against its drawing (drawing_check.h): the part edge, per drawing element the largest
+// deviation both ways, where the part was placed.
+// Sections: 1. the part edge  2. findings  3. measures and placement  4. the comparison
 #include "kerf/converter/check/drawing_check.h"
 
 #include "finding.h"
@@ -31,6 +34,8 @@ struct EdgeRun {
   std::size_t contour = 0;  ///< in Structure::contours
   bool upper = false;       ///< the moves' upper contour (DrawingCheckOptions::upperPlane)
 };
+
+// ---- 1. the part edge ---------------------------------------------------------------------------
 
 /// The runs of the part edge (see the header). A move is in one run at most.
 std::vector<EdgeRun> edgeRuns(const Toolpath& tp, const Structure& structure, bool upper) {
@@ -209,6 +214,8 @@ std::vector<EdgeDeviation> partEdge(const Toolpath& tp, const std::vector<EdgeRu
   return edge;
 }
 
+// ---- 2. findings --------------------------------------------------------------------------------
+
 /// "LINE", "ARC", "arc of an LWPOLYLINE".
 std::string elementName(const DrawnElement& e) {
   if (e.entity == "LINE" || e.entity == "ARC" || e.entity == "CIRCLE") return e.entity;
@@ -331,6 +338,8 @@ struct Measured {
   MovedBack said;
 };
 
+// ---- 3. measures and placement ------------------------------------------------------------------
+
 Measured measure(const Toolpath& tp, const std::vector<EdgeRun>& runs, const std::vector<DrawnElement>& drawing,
                  const std::vector<geometry::Segment>& drawn, const DrawingCheckOptions& options,
                  const SourceFile* drawingSource) {
@@ -391,6 +400,8 @@ std::string describePlacement(const geometry::Placement& p) {
 bool asPlaced(const geometry::Placement& p, double tolerance) {
   return !p.mirror && std::abs(p.angle) < 1e-7 && p.shift.norm() < 0.1 * tolerance;
 }
+
+// ---- 4. the comparison --------------------------------------------------------------------------
 
 /// The findings of one comparison element by element: K0631, K0630, K0632.
 void reportAll(const Measured& m, const std::vector<DrawnElement>& drawing, const Toolpath& tp,

@@ -20,14 +20,6 @@ std::string passName(std::size_t pass, std::size_t contour, std::size_t contours
   return "pass " + std::to_string(pass + 1) + (contours > 1 ? " of contour " + std::to_string(contour + 1) : "");
 }
 
-/// "G42 H002 = 0.110 mm", "G41 H001", "G41".
-std::string offsetWords(const Pass& p) {
-  std::string t = p.side == WireOffset::Left ? "G41" : p.side == WireOffset::Right ? "G42" : "no offset";
-  if (!p.offsetRegister.empty()) t += " " + p.offsetRegister;
-  if (p.offset) t += (p.offsetRegister.empty() ? " " : " = ") + formatFixed(*p.offset, 3) + " mm";
-  return t;
-}
-
 class PassChecker {
  public:
   PassChecker(const Toolpath& tp, const SourceFile* src, Diagnostics& diags, std::size_t contours)
@@ -58,9 +50,9 @@ class PassChecker {
     for (std::size_t p = reference + 1; p < ps.size(); ++p) {
       if (keptSide(ps[p]) == 0 || keptSide(ps[p]) == side) continue;
       report(Severity::Error, Code::PassWrongSide, ps[p].first, tp_.moves[ps[p].first].lower.start,
-             name(p) + " runs " + where(keptSide(ps[p])) + " its contour (" + offsetWords(ps[p]) + ", " +
+             name(p) + " runs " + where(keptSide(ps[p])) + " its contour (" + offsetText(ps[p]) + ", " +
                  directionName(ps[p].direction) + ") where " + name(reference) + " runs " + where(side) + " it (" +
-                 offsetWords(ps[reference]) + ", " + directionName(ps[reference].direction) +
+                 offsetText(ps[reference]) + ", " + directionName(ps[reference].direction) +
                  "): it cuts into what that pass kept",
              "G41 puts the wire left of the direction of travel, G42 right: a pass that reverses the direction "
              "takes the other code");
@@ -74,8 +66,8 @@ class PassChecker {
       if (ps[p].cutOff || !ps[p].offset || ps[p].side == WireOffset::Off) continue;
       if (before < ps.size() && *ps[p].offset > *ps[before].offset + 1e-9)
         report(Severity::Warning, Code::OffsetGrows, ps[p].first, tp_.moves[ps[p].first].lower.start,
-               name(p) + "'s offset (" + offsetWords(ps[p]) + ") is larger than " + name(before) + "'s (" +
-                   offsetWords(ps[before]) + "): it runs outside the path already cut and removes nothing",
+               name(p) + "'s offset (" + offsetText(ps[p]) + ") is larger than " + name(before) + "'s (" +
+                   offsetText(ps[before]) + "): it runs outside the path already cut and removes nothing",
                "skims take smaller offsets than the pass before them (the register's value, or the table)");
       before = p;
     }

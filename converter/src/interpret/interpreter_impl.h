@@ -1,10 +1,11 @@
 // The interpreter's state and its phases (interpreter.h gives the order). One class, its member
 // functions defined by phase in the files of this folder:
-//   interpreter.cpp    the block loop, limits, labels; the end of the program
+//   interpreter.cpp    the block loop, limits, labels; phase 4's order (feed, units, distance,
+//                      work offset there); the end of the program
 //   read_block.cpp     phase 1: words -> BlockWords
 //   fill_in.cpp        phase 2: BlockWords + modal state -> BlockPlan
 //   check_block.cpp    phase 3: what cannot mean anything
-//   execute.cpp        phase 4: feed, dwell, plane, units, taper, distance, work offset, G92
+//   execute.cpp        phase 4: words no code reads, G92, the taper angle (G50-G52 with A or T)
 //   motion.cpp         phase 4: the motion, arcs from R or I J
 //   corner.cpp         phase 4: the corner at a block's end (,R ,C), made when the next move comes
 //   upper_side.cpp     the upper side of a 4-axis move, by dialect
@@ -14,6 +15,11 @@
 //   mill_turn.cpp      a mill-turn face program: X/C, polar interpolation
 //   heights.cpp        the plane heights, after the last block
 //   taper_offsets.cpp  taper-angle and xyuv-rel contours, after the last block
+//   gcode.cpp          the G-code table (gcode.h)
+// Beside the class: dialect.cpp (choosing the 4-axis dialect), machine.cpp (machine profiles),
+// offset_table.cpp (--offsets), analysis.cpp (a program read as its machine means it) and
+// workpiece.cpp (the part between the work's faces).
+// Sections: 1. a block's words and plan  2. what is kept between blocks  3. the interpreter
 #pragma once
 
 #include "gcode.h"
@@ -38,6 +44,8 @@ namespace kerf::converter::interp {
 
 using geometry::Segment;
 using geometry::Vec2;
+
+// ---- 1. a block's words and plan ----------------------------------------------------------------
 
 enum class Motion : std::uint8_t { None, Rapid, Line, Clockwise, CounterClockwise };
 Motion motionOf(GCode code);
@@ -84,6 +92,8 @@ struct BlockPlan {
   const Word* positionCodeWord = nullptr;
   bool noMotion = false;  ///< a profile code takes the axis words as parameters
 };
+
+// ---- 2. what is kept between blocks -------------------------------------------------------------
 
 struct Frame {
   std::size_t returnTo = 0;  // block index to continue at after the last repeat
@@ -163,6 +173,8 @@ class HeldWord {
   Word word_;
   bool held_ = false;
 };
+
+// ---- 3. the interpreter -------------------------------------------------------------------------
 
 class Interpreter {
  public:
@@ -307,15 +319,13 @@ class Interpreter {
   void reportLostRuns(const OffsetRun& run, const std::vector<geometry::LostRun>& lost);
   /// The moves and their tables being rebuilt with the wire's path.
   struct OffsetBuild {
-    MoveList out;
-    std::vector<Segment> upper;       ///< per move, the upper plane's
-    std::vector<std::size_t> source;  ///< per move, the move it was made from
-    std::vector<OffsetRole> role;
-    std::vector<Segment> programmed;
+    std::vector<MoveRow> rows;            ///< the new moves with their tables' entries
+    std::vector<std::size_t> source;      ///< per new move, the old move it was made from
     std::vector<std::uint32_t> firstOut;  ///< per old move, its first new move (UINT32_MAX: none yet)
     std::size_t next = 0;                 ///< the first old move not yet copied
     bool applied = false;
-    void push(const Move& m, const Segment& upperSegment, std::size_t from, OffsetRole r,
+    /// Appends old move `from` made into `m` (on the lower plane), `upperSegment`, for the offset `r`.
+    void push(const Toolpath& tp, std::size_t from, const Move& m, const Segment& upperSegment, OffsetRole r,
               const Segment& programmedSegment);
     void copyUpTo(std::size_t end, const Toolpath& tp);
     void addRun(const OffsetRun& run, const std::vector<PairedPiece>& path, const Toolpath& tp);

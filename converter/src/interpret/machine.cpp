@@ -1,7 +1,7 @@
 // Machine profiles: the text format, the built-in profiles (converter/machines/, compiled in) and
 // detection from a program's evidence, and reading a program with its profile.
 //
-// Sections: 1. names  2. the profile file  3. built-ins  4. detection  5. reading for a machine
+// Sections: 1. names  2. the profile file  3. built-ins  4. detection  5. reading a program for its machine
 #include "kerf/converter/interpret/machine.h"
 
 #include "kerf/converter/interpret/dialect.h"
@@ -34,6 +34,24 @@ const char* arcCentreName(ArcCentreMode m) {
     case ArcCentreMode::Absolute: return "absolute";
   }
   return "incremental";
+}
+
+const char* arcCentreMeaning(ArcCentreMode m) {
+  switch (m) {
+    case ArcCentreMode::Incremental: return "centre minus start";
+    case ArcCentreMode::Reversed: return "start minus centre";
+    case ArcCentreMode::Absolute: return "the centre itself";
+  }
+  return "centre minus start";
+}
+
+const char* arcCentreRule(ArcCentreMode m) {
+  switch (m) {
+    case ArcCentreMode::Incremental: return "centre = start + (I, J)";
+    case ArcCentreMode::Reversed: return "centre = start - (I, J)";
+    case ArcCentreMode::Absolute: return "centre = (I, J)";
+  }
+  return "centre = start + (I, J)";
 }
 
 std::optional<ArcCentreMode> parseArcCentre(std::string_view name) {

@@ -187,11 +187,11 @@ void Interpreter::resolveWireOffsets() {
   if (!b.applied) return;
   b.copyUpTo(moves.size(), toolpath_);
   // The moves are the wire-centre path now: an output written from them must not offset again.
-  for (std::size_t i = 0; i < b.out.size(); ++i)
-    if (b.role[i] != OffsetRole::None) b.out[i].wireOffset = WireOffset::Off;
+  for (MoveRow& r : b.rows)
+    if (r.offsetRole != OffsetRole::None) r.move.wireOffset = WireOffset::Off;
   renumberAfterOffset(b);
   const OffsetRun& first = runs.front();
-  diags_.note(Code::WireOffsetNotApplied, src_, toolpath_.moves.empty() ? SourceSpan::wholeFile() : moves[0].span,
+  diags_.note(Code::WireOffsetApplied, src_, toolpath_.moves.empty() ? SourceSpan::wholeFile() : moves[0].span,
               std::string("wire offset applied (") + (first.side == WireOffset::Left ? "G41" : "G42") + ", " +
                   formatFixed(*first.value, 3) + " mm" + (runs.size() > 1 ? " first" : "") + ")" +
                   (toolpath_.isTaper() ? (dialect_ == Dialect::TaperAngle
@@ -202,19 +202,21 @@ void Interpreter::resolveWireOffsets() {
               "kerf explain shows each move's programmed geometry beside it");
 }
 
-void Interpreter::OffsetBuild::push(const Move& m, const Segment& upperSegment, std::size_t from, OffsetRole r,
-                                    const Segment& programmedSegment) {
-  out.push_back(m);
-  upper.push_back(upperSegment);
+void Interpreter::OffsetBuild::push(const Toolpath& tp, std::size_t from, const Move& m, const Segment& upperSegment,
+                                    OffsetRole r, const Segment& programmedSegment) {
+  MoveRow row = tp.rowOf(from);
+  row.move = m;
+  row.upper = upperSegment;
+  row.offsetRole = r;
+  row.programmed = programmedSegment;
+  rows.push_back(row);
   source.push_back(from);
-  role.push_back(r);
-  programmed.push_back(programmedSegment);
 }
 
 void Interpreter::OffsetBuild::copyUpTo(std::size_t end, const Toolpath& tp) {
   for (; next < end; ++next) {
-    firstOut[next] = static_cast<std::uint32_t>(out.size());
-    push(tp.moves[next], tp.upperOf(next), next, OffsetRole::None, tp.moves[next].lower);
+    firstOut[next] = static_cast<std::uint32_t>(rows.size());
+    push(tp, next, tp.moves[next], tp.upperOf(next), OffsetRole::None, tp.moves[next].lower);
   }
 }
 
@@ -222,9 +224,9 @@ void Interpreter::OffsetBuild::addRun(const OffsetRun& run, const std::vector<Pa
   const MoveList& moves = tp.moves;
   Move startUp = moves[run.first];
   startUp.lower = Segment::line(startUp.lower.start, path.front().lower.segment.start);
-  firstOut[run.first] = static_cast<std::uint32_t>(out.size());
-  push(startUp, Segment::line(tp.upperOf(run.first).start, path.front().upper.start), run.first, OffsetRole::StartUp,
-       moves[run.first].lower);
+  firstOut[run.first] = static_cast<std::uint32_t>(rows.size());
+  push(tp, run.first, startUp, Segment::line(tp.upperOf(run.first).start, path.front().upper.start),
+       OffsetRole::StartUp, moves[run.first].lower);
   for (const PairedPiece& pp : path) {
     const geometry::WirePiece& piece = pp.lower;
     const std::size_t element = run.first + 1 + piece.element;
@@ -232,9 +234,9 @@ void Interpreter::OffsetBuild::addRun(const OffsetRun& run, const std::vector<Pa
     Move m = moves[from];
     m.lower = piece.segment;
     m.kind = piece.segment.isArc() || pp.upper.isArc() ? MoveKind::Arc : MoveKind::Line;
-    if (!piece.corner && firstOut[element] == UINT32_MAX) firstOut[element] = static_cast<std::uint32_t>(out.size());
+    if (!piece.corner && firstOut[element] == UINT32_MAX) firstOut[element] = static_cast<std::uint32_t>(rows.size());
     const Segment& programmedElement = moves[element].lower;
-    push(m, pp.upper, from, piece.corner ? OffsetRole::Corner : OffsetRole::Element,
+    push(tp, from, m, pp.upper, piece.corner ? OffsetRole::Corner : OffsetRole::Element,
          piece.corner ? Segment::line(programmedElement.end, programmedElement.end) : programmedElement);
   }
   next = run.end;
@@ -242,8 +244,8 @@ void Interpreter::OffsetBuild::addRun(const OffsetRun& run, const std::vector<Pa
   if (run.end < moves.size() && moves[run.end].kind == MoveKind::Line) {
     Move cancel = moves[run.end];
     cancel.lower = Segment::line(path.back().lower.segment.end, cancel.lower.end);
-    firstOut[run.end] = static_cast<std::uint32_t>(out.size());
-    push(cancel, Segment::line(path.back().upper.end, tp.upperOf(run.end).end), run.end, OffsetRole::Cancel,
+    firstOut[run.end] = static_cast<std::uint32_t>(rows.size());
+    push(tp, run.end, cancel, Segment::line(path.back().upper.end, tp.upperOf(run.end).end), OffsetRole::Cancel,
          moves[run.end].lower);
     next = run.end + 1;
   }
@@ -252,33 +254,23 @@ void Interpreter::OffsetBuild::addRun(const OffsetRun& run, const std::vector<Pa
 void Interpreter::renumberAfterOffset(OffsetBuild& b) {
   const std::size_t oldCount = toolpath_.moves.size();
   // A move the wire cannot reach takes the place of the next one that is cut.
-  b.firstOut[oldCount] = static_cast<std::uint32_t>(b.out.size());
+  const std::size_t newCount = b.rows.size();
+  b.firstOut[oldCount] = static_cast<std::uint32_t>(newCount);
   for (std::size_t k = oldCount; k-- > 0;)
     if (b.firstOut[k] == UINT32_MAX) b.firstOut[k] = b.firstOut[k + 1];
-  // The tables indexed by move follow each move's source.
-  auto follow = [&](auto& table) {
-    if (table.empty()) return;
-    std::remove_reference_t<decltype(table)> moved;
-    moved.reserve(b.out.size());
-    for (const std::size_t s : b.source) moved.push_back(table[s]);
-    table = std::move(moved);
-  };
-  follow(toolpath_.centreWords);
-  follow(toolpath_.taperDegrees);
-  if (toolpath_.isTaper()) toolpath_.upper = std::move(b.upper);  // taper-angle: placeholders, resolved next
   // taper-angle: each applied move leans as the move it came from; the taper starts on the first
   // move made from its start move and ends on the last made from its end move.
   if (!taperRecords_.empty()) {
     std::vector<std::size_t> recordOf(oldCount, SIZE_MAX);
     for (std::size_t k = 0; k < taperRecords_.size(); ++k) recordOf[taperRecords_[k].index] = k;
     std::vector<TaperRecord> records;
-    for (std::size_t o = 0; o < b.out.size(); ++o) {
+    for (std::size_t o = 0; o < newCount; ++o) {
       const std::size_t s = b.source[o];
       if (recordOf[s] == SIZE_MAX) continue;
       TaperRecord r = taperRecords_[recordOf[s]];
       r.index = o;
       r.start = r.start && (o == 0 || b.source[o - 1] != s);
-      r.end = r.end && (o + 1 == b.out.size() || b.source[o + 1] != s);
+      r.end = r.end && (o + 1 == newCount || b.source[o + 1] != s);
       records.push_back(r);
     }
     taperRecords_ = std::move(records);
@@ -287,16 +279,14 @@ void Interpreter::renumberAfterOffset(OffsetBuild& b) {
   // path is the part's less (or more) the wire offset, on every plane alike.
   for (TaperCorner& c : taperCorners_) {
     c.move = b.firstOut[c.move];
-    if (c.chamfer || c.move >= b.out.size() || b.role[c.move] != OffsetRole::Element || !b.out[c.move].lower.isArc())
+    if (c.chamfer || c.move >= newCount || b.rows[c.move].offsetRole != OffsetRole::Element ||
+        !b.rows[c.move].move.lower.isArc())
       continue;
-    const double grown = b.out[c.move].lower.radius - c.size;
+    const double grown = b.rows[c.move].move.lower.radius - c.size;
     c.size += grown;
     if (c.upperSize) *c.upperSize += grown;
   }
-  toolpath_.renumberMoveLists(b.firstOut);
-  toolpath_.moves = std::move(b.out);
-  toolpath_.offsetRole = std::move(b.role);
-  toolpath_.programmed = std::move(b.programmed);
+  toolpath_.replaceMoves(std::move(b.rows), b.firstOut, true);
 }
 
 }  // namespace kerf::converter::interp

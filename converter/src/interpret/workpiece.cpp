@@ -54,28 +54,23 @@ bool cutBetweenFaces(Toolpath& toolpath, double z0, double z1, double tolerance,
       return refuse("the faces' sections need more than " + std::to_string(maxMoves) + " moves within " +
                     formatFixed(tolerance, 4) + " mm");
   }
-  MoveList moves;
-  std::vector<Segment> upper, programmed;
-  std::vector<OffsetRole> role;
-  std::vector<float> taperDegrees;
-  std::vector<geometry::Vec2> centreWords;
+  std::vector<MoveRow> rows;
+  rows.reserve(total);
   std::vector<std::uint32_t> newIndex(toolpath.moves.size() + 1);
   std::vector<Segment> section;
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
-    newIndex[i] = static_cast<std::uint32_t>(moves.size());
+    newIndex[i] = static_cast<std::uint32_t>(rows.size());
     const Segment& lo = toolpath.moves[i].lower;
     const Segment& up = toolpath.upper[i];
     auto add = [&](const Segment& a, const Segment& b, bool first) {
-      Move m = toolpath.moves[i];
+      MoveRow row = toolpath.rowOf(i);
+      Move& m = row.move;
       m.lower = a;
       if (m.isCut()) m.kind = a.isArc() || b.isArc() ? MoveKind::Arc : MoveKind::Line;
       if (!first || (!a.isArc() && m.centreForm != CentreForm::None)) m.centreForm = CentreForm::None;
-      moves.push_back(m);
-      upper.push_back(b);
-      if (!toolpath.programmed.empty()) programmed.push_back(toolpath.programmed[i]);
-      if (!toolpath.offsetRole.empty()) role.push_back(toolpath.offsetRole[i]);
-      if (!toolpath.taperDegrees.empty()) taperDegrees.push_back(toolpath.taperDegrees[i]);
-      if (!toolpath.centreWords.empty()) centreWords.push_back(first ? toolpath.centreWords[i] : geometry::Vec2(0, 0));
+      row.upper = b;
+      if (!first) row.centreWords = geometry::Vec2(0, 0);
+      rows.push_back(row);
     };
     if (exact[i]) {
       section.clear();
@@ -98,19 +93,13 @@ bool cutBetweenFaces(Toolpath& toolpath, double z0, double z1, double tolerance,
       add(Segment::line(at(t0, s0), at(t1, s0)), Segment::line(at(t0, s1), at(t1, s1)), k == 0);
     }
   }
-  newIndex[toolpath.moves.size()] = static_cast<std::uint32_t>(moves.size());
+  newIndex[toolpath.moves.size()] = static_cast<std::uint32_t>(rows.size());
   const geometry::Planes machine = h.planes;
   const geometry::Vec2 start =
       toolpath.moves.empty() ? toolpath.start
                              : geometry::Vec2(toolpath.moves.front().lower.start +
                                               s0 * (toolpath.upper.front().start - toolpath.moves.front().lower.start));
-  toolpath.renumberMoveLists(newIndex);
-  toolpath.moves = std::move(moves);
-  toolpath.upper = std::move(upper);
-  toolpath.programmed = std::move(programmed);
-  toolpath.offsetRole = std::move(role);
-  toolpath.taperDegrees = std::move(taperDegrees);
-  toolpath.centreWords = std::move(centreWords);
+  toolpath.replaceMoves(std::move(rows), newIndex);
   toolpath.start = start;
   PlaneHeights& heights = toolpath.heights;
   if (!heights.guides) {

@@ -45,7 +45,7 @@ This page is made from the table in `converter/include/kerf/converter/nc/diagnos
 source of the codes, their severities and meanings (a test keeps the two equal:
 `KERF_UPDATE_GOLDEN=1` rewrites this page). The hundreds are the family: 1 reading the text, 2
 words and modal state, 3 arcs, 4 motion, 5 program flow, 6 the geometry of the cut, 7 numbers, 8
-outputs and options.
+outputs and options, 9 the wire offset.
 
 | code | name | severity and meaning |
 |---|---|---|
@@ -66,7 +66,14 @@ written, standard output lost). With several files, the worst of them.
 
 A code has one meaning. Where one meaning was split from another, the old code kept the first:
 K0205 (letters) gave K0222, K0223, K0224 and K0225; K0220 (two files) gave K0226 and K0227; K0304
-(lower arc) gave K0306; K0604 (retrace) gave K0609; K0201 (unknown G) gave K0236.
+(lower arc) gave K0306; K0604 (retrace) gave K0609; K0201 (unknown G) gave K0236; K0606 (nothing
+to cut) gave K0813 (a writer with nothing to write), K0814 (an option the input cannot take) and
+K0635 (an empty `--drawing`); K0210 (offset not applied) gave K0901 (offset applied).
+
+Renumbered once, when the wire offset became a family of its own: K0126 → K0902 (WireCannotReach),
+K0127 → K0903 (InsideCornerRadius), K0128 → K0904 (WirePathSplits), K0129 → K0905
+(WireOffsetRefused). A 3B program's single `D` (a pause) is K0231, as a machine's codes are, no
+longer K0205.
 )";
   return md;
 }

@@ -1,10 +1,7 @@
 // ISO block parser.
 //
-// Sections: 1. character classes and number scanning
-//           2. values that are not numbers: registers, macro variables
-//           3. one block: settings, macro statements, comments, words
-//           4. the sides of a 4-axis block
-//           5. the whole text: byte-order mark, lines, '%' frame
+// Sections: 1. characters and numbers  2. values known only at the machine  3. one block
+//           4. the sides of a 4-axis block  5. plain blocks read again  6. the whole text
 #include "kerf/converter/nc/program.h"
 
 #include <algorithm>

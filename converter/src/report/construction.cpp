@@ -3,6 +3,7 @@
 
 #include "figures.h"
 
+#include "kerf/converter/interpret/machine.h"
 #include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/nc/number_format.h"
 #include "kerf/geometry/arc.h"
@@ -92,19 +93,13 @@ void vectorConstruction(std::vector<Mark>& marks, const Toolpath& tp, std::size_
   if (tp.format == InputFormat::ThreeB) {
     add(marks, Mark::Kind::Arrow, Mark::Role::Vector, Segment::line(d.centre, d.start), "x y = start - centre = " + ij);
   } else {
-    switch (tp.moves[i].centreForm) {
-      case CentreForm::Reversed:
-        add(marks, Mark::Kind::Arrow, Mark::Role::Vector, Segment::line(d.start, d.centre),
-            "centre = start - (I, J); I J = " + ij);
-        break;
-      case CentreForm::Absolute:  // from the program's origin, wherever G92 put it
-        add(marks, Mark::Kind::Arrow, Mark::Role::Vector, Segment::line(d.centre - w, d.centre),
-            "centre = (I, J) = " + ij + " from the program's origin");
-        break;
-      default:
-        add(marks, Mark::Kind::Arrow, Mark::Role::Vector, Segment::line(d.start, d.centre),
-            "centre = start + (I, J); I J = " + ij);
-    }
+    const ArcCentreMode convention = arcCentreOf(tp.moves[i].centreForm);
+    const std::string rule = arcCentreRule(convention);
+    if (convention == ArcCentreMode::Absolute)  // from the program's origin, wherever G92 put it
+      add(marks, Mark::Kind::Arrow, Mark::Role::Vector, Segment::line(d.centre - w, d.centre),
+          rule + " = " + ij + " from the program's origin");
+    else
+      add(marks, Mark::Kind::Arrow, Mark::Role::Vector, Segment::line(d.start, d.centre), rule + "; I J = " + ij);
   }
   add(marks, Mark::Kind::Point, Mark::Role::Centre, Segment::line(d.centre, d.centre), "centre");
   // The vector already joins the start and the centre: the radius is drawn to the end, which lies
@@ -329,9 +324,7 @@ std::string lowerMeaning(const Word& w, const Toolpath& tp, std::size_t i) {
     case 'I':
     case 'J': {
       const int axis = w.letter == 'I' ? 0 : 1;
-      const char* how = m.centreForm == CentreForm::Reversed   ? "start minus centre"
-                        : m.centreForm == CentreForm::Absolute ? "the centre itself"
-                                                               : "centre minus start";
+      const char* how = arcCentreMeaning(arcCentreOf(m.centreForm));
       return std::string("the arc's centre, ") + how + " in " + (axis == 0 ? "x" : "y") + ": the centre's " +
              (axis == 0 ? "x" : "y") + " is " + mm(s.centre[axis]) + " mm";
     }
@@ -403,10 +396,7 @@ std::vector<std::string> blockModes(const Toolpath& tp, std::size_t i) {
                                                : "absolute (G90): X Y are the end point in the program's coordinates");
     out.push_back((m.modes & kModeInch) ? "inches (G20): every length is read times 25.4" : "millimetres (G21)");
     out.push_back("plane XY (G17): the only plane a wire machine cuts in");
-    out.push_back(std::string("arc centres from I J: ") +
-                  (tp.reading.arcCentre == ArcCentreMode::Reversed   ? "start minus centre"
-                   : tp.reading.arcCentre == ArcCentreMode::Absolute ? "the centre itself"
-                                                                     : "centre minus start") +
+    out.push_back(std::string("arc centres from I J: ") + arcCentreMeaning(tp.reading.arcCentre) +
                   " (machine profile " + tp.reading.machine + ")");
   }
   std::string offset = "no wire offset (G40): the path is the wire's centre";

@@ -1,4 +1,5 @@
-// Sections: 1. number formatting  2. check (text, JSON)  3. explain (text, JSON)
+// The report of check and explain, text and JSON (report.h).
+// Sections: 1. numbers  2. check  3. explain
 #include "kerf/converter/report/report.h"
 
 #include "figures.h"
@@ -195,15 +196,6 @@ std::string formatDiagnosticsText(const Diagnostics& diags) {
 }
 
 namespace {
-
-/// "G41 H001 = 0.180 mm", "G42 (offset at the machine)", "no offset".
-std::string offsetText(const Pass& p) {
-  if (p.side == WireOffset::Off) return "no offset";
-  std::string t = p.side == WireOffset::Left ? "G41" : "G42";
-  if (!p.offsetRegister.empty()) t += " " + p.offsetRegister;
-  if (p.offset) return t + (p.offsetRegister.empty() ? " " : " = ") + mm(*p.offset) + " mm";
-  return t + " (offset at the machine)";
-}
 
 /// A box as "X a .. b, Y c .. d".
 std::string boxText(const geometry::Box& b) {
@@ -662,9 +654,7 @@ void explainLower(std::string& out, const Toolpath& toolpath, std::size_t i, con
            "crosses\n";
   } else {
     const Vec2 ij = toolpath.programmedCentreWords(i);
-    std::string rule = m.centreForm == CentreForm::Incremental ? "centre = start + (I, J)"
-                       : m.centreForm == CentreForm::Reversed  ? "centre = start - (I, J)"
-                                                               : "centre = (I, J)";
+    const std::string rule = arcCentreRule(arcCentreOf(m.centreForm));
     out += "  centre " + formatPoint(d.centre) + " from I " + mm(ij.x()) + " J " + mm(ij.y()) + ": " + rule +
            (role == OffsetRole::Element ? " (the programmed start " + formatPoint(d.start) + ")" : std::string()) +
            "; radius by formula (3) = |start - centre| = " + mm(d.radius) + " mm\n";

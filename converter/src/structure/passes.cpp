@@ -3,6 +3,7 @@
 // direction and closure from its programmed geometry.
 #include "kerf/converter/structure/passes.h"
 
+#include "kerf/converter/nc/number_format.h"
 #include "kerf/geometry/chain.h"
 
 #include <algorithm>
@@ -270,6 +271,14 @@ const char* directionName(int direction) {
   return direction > 0 ? "counter-clockwise" : direction < 0 ? "clockwise" : "neither";
 }
 
+std::string offsetText(const Pass& p) {
+  if (p.side == WireOffset::Off) return "no offset";
+  std::string t = p.side == WireOffset::Left ? "G41" : "G42";
+  if (!p.offsetRegister.empty()) t += " " + p.offsetRegister;
+  if (p.offset) return t + (p.offsetRegister.empty() ? " " : " = ") + formatFixed(*p.offset, 3) + " mm";
+  return t + " (offset at the machine)";
+}
+
 std::vector<std::uint8_t> movePasses(const Structure& structure, std::size_t moves) {
   std::vector<std::uint8_t> out(moves, 0);
   for (const Contour& c : structure.contours)
@@ -284,44 +293,30 @@ std::optional<Toolpath> toolpathOfPass(const Toolpath& toolpath, const Structure
   const std::vector<std::uint8_t> number = movePasses(structure, toolpath.moves.size());
   if (pass == 0 || std::find(number.begin(), number.end(), std::min<std::size_t>(pass, 255)) == number.end())
     return std::nullopt;
-  Toolpath out = toolpath;
-  out.moves.clear();
-  for (auto* v : {&out.upper, &out.programmed}) v->clear();
-  out.offsetRole.clear();
-  out.taperDegrees.clear();
-  out.centreWords.clear();
+  std::vector<MoveRow> rows;
   std::vector<std::uint32_t> newIndex(toolpath.moves.size() + 1, 0);
-  // One move of the source toolpath, with its per-move data.
-  auto append = [&](std::size_t i, const Move& move) {
-    out.moves.push_back(move);
-    if (!toolpath.upper.empty()) out.upper.push_back(toolpath.upper[i]);
-    if (!toolpath.programmed.empty()) out.programmed.push_back(toolpath.programmed[i]);
-    if (!toolpath.offsetRole.empty()) out.offsetRole.push_back(toolpath.offsetRole[i]);
-    if (!toolpath.taperDegrees.empty()) out.taperDegrees.push_back(toolpath.taperDegrees[i]);
-    if (!toolpath.centreWords.empty()) out.centreWords.push_back(toolpath.centreWords[i]);
-  };
   for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
-    newIndex[i] = static_cast<std::uint32_t>(out.moves.size());
+    newIndex[i] = static_cast<std::uint32_t>(rows.size());
     const Move& m = toolpath.moves[i];
     if (m.isCut() && number[i] != pass) continue;
-    if (!out.moves.empty() && (out.moves.back().lower.end - m.lower.start).norm() > tolerance) {
-      Move join = m;  // a rapid to where this move starts, in its block's place
-      join.kind = MoveKind::Rapid;
-      join.centreForm = CentreForm::None;
-      join.wireOffset = WireOffset::Off;
-      join.lower = geometry::Segment::line(out.moves.back().lower.end, m.lower.start);
-      append(i, join);
-      if (!out.upper.empty())
-        out.upper.back() = geometry::Segment::line(out.upper[out.upper.size() - 2].end, toolpath.upperOf(i).start);
-      if (!out.programmed.empty()) out.programmed.back() = join.lower;
-      if (!out.offsetRole.empty()) out.offsetRole.back() = OffsetRole::None;
-      if (!out.centreWords.empty()) out.centreWords.back() = geometry::Vec2(0, 0);
+    if (!rows.empty() && (rows.back().move.lower.end - m.lower.start).norm() > tolerance) {
+      MoveRow join = toolpath.rowOf(i);  // a rapid to where this move starts, in its block's place
+      join.move.kind = MoveKind::Rapid;
+      join.move.centreForm = CentreForm::None;
+      join.move.wireOffset = WireOffset::Off;
+      join.move.lower = geometry::Segment::line(rows.back().move.lower.end, m.lower.start);
+      join.upper = geometry::Segment::line(rows.back().upper.end, toolpath.upperOf(i).start);
+      join.programmed = join.move.lower;
+      join.offsetRole = OffsetRole::None;
+      join.centreWords = geometry::Vec2(0, 0);
+      rows.push_back(join);
     }
-    newIndex[i] = static_cast<std::uint32_t>(out.moves.size());
-    append(i, m);
+    newIndex[i] = static_cast<std::uint32_t>(rows.size());
+    rows.push_back(toolpath.rowOf(i));
   }
-  newIndex[toolpath.moves.size()] = static_cast<std::uint32_t>(out.moves.size());
-  out.renumberMoveLists(newIndex);
+  newIndex[toolpath.moves.size()] = static_cast<std::uint32_t>(rows.size());
+  Toolpath out = toolpath;
+  out.replaceMoves(std::move(rows), newIndex);
   return out;
 }
 

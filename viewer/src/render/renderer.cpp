@@ -1,4 +1,5 @@
-// Index: shader programs; OffscreenTarget; buffers (setScene); render passes; overlay; triad.
+// The OpenGL 3.3 renderer (renderer.h).
+// Sections: 1. shader programs  2. OffscreenTarget  3. buffers  4. render passes  5. overlay and triad
 #include "kerf/render/renderer.h"
 
 #include "kerf/render/gl.h"
@@ -12,7 +13,7 @@ namespace kerf::render {
 
 namespace {
 
-// ---- shader programs ----------------------------------------------------------------------
+// ---- 1. shader programs -------------------------------------------------------------------
 
 unsigned compileStage(GLenum stage, const char* source, std::string& error) {
   const GlApi& g = gl();
@@ -71,7 +72,7 @@ constexpr std::uint32_t kStartColour = rgba(30, 170, 60);
 
 }  // namespace
 
-// ---- OffscreenTarget ------------------------------------------------------------------------
+// ---- 2. OffscreenTarget ---------------------------------------------------------------------
 
 OffscreenTarget::~OffscreenTarget() { release(); }
 
@@ -152,7 +153,7 @@ std::vector<std::uint8_t> readFramebufferRgba(int width, int height) {
   return topDown;
 }
 
-// ---- buffers --------------------------------------------------------------------------------
+// ---- 3. buffers -----------------------------------------------------------------------------
 
 Renderer::~Renderer() {
   if (gl().DeleteProgram == nullptr) return;
@@ -338,7 +339,7 @@ void Renderer::setOverlayTexture(int width, int height, const std::uint8_t* pixe
   g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
 }
 
-// ---- render passes --------------------------------------------------------------------------
+// ---- 4. render passes -----------------------------------------------------------------------
 
 void Renderer::drawLines(const Buffer& b, std::size_t first, std::size_t count, const Eigen::Matrix4f& viewProj,
                          float width, float dash, int widthPx, int heightPx, const float* colourOverride) {
@@ -516,7 +517,7 @@ Camera clearOfTriad(Camera camera, const geometry::Vec3& boxMin, const geometry:
   return camera;
 }
 
-// ---- overlay --------------------------------------------------------------------------------
+// ---- 5. overlay and triad -------------------------------------------------------------------
 
 void Renderer::drawOverlay(const OverlayDrawData& data, int width, int height) {
   if (data.commands.empty()) return;

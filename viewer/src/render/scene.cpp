@@ -1,3 +1,6 @@
+// The scene drawn (scene.h): the toolpath's lines, surfaces and markers, in float vertices.
+// Sections: 1. colours and vertices  2. planes and bounds  3. runs and the cut surface
+//           4. what the scene holds  5. building the scene
 #include "kerf/render/scene.h"
 
 #include "kerf/converter/nc/number_format.h"
@@ -27,6 +30,8 @@ constexpr std::uint32_t kReferenceColour = rgba(200, 60, 150, 230);  // the draw
 constexpr std::uint32_t kGuideColour = rgba(20, 150, 160, 255);      // the guides' paths: teal
 constexpr std::uint32_t kGuideWireColour = rgba(20, 150, 160, 110);  // the wire extended between them
 constexpr std::uint32_t kVertexDone = 0x80000000u;                   // buildScene's mark while it finishes a patch
+
+// ---- 1. colours and vertices --------------------------------------------------------------------
 
 std::array<float, 3> toFloat(const Vec3& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
@@ -96,6 +101,8 @@ std::uint32_t rampColour(double x) {
   return rgba(channel(0), channel(1), channel(2));
 }
 
+// ---- 2. planes and bounds -----------------------------------------------------------------------
+
 void LineSet::add(const Vec3& a, const Vec3& b, std::uint32_t colour) {
   vertices.push_back({toFloat(a), colour});
   vertices.push_back({toFloat(b), colour});
@@ -136,6 +143,8 @@ void toolpathBounds(const converter::Toolpath& toolpath, double displayHeight, V
 }
 
 namespace {
+
+// ---- 3. runs and the cut surface ----------------------------------------------------------------
 
 /// How far the segment strays from the chord p..q, at most (its ends' distances, plus its own
 /// bulge for an arc: the distance to a segment is convex along the arc's chord).
@@ -231,6 +240,8 @@ CutSurface meshCutSurface(const converter::Toolpath& toolpath, const SceneOption
 }
 
 namespace {
+
+// ---- 4. what the scene holds --------------------------------------------------------------------
 
 /// The findings' markers (errors and warnings, notes when asked) with their labels; which moves
 /// have an error or a warning (their surface is tinted).
@@ -445,6 +456,8 @@ void setBounds(Scene& scene) {
 }
 
 }  // namespace
+
+// ---- 5. building the scene ----------------------------------------------------------------------
 
 Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter::Diagnostic> findings,
                  const SceneOptions& options, std::span<const geometry::Segment> reference) {

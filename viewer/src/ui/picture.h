@@ -29,9 +29,8 @@ struct PictureResult {
 
 /// Multisampling for a picture: 4x, unless most triangles are smaller than a pixel: the triangles
 /// outnumber half the pixels, or they outnumber an eighth of them and (given the pixel's size,
-/// mm) the surface's mean triangle covers less than 2x2 pixels. Then 4x costs about twice the time under llvmpipe
-/// (measured: 1e6 triangles at 1024x768, 1.14 s against 0.55 s; 250,000 sliver triangles, 0.85 s against 0.29 s) and
-/// the surface gains little from it.
+/// mm) the surface's mean triangle covers less than 2x2 pixels: there 4x costs about twice the time
+/// under llvmpipe (docs/performance.md) and the surface gains little from it.
 int autoSamples(const render::Scene& scene, int width, int height, double mmPerPixel = 0.0);
 
 PictureResult renderPicture(const render::Scene& scene, const PictureRequest& request);

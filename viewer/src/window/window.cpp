@@ -1,4 +1,6 @@
-// Index: GL loading through GLFW; the window's state; picking; panels; the frame loop.
+// The interactive window (window.h): GLFW and Dear ImGui, the program text beside the part.
+// Sections: 1. GL loading through GLFW and the window's state  2. picking  3. panels  4. opening the window
+//           5. the frame loop
 #include "window/window.h"
 
 #include "cli/file_io.h"
@@ -30,6 +32,8 @@ namespace {
 using geometry::Vec2;
 using geometry::Vec3;
 
+// ---- 1. GL loading through GLFW and the window's state ------------------------------------------
+
 void* glfwLoader(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
 
 std::string glfwMessage;
@@ -48,7 +52,7 @@ constexpr float kTextPanel = 0.30f;
 // Above this many triangles the view is drawn from a coarse scene while it moves (orbit, pan, zoom,
 // playback): a surface within half a pixel of the exact one at the fitted zoom, no forced pieces,
 // and runs of moves that stay within half a pixel of their chord drawn as one patch.
-constexpr std::size_t kCoarseAbove = 250'000;  // of the window's width
+constexpr std::size_t kCoarseAbove = 250'000;  // triangles of the exact scene
 constexpr float kSidePanel = 290.0f;           // pixels
 
 struct State {
@@ -72,6 +76,8 @@ struct State {
   bool frameConstruction = false;                  // stepped with the keyboard: the view frames the next one
   const converter::Construction* block = nullptr;  // the selected block's, for the block panel
 };
+
+// ---- 2. picking ---------------------------------------------------------------------------------
 
 /// Points along the cut path at the step, and their worst deviation (the seed's experiment).
 geometry::PathSampleStats stepStatistics(const converter::Toolpath& toolpath, double step) {
@@ -124,7 +130,7 @@ void selectMove(State& s, std::size_t move) {
   s.scrollText = true;
 }
 
-// ---- panels ---------------------------------------------------------------------------------
+// ---- 3. panels ----------------------------------------------------------------------------------
 
 void textPanel(State& s, float width, float height) {
   const converter::SourceFile& src = *s.request->source;
@@ -197,10 +203,7 @@ void passList(State& s) {
         s.followPlayback = false;
       }
       if (ImGui::IsItemHovered()) {
-        const std::string more = std::string(p.side == converter::WireOffset::Left    ? "G41"
-                                             : p.side == converter::WireOffset::Right ? "G42"
-                                                                                      : "no offset") +
-                                 ", " + converter::directionName(p.direction) + ", " +
+        const std::string more = converter::offsetText(p) + ", " + converter::directionName(p.direction) + ", " +
                                  (p.closes   ? "closes"
                                   : p.cutOff ? "cuts off the tab"
                                              : "leaves a tab") +
@@ -365,6 +368,8 @@ void sidePanel(State& s, float x, float width, float height, bool& screenshot) {
   ImGui::End();
 }
 
+// ---- 4. opening the window ----------------------------------------------------------------------
+
 /// Opens the window with an OpenGL 3.3 core context, made current; null with the reason in error.
 GLFWwindow* openWindow(const WindowRequest& request, std::string& error) {
   glfwSetErrorCallback(&onGlfwError);
@@ -442,6 +447,8 @@ struct Layout {
   float textW = 0, sideW = 0;
   int viewX = 0, viewW = 0, viewH = 0;
 };
+
+// ---- 5. the frame loop --------------------------------------------------------------------------
 
 /// The frame loop's resources and what one frame keeps for the next.
 class FrameLoop {

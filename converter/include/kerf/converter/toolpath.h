@@ -44,8 +44,8 @@ enum class OffsetRole : std::uint8_t {
 enum ModeBit : std::uint8_t { kModeIncremental = 1, kModeInch = 2 };
 
 struct Move {
-  // A program holds one move per block, so the move is 96 bytes (it took 192, then 160, then 128).
-  // The small fields sit in the segment's tail padding (a [[no_unique_address]] member's padding
+  // A program holds one move per block, so the move is kept small (the static_assert below). The
+  // small fields sit in the segment's tail padding (a [[no_unique_address]] member's padding
   // may hold the members after it); what only some programs or commands need lives beside the
   // moves in the Toolpath: the upper contour, the taper angle, the centre as written, the feeds.
   // What can be computed from the segment (the arc's radius error) is computed, not stored.
@@ -79,6 +79,13 @@ enum class ArcCentreMode : std::uint8_t {
   Reversed,     ///< start - centre (some Agie/Charmilles/Mitsubishi posts)
   Absolute,     ///< the centre itself (Charmilles Robofil)
 };
+
+/// The I J convention an arc's centre was given in (Incremental for a form that is not I J).
+constexpr ArcCentreMode arcCentreOf(CentreForm f) {
+  return f == CentreForm::Reversed   ? ArcCentreMode::Reversed
+         : f == CentreForm::Absolute ? ArcCentreMode::Absolute
+                                     : ArcCentreMode::Incremental;
+}
 
 /// How a program gives its upper contour (docs/taper.md). Plain programs have none: the wire is
 /// vertical.
@@ -127,8 +134,40 @@ struct OffsetSpan {
   bool cancelled = false;       ///< its last move is the G40 line that leaves the offset
 };
 
-struct Toolpath {
+/// One move with its entry in every table indexed by move (MoveTables): what Toolpath::rowOf reads
+/// and Toolpath::replaceMoves writes. An entry of a table the toolpath does not keep is ignored.
+struct MoveRow {
+  Move move;
+  geometry::Segment upper;       ///< the upper plane's segment (a taper program's)
+  geometry::Segment programmed;  ///< the programmed segment (where the wire offset was applied)
+  OffsetRole offsetRole = OffsetRole::None;
+  float taperDegrees = 0.0F;         ///< the taper-angle dialect's angle in force, degrees
+  geometry::Vec2 centreWords{0, 0};  ///< I J or R as written (InterpreterOptions::recordCentreWords)
+};
+
+/// The tables indexed by move: `moves`, and each of the others either empty (not kept for this
+/// program) or holding one entry per move. A table indexed by move is a member here and has its
+/// MoveRow field, so that the one operation that rebuilds the moves (Toolpath::replaceMoves)
+/// keeps them all aligned; toolpath.cpp asserts the count and toolpath_test checks the alignment.
+struct MoveTables {
   MoveList moves;
+  /// The upper contour, one segment per move, or empty for a plain program.
+  std::vector<geometry::Segment> upper;
+  /// Where G41/G42 were applied (a program whose offset value is known): per move, what the move
+  /// is for the offset and the programmed segment it came from (the wire-centre path is in
+  /// moves). Empty when no offset was applied.
+  std::vector<OffsetRole> offsetRole;
+  std::vector<geometry::Segment> programmed;
+  /// The taper-angle dialect: per move, the angle in force in degrees, > 0 leaning left (G51);
+  /// empty for other dialects.
+  std::vector<float> taperDegrees;
+  /// How each arc's centre was programmed (for `kerf explain`), per move, in mm: I J (or 3B's x y)
+  /// as written when centreForm is Incremental, Reversed or Absolute; the signed R in x when it is
+  /// Radius. Kept only when asked for (InterpreterOptions::recordCentreWords): empty otherwise.
+  std::vector<geometry::Vec2> centreWords;
+};
+
+struct Toolpath : MoveTables {
   InputFormat format = InputFormat::Iso;
   std::size_t blocks = 0;  ///< blocks (ISO) or records (3B) read
   Reading reading;
@@ -149,15 +188,8 @@ struct Toolpath {
   std::vector<ConditionChange> conditions;
 
   Dialect dialect = Dialect::Plain;
-  /// The upper contour, one segment per move (same index), or empty for a plain program.
-  std::vector<geometry::Segment> upper;
   PlaneHeights heights;
 
-  /// Where G41/G42 were applied (a plain program whose offset value is known): per move, what the
-  /// move is for the offset and the programmed segment it came from (the wire-centre path is in
-  /// moves). Empty when no offset was applied.
-  std::vector<OffsetRole> offsetRole;
-  std::vector<geometry::Segment> programmed;
   std::vector<OffsetSpan> offsetSpans;  ///< every G41/G42 run, in order (applied or not)
 
   /// A corner rounded or chamfered at a block's end (`,R r`, `,C c`, NCVC's bare R): the move the
@@ -174,14 +206,6 @@ struct Toolpath {
 
   /// The feeds programmed, in the order they came into force (Move::feedIndex counts from 1), mm/min.
   std::vector<double> feeds;
-  /// The taper-angle dialect: per move (same index), the angle in force in degrees, > 0 leaning
-  /// left (G51); empty for other dialects.
-  std::vector<float> taperDegrees;
-  /// How each arc's centre was programmed (for `kerf explain`), per move (same index), in mm: I J
-  /// (or 3B's x y) as written when centreForm is Incremental, Reversed or Absolute; the signed R in
-  /// x when it is Radius. Kept only when asked for (InterpreterOptions::recordCentreWords): empty
-  /// otherwise.
-  std::vector<geometry::Vec2> centreWords;
 
   /// The Move::feedIndex that gives `mmPerMinute` (0 for none, <= 0): the last entry of feeds when
   /// it holds the same value, else a new one.
@@ -208,14 +232,22 @@ struct Toolpath {
     return i < centreWords.size() && moves[i].centreForm == CentreForm::Radius ? centreWords[i].x() : 0.0;
   }
 
-  /// Renumbers the lists that name moves by number (stops, conditions, offsetSpans, corners) after the
-  /// moves were rebuilt: newIndex[i] is the new number of old move i, newIndex[old count] the new
-  /// count (newIndex has one entry more than the old moves; an old move that became none maps
-  /// where the next one does). A stop that lands on the one before it is dropped, an offset span
-  /// that had moves and has none left, and a corner whose move became none. The tables indexed by move
-  /// are the caller's to rebuild with the moves.
+  /// Move i with its entry in every table (a table not kept gives the move's own segment for
+  /// upper and programmed, OffsetRole::None, 0 and (0, 0)).
+  [[nodiscard]] MoveRow rowOf(std::size_t i) const;
+  /// Replaces the moves and every table indexed by move with `rows`, and renumbers the lists that
+  /// name moves (stops, conditions, offsetSpans, corners): newIndex[i] is the new number of old move
+  /// i, newIndex[old count] the new count (an old move that became none maps where the next one
+  /// does). A stop that lands on the one before it is dropped, an offset span that had moves and has
+  /// none left, and a corner whose move became none. A table is kept when it was (the offset
+  /// tables also when `offsetApplied`); the others stay empty.
+  void replaceMoves(std::vector<MoveRow>&& rows, const std::vector<std::uint32_t>& newIndex,
+                    bool offsetApplied = false);
+
+ private:
   void renumberMoveLists(const std::vector<std::uint32_t>& newIndex);
 
+ public:
   [[nodiscard]] bool isTaper() const { return !upper.empty(); }
   /// The upper segment of move i: the lower one where the wire is vertical.
   [[nodiscard]] const geometry::Segment& upperOf(std::size_t i) const {

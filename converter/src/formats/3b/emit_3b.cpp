@@ -24,7 +24,8 @@ using three_b::Axis;
 std::optional<std::vector<std::size_t>> moveOrder(const Toolpath& toolpath, const SourceFile* source,
                                                   std::optional<std::uint32_t> startLine, Diagnostics& diags) {
   if (std::none_of(toolpath.moves.begin(), toolpath.moves.end(), [](const Move& m) { return m.isCut(); })) {
-    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
+    diags.error(Code::NothingToWrite, source, SourceSpan::wholeFile(),
+                "nothing to write: the program has no cutting move");
     return std::nullopt;
   }
   std::vector<std::size_t> order;

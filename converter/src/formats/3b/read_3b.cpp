@@ -95,7 +95,7 @@ class ThreeBReader {
         break;
       }
       if (c == 'D') {  // a single D: the machine stops here (no motion)
-        diags_.note(Code::WordIgnored, &src_, span(i, i + 1),
+        diags_.note(Code::MachineCode, &src_, span(i, i + 1),
                     "D: the machine stops here (a pause, as M00); it moves nothing");
         ++i;
         continue;

@@ -3,6 +3,8 @@
 // a biarc fit makes cost little. The library is loaded when a curve is first read, through its C
 // interface (muParserDLL.h): linked, it and the OpenMP runtime it needs would be loaded by every run
 // of kerf.
+// Sections: 1. expressions (muparser)  2. the drawing and its fit  3. point lists  4. parametric curves
+//           5. reading a curve
 #include "kerf/converter/formats/curve/read_curve.h"
 
 #include "kerf/converter/nc/number_format.h"
@@ -32,6 +34,8 @@ struct Statement {
   std::uint32_t offset = 0;  ///< of its first non-blank character
   std::string_view text;     ///< trimmed, comment removed
 };
+
+// ---- 1. expressions (muparser) ------------------------------------------------------------------
 
 /// The statements of the text, or with `first`, at most the first one (what detection reads: a
 /// program of megabytes is not split whole to look at its head).
@@ -198,6 +202,8 @@ double eval(Expression& e) {
   return mu.error(e.handle) ? std::nan("") : v;
 }
 
+// ---- 2. the drawing and its fit -----------------------------------------------------------------
+
 void fillDrawing(Drawing& d, const geometry::BiarcFit& fit, const char* entity, SourceSpan span, std::uint32_t line) {
   d.entities[entity] = 1;
   for (const geometry::Segment& s : fit.segments) {
@@ -249,6 +255,8 @@ bool reportFit(const geometry::BiarcFit& fit, const CurveOptions& o, const Sourc
 }
 
 }  // namespace
+
+// ---- 3. point lists -----------------------------------------------------------------------------
 
 bool looksLikeCurve(std::string_view text) {
   for (const Statement& s : statements(text, true)) {
@@ -317,6 +325,8 @@ void readPointList(const SourceFile& src, const std::vector<Statement>& st, cons
 struct CurveStatements {
   const Statement *x = nullptr, *y = nullptr, *t = nullptr;
 };
+
+// ---- 4. parametric curves -----------------------------------------------------------------------
 
 /// x = ..., y = ... and t = ... among the statements, each once; nothing after saying what is
 /// wrong or missing.
@@ -443,6 +453,8 @@ void readParametric(const SourceFile& src, const std::vector<Statement>& st, con
 }
 
 }  // namespace
+
+// ---- 5. reading a curve -------------------------------------------------------------------------
 
 Drawing readCurve(const SourceFile& src, const CurveOptions& o, Diagnostics& diags) {
   Drawing d;

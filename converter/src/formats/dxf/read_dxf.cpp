@@ -3,6 +3,9 @@
 // 2-byte little-endian group code — 1 byte in R12, 255 escaping a 2-byte one — then the value:
 // strings NUL-terminated, floats 8 bytes, integers 2, 4 or 8 bytes, booleans 1 byte, binary
 // chunks a length byte and the bytes).
+// Sections: 1. group codes and tags, ASCII and binary  2. entities as read
+//           3. sections: header, blocks, entities  4. budgets and ranges
+//           5. elements: lines, arcs, polylines, curves  6. inserts  7. detection and the entry point
 #include "kerf/converter/formats/dxf/read_dxf.h"
 
 #include "kerf/converter/nc/number_format.h"
@@ -30,6 +33,8 @@ using geometry::Segment;
 using geometry::Vec2;
 
 enum class ValueType { String, Double, Int16, Int32, Int64, Bool, Binary };
+
+// ---- 1. group codes and tags, ASCII and binary --------------------------------------------------
 
 ValueType typeOf(int code) {
   if ((code >= 10 && code <= 59) || (code >= 110 && code <= 149) || (code >= 210 && code <= 239) ||
@@ -227,6 +232,8 @@ class TagReader {
   Diagnostics& diags_;
 };
 
+// ---- 2. entities as read ------------------------------------------------------------------------
+
 /// One entity: its type, its own tags, and (POLYLINE) its VERTEX entities.
 struct Entity {
   std::string_view type;
@@ -315,6 +322,8 @@ std::optional<Affine> ocsOf(const Entity& e, bool& tilted) {
   tilted = true;
   return std::nullopt;
 }
+
+// ---- 3. sections: header, blocks, entities ------------------------------------------------------
 
 class DrawingReader {
  public:
@@ -490,6 +499,8 @@ class DrawingReader {
     drawing_.unitToMm = scale_;
   }
 
+  // ---- 4. budgets and ranges --------------------------------------------------------------------
+
   /// A warning at the entity (binary: its byte offset in the message, there being no line).
   void warn(const Entity& e, const std::string& what) {
     diags_.warning(Code::DxfEntity, &src_, binary_ ? SourceSpan::wholeFile() : e.span,
@@ -544,6 +555,8 @@ class DrawingReader {
     overBudget_ = true;
     return false;
   }
+
+  // ---- 5. elements: lines, arcs, polylines, curves ----------------------------------------------
 
   void add(const Entity& e, const std::string& layer, const Segment& s) {
     if (!inRange(s.start) || !inRange(s.end) ||
@@ -872,6 +885,8 @@ class DrawingReader {
     }
   }
 
+  // ---- 6. inserts -------------------------------------------------------------------------------
+
   void insert(const Entity& e, const Affine& a, int depth) {
     const std::string name(e.text(2));
     const auto it = blocks_.find(name);
@@ -931,6 +946,8 @@ class DrawingReader {
 };
 
 }  // namespace
+
+// ---- 7. detection and the entry point -----------------------------------------------------------
 
 bool looksLikeDxf(std::string_view text) {
   if (text.substr(0, kBinaryDxfSentinel.size()) == kBinaryDxfSentinel) return true;

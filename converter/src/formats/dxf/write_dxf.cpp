@@ -1,6 +1,7 @@
 // DXF writer (write_dxf.h). Group codes and the R2000 object structure follow Autodesk's DXF
 // Reference (the R12 and AutoCAD 2000 editions): symbol tables own their records by handle (330),
 // entities are owned by the *Model_Space block record, and the root dictionary opens OBJECTS.
+// Sections: 1. versions and layers  2. numbers and groups  3. entities  4. the file
 #include "kerf/converter/formats/dxf/write_dxf.h"
 
 #include "kerf/geometry/vec.h"
@@ -14,6 +15,8 @@
 #include <vector>
 
 namespace kerf::converter {
+
+// ---- 1. versions and layers ---------------------------------------------------------------------
 
 std::optional<DxfVersion> dxfVersionNamed(std::string_view name) {
   std::string n(name);
@@ -57,6 +60,8 @@ struct Item {
   double z = 0.0;
   int layer = kLower;
 };
+
+// ---- 2. numbers and groups ----------------------------------------------------------------------
 
 /// A real number as DXF text: fixed notation (no exponent, which some readers refuse), trailing
 /// zeros trimmed, at least one decimal, no "-0".
@@ -169,6 +174,8 @@ void entityHead(Out& o, const char* type, const std::string& owner, const std::s
   if (o.handles()) o.g(100, subclass);
 }
 
+// ---- 3. entities --------------------------------------------------------------------------------
+
 void writeItem(Out& o, const Item& it, const std::vector<Layer>& layers, const std::string& owner,
                DxfWriteCounts& counts) {
   const geometry::Segment& s = it.segment;
@@ -266,6 +273,8 @@ void extents(Out& o, const std::vector<Item>& items) {
 struct BlockRecords {
   std::string model, paper;
 };
+
+// ---- 4. the file --------------------------------------------------------------------------------
 
 /// The TABLES section: viewport, line types, the layers, and (R2000) the tables AutoCAD requires.
 BlockRecords writeTables(Out& body, const std::vector<Layer>& layerList, bool r2000) {

@@ -2,6 +2,7 @@
 // in the conventions of the target machine's profile (units, arc centres, block and line ends,
 // the 4-axis dialect of a taper program).
 #include "kerf/converter/formats/emit.h"
+#include "kerf/converter/interpret/machine.h"
 #include "kerf/converter/nc/number_format.h"
 
 #include <algorithm>
@@ -92,7 +93,7 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
                                    Diagnostics& diags) {
   const MachineProfile& target = request.target ? *request.target : *findBuiltinMachine("generic");
   if (toolpath.moves.empty()) {
-    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no move");
+    diags.error(Code::NothingToWrite, source, SourceSpan::wholeFile(), "nothing to write: the program has no move");
     return std::nullopt;
   }
   const int decimals = request.decimals.value_or(target.writeDecimals);
@@ -132,13 +133,12 @@ std::optional<EmitOutput> writeIso(const Toolpath& toolpath, const SourceFile* s
     else
       for (const std::string& b : target.writeCancel) w.block(expand(b, "G40", start));
   };
+  const ArcCentreMode centres = target.arcCentre.value_or(ArcCentreMode::Incremental);
   if (target.writeComment)
     w.comment(std::string("written by Kerf for the ") + target.name + " machine from " +
               (source ? source->name() : std::string("a program")) + ": absolute, " +
               (target.writeMicrometres ? "micrometre integers" : "mm") + ", I J " +
-              (target.arcCentre == ArcCentreMode::Absolute   ? "absolute"
-               : target.arcCentre == ArcCentreMode::Reversed ? "start minus centre"
-                                                             : "incremental") +
+              (centres == ArcCentreMode::Reversed ? arcCentreMeaning(centres) : arcCentreName(centres)) +
               (taper ? std::string(", upper contour as ") + dialectName(colon ? Dialect::SodickColon : Dialect::XyuvAbs)
                      : std::string()));
   if (taper) {

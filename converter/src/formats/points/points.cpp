@@ -185,7 +185,8 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
                                       const PointRequest& request, Diagnostics& diags) {
   CutPath path = cutPath(toolpath);
   if (path.segments.empty()) {
-    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
+    diags.error(Code::NothingToWrite, source, SourceSpan::wholeFile(),
+                "nothing to write: the program has no cutting move");
     return std::nullopt;
   }
   if (request.startLine && !startCutPathAt(toolpath, path, *request.startLine, source, diags)) return std::nullopt;
@@ -228,7 +229,7 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
 std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFile* source, const PointProfile& profile,
                                        const PointRequest& request, bool relativeUv, Diagnostics& diags) {
   if (!toolpath.isTaper()) {
-    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(),
+    diags.error(Code::OptionDoesNotFit, source, SourceSpan::wholeFile(),
                 "points4 writes both planes, and this program has no upper contour", "use --to bp95d");
     return std::nullopt;
   }
@@ -274,7 +275,8 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
     }
   }
   if (planned == 0) {
-    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no cutting move");
+    diags.error(Code::NothingToWrite, source, SourceSpan::wholeFile(),
+                "nothing to write: the program has no cutting move");
     return std::nullopt;
   }
   const std::optional<std::size_t> capacity = request.maxPoints ? request.maxPoints : profile.maxPoints;

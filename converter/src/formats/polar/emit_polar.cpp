@@ -338,7 +338,7 @@ bool writeInOrder(const Toolpath& toolpath, const SourceMoves* s, PolarState& st
 std::optional<EmitOutput> writePolar(const Toolpath& toolpath, const SourceFile* source, const EmitRequest& request,
                                      Diagnostics& diags) {
   if (toolpath.moves.empty()) {
-    diags.error(Code::NothingCut, source, SourceSpan::wholeFile(), "nothing to write: the program has no move");
+    diags.error(Code::NothingToWrite, source, SourceSpan::wholeFile(), "nothing to write: the program has no move");
     return std::nullopt;
   }
   PolarState st(request);

@@ -11,9 +11,8 @@ namespace kerf::geometry {
 /// std::nextafter(f, -infinity) gives it (+infinity gives the largest finite float; f is not
 /// -infinity or NaN). By the bits, since floats of one sign are ordered as their bits are: a
 /// positive f steps down by one, a negative one up by one, either zero goes to the least negative
-/// float. Without a branch: which way a coordinate's rounding to a float went follows no pattern,
-/// and with the branches mispredicted, rounding a box outwards took 53 ns, against 15 without
-/// (200,000 lines and arcs; the segment's own box takes 14).
+/// float. Without a branch, because which way a coordinate's rounding to a float went follows no
+/// pattern, so a branch on it is mispredicted (docs/performance.md measures the difference).
 inline float floatStepDownIf(float f, std::uint32_t step) {
   const auto bits = std::bit_cast<std::uint32_t>(f);
   const std::uint32_t stepped = bits - step + 2 * step * (bits >> 31);

@@ -30,7 +30,7 @@ struct Segment {
   double radius = 0.0;
   double startAngle = 0.0;               ///< angle of start about centre
   double sweep = 0.0;                    ///< signed: > 0 counter-clockwise, < 0 clockwise; |sweep| <= 2 pi
-  SegmentKind kind = SegmentKind::Line;  ///< last: 80 bytes, not the 96 it took first
+  SegmentKind kind = SegmentKind::Line;  ///< last, so that Move's fields fit in the padding after it
 
   /// A straight line from a to b.
   static Segment line(const Vec2& a, const Vec2& b);

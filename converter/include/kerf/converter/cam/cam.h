@@ -44,8 +44,8 @@ inline WireSide sideAtDepth(WireSide outermost, int depth) {
 /// The wire path at `radius` on `side` of a closed contour (either direction of travel).
 ContourWire offsetContour(std::span<const geometry::Segment> contour, double radius, WireSide side);
 
-/// Diagnostics for a contour's wire path: elements the wire cannot reach (K0126), inside corners
-/// smaller than the wire (K0127), a path that splits or vanishes (K0128), a refusal (K0129).
+/// Diagnostics for a contour's wire path: elements the wire cannot reach (K0902), inside corners
+/// smaller than the wire (K0903), a path that splits or vanishes (K0904), a refusal (K0905).
 /// `number` is the contour's 1-based number in the drawing.
 void reportContourWire(const ContourWire& wire, std::size_t number, const DrawingResult& drawing,
                        const geometry::Chain& chain, double radius, const SourceFile* source, Diagnostics& diags);

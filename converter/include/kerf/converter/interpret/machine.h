@@ -25,6 +25,10 @@ namespace kerf::converter {
 
 const char* integerUnitName(IntegerUnit u);  ///< "mm", "um"
 const char* arcCentreName(ArcCentreMode m);  ///< "incremental", "reversed", "absolute"
+/// What I J are under a convention: "centre minus start", "start minus centre", "the centre itself".
+const char* arcCentreMeaning(ArcCentreMode m);
+/// The centre I J give: "centre = start + (I, J)", "centre = start - (I, J)", "centre = (I, J)".
+const char* arcCentreRule(ArcCentreMode m);
 std::optional<ArcCentreMode> parseArcCentre(std::string_view name);
 
 /// What a code the profile knows does on that machine.

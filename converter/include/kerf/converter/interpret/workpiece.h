@@ -16,7 +16,7 @@ namespace kerf::converter {
 /// line; arcs with the same sweep), else the move is split at common t into lines on both faces
 /// within `tolerance` (mm), so that each move stays one position-paired patch. The program's planes
 /// become the guides (unless guides are already known). The tables that name moves follow
-/// (Toolpath::renumberMoveLists). False, with an error in diags and the toolpath unchanged, for a
+/// (Toolpath::replaceMoves). False, with an error in diags and the toolpath unchanged, for a
 /// program with no upper contour or unknown heights, faces not in order, or more than maxMoves moves.
 bool cutBetweenFaces(Toolpath& toolpath, double z0, double z1, double tolerance, std::size_t maxMoves,
                      const SourceFile* source, Diagnostics& diags);

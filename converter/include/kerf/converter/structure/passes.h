@@ -100,5 +100,8 @@ std::optional<Toolpath> toolpathOfPass(const Toolpath& toolpath, const Structure
 
 /// "counter-clockwise", "clockwise" or "neither".
 const char* directionName(int direction);
+/// A pass's offset as every output says it: "G41 H001 = 0.180 mm", "G41 = 0.150 mm" (a value with
+/// no register), "G42 (offset at the machine)", "no offset".
+std::string offsetText(const Pass& p);
 
 }  // namespace kerf::converter

@@ -79,15 +79,20 @@ void summarizeInto(Pipeline& out, const PipelineOptions& options) {
   out.summary->comparisonUpper = out.comparisonUpper;
 }
 
+/// How a DXF is read under the options: its unit, its curves' tolerance, its budget.
+DxfOptions dxfOptionsOf(const ReadOptions& ro) {
+  DxfOptions o;
+  if (ro.dxfUnit) o.unitToMm = *ro.dxfUnit;
+  o.curveTolerance = ro.curveTolerance;
+  o.maxElements = ro.maxMoves;
+  return o;
+}
+
 /// One plane's drawing: the DXF read (in mm, its own findings at its lines), the layer asked for
 /// kept, and the part edge on that plane held against it. Nothing when there is nothing to compare.
 std::optional<DrawingComparison> compareOnePlane(Pipeline& out, const PipelineOptions& options,
                                                  const SourceFile& source, const std::string& layer, bool upper) {
-  DxfOptions dxf;
-  if (options.read.dxfUnit) dxf.unitToMm = *options.read.dxfUnit;
-  dxf.curveTolerance = options.read.curveTolerance;
-  dxf.maxElements = options.read.maxMoves;
-  const Drawing drawing = readDxf(source, dxf, out.diags);
+  const Drawing drawing = readDxf(source, dxfOptionsOf(options.read), out.diags);
   if (!drawing.ok) return std::nullopt;
   std::vector<DrawnElement> drawn;
   drawn.reserve(drawing.elements.size());
@@ -173,10 +178,9 @@ void reportEmptyDrawing(Pipeline& out, const Drawing& drawing) {
                       (skipped.empty() ? std::string() : " (it holds " + skipped + ")"));
 }
 
-/// 3B: no machine conventions to choose; the reader gives the Toolpath, an upper file of its own
-/// (3B or ISO) pairs with it.
-/// A drawing: read, chained into contours, and walked as a toolpath (a rapid to each contour's
-/// start, then its elements) so that summary, explain, pictures and export show it. The wire-path
+/// A drawing: read, chained into contours, and walked as a toolpath (drawingToolpath: a rapid to
+/// each contour's start, then its elements or its wire path) so that summary, explain, pictures and
+/// export show it. The wire-path
 /// checks are not run: a drawing is not a program (kerf cam makes one from it).
 void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
   const ReadOptions& ro = options.read;
@@ -187,11 +191,7 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
     o.maxSpans = ro.maxMoves;
     result.drawing = readCurve(*out.source, o, out.diags);
   } else {
-    DxfOptions o;
-    if (ro.dxfUnit) o.unitToMm = *ro.dxfUnit;
-    o.curveTolerance = ro.curveTolerance;
-    o.maxElements = ro.maxMoves;
-    result.drawing = readDxf(*out.source, o, out.diags);
+    result.drawing = readDxf(*out.source, dxfOptionsOf(ro), out.diags);
   }
   if (result.drawing.elements.empty() && !out.diags.hasErrors()) reportEmptyDrawing(out, result.drawing);
   std::vector<geometry::Segment> segments;
@@ -201,75 +201,26 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
   co.tolerance = ro.chainTolerance;
   result.contours = geometry::chainSegments(segments, co);
   // With --offset and --side: the wire path of every closed contour (holes inside others on the
-  // other side, as kerf cam cuts them).
+  // other side), and the drawing as a toolpath in the order kerf cam cuts it (cam.h).
   const bool wired = ro.wireOffset && ro.side && *ro.wireOffset > 0;
-  if (wired) {
-    out.wires.resize(result.contours.size());
-    const std::vector<int> depth = geometry::nestingDepths(result.contours);
-    for (std::size_t c = 0; c < result.contours.size(); ++c) {
-      const geometry::Chain& chain = result.contours[c];
-      if (!chain.closed) continue;
-      const WireSide side = sideAtDepth(*ro.side, depth[c]);
-      out.wires[c] = offsetContour(chain.path, *ro.wireOffset, side);
-      reportContourWire(out.wires[c], c + 1, result, chain, *ro.wireOffset, out.source.get(), out.diags);
-    }
-  }
+  if (wired) out.wires = drawingWires(result, *ro.wireOffset, *ro.side, out.source.get(), out.diags);
+  out.toolpath = drawingToolpath(result, wired ? &out.wires : nullptr);
   Toolpath& path = out.toolpath;
   path.format = out.format;
   path.reading.machine = out.machine.name;
   path.blocks = result.drawing.elements.size();
-  geometry::Vec2 at(0, 0);
-  // A rapid to where the next path starts (the first path starts there), then its cuts, each with
-  // the drawing entity it comes from.
-  auto travelTo = [&](const geometry::Vec2& p, const DrawingElement& from) {
-    if (path.moves.empty()) {
-      path.start = p;
-      at = p;
-    }
-    if ((p - at).norm() <= 1e-12) return;
-    Move rapid;
-    rapid.kind = MoveKind::Rapid;
-    rapid.lower = geometry::Segment::line(at, p);
-    rapid.line = from.where;
-    rapid.span = from.span;
-    path.moves.push_back(rapid);
-  };
-  auto cut = [&](const geometry::Segment& s, const DrawingElement& from) {
-    Move m;
-    m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
-    m.lower = s;
-    m.line = from.where;
-    m.span = from.span;
-    path.moves.push_back(m);
-    at = s.end;
-  };
-  for (std::size_t ci = 0; ci < result.contours.size(); ++ci) {
-    const geometry::Chain& c = result.contours[ci];
-    const DrawingElement& first = result.drawing.elements[c.elements.front()];
-    if (wired && c.closed) {  // the wire path instead of the contour
-      for (const auto& loop : out.wires[ci].loops) {
-        if (loop.empty()) continue;
-        travelTo(loop.front().segment.start, first);
-        for (const geometry::WirePiece& piece : loop)
-          cut(piece.segment, result.drawing.elements[c.elements[piece.element]]);
-      }
-      continue;
-    }
-    travelTo(c.path.front().start, first);
-    for (std::size_t k = 0; k < c.elements.size(); ++k) cut(c.path[k], result.drawing.elements[c.elements[k]]);
-    if (!c.closed) {
-      const DrawingElement& last = result.drawing.elements[c.elements.back()];
-      const geometry::Vec2 a = c.path.front().start, b = c.path.back().end;
-      out.diags.warning(Code::ContourOpen, out.source.get(), last.span.length ? last.span : SourceSpan::wholeFile(),
-                        "a chain of " + std::to_string(c.elements.size()) + " element" +
-                            (c.elements.size() == 1 ? "" : "s") + " does not close: its ends (" +
-                            formatFixed(a.x(), 3) + ", " + formatFixed(a.y(), 3) + ") and (" + formatFixed(b.x(), 3) +
-                            ", " + formatFixed(b.y(), 3) + ") are " + formatFixed(c.gap, 4) + " mm apart",
-                        "ends closer than --chain-tolerance (" + formatFixed(ro.chainTolerance, 4) +
-                            " mm) are joined; a contour to cut must close");
-    }
+  for (const geometry::Chain& c : result.contours) {
+    if (c.closed) continue;
+    const DrawingElement& last = result.drawing.elements[c.elements.back()];
+    const geometry::Vec2 a = c.path.front().start, b = c.path.back().end;
+    out.diags.warning(Code::ContourOpen, out.source.get(), last.span.length ? last.span : SourceSpan::wholeFile(),
+                      "a chain of " + std::to_string(c.elements.size()) + " element" +
+                          (c.elements.size() == 1 ? "" : "s") + " does not close: its ends (" + formatFixed(a.x(), 3) +
+                          ", " + formatFixed(a.y(), 3) + ") and (" + formatFixed(b.x(), 3) + ", " +
+                          formatFixed(b.y(), 3) + ") are " + formatFixed(c.gap, 4) + " mm apart",
+                      "ends closer than --chain-tolerance (" + formatFixed(ro.chainTolerance, 4) +
+                          " mm) are joined; a contour to cut must close");
   }
-  path.endedProperly = true;
   out.drawing = std::move(result);
   out.structure = findStructure(path, out.checkOptions.tolerance);
   summarizeInto(out, options);
@@ -360,7 +311,7 @@ Interpretation interpretForMachine(const Program& program, const MachineProfile&
   if (!centreFixed) {
     if (const std::optional<ArcCentreMode> better = betterCentre(in.arcs, io.arcCentre)) {
       io.arcCentre = *better;
-      diags = Diagnostics(100000);
+      diags = Diagnostics(kAllDiagnostics);
       in = interpretProgram(program, io, diags);
       evidence.push_back(centreEvidence(in.arcs, *better));
     }
@@ -417,7 +368,7 @@ struct LowerReading {
 Toolpath readUpperProgram(Pipeline& out, SourceText upper, const PipelineOptions& options, const OffsetTable& offsets,
                           const LowerReading* lower) {
   out.upperSource = std::make_unique<SourceFile>(std::move(upper.name), std::move(upper.text));
-  Diagnostics upperDiags(100000);
+  Diagnostics upperDiags(kAllDiagnostics);
   Toolpath upperPath;
   if (detectFormat(out.upperSource->text()).format == InputFormat::ThreeB) {
     ThreeBOptions tb;
@@ -516,7 +467,7 @@ Pipeline runPipeline(SourceText input, const PipelineOptions& options, std::opti
   // 3. The conventions, then the program interpreted with them.
   std::vector<std::string> evidence;
   InterpreterOptions io = interpreterOptions(out.machine, options, *offsets, program, upper.has_value(), evidence);
-  Diagnostics interpretDiags(100000);
+  Diagnostics interpretDiags(kAllDiagnostics);
   Interpretation in = interpretForMachine(program, out.machine, ro, io, interpretDiags, evidence);
   out.toolpath = std::move(in.toolpath);
   out.diags.append(std::move(reading.diags));

@@ -53,11 +53,12 @@ foreach(i RANGE ${last_role})
     forbid_includes("${role_files}" "kerf/converter/pipeline\\.h" "converter/${role}")
   endif()
 endforeach()
-# The sources of the two top-level headers (pipeline.h, and toolpath.h, which every role shares)
-# stand at the top; every other source in its role's folder.
+# The sources of the top-level headers stand at the top: pipeline.h, convert.h (convert and cam on
+# the pipeline's result, as the commands run them) and toolpath.h, which every role shares; every
+# other source in its role's folder.
 file(GLOB top_sources "${SOURCE}/converter/src/*")
 foreach(f IN LISTS top_sources)
-  if(NOT IS_DIRECTORY "${f}" AND NOT f MATCHES "/(pipeline|toolpath)\\.cpp$")
+  if(NOT IS_DIRECTORY "${f}" AND NOT f MATCHES "/(pipeline|convert|toolpath)\\.cpp$")
     string(APPEND problems "${f}: a converter source belongs in its role's folder (${converter_roles})\n")
   endif()
 endforeach()

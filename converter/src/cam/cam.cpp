@@ -169,39 +169,51 @@ std::optional<std::vector<std::size_t>> chooseContours(const std::vector<geometr
   return chosen;
 }
 
-/// The toolpath as it is made: where the wire is, a rapid to each new start, cuts along paths.
+/// The toolpath as it is made (kerf cam's program, and a drawing shown as a toolpath): where the
+/// wire is, a rapid to each new start, cuts along paths. A move made from a drawing entity names it
+/// (its line and span); kerf cam's moves name none (the program made has its own lines).
 struct PathWriter {
-  CamResult& result;
+  Toolpath& toolpath;
+  double cutLength = 0.0;
   bool first = true;
   Vec2 at = Vec2::Zero();
 
+  static Move moveFrom(const Segment& s, MoveKind kind, const DrawingElement* from) {
+    Move m;
+    m.kind = kind;
+    m.lower = s;
+    if (from) {
+      m.line = from->where;
+      m.span = from->span;
+    }
+    return m;
+  }
+
   /// A rapid from where the wire is to p (the first path starts there).
-  void travelTo(const Vec2& p) {
+  void travelTo(const Vec2& p, const DrawingElement* from = nullptr) {
     if (first) {
-      result.toolpath.start = p;
+      toolpath.start = p;
       first = false;
     } else if ((p - at).norm() > 1e-12) {
-      Move rapid;
-      rapid.kind = MoveKind::Rapid;
-      rapid.lower = Segment::line(at, p);
-      result.toolpath.moves.push_back(rapid);
+      toolpath.moves.push_back(moveFrom(Segment::line(at, p), MoveKind::Rapid, from));
     }
     at = p;
+  }
+
+  /// Cuts along s; returns its length.
+  double cut(const Segment& s, WireOffset code, const DrawingElement* from = nullptr) {
+    Move m = moveFrom(s, s.isArc() ? MoveKind::Arc : MoveKind::Line, from);
+    m.wireOffset = code;
+    toolpath.moves.push_back(m);
+    at = s.end;
+    cutLength += s.length();
+    return s.length();
   }
 
   /// Cuts along the segments; returns their length.
   double cut(std::span<const Segment> path, WireOffset code) {
     double length = 0.0;
-    for (const Segment& s : path) {
-      Move m;
-      m.kind = s.isArc() ? MoveKind::Arc : MoveKind::Line;
-      m.lower = s;
-      m.wireOffset = code;
-      result.toolpath.moves.push_back(m);
-      length += s.length();
-    }
-    if (!path.empty()) at = path.back().end;
-    result.cutLength += length;
+    for (const Segment& s : path) length += cut(s, code);
     return length;
   }
 };
@@ -304,12 +316,11 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
     }
   }
   const std::vector<int> depth = geometry::nestingDepths(chains);
-  // Holes first (deepest first), then in the drawing's order.
-  std::stable_sort(chosen->begin(), chosen->end(), [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
+  *chosen = cuttingOrder(drawing, std::move(*chosen));
 
   CamResult result;
   result.toolpath.format = InputFormat::Iso;
-  PathWriter w{result};
+  PathWriter w{result.toolpath};
   for (std::size_t c : *chosen) {
     CamContour info;
     info.number = c + 1;
@@ -322,9 +333,52 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
       cutOpen(w, info, paths[c], drawing.drawing.elements[chains[c].elements.front()], o, source, diags);
     result.contours.push_back(info);
   }
+  result.cutLength = w.cutLength;
   result.toolpath.endedProperly = true;
   result.toolpath.blocks = result.toolpath.moves.size();
   return result;
+}
+
+std::vector<std::size_t> cuttingOrder(const DrawingResult& drawing, std::vector<std::size_t> chosen) {
+  const std::vector<int> depth = geometry::nestingDepths(drawing.contours);
+  std::stable_sort(chosen.begin(), chosen.end(), [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
+  return chosen;
+}
+
+std::vector<ContourWire> drawingWires(const DrawingResult& drawing, double radius, WireSide side,
+                                      const SourceFile* source, Diagnostics& diags) {
+  std::vector<ContourWire> wires(drawing.contours.size());
+  const std::vector<int> depth = geometry::nestingDepths(drawing.contours);
+  for (std::size_t c = 0; c < drawing.contours.size(); ++c) {
+    const geometry::Chain& chain = drawing.contours[c];
+    if (!chain.closed) continue;
+    wires[c] = offsetContour(chain.path, radius, sideAtDepth(side, depth[c]));
+    reportContourWire(wires[c], c + 1, drawing, chain, radius, source, diags);
+  }
+  return wires;
+}
+
+Toolpath drawingToolpath(const DrawingResult& drawing, const std::vector<ContourWire>* wires) {
+  Toolpath path;
+  PathWriter w{path};
+  std::vector<std::size_t> all(drawing.contours.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  for (const std::size_t ci : cuttingOrder(drawing, std::move(all))) {
+    const geometry::Chain& c = drawing.contours[ci];
+    const auto element = [&](std::size_t k) { return &drawing.drawing.elements[c.elements[k]]; };
+    if (wires && c.closed && ci < wires->size()) {  // the wire path instead of the contour
+      for (const auto& loop : (*wires)[ci].loops) {
+        if (loop.empty()) continue;
+        w.travelTo(loop.front().segment.start, element(0));
+        for (const geometry::WirePiece& piece : loop) w.cut(piece.segment, WireOffset::Off, element(piece.element));
+      }
+      continue;
+    }
+    w.travelTo(c.path.front().start, element(0));
+    for (std::size_t k = 0; k < c.elements.size(); ++k) w.cut(c.path[k], WireOffset::Off, element(k));
+  }
+  path.endedProperly = true;
+  return path;
 }
 
 }  // namespace kerf::converter

@@ -1,12 +1,11 @@
-// kerf cam DRAWING --offset R --side outside|inside --to FORMAT -o OUT: a program made from a
-// drawing (converter/cam.h), written through the emitter table, then read back and checked through
-// the same pipeline as `kerf check` before it is written: a program with errors is not written.
+// kerf cam DRAWING --offset R --side outside|inside --to FORMAT -o OUT: the options mapped onto the
+// library's makeAndCheck (converter/convert.h: made, written, read back and checked through the same
+// pipeline as `kerf check`), and what it says printed. A program with errors is not written.
 #include "commands.h"
 #include "file_io.h"
 #include "load.h"
 
-#include "kerf/converter/cam/cam.h"
-#include "kerf/converter/formats/emit.h"
+#include "kerf/converter/convert.h"
 #include "kerf/converter/nc/number_format.h"
 #include "kerf/converter/report/report.h"
 
@@ -80,69 +79,13 @@ std::string mm(double v) { return converter::formatFixed(v, 3); }
 
 }  // namespace
 
-/// The program made, read back from its text and checked as kerf check would: `exit` set (after
-/// printing why) when it must not be written; `summary` what the last line says of it. The pipeline
-/// lives as long as the diagnostics that point into it.
-struct ReadBack {
-  std::optional<int> exit;
-  std::string summary;
-  std::optional<converter::Pipeline> pipeline;
-};
-
-ReadBack readBackMade(const CamArgs& a, const converter::Pipeline& p, const converter::CamResult& made,
-                      const converter::EmitOutput& out, converter::Diagnostics& all) {
-  using namespace converter;
-  ReadBack r;
-  if (a.to != "iso" && a.to != "3b" && a.to != "polar") {
-    r.summary = "; this format is not read back";
-    return r;
-  }
-  const CommonOptions& c = a.common;
-  const std::string name = a.output == "-" ? std::string("<output>") : a.output;
-  PipelineOptions po;
-  std::string error;
-  CommonOptions checkOptions = c;
-  checkOptions.reading = ReadingOptions{};
-  checkOptions.reading.format = a.to == "3b" ? "3b" : "iso";
-  if (a.to == "3b") checkOptions.reading.start = mm(made.toolpath.start.x()) + "," + mm(made.toolpath.start.y());
-  if (!pipelineOptions(checkOptions, po, error)) {
-    reportError(error);
-    r.exit = kExitUsage;
-    return r;
-  }
-  if (a.to != "3b") po.read.machine = p.machine.name;
-  r.pipeline.emplace(runPipeline({name, out.text}, po));
-  double length = 0.0;
-  for (const Move& m : r.pipeline->toolpath.moves)
-    if (m.isCut()) length += m.lower.length();
-  const double allowed = 0.002 * static_cast<double>(r.pipeline->toolpath.moves.size()) + 0.01;
-  r.summary = "; read back: " + std::to_string(r.pipeline->toolpath.moves.size()) + " moves, cut length " + mm(length) +
-              " mm (made " + mm(made.cutLength) + ")";
-  const bool lengthOff = std::abs(length - made.cutLength) > allowed;
-  // Refused, nothing is written: the findings name the program made, not a file that is not there.
-  if (r.pipeline->diags.hasErrors() || lengthOff)
-    r.pipeline.emplace(runPipeline({"<not written: " + name + ">", out.text}, po));
-  for (const Diagnostic& d : r.pipeline->diags.all())
-    if (d.severity != Severity::Note) all.report(d);
-  if (r.pipeline->diags.hasErrors()) {
-    printDiagnostics(all, c);
-    reportError("not writing: the program made has errors when read back (shown above)");
-    r.exit = kExitErrors;
-  } else if (lengthOff) {
-    printDiagnostics(all, c);
-    reportError("not writing: read back, the program cuts " + mm(length) + " mm, not the " + mm(made.cutLength) +
-                " mm made (more than the output's rounding allows)");
-    r.exit = kExitErrors;
-  }
-  return r;
-}
-
 int runCam(const CamArgs& a) {
   using namespace converter;
   const CommonOptions& c = a.common;
   bool ok = true;
-  const std::optional<geometry::Vec2> start = point(c.reading.start, "--start", ok);
-  const std::optional<geometry::Vec2> entry = point(a.entry, "--entry", ok);
+  CamRequest r;
+  r.cam.start = point(c.reading.start, "--start", ok);
+  r.cam.entry = point(a.entry, "--entry", ok);
   const std::optional<geometry::Vec2> shift = point(a.shift, "--shift", ok);
   if (!ok) return kExitUsage;
   const bool controller = a.offsetBy == "controller";
@@ -150,76 +93,48 @@ int runCam(const CamArgs& a) {
     reportError("cam needs --offset R (the wire radius plus the spark gap, mm), or --offset-by controller");
     return kExitUsage;
   }
-  // The drawing: read as kerf check reads it, without the wire paths (made here, once).
+  // The drawing: read as kerf check reads it, without the wire paths (made by cam, once).
   CommonOptions readOptions = c;
   readOptions.reading.offset.reset();
   readOptions.reading.side.reset();
   readOptions.reading.start.reset();
   std::optional<Loaded> in = load(readOptions, c.input.files.front());
   if (!in) return kExitUsage;
-  const Pipeline& p = in->pipeline;
-  if (!p.drawing) {
-    printDiagnostics(p.diags, c);
-    reportError("cam makes a program from a drawing (DXF) or a curve; this file reads as " +
-                std::string(inputFormatName(p.format)) + " (kerf convert writes a program for another machine)");
-    return kExitUsage;
-  }
-  Diagnostics all(100000);
-  for (const Diagnostic& d : p.diags.all()) all.report(d);
-  if (p.diags.hasErrors()) {
-    printDiagnostics(all, c);
-    reportError("not making a program: the drawing has errors (kerf check shows the same)");
-    return kExitErrors;
-  }
-  CamOptions o;
-  o.offset = c.reading.offset.value_or(0.0);
-  o.side = c.reading.side == std::optional<std::string>("inside") ? WireSide::Inside : WireSide::Outside;
-  o.controllerOffset = controller;
-  o.contour = a.contour;
-  o.start = start;
-  o.entry = entry;
-  o.leadIn = a.leadIn;
-  o.openPaths = a.openPaths;
-  if (a.direction) o.wireOnLeft = *a.direction == "cw";
-  if (shift) o.shift = *shift;
-  Diagnostics camDiags(100000);
-  std::optional<CamResult> made = makeProgram(*p.drawing, p.source.get(), o, camDiags);
-  for (const Diagnostic& d : camDiags.all()) all.report(d);
-  if (!made || camDiags.hasErrors()) {
-    printDiagnostics(all, c);
-    reportError("no program made: the drawing's contours cannot be cut as asked");
-    return kExitErrors;
-  }
-
-  // Through the emitter table, in the machine's conventions.
-  const Emitter& emitter = *findEmitter(a.to);
-  EmitRequest request;
-  request.target = &p.machine;
-  request.decimals = a.decimals;
-  request.compact = a.compact;
-  request.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
-  request.maxPoints = a.maxPoints;
-  request.sampling = c.sampling.sampling();
-  request.offsetsApplied = true;
-  request.flattenSlivers = true;
-  Diagnostics emitDiags(100000);
-  std::optional<EmitOutput> out = emitter.write(made->toolpath, p.source.get(), request, emitDiags);
-  for (const Diagnostic& d : emitDiags.all()) all.report(d);
-  if (!out) {
-    printDiagnostics(all, c);
-    return kExitErrors;
-  }
-
-  // Read back what was written, and check it, as kerf check would.
-  ReadBack back = readBackMade(a, p, *made, *out, all);
-  if (back.exit) return *back.exit;
-  printDiagnostics(all, c);
   std::string error;
-  if (!writeOutput(a.output, in->inputs, out->text, error)) {
+  if (!pipelineOptions(c, r.readBack, error)) {
     reportError(error);
     return kExitUsage;
   }
-  for (const CamContour& k : made->contours)
+  r.cam.offset = c.reading.offset.value_or(0.0);
+  r.cam.side = c.reading.side == std::optional<std::string>("inside") ? WireSide::Inside : WireSide::Outside;
+  r.cam.controllerOffset = controller;
+  r.cam.contour = a.contour;
+  r.cam.leadIn = a.leadIn;
+  r.cam.openPaths = a.openPaths;
+  if (a.direction) r.cam.wireOnLeft = *a.direction == "cw";
+  if (shift) r.cam.shift = *shift;
+  r.format = a.to;
+  r.emit.decimals = a.decimals;
+  r.emit.compact = a.compact;
+  r.emit.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
+  r.emit.maxPoints = a.maxPoints;
+  r.emit.sampling = c.sampling.sampling();
+  r.outputName = a.output == "-" ? std::string("<output>") : a.output;
+
+  const CamRun run = makeAndCheck(in->pipeline, r);
+  printDiagnostics(run.diags, c);
+  if (!run.refusal.empty()) reportError(run.refusal);
+  switch (run.status) {
+    case WriteStatus::Refused: return kExitUsage;
+    case WriteStatus::ProgramErrors:
+    case WriteStatus::NotWritten: return kExitErrors;
+    case WriteStatus::Written: break;
+  }
+  if (!writeOutput(a.output, in->inputs, run.output->text, error)) {
+    reportError(error);
+    return kExitUsage;
+  }
+  for (const CamContour& k : run.made->contours)
     std::cerr << "kerf: contour " << k.number << ": "
               << (k.open                        ? "open, as drawn"
                   : k.side == WireSide::Outside ? "outside"
@@ -229,8 +144,9 @@ int runCam(const CamArgs& a) {
                   : controller ? ", offset by the controller"
                                : ", wire path " + mm(k.wireLength) + " mm")
               << "\n";
-  std::cerr << "kerf: wrote " << out->what << " to " << (a.output == "-" ? std::string("standard output") : a.output)
-            << out->detail << back.summary << "\n";
+  std::cerr << "kerf: wrote " << run.output->what << " to "
+            << (a.output == "-" ? std::string("standard output") : a.output) << run.output->detail << run.readBack
+            << "\n";
   return kExitOk;
 }
 

@@ -4,8 +4,7 @@
 #include "file_io.h"
 #include "load.h"
 
-#include "kerf/converter/formats/emit.h"
-#include "kerf/converter/formats/points/points.h"
+#include "kerf/converter/convert.h"
 #include "kerf/converter/report/report.h"
 
 #include <CLI/CLI.hpp>
@@ -71,61 +70,6 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
 
 namespace {
 
-/// --pass N: the toolpath of each contour's Nth pass; nothing, said, when no contour has one.
-std::optional<converter::Toolpath> passToConvert(const converter::Pipeline& p, const std::string& pass) {
-  std::optional<converter::Toolpath> out =
-      converter::toolpathOfPass(p.toolpath, p.structure, std::stoul(pass), p.checkOptions.tolerance);
-  if (!out) {
-    std::size_t most = 0;
-    for (const converter::Contour& c : p.structure.contours) most = std::max(most, c.passes.size());
-    reportError("--pass " + pass + ": no contour of this program has a pass " + pass + " (" +
-                (most == 1 ? std::string("each is cut in one pass") : "the most is " + std::to_string(most)) + ")");
-  }
-  return out;
-}
-
-/// The emitter settings from the options, and from the program read (polar keeps an ISO source's
-/// blocks).
-void fillRequest(const ConvertArgs& a, const converter::Pipeline& p, converter::EmitRequest& request) {
-  request.sampling = a.common.sampling.sampling();
-  request.maxPoints = a.maxPoints;
-  request.startLine = a.startBlock;
-  request.relativeUv = a.uv == "relative";
-  request.atGuides = a.plane == "guides";
-  request.decimals = a.decimals;
-  request.compact = a.compact;
-  request.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
-  request.polarX = a.polarXOut == "radius" ? converter::PolarX::Radius : converter::PolarX::Diameter;
-  request.tolerance = a.common.sampling.tolerance.value_or(0.001);
-  // The whole program as its own blocks wrote it: polar output keeps what it does not convert.
-  if (p.format == converter::InputFormat::Iso && a.pass == "all" && !p.toolpath.isTaper())
-    request.sourceBlocks = converter::parseOptionsFor(p.machine);
-}
-
-/// The plane a 2-axis format follows (`plane` stays empty for an emitter that writes both); false
-/// after saying why the options do not fit the emitter or the program.
-bool planeFor(const ConvertArgs& a, const converter::Emitter& emitter, const converter::Toolpath& toolpath,
-              std::optional<converter::PlaneChoice>& plane) {
-  if (emitter.planes == converter::PlaneNeed::Both) {
-    if (!a.plane || (*a.plane == "guides" && std::string_view(emitter.name) == "points4")) return true;
-    reportError("--plane chooses one plane for a 2-axis file; " + std::string(emitter.name) + " writes both" +
-                (std::string_view(emitter.name) == "points4" ? " (or both guides: --plane guides)" : ""));
-    return false;
-  }
-  plane = converter::parsePlane(a.plane.value_or("lower"));
-  if (!plane) {
-    reportError("--plane takes lower, upper or z=HEIGHT (|HEIGHT| up to 1e6 mm), not '" + *a.plane + "'");
-    return false;
-  }
-  if (toolpath.isTaper() && !a.plane) {
-    reportError(
-        "this is a 4-axis taper program: choose the plane the 2-axis file follows with --plane "
-        "lower|upper|z=HEIGHT (one file per plane), or write both with --to points4 or --to iso");
-    return false;
-  }
-  return true;
-}
-
 void printList() {
   std::cout << "Output formats (kerf convert FILE --to NAME -o OUT):\n";
   for (const converter::Emitter& e : converter::emitters())
@@ -133,6 +77,48 @@ void printList() {
               << (e.planes == converter::PlaneNeed::One ? " [one plane: --plane for a taper program]"
                                                         : " [both planes]")
               << "\n";
+}
+
+/// The request from the options; false (said) when a file they name cannot be read.
+bool requestOf(const ConvertArgs& a, std::vector<std::string>& inputs, converter::ConvertRequest& r) {
+  using namespace converter;
+  r.format = a.to;
+  r.plane = a.plane;
+  if (a.pass != "all") r.pass = std::stoul(a.pass);  // checked 1-255 where the option is declared
+  r.force = a.force;
+  std::string error;
+  if (a.profile) {
+    std::optional<std::string> text = readTextFile(*a.profile, 1 << 20, error);
+    if (!text) {
+      reportError(error);
+      return false;
+    }
+    inputs.push_back(*a.profile);
+    r.pointProfile = SourceText{*a.profile, std::move(*text)};
+  }
+  if (a.target && findBuiltinMachine(*a.target)) {
+    r.target = a.target;
+  } else if (a.target) {
+    std::optional<std::string> text = readTextFile(*a.target, 1 << 20, error);
+    if (!text) {
+      reportError("--for '" + *a.target + "' is neither a built-in machine (kerf machines lists them) nor a file: " +
+                  error);
+      return false;
+    }
+    inputs.push_back(*a.target);
+    r.targetFile = SourceText{*a.target, std::move(*text)};
+  }
+  EmitRequest& e = r.emit;
+  e.sampling = a.common.sampling.sampling();
+  e.maxPoints = a.maxPoints;
+  e.startLine = a.startBlock;
+  e.relativeUv = a.uv == "relative";
+  e.decimals = a.decimals;
+  e.compact = a.compact;
+  e.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
+  e.polarX = a.polarXOut == "radius" ? PolarX::Radius : PolarX::Diameter;
+  e.tolerance = a.common.sampling.tolerance.value_or(0.001);
+  return true;
 }
 
 }  // namespace
@@ -148,93 +134,32 @@ int runConvert(const ConvertArgs& a) {
                                              : "convert needs --to FORMAT (kerf convert --list shows them)");
     return kExitUsage;
   }
-  const Emitter& emitter = *findEmitter(a.to);
   std::optional<Loaded> in = load(a.common, a.common.input.files.front());
   if (!in) return kExitUsage;
   const Pipeline& p = in->pipeline;
-  Diagnostics emitDiags(100000);
-  if (p.diags.hasErrors() && !a.force) {
-    printDiagnostics(p.diags, a.common);
-    reportError("not converting: the program has " + std::to_string(p.diags.errorCount()) +
-                (p.diags.errorCount() == 1 ? " error" : " errors") +
-                " (kerf check shows the same); --force writes the output anyway");
-    return kExitErrors;
+  ConvertRequest request;
+  if (!requestOf(a, in->inputs, request)) return kExitUsage;
+  const Conversion c = convert(p, request);
+  printDiagnostics(c.diags, a.common);
+  switch (c.status) {
+    case WriteStatus::ProgramErrors:
+      reportError("not converting: the program has " + std::to_string(p.diags.errorCount()) +
+                  (p.diags.errorCount() == 1 ? " error" : " errors") +
+                  " (kerf check shows the same); --force writes the output anyway");
+      return kExitErrors;
+    case WriteStatus::Refused: return kExitUsage;
+    case WriteStatus::NotWritten: return kExitErrors;
+    case WriteStatus::Written: break;
   }
-  EmitRequest request;
-  std::optional<SourceFile> profileSource;
-  std::vector<std::string> inputs = in->inputs;
-  if (a.profile) {
-    std::string error;
-    std::optional<std::string> text = readTextFile(*a.profile, 1 << 20, error);
-    if (!text) {
-      reportError(error);
-      return kExitUsage;
-    }
-    inputs.push_back(*a.profile);
-    profileSource.emplace(*a.profile, std::move(*text));
-    std::optional<PointProfile> parsed = parseProfile(*profileSource, emitDiags);
-    if (!parsed) {
-      printDiagnostics(emitDiags, a.common);
-      return kExitUsage;
-    }
-    request.profile = *parsed;
-  }
-  std::optional<MachineProfile> targetFile;
-  std::optional<SourceFile> targetSource;
-  if (a.target) {
-    if (const MachineProfile* m = findBuiltinMachine(*a.target)) {
-      request.target = m;
-    } else {
-      std::string error;
-      std::optional<std::string> text = readTextFile(*a.target, 1 << 20, error);
-      if (!text) {
-        reportError("--for '" + *a.target +
-                    "' is neither a built-in machine (kerf machines lists them) nor a file: " + error);
-        return kExitUsage;
-      }
-      inputs.push_back(*a.target);
-      targetSource.emplace(*a.target, std::move(*text));
-      targetFile = parseMachineProfile(*targetSource, emitDiags);
-      if (!targetFile) {
-        printDiagnostics(emitDiags, a.common);
-        return kExitUsage;
-      }
-      request.target = &*targetFile;
-    }
-  }
-  fillRequest(a, p, request);
-
-  const Toolpath* path = &p.toolpath;
-  std::optional<Toolpath> onePass;
-  if (a.pass != "all") {
-    onePass = passToConvert(p, a.pass);
-    if (!onePass) return kExitUsage;
-    path = &*onePass;
-  }
-  std::optional<Toolpath> flat;
-  std::optional<PlaneChoice> plane;
-  if (!planeFor(a, emitter, p.toolpath, plane)) return kExitUsage;
-  if (plane) {
-    flat = toolpathAtPlane(*path, *plane, a.common.sampling.tolerance.value_or(0.001), p.source.get(), emitDiags);
-    path = flat ? &*flat : nullptr;
-  }
-  std::optional<EmitOutput> out;
-  if (path) out = emitter.write(*path, p.source.get(), request, emitDiags);
-  // The program's findings first (as kerf check gives them), then the emitter's.
-  Diagnostics all(100000);
-  for (const Diagnostic& d : p.diags.all()) all.report(d);
-  for (const Diagnostic& d : emitDiags.all()) all.report(d);
-  printDiagnostics(all, a.common);
-  if (!out) return kExitErrors;
   if (p.diags.hasErrors())  // --force; not every format has comments to carry the warning
     std::cerr << "kerf: warning: writing a program that has errors, as --force asks\n";
   std::string error;
-  if (!writeOutput(a.output, inputs, out->text, error)) {
+  if (!writeOutput(a.output, in->inputs, c.output->text, error)) {
     reportError(error);
     return kExitUsage;
   }
-  std::cerr << "kerf: wrote " << out->what << " to " << (a.output == "-" ? std::string("standard output") : a.output)
-            << out->detail << "\n";
+  std::cerr << "kerf: wrote " << c.output->what << " to "
+            << (a.output == "-" ? std::string("standard output") : a.output) << c.output->detail << "\n";
   return verdictExit(p);
 }
 

@@ -110,7 +110,7 @@ struct Pipeline {
   SurfaceMeasures measures;      ///< per move, for a taper program whose heights are known
   Structure structure;           ///< contours and passes, with the time estimate (a program, not a drawing)
   CheckOptions checkOptions;     ///< the settings the checks ran with
-  Diagnostics diags{100000};     ///< every diagnostic, sorted by position
+  Diagnostics diags{kAllDiagnostics};     ///< every diagnostic, sorted by position
   /// What was read: set whenever `read` is, if PipelineOptions::summarize asked for it.
   std::optional<Summary> summary;
   /// false: nothing was read (the machine profile file or the --offsets table is wrong); diags says why.

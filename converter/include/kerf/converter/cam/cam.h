@@ -50,6 +50,21 @@ ContourWire offsetContour(std::span<const geometry::Segment> contour, double rad
 void reportContourWire(const ContourWire& wire, std::size_t number, const DrawingResult& drawing,
                        const geometry::Chain& chain, double radius, const SourceFile* source, Diagnostics& diags);
 
+/// The wire path at `radius` of every closed contour of the drawing, each on the side its nesting
+/// gives (the outermost on `side`, sideAtDepth), reported through reportContourWire; an empty
+/// ContourWire for an open contour. One entry per drawing.contours.
+std::vector<ContourWire> drawingWires(const DrawingResult& drawing, double radius, WireSide side,
+                                      const SourceFile* source, Diagnostics& diags);
+
+/// The order contours are cut in: holes before the contours that hold them (deepest first), then
+/// the drawing's order. `chosen` are indices into drawing.contours.
+std::vector<std::size_t> cuttingOrder(const DrawingResult& drawing, std::vector<std::size_t> chosen);
+
+/// The drawing as a toolpath (what `kerf check` and `kerf render` show of a drawing): every contour
+/// in cutting order, as its wire path where `wires` (drawingWires) has one, else as drawn, with a
+/// rapid to each new start; each move names the drawing entity it comes from.
+Toolpath drawingToolpath(const DrawingResult& drawing, const std::vector<ContourWire>* wires);
+
 struct CamOptions {
   double offset = 0.0;                            ///< wire radius plus spark gap, mm
   WireSide side = WireSide::Outside;              ///< for the outermost contours; holes in them get the other side

@@ -177,7 +177,7 @@ struct MachineReading {
   const MachineProfile* machine = nullptr;
   MachineDetection detection;  ///< empty when a machine was given
   ParseOptions parse;
-  Diagnostics diags{100000};
+  Diagnostics diags{kAllDiagnostics};
 };
 
 /// Parses with `given`'s rules (the generic profile's when null); with none given, detects the

@@ -75,6 +75,10 @@ struct DiagnosticPolicy {
   [[nodiscard]] std::optional<Severity> levelOf(const Diagnostic& d) const;
 };
 
+/// The cap of a collection meant to keep every diagnostic of a run (the pipeline's, a command's):
+/// the checks stop reporting a kind long before it (K0899).
+constexpr std::size_t kAllDiagnostics = 100000;
+
 /// Collects diagnostics up to a cap; counts every one.
 class Diagnostics {
  public:

@@ -28,16 +28,16 @@ bool resolveProfiles(const ConvertRequest& r, Conversion& c, EmitRequest& e, std
     c.profileSource = std::make_unique<SourceFile>(r.pointProfile->name, r.pointProfile->text);
     std::optional<PointProfile> parsed = parseProfile(*c.profileSource, c.diags);
     if (!parsed) return false;
-    e.profile = *parsed;
+    e.points.profile = *parsed;
   }
   if (r.targetFile) {
     c.targetSource = std::make_unique<SourceFile>(r.targetFile->name, r.targetFile->text);
     target = parseMachineProfile(*c.targetSource, c.diags);
     if (!target) return false;
-    e.target = &*target;
+    e.iso.target = &*target;
   } else if (r.target) {
-    e.target = findBuiltinMachine(*r.target);
-    if (!e.target) {
+    e.iso.target = findBuiltinMachine(*r.target);
+    if (!e.iso.target) {
       c.diags.error(Code::MachineProfileError, nullptr, SourceSpan::wholeFile(),
                     "no built-in machine is named '" + *r.target + "' (kerf machines lists them)");
       return false;
@@ -88,9 +88,15 @@ Conversion convert(const Pipeline& p, const ConvertRequest& r) {
     c.status = WriteStatus::Refused;
     return c;
   }
-  e.atGuides = r.plane == std::optional<std::string>("guides");
+  e.points.request.atGuides = r.plane == std::optional<std::string>("guides");
   // The whole program as its own blocks wrote it: polar output keeps what it does not convert.
-  if (p.format == InputFormat::Iso && !r.pass && !p.toolpath.isTaper()) e.sourceBlocks = parseOptionsFor(p.machine);
+  if (p.format == InputFormat::Iso && !r.pass && !p.toolpath.isTaper())
+    e.polar.sourceBlocks = parseOptionsFor(p.machine);
+  // A drawing shows the passes by layer, and with --drawing the elements cut out of tolerance.
+  e.dxf.movePass = movePasses(p.structure, p.toolpath.moves.size());
+  if (p.comparison)
+    for (const ElementDeviation& d : p.comparison->elements)
+      if (d.deviation > p.comparison->tolerance) e.dxf.deviation.push_back(p.comparison->drawn[d.element]);
 
   const Toolpath* path = &p.toolpath;
   std::optional<Toolpath> onePass;
@@ -100,11 +106,10 @@ Conversion convert(const Pipeline& p, const ConvertRequest& r) {
       std::size_t most = 0;
       for (const Contour& k : p.structure.contours) most = std::max(most, k.passes.size());
       const std::string n = std::to_string(*r.pass);
-      return std::move(refuse(c, p,
-                              "--pass " + n + ": no contour of this program has a pass " + n + " (" +
-                                  (most == 1 ? std::string("each is cut in one pass")
-                                             : "the most is " + std::to_string(most)) +
-                                  ")"));
+      return std::move(refuse(
+          c, p,
+          "--pass " + n + ": no contour of this program has a pass " + n + " (" +
+              (most == 1 ? std::string("each is cut in one pass") : "the most is " + std::to_string(most)) + ")"));
     }
     path = &*onePass;
   }
@@ -112,7 +117,7 @@ Conversion convert(const Pipeline& p, const ConvertRequest& r) {
   if (!planeFor(r, *emitter, p, plane, c)) return c;
   std::optional<Toolpath> flat;
   if (plane) {
-    flat = toolpathAtPlane(*path, *plane, e.tolerance, p.source.get(), c.diags);
+    flat = toolpathAtPlane(*path, *plane, r.tolerance, p.source.get(), c.diags);
     path = flat ? &*flat : nullptr;
   }
   if (path) c.output = emitter->write(*path, p.source.get(), e, c.diags);
@@ -153,8 +158,8 @@ bool readBack(const Pipeline& p, const CamRequest& r, CamRun& run) {
     if (m.isCut()) length += m.lower.length();
   const double allowed = 0.002 * static_cast<double>(back->toolpath.moves.size()) + 0.01;
   const double made = run.made->cutLength;
-  run.readBack = "; read back: " + std::to_string(back->toolpath.moves.size()) + " moves, cut length " + lengthText(length) +
-                 " mm (made " + lengthText(made) + ")";
+  run.readBack = "; read back: " + std::to_string(back->toolpath.moves.size()) + " moves, cut length " +
+                 lengthText(length) + " mm (made " + lengthText(made) + ")";
   const bool lengthOff = std::abs(length - made) > allowed;
   // Refused, nothing is written: the findings name the program made, not a file that is not there.
   if (back->diags.hasErrors() || lengthOff) {
@@ -166,8 +171,8 @@ bool readBack(const Pipeline& p, const CamRequest& r, CamRun& run) {
   if (back->diags.hasErrors())
     run.refusal = "not writing: the program made has errors when read back (shown above)";
   else if (lengthOff)
-    run.refusal = "not writing: read back, the program cuts " + lengthText(length) + " mm, not the " + lengthText(made) +
-                  " mm made (more than the output's rounding allows)";
+    run.refusal = "not writing: read back, the program cuts " + lengthText(length) + " mm, not the " +
+                  lengthText(made) + " mm made (more than the output's rounding allows)";
   return run.refusal.empty();
 }
 
@@ -199,9 +204,9 @@ CamRun makeAndCheck(const Pipeline& p, const CamRequest& r) {
   }
   // Through the writer table, in the machine's conventions.
   EmitRequest e = r.emit;
-  e.target = &p.machine;
-  e.offsetsApplied = true;
-  e.flattenSlivers = true;
+  e.iso.target = &p.machine;
+  e.iso.offsetsApplied = true;
+  e.iso.flattenSlivers = true;
   run.output = emitter->write(run.made->toolpath, p.source.get(), e, run.diags);
   if (!run.output || !readBack(p, r, run)) return run;
   run.status = WriteStatus::Written;

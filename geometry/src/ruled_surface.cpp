@@ -465,14 +465,98 @@ bool earClip(const std::vector<Vec3>& v, std::vector<std::uint32_t> poly, bool r
 
 }  // namespace
 
+namespace {
+
+constexpr double kJoin = 1e-9;  ///< mm: ends this close join two patches into one strip
+
+/// The generators of the strip of patches [i, j): every patch cut into pieces within the chord
+/// tolerance (at least minTaperPieces where the wire leans), while the cells stay within maxCells.
+/// `k` is set to the first patch not made; `cellPatch` receives each cell's patch.
+std::vector<Generator> stripGenerators(std::span<const Segment> lower, std::span<const Segment> upper, std::size_t i,
+                                       std::size_t j, const MeshOptions& options, std::size_t maxCells, std::size_t& k,
+                                       std::vector<std::uint32_t>& cellPatch) {
+  const Sampling sampling = Sampling::tolerance(options.tolerance / 2);
+  std::vector<Generator> gens;
+  gens.push_back({lower[i].start, upper[i].start});
+  for (k = i; k < j && gens.size() <= maxCells; ++k) {
+    const bool leans = (upper[k].start - lower[k].start).norm() > kJoin || (upper[k].end - lower[k].end).norm() > kJoin;
+    std::size_t forced = leans ? options.minTaperPieces : std::size_t{1};
+    if (forced > 1 && options.minForcedPieceLength > 0.0) {
+      const double fit = std::max(lower[k].length(), upper[k].length()) / options.minForcedPieceLength;
+      forced = std::clamp<std::size_t>(static_cast<std::size_t>(std::min(fit, 1e9)), 1, forced);
+    }
+    const std::size_t pieces =
+        std::min(kMaxMeshPieces, std::max({sampleCount(lower[k], sampling), sampleCount(upper[k], sampling), forced}));
+    for (std::size_t q = 1; q <= pieces; ++q) {
+      const double t = static_cast<double>(q) / static_cast<double>(pieces);
+      gens.push_back({lower[k].pointAt(t), upper[k].pointAt(t)});
+      cellPatch.push_back(static_cast<std::uint32_t>(k));
+    }
+  }
+  return gens;
+}
+
+/// Each generator's points along the wire, lower plane to upper: the first `own` generators (a
+/// closed strip's last one is its first).
+void addStripVertices(Mesh& mesh, std::vector<Generator>& gens, std::size_t own, const Planes& planes) {
+  for (std::size_t g = 0; g < own; ++g) {
+    gens[g].firstVertex = static_cast<std::uint32_t>(mesh.vertices.size());
+    const auto slope = static_cast<float>(std::atan2((gens[g].top - gens[g].bottom).norm(), planes.height()));
+    for (std::uint32_t q = 0; q <= gens[g].cuts; ++q) {
+      const double s = static_cast<double>(q) / gens[g].cuts;
+      const Vec2 p = (1.0 - s) * gens[g].bottom + s * gens[g].top;
+      mesh.vertices.emplace_back(p.x(), p.y(), planes.lower + s * planes.height());
+      mesh.vertexSlope.push_back(slope);
+    }
+  }
+}
+
+/// Neighbouring generators zipped together, advancing whichever has the lower next s.
+void zipStrip(Mesh& mesh, const std::vector<Generator>& gens, const std::vector<std::uint32_t>& cellPatch) {
+  for (std::size_t c = 0; c + 1 < gens.size(); ++c) {
+    const Generator& a = gens[c];
+    const Generator& b = gens[c + 1];
+    std::uint32_t ia = 0, ib = 0;
+    while (ia < a.cuts || ib < b.cuts) {
+      const bool advanceA =
+          ia < a.cuts && (ib == b.cuts || static_cast<double>(ia + 1) / a.cuts <= static_cast<double>(ib + 1) / b.cuts);
+      if (advanceA) {
+        mesh.triangles.push_back({a.firstVertex + ia, b.firstVertex + ib, a.firstVertex + ia + 1});
+        ++ia;
+      } else {
+        mesh.triangles.push_back({a.firstVertex + ia, b.firstVertex + ib, b.firstVertex + ib + 1});
+        ++ib;
+      }
+      mesh.trianglePatch.push_back(cellPatch[c]);
+    }
+  }
+}
+
+/// A closed strip's caps on the planes asked for. The side triangles run along the bottom edge
+/// forwards and the top edge backwards, so the lower cap takes the contour reversed and the upper
+/// cap as it is.
+void capStrip(Mesh& mesh, const std::vector<Generator>& gens, std::size_t own, const MeshOptions& options) {
+  std::vector<std::uint32_t> bottom, top;
+  for (std::size_t g = 0; g < own; ++g) {
+    bottom.push_back(gens[g].firstVertex);
+    top.push_back(gens[g].firstVertex + gens[g].cuts);
+  }
+  std::vector<std::array<std::uint32_t, 3>> caps;
+  if (options.lowerCap && earClip(mesh.vertices, bottom, true, caps)) ++mesh.capsMade;
+  if (options.upperCap && earClip(mesh.vertices, top, false, caps)) ++mesh.capsMade;
+  for (const auto& tri : caps) {
+    mesh.triangles.push_back(tri);
+    mesh.trianglePatch.push_back(kCapPatch);
+  }
+}
+
+}  // namespace
+
 Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> upper, const Planes& planes,
                       const MeshOptions& options) {
   Mesh mesh;
   const std::size_t n = std::min(lower.size(), upper.size());
-  const double chordTol = options.tolerance / 2, twistTol = options.tolerance / 2;
-  const Sampling sampling = Sampling::tolerance(chordTol);
-  constexpr double kJoin = 1e-9;
-
+  const double twistTol = options.tolerance / 2;
   std::size_t i = 0;
   while (i < n) {
     // One strip: patches joined end to start on both planes.
@@ -480,34 +564,16 @@ Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> u
     while (j < n && (lower[j].start - lower[j - 1].end).norm() <= kJoin &&
            (upper[j].start - upper[j - 1].end).norm() <= kJoin)
       ++j;
-    std::vector<Generator> gens;
-    std::vector<std::uint32_t> cellPatch;
-    gens.push_back({lower[i].start, upper[i].start});
     // Every cell between two generators makes at least two triangles: stop making generators
     // once the cells alone would pass the budget, so memory follows the budget, not the moves.
     const std::size_t budget = options.maxTriangles - std::min(options.maxTriangles, mesh.triangles.size());
-    const std::size_t maxCells = budget / 2;
     if (budget == 0) {
       mesh.truncated = true;
       return mesh;
     }
     std::size_t k = i;
-    for (; k < j && gens.size() <= maxCells; ++k) {
-      const bool leans =
-          (upper[k].start - lower[k].start).norm() > kJoin || (upper[k].end - lower[k].end).norm() > kJoin;
-      std::size_t forced = leans ? options.minTaperPieces : std::size_t{1};
-      if (forced > 1 && options.minForcedPieceLength > 0.0) {
-        const double fit = std::max(lower[k].length(), upper[k].length()) / options.minForcedPieceLength;
-        forced = std::clamp<std::size_t>(static_cast<std::size_t>(std::min(fit, 1e9)), 1, forced);
-      }
-      const std::size_t pieces = std::min(
-          kMaxMeshPieces, std::max({sampleCount(lower[k], sampling), sampleCount(upper[k], sampling), forced}));
-      for (std::size_t q = 1; q <= pieces; ++q) {
-        const double t = static_cast<double>(q) / static_cast<double>(pieces);
-        gens.push_back({lower[k].pointAt(t), upper[k].pointAt(t)});
-        cellPatch.push_back(static_cast<std::uint32_t>(k));
-      }
-    }
+    std::vector<std::uint32_t> cellPatch;
+    std::vector<Generator> gens = stripGenerators(lower, upper, i, j, options, budget / 2, k, cellPatch);
     bool closed = k == j && j - i > 1 && (gens.back().bottom - gens.front().bottom).norm() <= kJoin &&
                   (gens.back().top - gens.front().top).norm() <= kJoin;
     for (std::size_t c = 0; c + 1 < gens.size(); ++c) {
@@ -530,51 +596,11 @@ Mesh meshRuledSurface(std::span<const Segment> lower, std::span<const Segment> u
       closed = false;
     }
     const std::size_t own = closed ? gens.size() - 1 : gens.size();
-    for (std::size_t g = 0; g < own; ++g) {
-      gens[g].firstVertex = static_cast<std::uint32_t>(mesh.vertices.size());
-      const auto slope = static_cast<float>(std::atan2((gens[g].top - gens[g].bottom).norm(), planes.height()));
-      for (std::uint32_t q = 0; q <= gens[g].cuts; ++q) {
-        const double s = static_cast<double>(q) / gens[g].cuts;
-        const Vec2 p = (1.0 - s) * gens[g].bottom + s * gens[g].top;
-        mesh.vertices.emplace_back(p.x(), p.y(), planes.lower + s * planes.height());
-        mesh.vertexSlope.push_back(slope);
-      }
-    }
+    addStripVertices(mesh, gens, own, planes);
     if (closed) gens.back().firstVertex = gens.front().firstVertex;
-    // Zip neighbouring generators together, advancing whichever has the lower next s.
-    for (std::size_t c = 0; c + 1 < gens.size(); ++c) {
-      const Generator& a = gens[c];
-      const Generator& b = gens[c + 1];
-      std::uint32_t ia = 0, ib = 0;
-      while (ia < a.cuts || ib < b.cuts) {
-        const bool advanceA = ia < a.cuts && (ib == b.cuts || static_cast<double>(ia + 1) / a.cuts <=
-                                                                  static_cast<double>(ib + 1) / b.cuts);
-        if (advanceA) {
-          mesh.triangles.push_back({a.firstVertex + ia, b.firstVertex + ib, a.firstVertex + ia + 1});
-          ++ia;
-        } else {
-          mesh.triangles.push_back({a.firstVertex + ia, b.firstVertex + ib, b.firstVertex + ib + 1});
-          ++ib;
-        }
-        mesh.trianglePatch.push_back(cellPatch[c]);
-      }
-    }
-    if (closed && (options.lowerCap || options.upperCap) && own >= 3 && own <= options.maxCapVertices) {
-      std::vector<std::uint32_t> bottom, top;
-      for (std::size_t g = 0; g < own; ++g) {
-        bottom.push_back(gens[g].firstVertex);
-        top.push_back(gens[g].firstVertex + gens[g].cuts);
-      }
-      // The side triangles run along the bottom edge forwards and the top edge backwards, so the
-      // lower cap takes the contour reversed and the upper cap as it is.
-      std::vector<std::array<std::uint32_t, 3>> caps;
-      if (options.lowerCap && earClip(mesh.vertices, bottom, true, caps)) ++mesh.capsMade;
-      if (options.upperCap && earClip(mesh.vertices, top, false, caps)) ++mesh.capsMade;
-      for (const auto& tri : caps) {
-        mesh.triangles.push_back(tri);
-        mesh.trianglePatch.push_back(kCapPatch);
-      }
-    }
+    zipStrip(mesh, gens, cellPatch);
+    if (closed && (options.lowerCap || options.upperCap) && own >= 3 && own <= options.maxCapVertices)
+      capStrip(mesh, gens, own, options);
     if (truncated) {
       mesh.truncated = true;
       return mesh;

@@ -78,11 +78,12 @@ class GoldenTest : public testing::Test {
     const KerfRun bp95d = runKerf(dir_, bp95dArgs);
     compare("expected.bp95d", bp95d.out);
     compare("expected.bp95d.log", "exit " + std::to_string(bp95d.exit) + "\n" + bp95d.err);
-    // The other emitters: 3B, 4B and polar follow one plane (the lower of a taper program), ISO
-    // keeps both.
-    for (const char* to : {"3b", "4b", "iso", "polar"}) {
+    // The other writers: 3B, 4B and polar follow one plane (the lower of a taper program), ISO and
+    // DXF keep both.
+    for (const char* to : {"3b", "4b", "iso", "polar", "dxf"}) {
+      const bool bothPlanes = std::string(to) == "iso" || std::string(to) == "dxf";
       std::string args = std::string("convert input.nc --to ") + to + " -o -" + readArgs;
-      if (taper && std::string(to) != "iso") args += " --plane lower";
+      if (taper && !bothPlanes) args += " --plane lower";
       const auto o = readOptions(dir_ / "options");
       if (o.count("start-block") && (std::string(to) == "3b" || std::string(to) == "4b"))
         args += " --start-block '" + o.at("start-block") + "'";

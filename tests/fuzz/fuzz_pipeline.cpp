@@ -115,7 +115,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // and no stray character: the words it makes are well formed, and the ones it copies were.
   if (!p.diags.hasErrors() && !a.toolpath.isTaper() && p.format == InputFormat::Iso &&
       a.toolpath.moves.size() <= 2000) {
-    EmitRequest polar;
+    PolarWriteOptions polar;
     polar.tolerance = 0.01;
     polar.sourceBlocks = parseOptionsFor(p.machine);
     if (const auto out = writePolar(a.toolpath, &src, polar, diags)) {

@@ -46,10 +46,9 @@ void writeAndReadBack(const Pipeline& p) {
   if (counts.lines + counts.arcs + counts.circles > 0) readBack(dxf, InputFormat::Dxf, "back.dxf");
   if (p.toolpath.isTaper()) return;  // 3B and ISO of one plane: --plane's business
   Diagnostics diags(100);
-  EmitRequest request;
-  if (const auto threeB = writeThreeB(p.toolpath, p.source.get(), request, diags))
+  if (const auto threeB = writeThreeB(p.toolpath, p.source.get(), ThreeBWriteOptions{}, diags))
     readBack(threeB->text, InputFormat::ThreeB, "back.3b");
-  if (const auto iso = writeIso(p.toolpath, p.source.get(), request, diags))
+  if (const auto iso = writeIso(p.toolpath, p.source.get(), IsoWriteOptions{}, diags))
     readBack(iso->text, InputFormat::Iso, "back.nc");
 }
 

@@ -362,7 +362,7 @@ TEST(machine_test, between_contours_the_iso_writer_cuts_and_threads_the_wire_as_
       read("G92 X0 Y0\nG01 X10. Y0\nX10. Y10.\nX0 Y0\nG00 X20. Y0\nG01 X30. Y0\nX30. Y10.\nX20. Y0\nM02\n", generic);
   auto written = [&](const MachineProfile& target) {
     EmitRequest request;
-    request.target = &target;
+    request.iso.target = &target;
     Diagnostics d(100);
     const std::optional<EmitOutput> out = findEmitter("iso")->write(two.toolpath, two.source.get(), request, d);
     return out ? out->text : std::string();

@@ -4,7 +4,7 @@
 // rules of FORMATS §4 written out as angle ranges, J by summing |d coordinate| over 200,000 steps
 // of the arc. Each record is then read back, and must end where the arc ends.
 #include "kerf/converter/formats/3b/read_3b.h"
-#include "kerf/converter/formats/emit.h"
+#include "kerf/converter/formats/3b/write_3b.h"
 
 #include <gtest/gtest.h>
 
@@ -33,7 +33,7 @@ Toolpath pathOf(const Segment& s) {
 
 std::string firstRecord(const Toolpath& t) {
   Diagnostics d;
-  EmitRequest r;
+  ThreeBWriteOptions r;
   r.end = "";
   const auto out = writeThreeB(t, nullptr, r, d);
   EXPECT_TRUE(out.has_value());

@@ -1,74 +1,8 @@
-// The emitter table, and the point-file emitters (points/points.cpp) in its shape.
+// The writer table (emit.h), and the plane a 2-axis file follows.
 #include "kerf/converter/formats/emit.h"
 #include "kerf/converter/nc/number_format.h"
 
 namespace kerf::converter {
-
-namespace {
-
-/// pairs: points4 (an X Y U V pair a line, in the profile's number format).
-EmitOutput fromPoints(PointOutput&& p, const EmitRequest& request, bool pairs = false) {
-  EmitOutput out;
-  out.text = std::move(p.text);
-  out.what = pairs ? std::to_string(p.points) + " point pairs (points4: X Y U V, numbers as the " +
-                         request.profile.name + " profile writes them)"
-                   : std::to_string(p.points) + " points (" + request.profile.name + " profile)";
-  const std::size_t capacity = request.maxPoints ? *request.maxPoints : request.profile.maxPoints.value_or(0);
-  out.detail = std::string("; ") + (p.sampling.mode == geometry::SamplingMode::Step ? "step k = " : "tolerance ") +
-               formatFixed(p.sampling.value, 6) + " mm" +
-               (p.fitted ? " chosen to fit " + std::to_string(capacity) + " points" : "") + ", max deviation " +
-               formatFixed(p.stats.maxDeviation, 6) + " mm";
-  return out;
-}
-
-PointRequest pointRequest(const EmitRequest& r) {
-  PointRequest p;
-  p.sampling = r.sampling;
-  p.maxPoints = r.maxPoints;
-  p.startLine = r.startLine;
-  p.atGuides = r.atGuides;
-  return p;
-}
-
-}  // namespace
-
-std::optional<EmitOutput> writeBp95d(const Toolpath& toolpath, const SourceFile* source, const EmitRequest& request,
-                                     Diagnostics& diags) {
-  std::optional<PointOutput> p = emitPoints(toolpath, source, request.profile, pointRequest(request), diags);
-  if (!p) return std::nullopt;
-  return fromPoints(std::move(*p), request);
-}
-
-std::optional<EmitOutput> writePoints4(const Toolpath& toolpath, const SourceFile* source, const EmitRequest& request,
-                                       Diagnostics& diags) {
-  std::optional<PointOutput> p =
-      emitPoints4(toolpath, source, request.profile, pointRequest(request), request.relativeUv, diags);
-  if (!p) return std::nullopt;
-  return fromPoints(std::move(*p), request, true);
-}
-
-bool startCutPathAt(const Toolpath& toolpath, CutPath& path, std::uint32_t startLine, const SourceFile* source,
-                    Diagnostics& diags) {
-  std::size_t k = 0;
-  while (k < path.segments.size() && toolpath.moves[path.moveIndex[k]].line != startLine) ++k;
-  if (k == path.segments.size()) {
-    diags.error(Code::StartBlockNotFound, source, SourceSpan::wholeFile(),
-                "no cutting move comes from line " + std::to_string(startLine));
-    return false;
-  }
-  const auto at = static_cast<std::ptrdiff_t>(k);
-  const bool closed = (path.segments.back().end - path.segments.front().start).norm() <= 1e-6;
-  if (closed) {
-    std::rotate(path.segments.begin(), path.segments.begin() + at, path.segments.end());
-    std::rotate(path.moveIndex.begin(), path.moveIndex.begin() + at, path.moveIndex.end());
-  } else if (k > 0) {
-    diags.warning(Code::StartBlockNotFound, source, toolpath.moves[path.moveIndex[k]].span,
-                  "the cut path is open: the " + std::to_string(k) + " cutting moves before this one are left out");
-    path.segments.erase(path.segments.begin(), path.segments.begin() + at);
-    path.moveIndex.erase(path.moveIndex.begin(), path.moveIndex.begin() + at);
-  }
-  return true;
-}
 
 std::optional<PlaneChoice> parsePlane(std::string_view text) {
   if (text == "lower") return PlaneChoice{PlaneChoice::Kind::Lower, 0.0};
@@ -134,20 +68,57 @@ std::optional<Toolpath> toolpathAtPlane(const Toolpath& toolpath, const PlaneCho
   return out;
 }
 
+namespace {
+
+// Each row's write function: the request's part for its format, the start line where it takes one.
+std::optional<EmitOutput> rowBp95d(const Toolpath& t, const SourceFile* s, const EmitRequest& r, Diagnostics& d) {
+  PointWriteOptions o = r.points;
+  o.request.startLine = r.startLine;
+  return writeBp95d(t, s, o, d);
+}
+std::optional<EmitOutput> rowPoints4(const Toolpath& t, const SourceFile* s, const EmitRequest& r, Diagnostics& d) {
+  PointWriteOptions o = r.points;
+  o.request.startLine = r.startLine;
+  return writePoints4(t, s, o, d);
+}
+std::optional<EmitOutput> rowThreeB(const Toolpath& t, const SourceFile* s, const EmitRequest& r, Diagnostics& d) {
+  ThreeBWriteOptions o = r.threeB;
+  o.startLine = r.startLine;
+  return writeThreeB(t, s, o, d);
+}
+std::optional<EmitOutput> rowFourB(const Toolpath& t, const SourceFile* s, const EmitRequest& r, Diagnostics& d) {
+  ThreeBWriteOptions o = r.threeB;
+  o.startLine = r.startLine;
+  return writeFourB(t, s, o, d);
+}
+std::optional<EmitOutput> rowIso(const Toolpath& t, const SourceFile* s, const EmitRequest& r, Diagnostics& d) {
+  return writeIso(t, s, r.iso, d);
+}
+std::optional<EmitOutput> rowPolar(const Toolpath& t, const SourceFile* s, const EmitRequest& r, Diagnostics& d) {
+  return writePolar(t, s, r.polar, d);
+}
+std::optional<EmitOutput> rowDxf(const Toolpath& t, const SourceFile* s, const EmitRequest& r, Diagnostics& d) {
+  return writeDxfProgram(t, s, r.dxf, d);
+}
+
+}  // namespace
+
 const std::vector<Emitter>& emitters() {
   static const std::vector<Emitter> table = {
       {"bp95d", "point sequence for point-driven 2-axis controllers (BP-95d): X Y per line, profile-driven",
-       PlaneNeed::One, writeBp95d},
+       PlaneNeed::One, rowBp95d},
       {"points4", "point sequence for point-driven 4-axis controllers: X Y U V per line, both planes at the same t",
-       PlaneNeed::Both, writePoints4},
+       PlaneNeed::Both, rowPoints4},
       {"3b", "Chinese fast-wire 3B code: B x B y B J G Z, whole micrometres, one file per plane", PlaneNeed::One,
-       writeThreeB},
+       rowThreeB},
       {"4b", "4B code: 3B with the radius and convex/concave marks for controls that offset the wire [unsure layout]",
-       PlaneNeed::One, writeFourB},
+       PlaneNeed::One, rowFourB},
       {"iso", "normalised ISO G-code: absolute, one move per block, I J incremental; --for a machine's conventions",
-       PlaneNeed::Both, writeIso},
+       PlaneNeed::Both, rowIso},
       {"polar", "polar X/C for mill-turn lathes: X diameter (or radius), C degrees unwrapped, spirals within tolerance",
-       PlaneNeed::One, writePolar},
+       PlaneNeed::One, rowPolar},
+      {"dxf", "a DXF drawing for CAD: the wire path on LOWER (and UPPER), the programmed contour, passes by layer",
+       PlaneNeed::Both, rowDxf},
   };
   return table;
 }

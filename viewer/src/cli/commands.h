@@ -4,6 +4,8 @@
 
 #include "options.h"
 
+#include "kerf/converter/convert.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -30,23 +32,15 @@ struct ExplainArgs {
 CLI::App* addExplainCommand(CLI::App& app, ExplainArgs& args);
 int runExplain(const ExplainArgs& args);
 
+/// kerf convert: the library's request, bound by the options; the files they name, and where the
+/// output goes.
 struct ConvertArgs {
   CommonOptions common;
-  std::string to;
-  std::optional<std::string> plane;
-  std::string uv = "absolute";
+  converter::ConvertRequest request;
+  std::optional<std::string> profile;  ///< --profile FILE: a point-file profile
+  std::optional<std::string> target;   ///< --for NAME or FILE
   std::string output = "-";
-  std::optional<std::size_t> maxPoints;
-  std::optional<std::string> profile;
-  std::optional<std::uint32_t> startBlock;
-  bool force = false;
   bool list = false;
-  std::optional<std::string> target;  ///< --for
-  std::optional<int> decimals;
-  bool compact = false;
-  std::string end = "dd";
-  std::string polarXOut = "diameter";
-  std::string pass = "all";  ///< --pass N: only each contour's Nth pass (1: the rough cut)
 };
 CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& args);
 int runConvert(const ConvertArgs& args);
@@ -94,21 +88,13 @@ struct ViewArgs {
 CLI::App* addViewCommand(CLI::App& app, ViewArgs& args);
 int runView(const ViewArgs& args);
 
+/// kerf cam: the library's request, bound by the options (the common ones give the drawing,
+/// --machine, --offset, --side and --start, the start vertex), and where the output goes.
 struct CamArgs {
-  CommonOptions common;  ///< the drawing, --machine, --offset, --side, --start (the start vertex)
-  std::string to = "iso";
+  CommonOptions common;
+  converter::CamRequest request;
   std::string output = "-";
-  std::optional<std::size_t> contour;
-  std::optional<std::string> entry;  ///< X,Y
-  double leadIn = 2.0;
-  std::string offsetBy = "kerf";         ///< kerf | controller
-  std::optional<std::string> direction;  ///< cw | ccw: overrides the wire on the right
-  std::optional<std::string> shift;      ///< DX,DY
-  std::optional<int> decimals;
-  bool compact = false;
-  std::string end = "dd";
-  std::optional<std::size_t> maxPoints;
-  bool openPaths = false;
+  bool controllerOffset = false;  ///< --offset-by controller
 };
 CLI::App* addCamCommand(CLI::App& app, CamArgs& args);
 int runCam(const CamArgs& args);

@@ -19,25 +19,28 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
   CLI::App* cmd = app.add_subcommand("convert", "write the program for another controller");
   addCommonOptions(*cmd, a.common, false);
   a.common.input.fileRequired = false;  // not with --list
-  std::vector<std::string> names;
-  for (const converter::Emitter& e : converter::emitters()) names.emplace_back(e.name);
+  converter::ConvertRequest& r = a.request;
+  addWriterOptions(*cmd, r.format, r.emit, "Output");
   cmd->add_flag("--list", a.list, "list the output formats and exit")->group("Output");
-  cmd->add_option("--to", a.to, "output format (--list shows them)")->check(CLI::IsMember(names))->group("Output");
-  cmd->add_option("--plane", a.plane,
+  cmd->add_option("--plane", r.plane,
                   "taper input to a 2-axis format: lower, upper or z=HEIGHT; points4: guides (X Y at the lower guide, "
                   "U V at the upper)")
       ->group("Output");
-  cmd->add_option("--uv", a.uv, "points4: U V as the upper point (absolute) or upper minus lower (relative)")
-      ->check(CLI::IsMember({"absolute", "relative"}))
+  addChoice<bool>(*cmd, "--uv", r.emit.points.relativeUv, {{"absolute", false}, {"relative", true}},
+                  "points4: U V as the upper point (absolute) or upper minus lower (relative)")
       ->group("Output");
   cmd->add_option("-o,--output", a.output, "output file ('-' for standard output)")->group("Output");
-  cmd->add_option("--max-points", a.maxPoints, "controller capacity: choose the step so the output fits")
-      ->check(CLI::Range(std::size_t{2}, std::size_t{100000000}))
-      ->group("Output");
   cmd->add_option("--profile", a.profile, "point-file profile (docs/bp95d.md)")->group("Output");
-  cmd->add_option("--pass", a.pass,
-                  "all (default: every pass in order) or N: of each contour only its Nth pass (1: the rough cut), "
-                  "joined by rapids (docs/passes.md)")
+  cmd->add_option_function<std::string>(
+         "--pass",
+         [&r](const std::string& v) {
+           if (v == "all")
+             r.pass.reset();
+           else
+             r.pass = std::stoul(v);
+         },
+         "all (default: every pass in order) or N: of each contour only its Nth pass (1: the rough cut), "
+         "joined by rapids (docs/passes.md)")
       ->check([](const std::string& v) {
         if (v == "all") return std::string();
         std::size_t n = 0;
@@ -47,23 +50,17 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertArgs& a) {
                    : std::string("--pass takes all or a pass number from 1 to 255");
       })
       ->group("Output");
-  cmd->add_option("--start-block", a.startBlock, "start the output at the cut move on this source line")
+  cmd->add_option("--start-block", r.emit.startLine, "start the output at the cut move on this source line")
       ->group("Output");
   cmd->add_option("--for", a.target,
                   "iso: write for this machine's conventions (a built-in profile name or a profile file; default "
                   "generic)")
       ->group("Output");
-  cmd->add_option("--decimals", a.decimals, "iso, polar: digits after the decimal point (default 3)")
-      ->check(CLI::Range(0, 6))
+  addChoice<converter::PolarX>(*cmd, "--polar-x-out", r.emit.polar.polarX,
+                               {{"diameter", converter::PolarX::Diameter}, {"radius", converter::PolarX::Radius}},
+                               "polar: X as a diameter (default) or a radius")
       ->group("Output");
-  cmd->add_flag("--compact", a.compact, "3b, 4b: records without spaces (B9900B0B9900GXL1)")->group("Output");
-  cmd->add_option("--end", a.end, "3b, 4b: the end record: dd (default), ff or none")
-      ->check(CLI::IsMember({"dd", "ff", "none"}))
-      ->group("Output");
-  cmd->add_option("--polar-x-out", a.polarXOut, "polar: X as a diameter (default) or a radius")
-      ->check(CLI::IsMember({"diameter", "radius"}))
-      ->group("Output");
-  cmd->add_flag("--force", a.force, "write the output even when the program has errors (exit 1 all the same)")
+  cmd->add_flag("--force", r.force, "write the output even when the program has errors (exit 1 all the same)")
       ->group("Output");
   return cmd;
 }
@@ -79,13 +76,10 @@ void printList() {
               << "\n";
 }
 
-/// The request from the options; false (said) when a file they name cannot be read.
-bool requestOf(const ConvertArgs& a, std::vector<std::string>& inputs, converter::ConvertRequest& r) {
+/// The files the options name (--profile, --for FILE) read into the request, and the sampling;
+/// false (said) when one cannot be read.
+bool readNamedFiles(const ConvertArgs& a, std::vector<std::string>& inputs, converter::ConvertRequest& r) {
   using namespace converter;
-  r.format = a.to;
-  r.plane = a.plane;
-  if (a.pass != "all") r.pass = std::stoul(a.pass);  // checked 1-255 where the option is declared
-  r.force = a.force;
   std::string error;
   if (a.profile) {
     std::optional<std::string> text = readTextFile(*a.profile, 1 << 20, error);
@@ -101,23 +95,16 @@ bool requestOf(const ConvertArgs& a, std::vector<std::string>& inputs, converter
   } else if (a.target) {
     std::optional<std::string> text = readTextFile(*a.target, 1 << 20, error);
     if (!text) {
-      reportError("--for '" + *a.target + "' is neither a built-in machine (kerf machines lists them) nor a file: " +
-                  error);
+      reportError("--for '" + *a.target +
+                  "' is neither a built-in machine (kerf machines lists them) nor a file: " + error);
       return false;
     }
     inputs.push_back(*a.target);
     r.targetFile = SourceText{*a.target, std::move(*text)};
   }
-  EmitRequest& e = r.emit;
-  e.sampling = a.common.sampling.sampling();
-  e.maxPoints = a.maxPoints;
-  e.startLine = a.startBlock;
-  e.relativeUv = a.uv == "relative";
-  e.decimals = a.decimals;
-  e.compact = a.compact;
-  e.end = a.end == "none" ? std::string() : a.end == "ff" ? std::string("FF") : std::string("DD");
-  e.polarX = a.polarXOut == "radius" ? PolarX::Radius : PolarX::Diameter;
-  e.tolerance = a.common.sampling.tolerance.value_or(0.001);
+  r.tolerance = a.common.sampling.tolerance.value_or(0.001);
+  r.emit.points.request.sampling = a.common.sampling.sampling();
+  r.emit.polar.tolerance = r.tolerance;
   return true;
 }
 
@@ -129,7 +116,7 @@ int runConvert(const ConvertArgs& a) {
     printList();
     return kExitOk;
   }
-  if (a.common.input.files.empty() || a.to.empty()) {
+  if (a.common.input.files.empty() || a.request.format.empty()) {
     reportError(a.common.input.files.empty() ? "convert needs a program (or --list)"
                                              : "convert needs --to FORMAT (kerf convert --list shows them)");
     return kExitUsage;
@@ -137,8 +124,8 @@ int runConvert(const ConvertArgs& a) {
   std::optional<Loaded> in = load(a.common, a.common.input.files.front());
   if (!in) return kExitUsage;
   const Pipeline& p = in->pipeline;
-  ConvertRequest request;
-  if (!requestOf(a, in->inputs, request)) return kExitUsage;
+  ConvertRequest request = a.request;
+  if (!readNamedFiles(a, in->inputs, request)) return kExitUsage;
   const Conversion c = convert(p, request);
   printDiagnostics(c.diags, a.common);
   switch (c.status) {

@@ -6,7 +6,7 @@
 #include "file_io.h"
 #include "load.h"
 
-#include "kerf/converter/formats/dxf/write_dxf.h"
+#include "kerf/converter/convert.h"
 
 #include <CLI/CLI.hpp>
 
@@ -44,30 +44,25 @@ int runDxfExport(const ExportArgs& a) {
     reportError("--dxf must be r12 or r2000, not '" + a.dxfVersion + "'");
     return kExitUsage;
   }
-  std::optional<Loaded> in = loadOne(a.common);
+  std::optional<Loaded> in = load(a.common, a.common.input.files.front());
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  converter::DxfWriteOptions options;
-  options.version = *version;
-  options.rapids = a.rapids;
-  options.movePass = converter::movePasses(p.structure, p.toolpath.moves.size());
-  if (p.comparison)  // --drawing: its elements out of tolerance on DEVIATION
-    for (const converter::ElementDeviation& e : p.comparison->elements)
-      if (e.deviation > p.comparison->tolerance) options.deviation.push_back(p.comparison->drawn[e.element]);
-  converter::DxfWriteCounts counts;
-  const std::string text = converter::writeDxf(p.toolpath, options, &counts);
-  if (counts.lines + counts.arcs + counts.circles == 0) {
-    reportError("nothing is cut, so there is no contour to export");
-    return kExitErrors;
-  }
+  // Through the writer table, as kerf convert --to dxf: a drawing says what the program does, errors
+  // and all (as a picture does).
+  converter::ConvertRequest request;
+  request.format = "dxf";
+  request.force = true;
+  request.emit.dxf.version = *version;
+  request.emit.dxf.rapids = a.rapids;
+  const converter::Conversion c = converter::convert(p, request);
+  printDiagnostics(c.diags, a.common);
+  if (c.status != converter::WriteStatus::Written) return kExitErrors;
   std::string error;
-  if (!writeOutput(a.output, in->inputs, text, error)) {
+  if (!writeOutput(a.output, in->inputs, c.output->text, error)) {
     reportError(error);
     return kExitUsage;
   }
-  std::cerr << "kerf: wrote " << counts.lines << " lines, " << counts.arcs << " arcs, " << counts.circles
-            << " circles to " << a.output << " (DXF " << (*version == converter::DxfVersion::R12 ? "R12" : "R2000")
-            << ")\n";
+  std::cerr << "kerf: wrote " << c.output->what << " to " << a.output << c.output->detail << "\n";
   return verdictExit(p);
 }
 

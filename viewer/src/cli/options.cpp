@@ -1,3 +1,5 @@
+// The options of the kerf program, each declared once (options.h).
+// Sections: 1. the option groups  2. values given as text  3. the pipeline's options
 #include "options.h"
 
 #include "kerf/converter/report/ci_report.h"
@@ -13,6 +15,8 @@
 #include <filesystem>
 
 namespace kerf::cli {
+
+// ---- 1. the option groups -----------------------------------------------------------------------
 
 geometry::Sampling SamplingOptions::sampling() const {
   if (tolerance) return geometry::Sampling::tolerance(*tolerance);
@@ -82,120 +86,142 @@ void addInputOptions(CLI::App& cmd, InputOptions& o, bool manyFiles) {
       ->group("Input");
 }
 
-/// The reading group: what the words mean: format, conventions, offsets, heights.
-void addReadingOptions(CLI::App& cmd, ReadingOptions& o) {
+std::optional<std::array<double, 2>> heightsOption(const std::string& text, const char* option, std::string& error);
+
+/// The reading group: what the words mean: format, conventions, offsets, heights. Bound to the
+/// library's ReadOptions; --offsets names a file, read with the others (pipelineOptions).
+void addReadingOptions(CLI::App& cmd, converter::ReadOptions& r, OptionFiles& files) {
+  using namespace converter;
   const std::string reading = "Reading (default: the machine profile's, else the program's evidence)";
-  cmd.add_option("--input-format", o.format, "input format; auto: detected from the content (docs/formats.md)")
-      ->check(CLI::IsMember({"auto", "iso", "3b", "dxf", "curve"}))
+  addChoice<std::optional<InputFormat>>(cmd, "--input-format", r.format,
+                                        {{"auto", std::nullopt},
+                                         {"iso", InputFormat::Iso},
+                                         {"3b", InputFormat::ThreeB},
+                                         {"dxf", InputFormat::Dxf},
+                                         {"curve", InputFormat::Curve}},
+                                        "input format; auto: detected from the content (docs/formats.md)")
       ->group(reading);
-  cmd.add_option("--start", o.start,
-                 "where a 3B program starts, X,Y in mm (default: where its --upper program starts, else 0,0)")
+  addParsed<geometry::Vec2>(
+      cmd, "--start", "X,Y", pointOption, [&r](const geometry::Vec2& v) { r.start = v; },
+      "where a 3B program starts, X,Y in mm (default: where its --upper program starts, else 0,0)")
       ->group(reading);
-  cmd.add_option("--polar-x", o.polarX,
-                 "X inside G12.1/G112 polar interpolation: radius or diameter (default: the machine profile's)")
-      ->check(CLI::IsMember({"radius", "diameter"}))
+  addChoice<std::optional<bool>>(
+      cmd, "--polar-x", r.polarXDiameter, {{"radius", false}, {"diameter", true}},
+      "X inside G12.1/G112 polar interpolation: radius or diameter (default: the machine profile's)")
       ->group(reading);
-  cmd.add_option("--dxf-units", o.dxfUnits,
-                 "a DXF drawing's unit: file (the default: as its $INSUNITS says, unitless read as mm), or mm or in "
-                 "whatever it says (docs/dxf.md)")
-      ->check(CLI::IsMember({"mm", "in", "file"}))
+  addChoice<std::optional<double>>(
+      cmd, "--dxf-units", r.dxfUnit, {{"mm", 1.0}, {"in", 25.4}, {"file", 0.0}},
+      "a DXF drawing's unit: file (the default: as its $INSUNITS says, unitless read as mm), or mm or in "
+      "whatever it says (docs/dxf.md)")
       ->group(reading);
-  cmd.add_option("--curve-tolerance", o.curveTolerance,
+  cmd.add_option("--curve-tolerance", r.curveTolerance,
                  "curves (--curve, a .curve file, DXF SPLINE and ELLIPSE) as biarcs within this, mm (default 0.001)")
       ->check(CLI::Range(1e-6, 10.0))
       ->group(reading);
-  cmd.add_option("--chain-tolerance", o.chainTolerance,
+  cmd.add_option("--chain-tolerance", r.chainTolerance,
                  "a DXF drawing's element ends this close (mm) are one point of a contour (default 0.001)")
       ->check(CLI::Range(1e-9, 10.0))
       ->group(reading);
-  cmd.add_option("--polar-frame", o.polarFrame,
-                 "the G12.1/G112 frame: tool (turned by the table's C at G12.1, as Fanuc says) or table (the "
-                 "table at C 0, as seed 002's post means); default: the machine profile's")
-      ->check(CLI::IsMember({"tool", "table"}))
+  addChoice<std::optional<bool>>(
+      cmd, "--polar-frame", r.polarFrameTable, {{"tool", false}, {"table", true}},
+      "the G12.1/G112 frame: tool (turned by the table's C at G12.1, as Fanuc says) or table (the "
+      "table at C 0, as seed 002's post means); default: the machine profile's")
       ->group(reading);
-  cmd.add_option("--integer-unit", o.integerUnit, "unit of coordinates written without a decimal point")
-      ->check(CLI::IsMember({"mm", "um"}))
+  addChoice<std::optional<IntegerUnit>>(cmd, "--integer-unit", r.integerUnit,
+                                        {{"mm", IntegerUnit::Millimetre}, {"um", IntegerUnit::Micrometre}},
+                                        "unit of coordinates written without a decimal point")
       ->group(reading);
-  cmd.add_option("--arc-centre", o.arcCentre, "how I J give an arc's centre")
-      ->check(CLI::IsMember({"incremental", "reversed", "absolute"}))
+  addChoice<std::optional<ArcCentreMode>>(cmd, "--arc-centre", r.arcCentre,
+                                          {{arcCentreName(ArcCentreMode::Incremental), ArcCentreMode::Incremental},
+                                           {arcCentreName(ArcCentreMode::Reversed), ArcCentreMode::Reversed},
+                                           {arcCentreName(ArcCentreMode::Absolute), ArcCentreMode::Absolute}},
+                                          "how I J give an arc's centre")
       ->group(reading);
-  cmd.add_option("--offset", o.offset,
+  cmd.add_option("--offset", r.wireOffset,
                  "wire offset in mm (wire radius plus spark gap): for G41/G42 without D or H; for a drawing "
                  "with --side, its wire path")
       ->check(CLI::Range(0.0, 100.0))
       ->group(reading);
-  cmd.add_option("--offsets", o.offsets,
+  cmd.add_option("--offsets", files.offsets,
                  "an offset table file, one register a line (H001 = 0.180, mm): the values of G41/G42 D.. or H.. "
                  "the program's own table does not give (docs/passes.md)")
       ->group(reading);
-  cmd.add_option("--side", o.side,
-                 "a drawing's wire side with --offset: outside (a punch) or inside (a die) of the outermost "
-                 "contours; holes in them get the other side")
-      ->check(CLI::IsMember({"outside", "inside"}))
+  addChoice<std::optional<WireSide>>(
+      cmd, "--side", r.side, {{"outside", WireSide::Outside}, {"inside", WireSide::Inside}},
+      "a drawing's wire side with --offset: outside (a punch) or inside (a die) of the outermost "
+      "contours; holes in them get the other side")
       ->group(reading);
-  cmd.add_option("--dialect", o.dialect, "4-axis dialect (docs/taper.md); auto: detected from the words")
-      ->check(CLI::IsMember({"auto", "plain", "xyuv-abs", "xyuv-rel", "xyuv-linuxcnc", "sodick-colon", "taper-angle"}))
+  std::vector<std::pair<std::string, std::optional<Dialect>>> dialects = {{"auto", std::nullopt}};
+  for (const Dialect d : {Dialect::Plain, Dialect::XyuvAbs, Dialect::XyuvRel, Dialect::XyuvLinuxCnc,
+                          Dialect::SodickColon, Dialect::TaperAngle})
+    dialects.emplace_back(dialectName(d), d);
+  addChoice(cmd, "--dialect", r.dialect, dialects, "4-axis dialect (docs/taper.md); auto: detected from the words")
       ->group(reading);
-  cmd.add_option("--upper-axes", o.upperAxes, "names of the second plane's axes: uv, or uz (some hot-wire firmware)")
-      ->check(CLI::IsMember({"uv", "uz"}))
+  addChoice<std::optional<bool>>(cmd, "--upper-axes", r.upperAxesUZ, {{"uv", false}, {"uz", true}},
+                                 "names of the second plane's axes: uv, or uz (some hot-wire firmware)")
       ->group(reading);
   // Heights within a kilometre, as every coordinate Kerf reads (docs/formats.md).
   const auto kHeight = CLI::Range(-1e6, 1e6);
-  cmd.add_option("--lower-z", o.lowerZ, "z of the lower contour's plane, mm (default 0)")
+  cmd.add_option("--lower-z", r.lowerZ, "z of the lower contour's plane, mm (default 0)")
       ->check(kHeight)
       ->group(reading);
   auto* upperZ =
-      cmd.add_option("--upper-z", o.upperZ, "z of the upper contour's plane, mm")->check(kHeight)->group(reading);
+      cmd.add_option("--upper-z", r.upperZ, "z of the upper contour's plane, mm")->check(kHeight)->group(reading);
   auto* thickness =
-      cmd.add_option("--thickness", o.thickness, "upper minus lower plane, mm")->check(kPositiveLength)->group(reading);
+      cmd.add_option("--thickness", r.thickness, "upper minus lower plane, mm")->check(kPositiveLength)->group(reading);
   upperZ->excludes(thickness);
-  cmd.add_option("--program-z", o.programZ, "z of the programmed contour (taper-angle, xyuv-rel), mm")
+  cmd.add_option("--program-z", r.programZ, "z of the programmed contour (taper-angle, xyuv-rel), mm")
       ->check(kHeight)
       ->group(reading);
-  cmd.add_option("--guides", o.guides,
-                 "LOWER_Z,UPPER_Z: the wire guides' heights, mm, the part's lower face at 0 (default: the program's "
-                 "M100 P Q, else the machine profile's guides)")
+  addParsed<std::array<double, 2>>(
+      cmd, "--guides", "LOWER_Z,UPPER_Z", heightsOption, [&r](const std::array<double, 2>& v) { r.guides = v; },
+      "LOWER_Z,UPPER_Z: the wire guides' heights, mm, the part's lower face at 0 (default: the program's "
+      "M100 P Q, else the machine profile's guides)")
       ->group(reading);
-  cmd.add_option("--workpiece", o.workpiece,
-                 "Z0,Z1: the work's faces, mm, where the program's planes are the machine's (a hot-wire foam "
-                 "cutter's carriages): the part is the wire's cut between them, the planes become the guides")
+  addParsed<std::array<double, 2>>(
+      cmd, "--workpiece", "Z0,Z1", heightsOption, [&r](const std::array<double, 2>& v) { r.workpiece = v; },
+      "Z0,Z1: the work's faces, mm, where the program's planes are the machine's (a hot-wire foam "
+      "cutter's carriages): the part is the wire's cut between them, the planes become the guides")
       ->group(reading);
 }
 
-/// The check group: the machine's limits, the time estimate's speed, which diagnostics show and how.
-void addCheckOptions(CLI::App& cmd, CheckOptions& o) {
+/// The check group: the machine's limits, the time estimate's speed and the drawing, bound to the
+/// library's options (--drawing and --drawing-upper name files); which diagnostics show and how.
+void addCheckOptions(CLI::App& cmd, converter::PipelineOptions& p, OptionFiles& files, CheckOptions& o) {
   const std::string checks = "Checks (default: the machine profile's limits)";
-  cmd.add_option("--max-taper", o.maxTaper, "the machine's largest wire slope, degrees (generic: 30)")
+  cmd.add_option("--max-taper", p.check.maxTaperDegrees, "the machine's largest wire slope, degrees (generic: 30)")
       ->check(CLI::Range(0.0, 89.0))
       ->group(checks);
-  cmd.add_option("--uv-range", o.uvRange, "largest U/V travel from the lower guide, mm")
+  cmd.add_option("--uv-range", p.check.uvRange, "largest U/V travel from the lower guide, mm")
       ->check(kPositiveLength)
       ->group(checks);
-  cmd.add_option("--speed", o.speed,
+  cmd.add_option("--speed", p.check.speed,
                  "cutting speed of every cut for the time estimate, mm/min (default: the machine profile's speed "
                  "model, docs/passes.md)")
       ->check(CLI::Range(0.001, 100000.0))
       ->group(checks);
   cmd.add_option(
-         "--drawing", o.drawing,
+         "--drawing", files.drawing,
          "the drawing (DXF) the program should cut: each element against the part edge, both ways (docs/drawing.md)")
       ->group(checks);
-  cmd.add_option("--drawing-tolerance", o.drawingTolerance,
+  cmd.add_option("--drawing-tolerance", p.drawingCheck.tolerance,
                  "how far the part edge may lie from the drawing, mm (default 0.005)")
       ->check(CLI::Range(1e-6, 100.0))
       ->group(checks);
-  cmd.add_option("--drawing-origin", o.drawingOrigin,
-                 "the drawing's point at the program's origin, X,Y in mm (default 0,0)")
+  addParsed<geometry::Vec2>(
+      cmd, "--drawing-origin", "X,Y", pointOption, [&p](const geometry::Vec2& v) { p.drawingCheck.origin = v; },
+      "the drawing's point at the program's origin, X,Y in mm (default 0,0)")
       ->group(checks);
-  cmd.add_option("--drawing-layer", o.drawingLayer, "compare only this layer of the drawing (default: every layer)")
+  cmd.add_option("--drawing-layer", p.drawingCheck.layer,
+                 "compare only this layer of the drawing (default: every layer)")
       ->group(checks);
-  cmd.add_option("--drawing-upper", o.drawingUpper,
+  cmd.add_option("--drawing-upper", files.drawingUpper,
                  "a taper program's upper plane against this drawing (DXF), each plane with its own deviations")
       ->group(checks);
-  cmd.add_option("--drawing-upper-layer", o.drawingUpperLayer,
+  cmd.add_option("--drawing-upper-layer", p.drawingCheck.upperLayer,
                  "the upper plane against this layer (of --drawing-upper, or of --drawing when it is not given)")
       ->group(checks);
-  cmd.add_flag("--align", o.drawingAlign,
+  cmd.add_flag("--align", p.drawingCheck.align,
                "place the drawing where it fits the part edge best (a turn and a shift, or a mirror), and say where")
       ->group(checks);
   cmd.add_option("--max-diagnostics", o.maxDiagnostics, "show at most this many diagnostics (default 50)")
@@ -228,9 +254,34 @@ void addSamplingOptions(CLI::App& cmd, SamplingOptions& o) {
 
 void addCommonOptions(CLI::App& cmd, CommonOptions& o, bool manyFiles) {
   addInputOptions(cmd, o.input, manyFiles);
-  addReadingOptions(cmd, o.reading);
-  addCheckOptions(cmd, o.checks);
+  addReadingOptions(cmd, o.pipeline.read, o.files);
+  addCheckOptions(cmd, o.pipeline, o.files, o.checks);
   addSamplingOptions(cmd, o.sampling);
+}
+
+void addWriterOptions(CLI::App& cmd, std::string& format, converter::EmitRequest& emit, const std::string& group) {
+  std::vector<std::string> names;
+  for (const converter::Emitter& e : converter::emitters()) names.emplace_back(e.name);
+  cmd.add_option("--to", format, "output format (kerf convert --list shows them)")
+      ->check(CLI::IsMember(names))
+      ->group(group);
+  cmd.add_option_function<int>(
+         "--decimals",
+         [&emit](const int& d) {
+           emit.iso.decimals = d;
+           emit.polar.decimals = d;
+         },
+         "iso, polar: digits after the decimal point (default: the machine's, 3)")
+      ->check(CLI::Range(0, 6))
+      ->group(group);
+  cmd.add_flag("--compact", emit.threeB.compact, "3b, 4b: records without spaces (B9900B0B9900GXL1)")->group(group);
+  addChoice<std::string>(cmd, "--end", emit.threeB.end, {{"dd", "DD"}, {"ff", "FF"}, {"none", ""}},
+                         "3b, 4b: the end record: dd (default), ff or none")
+      ->group(group);
+  cmd.add_option("--max-points", emit.points.request.maxPoints,
+                 "bp95d, points4: controller capacity: choose the step so the output fits")
+      ->check(CLI::Range(std::size_t{2}, std::size_t{100000000}))
+      ->group(group);
 }
 
 void addMeshOptions(CLI::App& cmd, MeshOptions& o, bool generators) {
@@ -249,6 +300,8 @@ void addMeshOptions(CLI::App& cmd, MeshOptions& o, bool generators) {
         ->check(CLI::IsMember({"guides"}))
         ->group("Mesh");
 }
+
+// ---- 2. values given as text --------------------------------------------------------------------
 
 bool sizeOption(const std::string& text, int& w, int& h) {
   int consumed = 0;
@@ -324,9 +377,13 @@ std::optional<std::array<double, 2>> heightsOption(const std::string& text, cons
 
 }  // namespace
 
+// ---- 3. the pipeline's options ------------------------------------------------------------------
+
 bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, std::string& error) {
   using namespace converter;
+  out = o.pipeline;
   ReadOptions& r = out.read;
+  if (o.input.curve && !r.format) r.format = InputFormat::Curve;
   if (o.input.machine) {
     if (findBuiltinMachine(*o.input.machine)) {
       r.machine = *o.input.machine;
@@ -343,58 +400,17 @@ bool pipelineOptions(const CommonOptions& o, converter::PipelineOptions& out, st
       r.machineFile = SourceText{*o.input.machine, std::move(*text)};
     }
   }
-  if (o.reading.offsets) {
-    std::optional<std::string> text = readTextFile(*o.reading.offsets, 1 << 20, error);
+  // The files the options name: their texts, as the library takes them.
+  auto read = [&](const std::optional<std::string>& file, std::size_t cap, std::optional<SourceText>& into) {
+    if (!file) return true;
+    std::optional<std::string> text = readTextFile(*file, cap, error);
     if (!text) return false;
-    r.offsetsFile = SourceText{*o.reading.offsets, std::move(*text)};
-  }
-  if (o.reading.format != "auto") r.format = parseInputFormat(o.reading.format);
-  if (o.reading.start) {
-    r.start = pointOption(*o.reading.start, "--start", error);
-    if (!r.start) return false;
-  }
-  if (o.reading.polarX) r.polarXDiameter = *o.reading.polarX == "diameter";
-  if (o.reading.polarFrame) r.polarFrameTable = *o.reading.polarFrame == "table";
-  if (o.reading.dxfUnits) r.dxfUnit = *o.reading.dxfUnits == "mm" ? 1.0 : *o.reading.dxfUnits == "in" ? 25.4 : 0.0;
-  if (o.reading.chainTolerance) r.chainTolerance = *o.reading.chainTolerance;
-  if (o.reading.curveTolerance) r.curveTolerance = *o.reading.curveTolerance;
-  if (o.input.curve && o.reading.format == "auto") r.format = InputFormat::Curve;
-  if (o.reading.integerUnit)
-    r.integerUnit = *o.reading.integerUnit == "um" ? IntegerUnit::Micrometre : IntegerUnit::Millimetre;
-  if (o.reading.arcCentre) r.arcCentre = parseArcCentre(*o.reading.arcCentre);
-  r.dialect = parseDialect(o.reading.dialect);
-  r.lowerZ = o.reading.lowerZ;
-  r.upperZ = o.reading.upperZ;
-  r.thickness = o.reading.thickness;
-  r.programZ = o.reading.programZ;
-  if (o.reading.guides && !(r.guides = heightsOption(*o.reading.guides, "--guides", error))) return false;
-  if (o.reading.workpiece && !(r.workpiece = heightsOption(*o.reading.workpiece, "--workpiece", error))) return false;
-  r.wireOffset = o.reading.offset;
-  if (o.reading.side) r.side = *o.reading.side == "inside" ? WireSide::Inside : WireSide::Outside;
-  if (o.reading.upperAxes) r.upperAxesUZ = *o.reading.upperAxes == "uz";
-  if (o.checks.drawing) {
-    std::optional<std::string> text = readTextFile(*o.checks.drawing, o.input.maxInputMiB << 20, error);
-    if (!text) return false;
-    out.drawing = SourceText{*o.checks.drawing, std::move(*text)};
-  }
-  if (o.checks.drawingUpper) {
-    std::optional<std::string> text = readTextFile(*o.checks.drawingUpper, o.input.maxInputMiB << 20, error);
-    if (!text) return false;
-    out.drawingUpper = SourceText{*o.checks.drawingUpper, std::move(*text)};
-  }
-  out.drawingCheck.tolerance = o.checks.drawingTolerance;
-  out.drawingCheck.layer = o.checks.drawingLayer;
-  out.drawingCheck.upperLayer = o.checks.drawingUpperLayer;
-  out.drawingCheck.align = o.checks.drawingAlign;
-  if (o.checks.drawingOrigin) {
-    const std::optional<geometry::Vec2> origin = pointOption(*o.checks.drawingOrigin, "--drawing-origin", error);
-    if (!origin) return false;
-    out.drawingCheck.origin = *origin;
-  }
-  out.check.maxTaperDegrees = o.checks.maxTaper;
-  out.check.uvRange = o.checks.uvRange;
-  out.check.speed = o.checks.speed;
-  return true;
+    into = SourceText{*file, std::move(*text)};
+    return true;
+  };
+  return read(o.files.offsets, 1 << 20, r.offsetsFile) &&
+         read(o.files.drawing, o.input.maxInputMiB << 20, out.drawing) &&
+         read(o.files.drawingUpper, o.input.maxInputMiB << 20, out.drawingUpper);
 }
 
 }  // namespace kerf::cli

@@ -2,16 +2,16 @@
 // commands that take it; every default lives here, in the member initialisers.
 #pragma once
 
+#include "kerf/converter/formats/emit.h"
 #include "kerf/converter/pipeline.h"
 #include "kerf/geometry/tessellation.h"
 
+#include <CLI/CLI.hpp>
+
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
-
-namespace CLI {
-class App;
-}
 
 namespace kerf::cli {
 
@@ -36,39 +36,16 @@ inline constexpr const char* kCurveInput = "--curve";
 /// The text a --curve input reads as: the statements of --curve, then "; t = " --t.
 std::string curveText(const InputOptions& input);
 
-/// What the program means (docs/machines.md: options first, then the profile, then the evidence).
-struct ReadingOptions {
-  std::string format = "auto";             ///< auto | iso | 3b
-  std::optional<std::string> start;        ///< X,Y (3B)
-  std::optional<std::string> polarX;       ///< diameter | radius (inside G12.1)
-  std::optional<std::string> polarFrame;   ///< tool | table (the G12.1 frame)
-  std::optional<std::string> dxfUnits;     ///< mm | in | file (DXF drawings)
-  std::optional<double> chainTolerance;    ///< mm (DXF drawings)
-  std::optional<double> curveTolerance;    ///< mm (curves, SPLINE, ELLIPSE as biarcs)
-  std::optional<std::string> integerUnit;  ///< mm | um
-  std::optional<std::string> arcCentre;    ///< incremental | reversed | absolute
-  std::optional<double> offset;            ///< --offset, mm
-  std::optional<std::string> offsets;      ///< --offsets FILE: an offset table
-  std::optional<std::string> side;         ///< --side outside|inside (drawings)
-  std::string dialect = "auto";
-  std::optional<double> lowerZ, upperZ, thickness, programZ;
-  std::optional<std::string> guides;     ///< LOWER_Z,UPPER_Z: the wire guides, mm (lower face at 0)
-  std::optional<std::string> workpiece;  ///< Z0,Z1: the work's faces where the planes are the machine's
-  std::optional<std::string> upperAxes;  ///< uv | uz
+/// The files the reading and check options name (the program reads them; the library takes their
+/// text). What the options mean is bound straight to the library's converter::PipelineOptions.
+struct OptionFiles {
+  std::optional<std::string> offsets;       ///< --offsets FILE: an offset table
+  std::optional<std::string> drawing;       ///< --drawing FILE (DXF)
+  std::optional<std::string> drawingUpper;  ///< --drawing-upper FILE (DXF)
 };
 
-/// The checks' settings (defaults: the machine profile's).
+/// Which diagnostics show and how (the program's concern, not the library's).
 struct CheckOptions {
-  std::optional<double> maxTaper;            ///< degrees
-  std::optional<double> uvRange;             ///< mm
-  std::optional<double> speed;               ///< --speed, mm/min
-  std::optional<std::string> drawing;        ///< --drawing FILE (DXF)
-  double drawingTolerance = 0.005;           ///< --drawing-tolerance, mm
-  std::optional<std::string> drawingOrigin;  ///< --drawing-origin X,Y
-  std::string drawingLayer;                  ///< --drawing-layer NAME (empty: every layer)
-  bool drawingAlign = false;                 ///< --align
-  std::optional<std::string> drawingUpper;   ///< --drawing-upper FILE (DXF)
-  std::string drawingUpperLayer;             ///< --drawing-upper-layer NAME
   std::size_t maxDiagnostics = 50;
   std::vector<std::string> codeOptions;  ///< -W values as given: no-K0604, error=K0650, error
   bool quiet = false;                    ///< --quiet: errors only
@@ -92,10 +69,13 @@ struct MeshOptions {
   std::vector<std::string> show;          ///< --show: more to draw (guides: the wire at its guides)
 };
 
-/// What every command that reads a program takes.
+/// What every command that reads a program takes. Each option is declared once (options.cpp): the
+/// ones the library takes are bound to `pipeline`, typed, with the library's defaults; the rest
+/// (files to read, what the terminal shows) live in the groups beside it.
 struct CommonOptions {
   InputOptions input;
-  ReadingOptions reading;
+  converter::PipelineOptions pipeline;  ///< reading, checks, the drawing: as the library takes them
+  OptionFiles files;
   CheckOptions checks;
   SamplingOptions sampling;
 };
@@ -110,13 +90,62 @@ void addMeshOptions(CLI::App& command, MeshOptions& options, bool generators);
 /// WIDTHxHEIGHT between 16 and 8192; false after saying what is wrong.
 bool sizeOption(const std::string& text, int& width, int& height);
 
-/// The pipeline's options from the command line, reading --machine FILE when it names a file.
-/// False with a message when a file cannot be read.
+/// The pipeline's options from the command line: `pipeline`, with the texts of the files the options
+/// name (--machine FILE, --offsets, --drawing, --drawing-upper). False with a message when a file
+/// cannot be read.
 bool pipelineOptions(const CommonOptions& options, converter::PipelineOptions& out, std::string& error);
 
 /// An option's X,Y in mm (`--start`, `--entry`, `--drawing-origin`), each within 1e6 mm; nothing,
 /// with `error` saying why, otherwise.
 std::optional<geometry::Vec2> pointOption(const std::string& text, const char* option, std::string& error);
+
+/// Adds the options every writer's command takes, bound to the writer table's request: --to (into
+/// `format`), --decimals, --compact, --end, --max-points.
+void addWriterOptions(CLI::App& command, std::string& format, converter::EmitRequest& emit, const std::string& group);
+
+// The two ways an option is bound to a library field that is not a plain number or string.
+
+/// A choice among names, each meaning a value of the library's option: the text checked against
+/// the names (so CLI11 says which it takes) and the value stored in `target`.
+template <class T>
+CLI::Option* addChoice(CLI::App& cmd, const std::string& name, T& target,
+                       const std::vector<std::pair<std::string, T>>& choices, const std::string& help) {
+  std::vector<std::string> names;
+  for (const auto& choice : choices) names.push_back(choice.first);
+  return cmd
+      .add_option_function<std::string>(
+          name,
+          [&target, choices](const std::string& text) {
+            for (const auto& [n, value] : choices)
+              if (n == text) target = value;
+          },
+          help)
+      ->check(CLI::IsMember(names));
+}
+
+/// An option whose text the library takes parsed (X,Y; LOWER,UPPER): checked with `parse` (its
+/// error said after the option's name), the value handed to `store`.
+template <class V, class Store>
+CLI::Option* addParsed(CLI::App& cmd, const std::string& name, const char* shape,
+                       std::optional<V> (*parse)(const std::string&, const char*, std::string&), Store store,
+                       const std::string& help) {
+  const std::string flag = name.substr(name.rfind(',') == std::string::npos ? 0 : name.rfind(',') + 1);
+  return cmd
+      .add_option_function<std::string>(
+          name,
+          [flag, parse, store](const std::string& text) {
+            std::string error;
+            if (const std::optional<V> v = parse(text, flag.c_str(), error)) store(*v);
+          },
+          help)
+      ->check(CLI::Validator(
+          [flag, parse](std::string& text) {
+            std::string error;
+            if (parse(text, flag.c_str(), error)) return std::string();
+            return error.starts_with(flag + " ") ? error.substr(flag.size() + 1) : error;
+          },
+          shape));
+}
 
 /// The machine profile names `--machine` accepts besides a file.
 std::vector<std::string> builtinMachineNames();

@@ -24,7 +24,8 @@ struct ConvertRequest {
   std::optional<SourceText> pointProfile;  ///< a point-file profile's text (docs/bp95d.md)
   std::optional<std::string> target;       ///< the built-in machine an ISO output is written for
   std::optional<SourceText> targetFile;    ///< or a machine profile's text
-  EmitRequest emit;                        ///< the writer's settings; convert fills target, profile, planes
+  EmitRequest emit;                        ///< the writers' settings; convert fills target, profile, planes
+  double tolerance = 0.001;                ///< mm: a section between a taper's planes (--plane z=H)
   bool force = false;                      ///< write a program that has errors
 };
 
@@ -51,7 +52,7 @@ Conversion convert(const Pipeline& p, const ConvertRequest& r);
 struct CamRequest {
   CamOptions cam;
   std::string format = "iso";  ///< a writer's name
-  EmitRequest emit;            ///< decimals, compact, end, capacity, sampling (cam fills target and the rest)
+  EmitRequest emit;            ///< decimals, compact, end, capacity, sampling (cam fills the ISO target and marks)
   /// The options `kerf check` would read the program made with (their reading options are replaced
   /// by the written format's and the drawing's machine).
   PipelineOptions readBack;

@@ -1,4 +1,4 @@
-// 3B geometry shared by the reader (read_3b.cpp) and the writer (emit_3b.cpp): quadrant codes and
+// 3B geometry shared by the reader (read_3b.cpp) and the writer (write_3b.cpp): quadrant codes and
 // the count J of an arc over every quadrant piece it crosses (docs/3b.md, FORMATS §4).
 #pragma once
 

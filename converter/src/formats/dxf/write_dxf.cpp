@@ -434,4 +434,20 @@ std::string writeDxf(const Toolpath& tp, const DxfWriteOptions& options, DxfWrit
   return head.text_ + body.text_;
 }
 
+std::optional<EmitOutput> writeDxfProgram(const Toolpath& toolpath, const SourceFile* source,
+                                          const DxfWriteOptions& options, Diagnostics& diags) {
+  DxfWriteCounts counts;
+  EmitOutput out;
+  out.text = writeDxf(toolpath, options, &counts);
+  if (counts.lines + counts.arcs + counts.circles == 0) {
+    diags.error(Code::NothingToWrite, source, SourceSpan::wholeFile(),
+                "nothing to write: nothing is cut, so there is no contour to draw");
+    return std::nullopt;
+  }
+  out.what = std::to_string(counts.lines) + " lines, " + std::to_string(counts.arcs) + " arcs, " +
+             std::to_string(counts.circles) + " circles";
+  out.detail = std::string(" (DXF ") + (options.version == DxfVersion::R12 ? "R12" : "R2000") + ")";
+  return out;
+}
+
 }  // namespace kerf::converter

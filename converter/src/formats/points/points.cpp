@@ -3,13 +3,13 @@
 #include <array>
 
 #include "kerf/converter/check/summary.h"
-#include "kerf/converter/formats/emit.h"
 #include "kerf/converter/nc/number_format.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 namespace kerf::converter {
 
@@ -37,6 +37,83 @@ std::string unquote(std::string_view v, bool& ok) {
 
 }  // namespace
 
+namespace {
+
+/// One `key = value` line of a point profile: where its parts are, and how a wrong value is said.
+struct ProfileLine {
+  std::string_view key, value;
+  std::size_t keyCol = 0, valueCol = 0;
+  std::function<void(std::size_t, std::size_t, const std::string&, const std::string&)> fail;
+
+  void failValue(const std::string& message) const { fail(valueCol, value.size(), message, {}); }
+  bool integer(long lo, long hi, long& out) const {
+    long v = 0;
+    const auto r = std::from_chars(value.data(), value.data() + value.size(), v);
+    if (r.ec != std::errc{} || r.ptr != value.data() + value.size() || v < lo || v > hi) {
+      failValue(std::string(key) + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+      return false;
+    }
+    out = v;
+    return true;
+  }
+  void boolean(bool& out) const {
+    if (value == "true" || value == "yes")
+      out = true;
+    else if (value == "false" || value == "no")
+      out = false;
+    else
+      failValue(std::string(key) + " must be true or false");
+  }
+  /// One of two words: `no` gives false, `yes` true.
+  void either(std::string_view no, std::string_view yes, bool& out, const char* message) const {
+    if (value == no)
+      out = false;
+    else if (value == yes)
+      out = true;
+    else
+      failValue(message);
+  }
+  /// The line's value set on p (its errors said through fail).
+  void applyTo(PointProfile& p) const {
+    bool quotedOk = true;
+    long v = 0;
+    if (key == "name") {
+      p.name = unquote(value, quotedOk);
+    } else if (key == "decimals") {
+      if (integer(0, 6, v)) p.decimals = static_cast<int>(v);
+    } else if (key == "unit") {
+      either("mm", "um", p.micrometres, "unit must be mm or um");
+    } else if (key == "coordinates") {
+      either("absolute", "incremental", p.incremental, "coordinates must be absolute or incremental");
+    } else if (key == "separator") {
+      p.separator = value == "space"       ? " "
+                    : value == "tab"       ? "\t"
+                    : value == "comma"     ? ","
+                    : value == "semicolon" ? ";"
+                                           : unquote(value, quotedOk);
+    } else if (key == "line_numbers") {
+      boolean(p.lineNumbers);
+    } else if (key == "line_number_prefix") {
+      p.lineNumberPrefix = unquote(value, quotedOk);
+    } else if (key == "line_number_start") {
+      if (integer(0, 1000000000, v)) p.lineNumberStart = static_cast<std::size_t>(v);
+    } else if (key == "header") {
+      p.header = unquote(value, quotedOk);
+    } else if (key == "footer") {
+      p.footer = unquote(value, quotedOk);
+    } else if (key == "max_points") {
+      if (integer(2, 100000000, v)) p.maxPoints = static_cast<std::size_t>(v);
+    } else {
+      fail(keyCol, key.size(), "unknown profile key '" + std::string(key) + "'",
+           "keys: name, decimals, unit, coordinates, separator, line_numbers, line_number_prefix, "
+           "line_number_start, header, footer, max_points");
+    }
+    if (!quotedOk) failValue("unbalanced quote in the value");
+  }
+};
+
+}  // namespace
+
 std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& diags) {
   PointProfile p = bp95dProfile();
   p.name = "custom";
@@ -49,93 +126,26 @@ std::optional<PointProfile> parseProfile(const SourceFile& file, Diagnostics& di
     if (const std::size_t hash = body.find('#'); hash != std::string_view::npos && body.find('"') > hash)
       body = body.substr(0, hash);
     if (trimBlanks(body).empty()) continue;
-    const std::size_t eq = body.find('=');
-    auto fail = [&](std::size_t col, std::size_t len, const std::string& msg, const std::string& help = {}) {
+    auto fail = [&](std::size_t col, std::size_t len, const std::string& msg, const std::string& help) {
       diags.error(
           Code::ProfileError, &file,
           {lineOffset + static_cast<std::uint32_t>(col), static_cast<std::uint32_t>(std::max<std::size_t>(len, 1))},
           msg, help);
       ok = false;
     };
+    const std::size_t eq = body.find('=');
     if (eq == std::string_view::npos) {
       fail(static_cast<std::size_t>(trimBlanks(body).data() - raw.data()), trimBlanks(body).size(),
-           "expected 'key = value'");
+           "expected 'key = value'", {});
       continue;
     }
-    const std::string_view key = trimBlanks(body.substr(0, eq));
-    const std::string_view value = trimBlanks(body.substr(eq + 1));
-    const std::size_t valueCol = static_cast<std::size_t>(value.data() - raw.data());
-    const std::size_t keyCol = static_cast<std::size_t>(key.data() - raw.data());
-    auto integer = [&](long lo, long hi, long& out) {
-      long v = 0;
-      const auto r = std::from_chars(value.data(), value.data() + value.size(), v);
-      if (r.ec != std::errc{} || r.ptr != value.data() + value.size() || v < lo || v > hi) {
-        fail(valueCol, value.size(),
-             std::string(key) + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
-        return false;
-      }
-      out = v;
-      return true;
-    };
-    auto boolean = [&](bool& out) {
-      if (value == "true" || value == "yes")
-        out = true;
-      else if (value == "false" || value == "no")
-        out = false;
-      else
-        fail(valueCol, value.size(), std::string(key) + " must be true or false");
-    };
-    bool quotedOk = true;
-    if (key == "name") {
-      p.name = unquote(value, quotedOk);
-    } else if (key == "decimals") {
-      long v;
-      if (integer(0, 6, v)) p.decimals = static_cast<int>(v);
-    } else if (key == "unit") {
-      if (value == "mm")
-        p.micrometres = false;
-      else if (value == "um")
-        p.micrometres = true;
-      else
-        fail(valueCol, value.size(), "unit must be mm or um");
-    } else if (key == "coordinates") {
-      if (value == "absolute")
-        p.incremental = false;
-      else if (value == "incremental")
-        p.incremental = true;
-      else
-        fail(valueCol, value.size(), "coordinates must be absolute or incremental");
-    } else if (key == "separator") {
-      if (value == "space")
-        p.separator = " ";
-      else if (value == "tab")
-        p.separator = "\t";
-      else if (value == "comma")
-        p.separator = ",";
-      else if (value == "semicolon")
-        p.separator = ";";
-      else
-        p.separator = unquote(value, quotedOk);
-    } else if (key == "line_numbers") {
-      boolean(p.lineNumbers);
-    } else if (key == "line_number_prefix") {
-      p.lineNumberPrefix = unquote(value, quotedOk);
-    } else if (key == "line_number_start") {
-      long v;
-      if (integer(0, 1000000000, v)) p.lineNumberStart = static_cast<std::size_t>(v);
-    } else if (key == "header") {
-      p.header = unquote(value, quotedOk);
-    } else if (key == "footer") {
-      p.footer = unquote(value, quotedOk);
-    } else if (key == "max_points") {
-      long v;
-      if (integer(2, 100000000, v)) p.maxPoints = static_cast<std::size_t>(v);
-    } else {
-      fail(keyCol, key.size(), "unknown profile key '" + std::string(key) + "'",
-           "keys: name, decimals, unit, coordinates, separator, line_numbers, line_number_prefix, "
-           "line_number_start, header, footer, max_points");
-    }
-    if (!quotedOk) fail(valueCol, value.size(), "unbalanced quote in the value");
+    ProfileLine l;
+    l.key = trimBlanks(body.substr(0, eq));
+    l.value = trimBlanks(body.substr(eq + 1));
+    l.valueCol = static_cast<std::size_t>(l.value.data() - raw.data());
+    l.keyCol = static_cast<std::size_t>(l.key.data() - raw.data());
+    l.fail = fail;
+    l.applyTo(p);
   }
   if (!ok) return std::nullopt;
   return p;
@@ -323,6 +333,41 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
   out.stats.points = rows.size();
   out.text = writeRows(rows, 4, profile);
   return out;
+}
+
+namespace {
+
+/// pairs: points4 (an X Y U V pair a line, in the profile's number format).
+EmitOutput fromPoints(PointOutput&& p, const PointWriteOptions& request, bool pairs = false) {
+  EmitOutput out;
+  out.text = std::move(p.text);
+  out.what = pairs ? std::to_string(p.points) + " point pairs (points4: X Y U V, numbers as the " +
+                         request.profile.name + " profile writes them)"
+                   : std::to_string(p.points) + " points (" + request.profile.name + " profile)";
+  const std::size_t capacity =
+      request.request.maxPoints ? *request.request.maxPoints : request.profile.maxPoints.value_or(0);
+  out.detail = std::string("; ") + (p.sampling.mode == geometry::SamplingMode::Step ? "step k = " : "tolerance ") +
+               formatFixed(p.sampling.value, 6) + " mm" +
+               (p.fitted ? " chosen to fit " + std::to_string(capacity) + " points" : "") + ", max deviation " +
+               formatFixed(p.stats.maxDeviation, 6) + " mm";
+  return out;
+}
+
+}  // namespace
+
+std::optional<EmitOutput> writeBp95d(const Toolpath& toolpath, const SourceFile* source,
+                                     const PointWriteOptions& request, Diagnostics& diags) {
+  std::optional<PointOutput> p = emitPoints(toolpath, source, request.profile, request.request, diags);
+  if (!p) return std::nullopt;
+  return fromPoints(std::move(*p), request);
+}
+
+std::optional<EmitOutput> writePoints4(const Toolpath& toolpath, const SourceFile* source,
+                                       const PointWriteOptions& request, Diagnostics& diags) {
+  std::optional<PointOutput> p =
+      emitPoints4(toolpath, source, request.profile, request.request, request.relativeUv, diags);
+  if (!p) return std::nullopt;
+  return fromPoints(std::move(*p), request, true);
 }
 
 }  // namespace kerf::converter

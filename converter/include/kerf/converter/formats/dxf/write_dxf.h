@@ -14,6 +14,7 @@
 // dictionary. Both are ASCII with CRLF line ends, as AutoCAD writes them.
 #pragma once
 
+#include "kerf/converter/formats/writer.h"
 #include "kerf/converter/toolpath.h"
 
 #include <cstddef>
@@ -49,5 +50,10 @@ struct DxfWriteCounts {
 
 /// The drawing as DXF text. counts (when given) receives what was written.
 std::string writeDxf(const Toolpath& toolpath, const DxfWriteOptions& options, DxfWriteCounts* counts = nullptr);
+
+/// writeDxf as the writer table calls it (`kerf convert --to dxf`, `kerf export -o F.dxf`): what was
+/// written counted; refused (K0813) when nothing is cut.
+std::optional<EmitOutput> writeDxfProgram(const Toolpath& toolpath, const SourceFile* source,
+                                          const DxfWriteOptions& options, Diagnostics& diags);
 
 }  // namespace kerf::converter

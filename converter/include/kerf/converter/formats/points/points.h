@@ -6,6 +6,7 @@
 #pragma once
 
 #include "kerf/converter/check/summary.h"
+#include "kerf/converter/formats/writer.h"
 #include "kerf/converter/nc/diagnostics.h"
 #include "kerf/converter/toolpath.h"
 #include "kerf/geometry/tessellation.h"
@@ -72,5 +73,20 @@ std::optional<PointOutput> emitPoints(const Toolpath& toolpath, const SourceFile
 /// minus lower (relativeUv). The profile's format settings apply to all four columns.
 std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFile* source, const PointProfile& profile,
                                        const PointRequest& request, bool relativeUv, Diagnostics& diags);
+
+/// The bp95d and points4 writers' options: the profile, the sampling and capacity, and for points4
+/// how U V are written.
+struct PointWriteOptions {
+  PointProfile profile = bp95dProfile();
+  PointRequest request;
+  bool relativeUv = false;  ///< points4: U V as upper minus lower
+};
+
+/// `--to bp95d`: emitPoints with the profile, said as the writer table says it.
+std::optional<EmitOutput> writeBp95d(const Toolpath& toolpath, const SourceFile* source,
+                                     const PointWriteOptions& options, Diagnostics& diags);
+/// `--to points4`: emitPoints4, said as the writer table says it.
+std::optional<EmitOutput> writePoints4(const Toolpath& toolpath, const SourceFile* source,
+                                       const PointWriteOptions& options, Diagnostics& diags);
 
 }  // namespace kerf::converter

@@ -7,7 +7,7 @@
 // which explicit X/C needs no more). No move is added. Where a block runs more than once (a
 // subprogram call, a repeat), the moves are written out in the order they run, each with its
 // block's other words (note K0809). A source with no blocks (3B, a drawing) gives its moves alone.
-#include "kerf/converter/formats/emit.h"
+#include "kerf/converter/formats/polar/write_polar.h"
 
 #include "kerf/converter/nc/number_format.h"
 #include "kerf/converter/nc/program.h"
@@ -47,8 +47,8 @@ bool isFlowWord(const Word& w) {
 /// The writer's running state: the table's C (unwrapped), the motion mode the output is in, the
 /// feed written, the counts.
 struct PolarState {
-  explicit PolarState(const EmitRequest& r) : request(r) {}
-  const EmitRequest& request;
+  explicit PolarState(const PolarWriteOptions& r) : request(r) {}
+  const PolarWriteOptions& request;
   int decimals = 3;
   double xScale = 2.0;  ///< diameter: twice the radius
   double grid = 1000.0;
@@ -335,8 +335,8 @@ bool writeInOrder(const Toolpath& toolpath, const SourceMoves* s, PolarState& st
 
 }  // namespace
 
-std::optional<EmitOutput> writePolar(const Toolpath& toolpath, const SourceFile* source, const EmitRequest& request,
-                                     Diagnostics& diags) {
+std::optional<EmitOutput> writePolar(const Toolpath& toolpath, const SourceFile* source,
+                                     const PolarWriteOptions& request, Diagnostics& diags) {
   if (toolpath.moves.empty()) {
     diags.error(Code::NothingToWrite, source, SourceSpan::wholeFile(), "nothing to write: the program has no move");
     return std::nullopt;

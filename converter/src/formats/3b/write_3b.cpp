@@ -1,5 +1,5 @@
 // 3B and 4B writers (docs/3b.md). Sections: 1. the order of the moves  2. one record  3. 3B  4. 4B
-#include "kerf/converter/formats/emit.h"
+#include "kerf/converter/formats/3b/write_3b.h"
 
 #include "kerf/converter/nc/number_format.h"
 #include "three_b.h"
@@ -320,7 +320,7 @@ Written records(const Toolpath& toolpath, const std::vector<std::size_t>& order,
   return w;
 }
 
-std::string recordsText(const Written& w, const EmitRequest& request, std::string header,
+std::string recordsText(const Written& w, const ThreeBWriteOptions& request, std::string header,
                         const std::function<std::string(const Record&, std::size_t)>& line) {
   std::string text = std::move(header);
   text.reserve(text.size() + w.records.size() * 28 + 4);
@@ -361,8 +361,8 @@ std::string summaryOf(const Written& w) {
 
 }  // namespace
 
-std::optional<EmitOutput> writeThreeB(const Toolpath& toolpath, const SourceFile* source, const EmitRequest& request,
-                                      Diagnostics& diags) {
+std::optional<EmitOutput> writeThreeB(const Toolpath& toolpath, const SourceFile* source,
+                                      const ThreeBWriteOptions& request, Diagnostics& diags) {
   const std::optional<std::vector<std::size_t>> order = moveOrder(toolpath, source, request.startLine, diags);
   if (!order) return std::nullopt;
   const Written w = records(toolpath, *order, source, diags);
@@ -373,8 +373,8 @@ std::optional<EmitOutput> writeThreeB(const Toolpath& toolpath, const SourceFile
   return out;
 }
 
-std::optional<EmitOutput> writeFourB(const Toolpath& toolpath, const SourceFile* source, const EmitRequest& request,
-                                     Diagnostics& diags) {
+std::optional<EmitOutput> writeFourB(const Toolpath& toolpath, const SourceFile* source,
+                                     const ThreeBWriteOptions& request, Diagnostics& diags) {
   const std::optional<std::vector<std::size_t>> order = moveOrder(toolpath, source, request.startLine, diags);
   if (!order) return std::nullopt;
   const Written w = records(toolpath, *order, source, diags);

@@ -27,36 +27,36 @@ extern const std::size_t kFileCount;
 
 const char* integerUnitName(IntegerUnit u) { return u == IntegerUnit::Micrometre ? "um" : "mm"; }
 
-const char* arcCentreName(ArcCentreMode m) {
-  switch (m) {
-    case ArcCentreMode::Incremental: return "incremental";
-    case ArcCentreMode::Reversed: return "reversed";
-    case ArcCentreMode::Absolute: return "absolute";
-  }
-  return "incremental";
+namespace {
+
+/// Each I J convention: its name (profiles, options, reports), what I J are, the centre they give.
+struct ArcCentreWords {
+  ArcCentreMode mode;
+  const char* name;
+  const char* meaning;
+  const char* rule;
+};
+constexpr ArcCentreWords kArcCentres[] = {
+    {ArcCentreMode::Incremental, "incremental", "centre minus start", "centre = start + (I, J)"},
+    {ArcCentreMode::Reversed, "reversed", "start minus centre", "centre = start - (I, J)"},
+    {ArcCentreMode::Absolute, "absolute", "the centre itself", "centre = (I, J)"},
+};
+
+const ArcCentreWords& wordsOf(ArcCentreMode m) {
+  for (const ArcCentreWords& w : kArcCentres)
+    if (w.mode == m) return w;
+  return kArcCentres[0];
 }
 
-const char* arcCentreMeaning(ArcCentreMode m) {
-  switch (m) {
-    case ArcCentreMode::Incremental: return "centre minus start";
-    case ArcCentreMode::Reversed: return "start minus centre";
-    case ArcCentreMode::Absolute: return "the centre itself";
-  }
-  return "centre minus start";
-}
+}  // namespace
 
-const char* arcCentreRule(ArcCentreMode m) {
-  switch (m) {
-    case ArcCentreMode::Incremental: return "centre = start + (I, J)";
-    case ArcCentreMode::Reversed: return "centre = start - (I, J)";
-    case ArcCentreMode::Absolute: return "centre = (I, J)";
-  }
-  return "centre = start + (I, J)";
-}
+const char* arcCentreName(ArcCentreMode m) { return wordsOf(m).name; }
+const char* arcCentreMeaning(ArcCentreMode m) { return wordsOf(m).meaning; }
+const char* arcCentreRule(ArcCentreMode m) { return wordsOf(m).rule; }
 
 std::optional<ArcCentreMode> parseArcCentre(std::string_view name) {
-  for (ArcCentreMode m : {ArcCentreMode::Incremental, ArcCentreMode::Reversed, ArcCentreMode::Absolute})
-    if (name == arcCentreName(m)) return m;
+  for (const ArcCentreWords& w : kArcCentres)
+    if (name == w.name) return w.mode;
   return std::nullopt;
 }
 

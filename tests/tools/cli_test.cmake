@@ -47,8 +47,19 @@ elseif(CASE STREQUAL "usage_errors_exit_2")
   file(REMOVE_RECURSE "${WORK}/list" "${WORK}/files.txt")  # the folder cases below want WORK empty of programs
   # A pass the program does not have, and a pass that is no number.
   run("${KERF}" convert "${SOURCE}/tests/passes/die_tab_cut_off.nc" --to 3b --pass 4)
-  string(FIND "${err}" "--pass 4: no contour of this program has a pass 4 (the most is 3)" at)
-  expect("--pass 4 of a three-pass program should be refused in words" rc EQUAL 2 AND NOT at EQUAL -1)
+  string(FIND "${err}" "die_tab_cut_off.nc: error: --pass 4: no contour of this program has a pass 4 (the most is 3) [K0814]" at)
+  expect("--pass 4 of a three-pass program should be refused in words, at the program, as K0814" rc EQUAL 2 AND NOT at EQUAL -1)
+  # A composite value refused while the command line is parsed (issue 56: options bound to the library).
+  run("${KERF}" check "${SOURCE}/samples/punch_outline.nc" --start 1,2,3)
+  string(FIND "${err}" "--start: takes X,Y in mm within 1e6 (for example 10,-5.5), not '1,2,3'" at)
+  expect("--start 1,2,3 should be refused in words" rc EQUAL 2 AND NOT at EQUAL -1)
+  # A drawing of a program that cuts nothing: the writer's refusal (K0813), through convert and export alike.
+  foreach(command IN ITEMS "convert;--force;--to;dxf" "export")
+    run("${KERF}" ${command} "${SOURCE}/tests/bad/rapids_only.nc" -o "${WORK}/nothing.dxf")
+    string(FIND "${err}" "nothing to write: nothing is cut, so there is no contour to draw [K0813]" at)
+    expect("${command} of a program that cuts nothing should refuse with K0813 and write nothing"
+           rc EQUAL 1 AND NOT at EQUAL -1 AND NOT EXISTS "${WORK}/nothing.dxf")
+  endforeach()
   run("${KERF}" convert "${SOURCE}/tests/passes/die_tab_cut_off.nc" --to 3b --pass 0)
   string(FIND "${err}" "--pass takes all or a pass number from 1 to 255" at)
   expect("--pass 0 should be refused in words" rc EQUAL 2 AND NOT at EQUAL -1)

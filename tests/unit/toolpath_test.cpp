@@ -8,12 +8,7 @@
 
 namespace {
 
-using kerf::converter::Move;
-using kerf::converter::MoveKind;
-using kerf::converter::MoveRow;
-using kerf::converter::OffsetRole;
-using kerf::converter::OffsetSpan;
-using kerf::converter::Toolpath;
+using namespace kerf::converter;  // NOLINT: the test names Toolpath's parts throughout
 using kerf::geometry::Segment;
 using kerf::geometry::Vec2;
 

@@ -1,0 +1,39 @@
+// Building blocks of Kerf's HTML pages (the CI report and the 3D page, issue 57): whatever comes
+// from the input (a program's text and comments, a file name, a diagnostic that quotes them) is
+// data, never markup. Each function states where its result may be put.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace kerf::converter {
+
+/// Text for an element's content or a double- or single-quoted attribute value: `& < > " '` as
+/// character references; a byte sequence that is not UTF-8 (a Shift-JIS comment, a stray byte), and
+/// a control character other than tab, line feed and carriage return, as U+FFFD. Never markup,
+/// whatever the input.
+std::string htmlText(std::string_view text);
+
+/// A JSON text made safe inside `<script type="application/json">` (read back with JSON.parse):
+/// `<`, `>` and `&` as `\u003c` `\u003e` `\u0026` (they can stand in a JSON text only inside its
+/// strings, where the escape means the same), U+2028 and U+2029 as `\u2028` `\u2029`. So no input
+/// closes the script element or opens a comment in it. The text must be JSON (nlohmann-json's dump
+/// with its UTF-8 replacement).
+std::string scriptJson(std::string_view json);
+
+/// SHA-256 of the bytes (FIPS 180-4).
+std::array<std::uint8_t, 32> sha256(std::string_view bytes);
+
+/// Standard base64 (RFC 4648, with padding).
+std::string base64(std::span<const std::uint8_t> bytes);
+
+/// A Content-Security-Policy for a page whose only scripts and styles are the embedded ones given:
+/// nothing from the network, no other script or style (an injected one does not run), images only
+/// from data: URLs and the page's own folder. For the double-quoted content attribute of a
+/// `<meta http-equiv="Content-Security-Policy">` (the result holds no double quote).
+std::string contentSecurityPolicy(std::span<const std::string_view> scripts, std::span<const std::string_view> styles);
+
+}  // namespace kerf::converter

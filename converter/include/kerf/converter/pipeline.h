@@ -105,12 +105,12 @@ struct Pipeline {
   /// the toolpath then walks the wire paths.
   std::vector<ContourWire> wires;
   Toolpath toolpath;
-  MachineProfile machine;        ///< the profile in force
-  bool machineDetected = false;  ///< chosen from the evidence, not given
-  SurfaceMeasures measures;      ///< per move, for a taper program whose heights are known
-  Structure structure;           ///< contours and passes, with the time estimate (a program, not a drawing)
-  CheckOptions checkOptions;     ///< the settings the checks ran with
-  Diagnostics diags{kAllDiagnostics};     ///< every diagnostic, sorted by position
+  MachineProfile machine;              ///< the profile in force
+  bool machineDetected = false;        ///< chosen from the evidence, not given
+  SurfaceMeasures measures;            ///< per move, for a taper program whose heights are known
+  Structure structure;                 ///< contours and passes, with the time estimate (a program, not a drawing)
+  CheckOptions checkOptions;           ///< the settings the checks ran with
+  Diagnostics diags{kAllDiagnostics};  ///< every diagnostic, sorted by position
   /// What was read: set whenever `read` is, if PipelineOptions::summarize asked for it.
   std::optional<Summary> summary;
   /// false: nothing was read (the machine profile file or the --offsets table is wrong); diags says why.

@@ -5,13 +5,14 @@
 #                                independent interpreter the arc tests compare against; Xvfb
 #                                for the window tests; Microsoft's SARIF Multitool from the npm
 #                                registry, into /opt/kerf-test-tools, to validate SARIF output;
-#                                pre-commit, git and python3-yaml for the CI integration tests)
+#                                pre-commit, git and python3-yaml for the CI integration tests;
+#                                chromium, the real browser the HTML report is opened in)
 # Skips apt entirely when everything is already installed.
 set -euo pipefail
 packages=(g++ cmake ninja-build make pkg-config dpkg-dev libeigen3-dev libcli11-dev libmuparser-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libvtk9-dev libglfw3-dev libimgui-dev libstb-dev libgl-dev libosmesa6-dev libegl-dev libegl-mesa0)
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(linuxcnc-uspace python3 python3-ezdxf python3-shapely xvfb xauth pre-commit git python3-yaml)
+  packages+=(linuxcnc-uspace python3 python3-ezdxf python3-shapely xvfb xauth pre-commit git python3-yaml chromium)
   # Debian's Node.js and npm, unless a Node.js with its own npm is installed already.
   command -v npm > /dev/null || packages+=(nodejs npm)
 fi

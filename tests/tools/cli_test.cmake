@@ -659,4 +659,65 @@ elseif(CASE STREQUAL "threads_do_not_change_findings")
   endforeach()
   expect("some program has a wire-crossing finding from the sections (${sections})" sections GREATER 0)
 
+elseif(CASE STREQUAL "html_report" OR CASE STREQUAL "html_report_in_chromium")
+  # kerf check --format html -o DIR (issue 57): a folder written whole, every program a row and a
+  # page, input never markup. A program whose name and comment try to be markup: its diagnostic
+  # quotes the line (B is no wire word), so the comment reaches the page.
+  file(MAKE_DIRECTORY "${WORK}/in")
+  file(WRITE "${WORK}/in/a<b>x.nc"
+       "G92 X0 Y0\nG01 X10. Y0 B5 (</script><script>document.title='pwned'</script><img src=x onerror=alert(1)>)\n"
+       "X10. Y10.\nX0 Y0\nM02\n")
+  run("${KERF}" check "${SOURCE}/samples" "${WORK}/in")
+  set(text_rc ${rc})
+  run("${KERF}" check "${SOURCE}/samples" "${WORK}/in" --format html -o "${WORK}/report")
+  expect("the report's exit status is kerf check's (${rc}, ${text_rc})" rc EQUAL text_rc)
+  file(GLOB pages "${WORK}/report/*.html")
+  file(GLOB programs "${SOURCE}/samples/*.nc" "${SOURCE}/samples/bad/*.nc" "${SOURCE}/samples/*.dxf")
+  list(LENGTH pages n_pages)
+  list(LENGTH programs n_programs)
+  math(EXPR expected "${n_programs} + 2")  # the hostile program and the index
+  expect("one page per program and the index (${n_pages} pages, ${expected} expected)" n_pages EQUAL expected)
+  expect("the folder is marked as Kerf's" EXISTS "${WORK}/report/.kerf-report")
+  file(READ "${WORK}/report/index.html" index)
+  string(FIND "${index}" "a&lt;b&gt;x.nc" named)
+  string(FIND "${index}" "Content-Security-Policy" policy)
+  expect("the index names the program as text and carries its policy" NOT named EQUAL -1 AND NOT policy EQUAL -1)
+  foreach(page IN LISTS pages)
+    file(READ "${page}" html)
+    string(FIND "${html}" "<script>document.title" raw)
+    string(FIND "${html}" "<img src=x" img)
+    expect("${page}: no input written as markup" raw EQUAL -1 AND img EQUAL -1)
+  endforeach()
+  file(READ "${WORK}/report/a_b_x.nc.html" hostile)
+  string(FIND "${hostile}" "&lt;/script&gt;&lt;script&gt;document.title=&#39;pwned&#39;" quoted)
+  expect("the hostile line is on its page, as text" NOT quoted EQUAL -1)
+  # Written again over itself; never over a folder that is not a report, nor without -o.
+  run("${KERF}" check "${SOURCE}/samples/plate.nc" --format html -o "${WORK}/report")
+  file(GLOB pages "${WORK}/report/*.html")
+  list(LENGTH pages n_pages)
+  expect("a report replaces the report before it (${n_pages} pages)" rc EQUAL 0 AND n_pages EQUAL 2)
+  file(WRITE "${WORK}/notes/keep.txt" "mine\n")
+  run("${KERF}" check "${SOURCE}/samples/plate.nc" --format html -o "${WORK}/notes")
+  string(FIND "${err}" "is not a report Kerf wrote" refused)
+  expect("a folder that is not a report is refused and kept" rc EQUAL 2 AND NOT refused EQUAL -1
+         AND EXISTS "${WORK}/notes/keep.txt" AND NOT EXISTS "${WORK}/notes/index.html")
+  run("${KERF}" check "${SOURCE}/samples/plate.nc" --format html)
+  expect("--format html without -o is a usage error" rc EQUAL 2)
+  if(CASE STREQUAL "html_report_in_chromium")
+    # In a real browser: the embedded script runs under the page's policy (it marks the page
+    # ready), and the hostile comment changes nothing.
+    run("${KERF}" check "${SOURCE}/samples" "${WORK}/in" --format html -o "${WORK}/report")
+    foreach(page IN ITEMS index.html a_b_x.nc.html)
+      execute_process(COMMAND timeout 120 "${CHROMIUM}" --headless=new --no-sandbox --disable-gpu --dump-dom
+                              "file://${WORK}/report/${page}"
+                      OUTPUT_VARIABLE dom ERROR_QUIET RESULT_VARIABLE browser_rc)
+      string(FIND "${dom}" "pwned</title>" pwned)
+      expect("${page} opens in ${CHROMIUM} (${browser_rc}) untouched by its input" browser_rc EQUAL 0 AND pwned EQUAL -1)
+      if(page STREQUAL "index.html")
+        string(FIND "${dom}" "data-ready=\"1\"" ready)
+        expect("the index's script ran under its Content-Security-Policy" NOT ready EQUAL -1)
+      endif()
+    endforeach()
+  endif()
+
 endif()

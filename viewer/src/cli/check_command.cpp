@@ -6,6 +6,7 @@
 
 #include "kerf/converter/check/summary.h"
 #include "kerf/converter/report/ci_report.h"
+#include "kerf/converter/report/html_report.h"
 #include "kerf/converter/report/report.h"
 #include "kerf/geometry/parallel.h"
 
@@ -125,6 +126,9 @@ struct Outcome {
   std::unique_ptr<converter::SourceFile> source, upperSource, machineSource, offsetsSource;
   std::size_t errors = 0, warnings = 0;
   std::optional<converter::Structure> structure;  ///< its contours and passes, when it was read
+  // --format html: what its page shows.
+  std::optional<converter::Summary> summary;
+  std::string summaryText, diagnosticsPlain;
 };
 
 Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
@@ -155,9 +159,16 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
                                          p.wires.empty() ? nullptr : &p.wires);
       while (!o.out.empty() && o.out.back() == '\n') o.out.pop_back();
       if (!many) o.out += "\n";
-    } else if (format == "text") {
+    } else if (format == "text" || format == "html") {
       o.err = diagnosticsText(o.shown, a.common.checks);
       if (!a.common.checks.quiet) o.out = converter::formatSummaryText(displayName(file), *p.summary, o.shown);
+    }
+    if (format == "html") {
+      CheckOptions plain = a.common.checks;
+      plain.color = "never";
+      o.diagnosticsPlain = diagnosticsText(o.shown, plain);
+      o.summaryText = converter::formatSummaryText(displayName(file), *p.summary, o.shown);
+      o.summary = *p.summary;
     }
   }
   // The quotes of a report read the text again (a source may have given it back): keep the sources.
@@ -168,6 +179,42 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
   return o;
 }
 
+/// --format html: the report's folder (converter/report/html_report.h), written whole or not at
+/// all; false, said, when it cannot be.
+bool writeHtmlReport(const std::string& folder, const std::vector<std::string>& files,
+                     const std::vector<Outcome>& outcomes, const std::string& summaryLine) {
+  std::vector<std::string> names;
+  for (const std::string& f : files) names.push_back(displayName(f));
+  const std::vector<std::string> pages = converter::htmlPageNames(names);
+  std::vector<converter::HtmlReportEntry> entries;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const Outcome& o = outcomes[i];
+    converter::HtmlReportEntry e;
+    e.name = names[i];
+    e.page = pages[i];
+    e.exit = o.exit;
+    e.failure = o.failure;
+    e.errors = o.errors;
+    e.warnings = o.warnings;
+    for (const converter::Diagnostic& d : o.shown.all()) e.notes += d.severity == converter::Severity::Note;
+    e.diagnosticsText = o.failure.empty() ? o.diagnosticsPlain : o.err;
+    e.summaryText = o.summaryText;
+    e.summary = o.summary ? &*o.summary : nullptr;
+    entries.push_back(std::move(e));
+  }
+  std::vector<std::pair<std::string, std::string>> out;
+  out.emplace_back("index.html", converter::htmlReportIndex(entries, summaryLine));
+  for (const converter::HtmlReportEntry& e : entries) out.emplace_back(e.page, converter::htmlReportPage(e));
+  std::string error;
+  if (!writeFolder(folder, out, error)) {
+    reportError(error);
+    return false;
+  }
+  std::cerr << "kerf: wrote the report of " << files.size() << (files.size() == 1 ? " program" : " programs") << " to "
+            << folder << "/index.html\n";
+  return true;
+}
+
 }  // namespace
 
 CLI::App* addCheckCommand(CLI::App& app, CheckArgs& a) {
@@ -176,8 +223,11 @@ CLI::App* addCheckCommand(CLI::App& app, CheckArgs& a) {
   addCommonOptions(*cmd, a.common, true);
   auto* format = cmd->add_option("--format", a.format,
                                  "text (default), json, sarif (SARIF 2.1.0 for code scanning) or junit (JUnit XML), on "
-                                 "stdout; sarif and junit make one report of every file")
-                     ->check(CLI::IsMember({"text", "json", "sarif", "junit"}));
+                                 "stdout; sarif and junit make one report of every file; html: the text, and a "
+                                 "report folder (-o DIR) with a page per program")
+                     ->check(CLI::IsMember({"text", "json", "sarif", "junit", "html"}));
+  cmd->add_option("-o,--output", a.output, "--format html: the report's folder (made, or a report Kerf wrote replaced)")
+      ->needs(format);
   auto* json = cmd->add_flag("--json", a.json,
                              "the same as --format json: machine-readable output on stdout (an array when several "
                              "files are checked)")
@@ -191,6 +241,12 @@ CLI::App* addCheckCommand(CLI::App& app, CheckArgs& a) {
 }
 
 int runCheck(const CheckArgs& a) {
+  const std::string format = a.json ? "json" : a.format;
+  if ((format == "html") != !a.output.empty()) {
+    reportError(format == "html" ? "--format html writes a report folder: give it with -o DIR"
+                                 : "-o DIR is the folder of --format html");
+    return kExitUsage;
+  }
   std::vector<std::string> named = a.common.input.files;
   if (a.common.input.filesFrom) {
     if (*a.common.input.filesFrom == "-" && std::count(named.begin(), named.end(), "-") > 0) {
@@ -222,7 +278,6 @@ int runCheck(const CheckArgs& a) {
     for (std::size_t i = begin; i < end; ++i) outcomes[i] = checkOne(a, files[i], many);
   });
 
-  const std::string format = a.json ? "json" : a.format;
   int worst = kExitOk;
   std::size_t withErrors = 0, withWarnings = 0, errors = 0, warnings = 0, unread = 0;
   std::string jsonArray;
@@ -246,13 +301,15 @@ int runCheck(const CheckArgs& a) {
   if (format == "json" && many && !a.trace) std::cout << (jsonArray.empty() ? "[" : jsonArray) << "\n]\n";
   if (format == "sarif") std::cout << converter::sarifLog(report, KERF_VERSION);
   if (format == "junit") std::cout << converter::junitReport(report);
-  if (many && !a.common.checks.quiet) {
-    const char* verdict = worst == kExitUsage ? "unreadable files" : worst == kExitErrors ? "errors" : "ok";
-    std::cerr << "kerf: " << files.size() << " files checked: " << withErrors << " with errors, " << withWarnings
-              << " with warnings" << (unread ? ", " + std::to_string(unread) + " not read" : std::string()) << "; "
-              << errors << (errors == 1 ? " error, " : " errors, ") << warnings
-              << (warnings == 1 ? " warning" : " warnings") << "; worst: " << verdict << "\n";
-  }
+  const char* verdict = worst == kExitUsage ? "unreadable files" : worst == kExitErrors ? "errors" : "ok";
+  const std::string summaryLine =
+      std::to_string(files.size()) + (many ? " files" : " file") + " checked: " + std::to_string(withErrors) +
+      " with errors, " + std::to_string(withWarnings) + " with warnings" +
+      (unread ? ", " + std::to_string(unread) + " not read" : std::string()) + "; " + std::to_string(errors) +
+      (errors == 1 ? " error, " : " errors, ") + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") +
+      "; worst: " + verdict;
+  if (many && !a.common.checks.quiet) std::cerr << "kerf: " << summaryLine << "\n";
+  if (format == "html" && !writeHtmlReport(a.output, files, outcomes, summaryLine)) return kExitUsage;
   return worst;
 }
 

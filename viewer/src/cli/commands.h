@@ -18,9 +18,10 @@ namespace kerf::cli {
 
 struct CheckArgs {
   CommonOptions common;
-  std::string format = "text";  ///< --format text|json|sarif|junit
+  std::string format = "text";  ///< --format text|json|sarif|junit|html
   bool json = false;            ///< --json: --format json
   bool trace = false;
+  std::string output;  ///< -o DIR: the html report's folder
 };
 CLI::App* addCheckCommand(CLI::App& app, CheckArgs& args);
 int runCheck(const CheckArgs& args);

@@ -273,4 +273,48 @@ bool finishStandardOutput(std::string& error) {
   return true;
 }
 
+bool writeFolder(const std::string& path, const std::vector<std::pair<std::string, std::string>>& files,
+                 std::string& error) {
+  constexpr const char* kMark = ".kerf-report";
+  std::error_code ec;
+  const fs::path target(path);
+  const fs::file_status status = fs::symlink_status(target, ec);
+  const bool exists = fs::exists(status);
+  if (exists && (!fs::is_directory(status) || !fs::exists(target / kMark, ec))) {
+    error = "'" + path + "' exists and is not a report Kerf wrote (no " + kMark + " in it): it is not replaced";
+    return false;
+  }
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  const std::string base = target.filename().string() + ".kerf-" + std::to_string(::getpid());
+  const fs::path partial = parent / (base + "-partial"), old = parent / (base + "-old");
+  fs::remove_all(partial, ec);
+  if (!fs::create_directory(partial, ec)) {
+    error = "cannot make the folder '" + partial.string() + "': " + ec.message();
+    return false;
+  }
+  std::vector<std::pair<std::string, std::string>> all = files;
+  all.emplace_back(kMark, "a report written by Kerf: kerf check --format html replaces this folder\n");
+  for (const auto& [name, text] : all) {
+    const std::string file = (partial / name).string();
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    const bool written = fd >= 0 && writeAll(fd, text.data(), text.size());
+    if (fd >= 0 && ::close(fd) != 0) error = errnoText();
+    if (!written || !error.empty()) {
+      error = "cannot write '" + file + "': " + (error.empty() ? errnoText() : error);
+      fs::remove_all(partial, ec);
+      return false;
+    }
+  }
+  if (exists) fs::rename(target, old, ec);
+  if (!ec) fs::rename(partial, target, ec);
+  if (ec) {
+    error = "cannot put the report at '" + path + "': " + ec.message();
+    if (exists && !fs::exists(target)) fs::rename(old, target, ec);  // the old report back
+    fs::remove_all(partial, ec);
+    return false;
+  }
+  if (exists) fs::remove_all(old, ec);
+  return true;
+}
+
 }  // namespace kerf::cli

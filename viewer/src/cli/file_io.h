@@ -15,6 +15,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kerf::cli {
@@ -39,5 +40,12 @@ bool writeOutputVia(const std::string& path, const std::vector<std::string>& inp
 /// Flushes standard output; false with a message when something written there was lost (a full
 /// disk, a closed pipe).
 bool finishStandardOutput(std::string& error);
+
+/// A folder of files (name, text) written whole or not at all: into a new folder beside `path`,
+/// then renamed to it. An existing `path` is replaced only when it is a folder Kerf wrote so (it
+/// holds the `.kerf-report` mark); anything else there is left alone and refused. The names are
+/// plain file names (no '/').
+bool writeFolder(const std::string& path, const std::vector<std::pair<std::string, std::string>>& files,
+                 std::string& error);
 
 }  // namespace kerf::cli

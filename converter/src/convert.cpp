@@ -14,10 +14,9 @@ namespace {
 // ---- 1. kerf convert -----------------------------------------------------------------------------
 
 /// An option the program cannot take (K0814, at the program): the conversion is refused.
-Conversion& refuse(Conversion& c, const Pipeline& p, const std::string& message) {
+void refuse(Conversion& c, const Pipeline& p, const std::string& message) {
   c.diags.error(Code::OptionDoesNotFit, p.source.get(), SourceSpan::wholeFile(), message);
   c.status = WriteStatus::Refused;
-  return c;
 }
 
 /// The profiles the request names, parsed into e (a point-file profile, the machine an ISO output
@@ -81,7 +80,10 @@ Conversion convert(const Pipeline& p, const ConvertRequest& r) {
     return c;
   }
   const Emitter* emitter = findEmitter(r.format);
-  if (!emitter) return std::move(refuse(c, p, "no output format is named '" + r.format + "'"));
+  if (!emitter) {
+    refuse(c, p, "no output format is named '" + r.format + "'");
+    return c;
+  }
   EmitRequest e = r.emit;
   std::optional<MachineProfile> target;
   if (!resolveProfiles(r, c, e, target)) {
@@ -92,11 +94,14 @@ Conversion convert(const Pipeline& p, const ConvertRequest& r) {
   // The whole program as its own blocks wrote it: polar output keeps what it does not convert.
   if (p.format == InputFormat::Iso && !r.pass && !p.toolpath.isTaper())
     e.polar.sourceBlocks = parseOptionsFor(p.machine);
-  // A drawing shows the passes by layer, and with --drawing the elements cut out of tolerance.
-  e.dxf.movePass = movePasses(p.structure, p.toolpath.moves.size());
-  if (p.comparison)
-    for (const ElementDeviation& d : p.comparison->elements)
-      if (d.deviation > p.comparison->tolerance) e.dxf.deviation.push_back(p.comparison->drawn[d.element]);
+  // A drawing shows the passes by layer, and with --drawing the elements cut out of tolerance: what
+  // the pipeline found that only the DXF writer draws.
+  if (emitter->name == "dxf") {
+    e.dxf.movePass = movePasses(p.structure, p.toolpath.moves.size());
+    if (p.comparison)
+      for (const ElementDeviation& d : p.comparison->elements)
+        if (d.deviation > p.comparison->tolerance) e.dxf.deviation.push_back(p.comparison->drawn[d.element]);
+  }
 
   const Toolpath* path = &p.toolpath;
   std::optional<Toolpath> onePass;
@@ -106,10 +111,10 @@ Conversion convert(const Pipeline& p, const ConvertRequest& r) {
       std::size_t most = 0;
       for (const Contour& k : p.structure.contours) most = std::max(most, k.passes.size());
       const std::string n = std::to_string(*r.pass);
-      return std::move(refuse(
-          c, p,
-          "--pass " + n + ": no contour of this program has a pass " + n + " (" +
-              (most == 1 ? std::string("each is cut in one pass") : "the most is " + std::to_string(most)) + ")"));
+      refuse(c, p,
+             "--pass " + n + ": no contour of this program has a pass " + n + " (" +
+                 (most == 1 ? std::string("each is cut in one pass") : "the most is " + std::to_string(most)) + ")");
+      return c;
     }
     path = &*onePass;
   }

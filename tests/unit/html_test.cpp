@@ -10,7 +10,7 @@ namespace {
 
 using kerf::converter::base64;
 using kerf::converter::contentSecurityPolicy;
-using kerf::converter::htmlText;
+using kerf::converter::markupText;
 using kerf::converter::scriptJson;
 using kerf::converter::sha256;
 
@@ -23,22 +23,24 @@ std::string hex(const std::array<std::uint8_t, 32>& d) {
 
 // A comment that closes a script, an event handler, a file name with angle brackets: all text.
 TEST(html_test, markup_from_the_input_is_text) {
-  EXPECT_EQ(htmlText("(</script><script>alert(1)</script>)"), "(&lt;/script&gt;&lt;script&gt;alert(1)&lt;/script&gt;)");
-  EXPECT_EQ(htmlText("<img src=x onerror=\"alert('x')\">"), "&lt;img src=x onerror=&quot;alert(&#39;x&#39;)&quot;&gt;");
-  EXPECT_EQ(htmlText("a<b>x.nc & more"), "a&lt;b&gt;x.nc &amp; more");
-  EXPECT_EQ(htmlText("G01 X1.\tY2.\r\n"), "G01 X1.\tY2.\r\n");  // the program's own whitespace kept
+  EXPECT_EQ(markupText("(</script><script>alert(1)</script>)"),
+            "(&lt;/script&gt;&lt;script&gt;alert(1)&lt;/script&gt;)");
+  EXPECT_EQ(markupText("<img src=x onerror=\"alert('x')\">"),
+            "&lt;img src=x onerror=&quot;alert(&#39;x&#39;)&quot;&gt;");
+  EXPECT_EQ(markupText("a<b>x.nc & more"), "a&lt;b&gt;x.nc &amp; more");
+  EXPECT_EQ(markupText("G01 X1.\tY2.\r\n"), "G01 X1.\tY2.\r\n");  // the program's own whitespace kept
 }
 
 // Bytes that are not UTF-8 (a Shift-JIS comment read as bytes, a cut sequence, an overlong '<',
 // a surrogate) and control characters become U+FFFD; UTF-8 passes as it is.
 TEST(html_test, bytes_that_are_not_text_are_replaced) {
   const std::string fffd = "\xEF\xBF\xBD";
-  EXPECT_EQ(htmlText("\x83\x65"), fffd + "e");              // Shift-JIS's katakana te: a lead byte, then ASCII 'e'
-  EXPECT_EQ(htmlText("\xC0\xBC"), fffd + fffd);             // an overlong '<'
-  EXPECT_EQ(htmlText("\xED\xA0\x80"), fffd + fffd + fffd);  // a surrogate
-  EXPECT_EQ(htmlText("\xE2\x82"), fffd + fffd);             // cut short
-  EXPECT_EQ(htmlText(std::string("a\0b\x1b", 4)), "a" + fffd + "b" + fffd);
-  EXPECT_EQ(htmlText("Ø 20 µm — 60°"), "Ø 20 µm — 60°");
+  EXPECT_EQ(markupText("\x83\x65"), fffd + "e");              // Shift-JIS's katakana te: a lead byte, then ASCII 'e'
+  EXPECT_EQ(markupText("\xC0\xBC"), fffd + fffd);             // an overlong '<'
+  EXPECT_EQ(markupText("\xED\xA0\x80"), fffd + fffd + fffd);  // a surrogate
+  EXPECT_EQ(markupText("\xE2\x82"), fffd + fffd);             // cut short
+  EXPECT_EQ(markupText(std::string("a\0b\x1b", 4)), "a" + fffd + "b" + fffd);
+  EXPECT_EQ(markupText("Ø 20 µm — 60°"), "Ø 20 µm — 60°");
 }
 
 TEST(html_test, json_in_a_script_cannot_close_it) {

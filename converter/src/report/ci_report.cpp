@@ -5,6 +5,7 @@
 // (artifactLocation.uri, region startLine/startColumn/endLine/endColumn, 1-based). The tests check
 // the output with Microsoft's SARIF Multitool (`validate`), not with our reading of the spec.
 #include "kerf/converter/report/ci_report.h"
+#include "kerf/converter/report/html.h"
 
 #include "kerf/converter/nc/source.h"
 #include "kerf/converter/report/report.h"
@@ -87,27 +88,6 @@ OrderedJson sarifResult(const Diagnostic& d, const std::map<std::string, std::si
   return r;
 }
 
-std::string xmlEscaped(std::string_view s) {
-  std::string out;
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default:
-        // XML 1.0 has no control characters but tab, line feed and carriage return.
-        if (c < 0x20 && ch != '\t' && ch != '\n' && ch != '\r')
-          out += '?';
-        else
-          out += ch;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string sarifLog(std::span<const CheckedFile> files, const std::string& version) {
@@ -163,7 +143,7 @@ std::string junitReport(std::span<const CheckedFile> files) {
   std::size_t failures = 0, errors = 0;
   std::string cases;
   for (const CheckedFile& f : files) {
-    cases += "    <testcase classname=\"kerf.check\" name=\"" + xmlEscaped(f.name) + "\">\n";
+    cases += "    <testcase classname=\"kerf.check\" name=\"" + markupText(f.name) + "\">\n";
     std::string failed, other;
     std::size_t errorCount = 0;
     if (f.diags) {
@@ -180,18 +160,18 @@ std::string junitReport(std::span<const CheckedFile> files) {
     }
     if (!f.failure.empty()) {
       ++errors;
-      cases += "      <error message=\"" + xmlEscaped(f.failure) + "\" type=\"unreadable\">" + xmlEscaped(failed) +
+      cases += "      <error message=\"" + markupText(f.failure) + "\" type=\"unreadable\">" + markupText(failed) +
                "</error>\n";
     } else if (f.diags && f.diags->hasErrors()) {
       ++failures;
       const std::size_t total = f.diags->errorCount();
       cases += "      <failure message=\"" + std::to_string(total) + (total == 1 ? " error" : " errors") +
-               "\" type=\"kerf.check\">" + xmlEscaped(failed) +
-               (total > errorCount ? xmlEscaped("(" + std::to_string(total - errorCount) + " more errors not shown)\n")
+               "\" type=\"kerf.check\">" + markupText(failed) +
+               (total > errorCount ? markupText("(" + std::to_string(total - errorCount) + " more errors not shown)\n")
                                    : std::string()) +
                "</failure>\n";
     }
-    if (!other.empty()) cases += "      <system-out>" + xmlEscaped(other) + "</system-out>\n";
+    if (!other.empty()) cases += "      <system-out>" + markupText(other) + "</system-out>\n";
     cases += "    </testcase>\n";
   }
   const std::string counts = "tests=\"" + std::to_string(files.size()) + "\" failures=\"" + std::to_string(failures) +

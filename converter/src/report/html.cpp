@@ -67,7 +67,7 @@ std::uint32_t rotr(std::uint32_t x, unsigned n) { return (x >> n) | (x << (32 - 
 
 }  // namespace
 
-std::string htmlText(std::string_view text) {
+std::string markupText(std::string_view text) {
   std::string out;
   out.reserve(text.size() + text.size() / 8);
   for (std::size_t i = 0; i < text.size();) {

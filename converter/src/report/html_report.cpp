@@ -29,17 +29,19 @@ constexpr std::string_view kSortScript =
     "rows.forEach(r=>body.appendChild(r));}));"
     "document.documentElement.dataset.ready='1';";
 
-/// A whole page: the policy allows the embedded style and, when given, the one script.
-std::string page(const std::string& title, const std::string& body, std::string_view script) {
-  const std::string_view styles[] = {kStyle};
-  const std::string csp =
-      script.empty() ? contentSecurityPolicy({}, styles) : contentSecurityPolicy(std::span(&script, 1), styles);
+/// A whole page: its policy allows the embedded style and, for the index, the one script. The
+/// policies are made once (the hashes of constant texts).
+std::string page(const std::string& title, const std::string& body, bool sortable) {
+  static const std::string_view styles[] = {kStyle};
+  static const std::string plainPolicy = contentSecurityPolicy({}, styles);
+  static const std::string sortPolicy = contentSecurityPolicy(std::span(&kSortScript, 1), styles);
+  const std::string& csp = sortable ? sortPolicy : plainPolicy;
   std::string html =
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta http-equiv=\"Content-Security-Policy\" content=\"" +
-      csp + "\">\n<title>" + htmlText(title) + "</title>\n<style>" + std::string(kStyle) +
+      csp + "\">\n<title>" + markupText(title) + "</title>\n<style>" + std::string(kStyle) +
       "</style>\n</head>\n<body>\n" + body;
-  if (!script.empty()) html += "<script>" + std::string(script) + "</script>\n";
+  if (sortable) html += "<script>" + std::string(kSortScript) + "</script>\n";
   return html + "</body>\n</html>\n";
 }
 
@@ -54,19 +56,19 @@ std::size_t passCount(const Summary& s) {
 
 /// A numeric cell: the text shown, and the value sorted by.
 std::string number(const std::string& shown, double value) {
-  return "<td class=\"n\" data-value=\"" + formatFixed(value, 6) + "\">" + htmlText(shown) + "</td>";
+  return "<td class=\"n\" data-value=\"" + formatFixed(value, 6) + "\">" + markupText(shown) + "</td>";
 }
 
 std::string row(const HtmlReportEntry& e) {
-  std::string r = "<tr><td><a href=\"" + htmlText(e.page) + "\">" + htmlText(e.name) + "</a></td><td class=\"" +
+  std::string r = "<tr><td><a href=\"" + markupText(e.page) + "\">" + markupText(e.name) + "</a></td><td class=\"" +
                   verdictClass(e.exit) + "\" data-value=\"" + std::to_string(e.exit) + "\">" + verdictWord(e.exit) +
                   "</td>" + number(std::to_string(e.errors), static_cast<double>(e.errors)) +
                   number(std::to_string(e.warnings), static_cast<double>(e.warnings)) +
                   number(std::to_string(e.notes), static_cast<double>(e.notes));
-  if (!e.summary) return r + "<td colspan=\"5\">" + htmlText(e.failure) + "</td></tr>\n";
+  if (!e.summary) return r + "<td colspan=\"5\">" + markupText(e.failure) + "</td></tr>\n";
   const Summary& s = *e.summary;
   const double minutes = s.structure.time.total();
-  r += "<td>" + htmlText(dialectName(s.dialect)) + "</td><td>" + htmlText(s.reading.machine) + "</td>" +
+  r += "<td>" + markupText(dialectName(s.dialect)) + "</td><td>" + markupText(s.reading.machine) + "</td>" +
        number(std::to_string(passCount(s)), static_cast<double>(passCount(s))) +
        number(formatFixed(s.cutLength, 3) + " mm", s.cutLength) +
        (minutes > 0 ? number(formatFixed(minutes, 2) + " min", minutes) : std::string("<td class=\"n\"></td>"));
@@ -95,25 +97,26 @@ std::vector<std::string> htmlPageNames(std::span<const std::string> programs) {
 }
 
 std::string htmlReportIndex(std::span<const HtmlReportEntry> entries, const std::string& summaryLine) {
-  std::string body = "<h1>Kerf check</h1>\n<p>" + htmlText(summaryLine) +
+  std::string body = "<h1>Kerf check</h1>\n<p>" + markupText(summaryLine) +
                      "</p>\n<table>\n<thead><tr><th>program</th><th>verdict</th><th>errors</th><th>warnings</th>"
                      "<th>notes</th><th>dialect</th><th>machine</th><th>passes</th><th>cut length</th>"
                      "<th>time</th></tr></thead>\n<tbody>\n";
   for (const HtmlReportEntry& e : entries) body += row(e);
   body += "</tbody>\n</table>\n";
-  return page("Kerf check", body, kSortScript);
+  return page("Kerf check", body, true);
 }
 
 std::string htmlReportPage(const HtmlReportEntry& e) {
-  std::string body = "<p><a href=\"index.html\">all programs</a></p>\n<h1>" + htmlText(e.name) + "</h1>\n<p class=\"" +
-                     verdictClass(e.exit) + "\">verdict: " + verdictWord(e.exit) + " (" + std::to_string(e.errors) +
-                     " errors, " + std::to_string(e.warnings) + " warnings, " + std::to_string(e.notes) +
-                     " notes)</p>\n";
-  if (!e.failure.empty()) body += "<p>" + htmlText(e.failure) + "</p>\n";
-  if (!e.summaryText.empty()) body += "<h2>Summary</h2>\n<pre>" + htmlText(e.summaryText) + "</pre>\n";
+  std::string body = "<p><a href=\"index.html\">all programs</a></p>\n<h1>" + markupText(e.name) +
+                     "</h1>\n<p class=\"" + verdictClass(e.exit) + "\">verdict: " + verdictWord(e.exit) + " (" +
+                     std::to_string(e.errors) + " errors, " + std::to_string(e.warnings) + " warnings, " +
+                     std::to_string(e.notes) + " notes)</p>\n";
+  if (!e.failure.empty()) body += "<p>" + markupText(e.failure) + "</p>\n";
+  if (!e.summaryText.empty()) body += "<h2>Summary</h2>\n<pre>" + markupText(e.summaryText) + "</pre>\n";
   body += "<h2>Diagnostics</h2>\n";
-  body += e.diagnosticsText.empty() ? std::string("<p>none</p>\n") : "<pre>" + htmlText(e.diagnosticsText) + "</pre>\n";
-  return page(e.name + " — Kerf check", body, {});
+  body +=
+      e.diagnosticsText.empty() ? std::string("<p>none</p>\n") : "<pre>" + markupText(e.diagnosticsText) + "</pre>\n";
+  return page(e.name + " — Kerf check", body, false);
 }
 
 }  // namespace kerf::converter

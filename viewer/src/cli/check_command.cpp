@@ -143,6 +143,12 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
   o.shown = shownDiagnostics(p.diags, a.common.checks);
   o.errors = p.diags.errorCount();
   o.warnings = p.diags.warningCount();
+  const std::string format = a.json ? "json" : a.format;
+  if (format == "html") {  // the page shows them as the terminal does, without its colours
+    CheckOptions plain = a.common.checks;
+    plain.color = "never";
+    o.diagnosticsPlain = diagnosticsText(o.shown, plain);
+  }
   if (!p.read) {  // the machine profile or the offset table is wrong: its diagnostics say why
     o.exit = kExitUsage;
     // The offset table is read only after the profile was: a source for it means it failed.
@@ -151,7 +157,6 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
   } else {
     o.exit = verdictExit(p);
     if (p.summary) o.structure = p.summary->structure;
-    const std::string format = a.json ? "json" : a.format;
     if (a.trace) {
       o.out = converter::formatTrace(p.toolpath, p.diags);
     } else if (format == "json") {
@@ -161,14 +166,12 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
       if (!many) o.out += "\n";
     } else if (format == "text" || format == "html") {
       o.err = diagnosticsText(o.shown, a.common.checks);
-      if (!a.common.checks.quiet) o.out = converter::formatSummaryText(displayName(file), *p.summary, o.shown);
-    }
-    if (format == "html") {
-      CheckOptions plain = a.common.checks;
-      plain.color = "never";
-      o.diagnosticsPlain = diagnosticsText(o.shown, plain);
-      o.summaryText = converter::formatSummaryText(displayName(file), *p.summary, o.shown);
-      o.summary = *p.summary;
+      std::string summary = converter::formatSummaryText(displayName(file), *p.summary, o.shown);
+      if (!a.common.checks.quiet) o.out = summary;
+      if (format == "html") {
+        o.summaryText = std::move(summary);
+        o.summary = *p.summary;
+      }
     }
   }
   // The quotes of a report read the text again (a source may have given it back): keep the sources.
@@ -197,7 +200,7 @@ bool writeHtmlReport(const std::string& folder, const std::vector<std::string>& 
     e.errors = o.errors;
     e.warnings = o.warnings;
     for (const converter::Diagnostic& d : o.shown.all()) e.notes += d.severity == converter::Severity::Note;
-    e.diagnosticsText = o.failure.empty() ? o.diagnosticsPlain : o.err;
+    e.diagnosticsText = o.diagnosticsPlain;
     e.summaryText = o.summaryText;
     e.summary = o.summary ? &*o.summary : nullptr;
     entries.push_back(std::move(e));

@@ -1,6 +1,6 @@
-// Building blocks of Kerf's HTML pages (the CI report and the 3D page, issue 57): whatever comes
-// from the input (a program's text and comments, a file name, a diagnostic that quotes them) is
-// data, never markup. Each function states where its result may be put.
+// Building blocks of Kerf's HTML pages (the CI report and the 3D page, issue 57) and of its XML
+// (JUnit): whatever comes from the input (a program's text and comments, a file name, a diagnostic
+// that quotes them) is data, never markup. Each function states where its result may be put.
 #pragma once
 
 #include <array>
@@ -11,11 +11,11 @@
 
 namespace kerf::converter {
 
-/// Text for an element's content or a double- or single-quoted attribute value: `& < > " '` as
-/// character references; a byte sequence that is not UTF-8 (a Shift-JIS comment, a stray byte), and
-/// a control character other than tab, line feed and carriage return, as U+FFFD. Never markup,
-/// whatever the input.
-std::string htmlText(std::string_view text);
+/// Text for an element's content or a double- or single-quoted attribute value, in HTML or XML 1.0
+/// (the JUnit report): `& < > " '` as character references; a byte sequence that is not UTF-8 (a
+/// Shift-JIS comment, a stray byte), and a control character other than tab, line feed and
+/// carriage return (which XML 1.0 does not allow), as U+FFFD. Never markup, whatever the input.
+std::string markupText(std::string_view text);
 
 /// A JSON text made safe inside `<script type="application/json">` (read back with JSON.parse):
 /// `<`, `>` and `&` as `\u003c` `\u003e` `\u0026` (they can stand in a JSON text only inside its

@@ -200,6 +200,7 @@ void readDrawingPipeline(Pipeline& out, const PipelineOptions& options) {
   geometry::ChainOptions co;
   co.tolerance = ro.chainTolerance;
   result.contours = geometry::chainSegments(segments, co);
+  result.depth = geometry::nestingDepths(result.contours);
   // With --offset and --side: the wire path of every closed contour (holes inside others on the
   // other side), and the drawing as a toolpath in the order kerf cam cuts it (cam.h).
   const bool wired = ro.wireOffset && ro.side && *ro.wireOffset > 0;

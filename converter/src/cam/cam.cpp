@@ -305,7 +305,7 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
   const std::vector<geometry::Chain>& chains = drawing.contours;
   std::optional<std::vector<std::size_t>> chosen = chooseContours(chains, o, source, diags);
   if (!chosen) return std::nullopt;
-  // Shifted paths, and how deep each sits inside the others.
+  // The chosen contours shifted; how deep each sits inside the others is drawing.depth.
   std::vector<std::vector<Segment>> paths(chains.size());
   for (std::size_t c : *chosen) {
     for (Segment s : chains[c].path) {
@@ -315,7 +315,7 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
       paths[c].push_back(s);
     }
   }
-  const std::vector<int> depth = geometry::nestingDepths(chains);
+  const std::vector<int>& depth = drawing.depth;
   *chosen = cuttingOrder(drawing, std::move(*chosen));
 
   CamResult result;
@@ -340,7 +340,7 @@ std::optional<CamResult> makeProgram(const DrawingResult& drawing, const SourceF
 }
 
 std::vector<std::size_t> cuttingOrder(const DrawingResult& drawing, std::vector<std::size_t> chosen) {
-  const std::vector<int> depth = geometry::nestingDepths(drawing.contours);
+  const std::vector<int>& depth = drawing.depth;
   std::stable_sort(chosen.begin(), chosen.end(), [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
   return chosen;
 }
@@ -348,11 +348,10 @@ std::vector<std::size_t> cuttingOrder(const DrawingResult& drawing, std::vector<
 std::vector<ContourWire> drawingWires(const DrawingResult& drawing, double radius, WireSide side,
                                       const SourceFile* source, Diagnostics& diags) {
   std::vector<ContourWire> wires(drawing.contours.size());
-  const std::vector<int> depth = geometry::nestingDepths(drawing.contours);
   for (std::size_t c = 0; c < drawing.contours.size(); ++c) {
     const geometry::Chain& chain = drawing.contours[c];
     if (!chain.closed) continue;
-    wires[c] = offsetContour(chain.path, radius, sideAtDepth(side, depth[c]));
+    wires[c] = offsetContour(chain.path, radius, sideAtDepth(side, drawing.depth[c]));
     reportContourWire(wires[c], c + 1, drawing, chain, radius, source, diags);
   }
   return wires;

@@ -34,7 +34,7 @@ CLI::App* addCamCommand(CLI::App& app, CamArgs& a) {
   cmd->add_option("--lead-in", r.cam.leadIn, "lead-in length in mm when no --entry (default 2)")
       ->check(CLI::Range(0.0, 1000.0))
       ->group(group);
-  addChoice<bool>(*cmd, "--offset-by", a.controllerOffset, {{"kerf", false}, {"controller", true}},
+  addChoice<bool>(*cmd, "--offset-by", r.cam.controllerOffset, {{"kerf", false}, {"controller", true}},
                   "kerf: the program is the wire-centre path (--offset applied here); controller: the program is "
                   "the contour with G41/G42 as the machine profile writes them (default kerf)")
       ->group(group);
@@ -62,7 +62,7 @@ int runCam(const CamArgs& a) {
   using namespace converter;
   const CommonOptions& c = a.common;
   const ReadOptions& given = c.pipeline.read;
-  const bool controller = a.controllerOffset;
+  const bool controller = a.request.cam.controllerOffset;
   if (!controller && !given.wireOffset && !a.request.cam.openPaths) {
     reportError("cam needs --offset R (the wire radius plus the spark gap, mm), or --offset-by controller");
     return kExitUsage;
@@ -83,7 +83,6 @@ int runCam(const CamArgs& a) {
   r.cam.offset = given.wireOffset.value_or(0.0);
   r.cam.side = given.side.value_or(WireSide::Outside);
   r.cam.start = given.start;
-  r.cam.controllerOffset = controller;
   r.emit.points.request.sampling = c.sampling.sampling();
   r.outputName = a.output == "-" ? std::string("<output>") : a.output;
 

@@ -95,7 +95,6 @@ struct CamArgs {
   CommonOptions common;
   converter::CamRequest request;
   std::string output = "-";
-  bool controllerOffset = false;  ///< --offset-by controller
 };
 CLI::App* addCamCommand(CLI::App& app, CamArgs& args);
 int runCam(const CamArgs& args);

@@ -56,8 +56,8 @@ void reportContourWire(const ContourWire& wire, std::size_t number, const Drawin
 std::vector<ContourWire> drawingWires(const DrawingResult& drawing, double radius, WireSide side,
                                       const SourceFile* source, Diagnostics& diags);
 
-/// The order contours are cut in: holes before the contours that hold them (deepest first), then
-/// the drawing's order. `chosen` are indices into drawing.contours.
+/// The order contours are cut in: holes before the contours that hold them (deepest first, by
+/// drawing.depth), then the drawing's order. `chosen` are indices into drawing.contours.
 std::vector<std::size_t> cuttingOrder(const DrawingResult& drawing, std::vector<std::size_t> chosen);
 
 /// The drawing as a toolpath (what `kerf check` and `kerf render` show of a drawing): every contour

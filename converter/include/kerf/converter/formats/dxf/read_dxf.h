@@ -82,6 +82,9 @@ struct Drawing {
 struct DrawingResult {
   Drawing drawing;
   std::vector<geometry::Chain> contours;
+  /// Per contour, how many others enclose it (geometry::nestingDepths), made with the contours:
+  /// the side each is cut on and the order they are cut in follow from it.
+  std::vector<int> depth;
 };
 
 /// Reads a DXF file (ASCII or binary). Errors name the line (binary: the byte offset) and the

@@ -1,5 +1,6 @@
 # Text files compiled into a library as strings: shaders/surface.vert becomes
-# <namespace>::kSurfaceVert, converter/machines/robofil.profile <namespace>::kRobofilProfile, and
+# <namespace>::kSurfaceVert, converter/machines/robofil.profile <namespace>::kRobofilProfile,
+# OrbitControls.js <namespace>::kOrbitcontrolsJs, and
 # <namespace>::kFiles lists every file as {name, text} in the order given. Regenerated when a
 # file changes.
 #   kerf_embed_text(OUTPUT <file.cpp> NAMESPACE <c++ namespace> SOURCES <files...>)
@@ -7,6 +8,7 @@
 function(kerf_text_symbol file out)
   get_filename_component(name "${file}" NAME)
   string(REPLACE "." "_" name "${name}")
+  string(TOLOWER "${name}" name)
   string(REGEX MATCHALL "[a-z0-9]+" parts "${name}")
   set(symbol "k")
   foreach(p IN LISTS parts)
@@ -27,6 +29,10 @@ if(CMAKE_SCRIPT_MODE_FILE)
     kerf_text_symbol("${file}" symbol)
     get_filename_component(name "${file}" NAME)
     file(READ "${file}" source)
+    string(FIND "${source}" ")kerf_text\"" closes)
+    if(NOT closes EQUAL -1)
+      message(FATAL_ERROR "${file} holds the raw string's end )kerf_text\": it cannot be embedded")
+    endif()
     string(APPEND text "extern const char* const ${symbol};\nconst char* const ${symbol} = R\"kerf_text(${source})kerf_text\";\n")
     string(APPEND table "    {\"${name}\", ${symbol}},\n")
     math(EXPR count "${count} + 1")

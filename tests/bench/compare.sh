@@ -22,12 +22,17 @@
 #   check, mesh 1,000,000 triangles, draw 1024x768 with OSMesa, PNG) against f3d drawing the same
 #   mesh from a ready STL (kerf export, not timed) at 1024x768 under xvfb-run; f3d alone is timed
 #   (inside xvfb-run, so the X server's start is not counted against it).
+#   the 3D page of the render benchmark's part (kerf export part.nc -o part.html at the same 0.002 mm:
+#   1,000,000 triangles exact, sent at the window's coarse level), in Debian's headless Chromium
+#   (tests/browser/pages.mjs orbit, WebGL on SwiftShader, 1280x800): the page's size, the export's
+#   wall time, and the frame rate of a scripted full turn of 120 frames; no peer (no other tool
+#   makes such a page). KERF_COMPARE_PAGE=0 skips it.
 #   kerf check of a folder of 1,000 programs (the real corpus's programs and drawings copied in turn,
 #   KERF_COMPARE_REALWORLD points at it; KERF_COMPARE_BATCH=0 skips it) in one call against 1,000
 #   separate calls (issue 14): wall time.
 # KERF_COMPARE_BASELINE=PATH: another build's kerf program (an earlier commit) timed in the same
 # interleave on both check programs, for a change's before and after.
-# KERF_COMPARE_STARS (a list of sizes, " " for none), KERF_COMPARE_RENDER=0, KERF_COMPARE_READER=0,
+# KERF_COMPARE_STARS (a list of sizes, " " for none), KERF_COMPARE_RENDER=0, KERF_COMPARE_PAGE=0, KERF_COMPARE_READER=0,
 # KERF_COMPARE_SPIRAL=0 and KERF_COMPARE_BATCH=0 leave pairs out.
 set -euo pipefail
 export LC_ALL=C  # $EPOCHREALTIME and awk with a decimal point, whatever the locale
@@ -107,6 +112,26 @@ if [[ "${KERF_COMPARE_RENDER:-1}" != 0 ]] && command -v f3d > /dev/null && comma
     "$(awk -v a="$(cut -d' ' -f1 "$work/kr" | stats | cut -d' ' -f2)" -v b="$(cut -d' ' -f1 "$work/fr" | stats | cut -d' ' -f2)" 'BEGIN {print a / b}')"
 else
   echo "compare.sh: the picture pair is skipped (KERF_COMPARE_RENDER=0, or f3d or xvfb-run is not installed: apt-get install f3d xvfb)" >&2
+fi
+
+tools=${KERF_TEST_TOOLS:-/opt/kerf-test-tools}
+if [[ "${KERF_COMPARE_PAGE:-1}" != 0 ]] && command -v chromium > /dev/null && [[ -d "$tools/node_modules/puppeteer-core" ]]; then
+  echo "# the 3D page of the render benchmark's part (1,000,000 triangles at 0.002 mm), orbited in headless Chromium"
+  [[ -f "$work/part.nc" ]] || "$build/tests/kerf_bench_render" --repeat 1 --write "$work/part.nc" > /dev/null
+  : > "$work/pe" && : > "$work/pf"
+  for ((r = 0; r < runs; ++r)); do
+    /usr/bin/time -f "%e %M" -o "$work/t" "$build/viewer/kerf" export "$work/part.nc" --mesh-tolerance 0.002 \
+      -o "$work/part.html" 2> "$work/export.log"
+    cat "$work/t" >> "$work/pe"
+    KERF_TEST_TOOLS="$tools" node "$here/../browser/pages.mjs" orbit "$work/part.html" 120 |
+      awk -F'[:,}]' '{for (i = 1; i < NF; ++i) if ($i ~ /"fps"/) print $(i + 1)}' >> "$work/pf"
+  done
+  grep -o "wrote the 3D page.*" "$work/export.log" | sed 's/^/page: /'
+  printf "page: %.1f MiB; export %s; orbit %s frames/s (min / median / max)\n" \
+    "$(awk -v b="$(stat -c %s "$work/part.html")" 'BEGIN {print b / 1048576}')" "$(stats_pair "$work/pe")" \
+    "$(stats 1 < "$work/pf" | sed 's/ / \/ /g')"
+else
+  echo "compare.sh: the page is skipped (KERF_COMPARE_PAGE=0, or chromium or puppeteer-core is not installed: .ci/install-deps.sh --tests)" >&2
 fi
 
 if [[ "${KERF_COMPARE_READER:-1}" != 0 ]] && command -v rs274 > /dev/null; then

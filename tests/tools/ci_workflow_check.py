@@ -6,9 +6,10 @@
 The YAML block after `<!-- ci-workflow -->` is parsed (python3-yaml); every `run:` step but the
 install runs with `sh -e` (a container job's default shell) in a scratch folder whose programs/ are
 the samples, with the kerf under test first on PATH. Twice:
-- clean samples: every step passes, kerf.sarif is a SARIF log, previews/ has a PNG per program;
-- plus a program with an error: the report and preview steps still pass (the error is in the
-  SARIF), and the gate fails.
+- clean samples: every step passes, kerf.sarif is a SARIF log, kerf.xml JUnit, report/ has the
+  index and a page, a picture and a 3D page per program;
+- plus a program with an error: the report steps still pass (the error is in the SARIF and on its
+  page), and the gate fails.
 """
 import json
 import os
@@ -25,8 +26,8 @@ workflow = yaml.safe_load(block)
 steps = workflow["jobs"]["kerf"]["steps"]
 runs = [s for s in steps if "run" in s and "install" not in s.get("name", "").lower()]
 assert any("upload-sarif" in s.get("uses", "") for s in steps), "the workflow should upload the SARIF"
-assert any("upload-artifact" in s.get("uses", "") for s in steps), "the workflow should keep the previews"
-assert len(runs) >= 3, f"expected the report, preview and gate steps, found {len(runs)}"
+assert any("upload-artifact" in s.get("uses", "") for s in steps), "the workflow should keep the report"
+assert len(runs) >= 4, f"expected the SARIF, JUnit, HTML report and gate steps, found {len(runs)}"
 env = dict(os.environ, PATH=os.path.abspath(kerf_dir) + os.pathsep + os.environ["PATH"])
 failures = []
 
@@ -58,14 +59,22 @@ def attempt(label, bad):
     has_error = any(r["level"] == "error" for r in results)
     if log["version"] != "2.1.0" or has_error != bad:
         failures.append(f"{label}: kerf.sarif version {log['version']}, error results {has_error}")
-    pngs = sorted(f for f in os.listdir(os.path.join(folder, "previews")) if f.endswith(".png"))
-    if len(pngs) != len(programs):
-        failures.append(f"{label}: {len(pngs)} previews for {len(programs)} programs")
-    for p in pngs:
-        with open(os.path.join(folder, "previews", p), "rb") as f:
-            if f.read(8) != b"\x89PNG\r\n\x1a\n":
-                failures.append(f"{label}: {p} is not a PNG")
-
+    if "<testsuites" not in open(os.path.join(folder, "kerf.xml"), encoding="utf-8").read():
+        failures.append(f"{label}: kerf.xml is not a JUnit report")
+    report = os.path.join(folder, "report")
+    if not os.path.isfile(os.path.join(report, "index.html")):
+        failures.append(f"{label}: no report/index.html")
+        return
+    for p in programs:
+        for made in (p + ".html", p + ".3d.html", p + ".thumb.png", p + ".top.png", p + ".iso.png"):
+            if not os.path.isfile(os.path.join(report, made)):
+                failures.append(f"{label}: no report/{made}")
+            elif made.endswith(".png"):
+                with open(os.path.join(report, made), "rb") as f:
+                    if f.read(8) != b"\x89PNG\r\n\x1a\n":
+                        failures.append(f"{label}: {made} is not a PNG")
+    if bad and "arc radius" not in open(os.path.join(report, "zz_bad.nc.html"), encoding="utf-8").read():
+        failures.append(f"{label}: the error is not on zz_bad.nc's page")
 
 attempt("clean", False)
 attempt("with_error", True)

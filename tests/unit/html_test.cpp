@@ -1,6 +1,7 @@
 // The building blocks of Kerf's HTML pages (report/html.h): hostile input stays text, JSON in a
 // script cannot close it, and the CSP hashes are SHA-256 as FIPS 180-4's examples give them.
 #include "kerf/converter/report/html.h"
+#include "kerf/converter/report/html_report.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +11,9 @@ namespace {
 
 using kerf::converter::base64;
 using kerf::converter::contentSecurityPolicy;
+using kerf::converter::htmlPageNames;
 using kerf::converter::markupText;
+using kerf::converter::programTitle;
 using kerf::converter::scriptJson;
 using kerf::converter::sha256;
 
@@ -80,6 +83,29 @@ TEST(html_test, base64_and_the_policy) {
             "default-src 'none'; script-src 'sha256-ungWv48Bz+pBQUDeXa4iI7ADYaOWF3qctBD/YfIAFa0='; style-src 'none'; "
             "img-src 'self' data:; base-uri 'none'; form-action 'none'");
   EXPECT_EQ(csp.find('"'), std::string::npos);
+  // A report's 3D pages load their scripts from the folder: 'self', no hash.
+  EXPECT_EQ(contentSecurityPolicy(scripts, {}, true).find("script-src 'self'; style-src 'none'"), 20u);
+}
+
+// Page names: safe bytes, unique, never the index, and each page's <stem>.3d.html free for its 3D
+// page (a program named "a.3d" must not take program a's).
+TEST(html_test, page_names_leave_room_for_3d_pages) {
+  const std::string programs[] = {"dir/a", "a.3d", "other/a", "index", "x<y>.nc", ".hidden"};
+  const std::vector<std::string> names = htmlPageNames(programs);
+  ASSERT_EQ(names.size(), 6u);
+  EXPECT_EQ(names[0], "a.html");
+  EXPECT_EQ(names[1], "a.3d-2.html");
+  EXPECT_EQ(names[2], "a-2.html");
+  EXPECT_EQ(names[3], "index-2.html");
+  EXPECT_EQ(names[4], "x_y_.nc.html");
+  EXPECT_EQ(names[5], "program.hidden.html");
+}
+
+// A title: the file's name, not its folders, cut on a character's boundary.
+TEST(html_test, program_titles_are_short) {
+  EXPECT_EQ(programTitle("../shared/realworld/iso2d/part.nc", " — Kerf"), "part.nc — Kerf");
+  const std::string long_name = std::string(47, 'x') + "\xc3\xa9" + "tail.nc";  // é across byte 48
+  EXPECT_EQ(programTitle(long_name, ""), std::string(47, 'x') + "…");
 }
 
 }  // namespace

@@ -347,6 +347,26 @@ std::string lowerMeaning(const Word& w, const Toolpath& tp, std::size_t i) {
 
 }  // namespace
 
+const char* markRoleName(ConstructionMark::Role role) {
+  using Role = ConstructionMark::Role;
+  switch (role) {
+    case Role::Path: return "path";
+    case Role::Upper: return "upper";
+    case Role::Chord: return "chord";
+    case Role::Bisector: return "bisector";
+    case Role::Centre: return "centre";
+    case Role::Rejected: return "rejected";
+    case Role::Vector: return "vector";
+    case Role::Radius: return "radius";
+    case Role::Angle: return "angle";
+    case Role::Sample: return "sample";
+    case Role::Deviation: return "deviation";
+    case Role::Programmed: return "programmed";
+    case Role::Offset: return "offset";
+  }
+  return "mark";
+}
+
 std::vector<WordMeaning> blockWords(const SourceFile& source, const Toolpath& tp, std::size_t i,
                                     const ParseOptions& parse) {
   const Move& m = tp.moves[i];
@@ -428,9 +448,8 @@ std::string passOf(const Structure* structure, std::size_t i) {
     for (std::size_t k = 0; k < contour.passes.size(); ++k) {
       const Pass& p = contour.passes[k];
       if (i < p.first || i >= p.end) continue;
-      const char* what = p.cutOff ? "the cut-off through the tab" : k == 0 ? "the rough cut" : "a skim";
       const char* part = i < p.alongFirst ? ", its lead-in" : i >= p.alongEnd ? ", its lead-out" : "";
-      return "pass " + std::to_string(k + 1) + " of contour " + std::to_string(c + 1) + ": " + what + part;
+      return passName(c, k) + ": " + passRole(p, k) + part;
     }
   }
   return {};

@@ -173,13 +173,28 @@ std::string base64(std::span<const std::uint8_t> bytes) {
   return out;
 }
 
-std::string contentSecurityPolicy(std::span<const std::string_view> scripts, std::span<const std::string_view> styles) {
+std::string programTitle(std::string_view name, std::string_view suffix) {
+  constexpr std::size_t kLongest = 48;
+  const std::size_t slash = name.find_last_of('/');
+  std::string_view base = slash == std::string_view::npos ? name : name.substr(slash + 1);
+  std::string title(base);
+  if (title.size() > kLongest) {
+    std::size_t cut = kLongest;
+    while (cut > 0 && (static_cast<unsigned char>(title[cut]) & 0xC0) == 0x80) --cut;  // not inside a character
+    title = title.substr(0, cut) + "…";
+  }
+  return title + std::string(suffix);
+}
+
+std::string contentSecurityPolicy(std::span<const std::string_view> scripts, std::span<const std::string_view> styles,
+                                  bool scriptFiles) {
   auto hashes = [](std::span<const std::string_view> texts) {
     std::string out;
     for (const std::string_view t : texts) out += " 'sha256-" + base64(sha256(t)) + "'";
     return texts.empty() ? std::string(" 'none'") : out;
   };
-  return "default-src 'none'; script-src" + hashes(scripts) + "; style-src" + hashes(styles) +
+  const std::string scriptSources = scriptFiles ? std::string(" 'self'") : hashes(scripts);
+  return "default-src 'none'; script-src" + scriptSources + "; style-src" + hashes(styles) +
          "; img-src 'self' data:; base-uri 'none'; form-action 'none'";
 }
 

@@ -3,6 +3,7 @@
 
 #include "kerf/converter/nc/number_format.h"
 #include "kerf/converter/report/html.h"
+#include "kerf/converter/structure/passes.h"
 
 #include <set>
 
@@ -14,7 +15,9 @@ constexpr std::string_view kStyle =
     "table{border-collapse:collapse}th,td{padding:.25em .6em;border-bottom:1px solid #ddd;text-align:left}"
     "th{cursor:pointer;background:#f4f4f4}td.n{text-align:right}"
     ".ok{color:#17643a}.errors{color:#b00020}.unread{color:#8a5a00}"
-    "pre{background:#f8f8f8;padding:.8em;overflow-x:auto}";
+    "pre{background:#f8f8f8;padding:.8em;overflow-x:auto}"
+    "td img{display:block;border:1px solid #ddd;margin-bottom:.2em}figure{display:inline-block;margin:0 1em 1em 0}"
+    "figure img{border:1px solid #ddd}.over{color:#b00020;font-weight:bold}";
 
 // Sorts the index by the column clicked (numbers as numbers), and marks the page as ready: a test
 // in a browser reads the mark to know the Content-Security-Policy let the script run.
@@ -59,20 +62,64 @@ std::string number(const std::string& shown, double value) {
   return "<td class=\"n\" data-value=\"" + formatFixed(value, 6) + "\">" + markupText(shown) + "</td>";
 }
 
+/// The program's cell: its picture (when made) and its name, a link to its page.
+std::string programCell(const HtmlReportEntry& e) {
+  std::string cell = "<td><a href=\"" + markupText(e.page) + "\">";
+  if (!e.thumbnail.empty())
+    cell += "<img src=\"" + markupText(e.thumbnail) + "\" width=\"160\" height=\"120\" alt=\"\">";
+  return cell + markupText(e.name) + "</a></td>";
+}
+
+std::string deviationCell(const HtmlReportEntry& e) {
+  if (!e.worstDeviation) return "<td class=\"n\"></td>";
+  const bool over = e.tolerance && *e.worstDeviation > *e.tolerance;
+  return "<td class=\"n" + std::string(over ? " over" : "") + "\" data-value=\"" + formatFixed(*e.worstDeviation, 6) +
+         "\">" + formatFixed(*e.worstDeviation, 4) + " mm</td>";
+}
+
 std::string row(const HtmlReportEntry& e) {
-  std::string r = "<tr><td><a href=\"" + markupText(e.page) + "\">" + markupText(e.name) + "</a></td><td class=\"" +
-                  verdictClass(e.exit) + "\" data-value=\"" + std::to_string(e.exit) + "\">" + verdictWord(e.exit) +
-                  "</td>" + number(std::to_string(e.errors), static_cast<double>(e.errors)) +
+  std::string r = "<tr>" + programCell(e) + "<td class=\"" + verdictClass(e.exit) + "\" data-value=\"" +
+                  std::to_string(e.exit) + "\">" + verdictWord(e.exit) + "</td>" +
+                  number(std::to_string(e.errors), static_cast<double>(e.errors)) +
                   number(std::to_string(e.warnings), static_cast<double>(e.warnings)) +
                   number(std::to_string(e.notes), static_cast<double>(e.notes));
-  if (!e.summary) return r + "<td colspan=\"5\">" + markupText(e.failure) + "</td></tr>\n";
+  if (!e.summary) return r + "<td colspan=\"6\">" + markupText(e.failure) + "</td></tr>\n";
   const Summary& s = *e.summary;
   const double minutes = s.structure.time.total();
   r += "<td>" + markupText(dialectName(s.dialect)) + "</td><td>" + markupText(s.reading.machine) + "</td>" +
        number(std::to_string(passCount(s)), static_cast<double>(passCount(s))) +
        number(formatFixed(s.cutLength, 3) + " mm", s.cutLength) +
-       (minutes > 0 ? number(formatFixed(minutes, 2) + " min", minutes) : std::string("<td class=\"n\"></td>"));
+       (minutes > 0 ? number(formatFixed(minutes, 2) + " min", minutes) : std::string("<td class=\"n\"></td>")) +
+       deviationCell(e);
   return r + "</tr>\n";
+}
+
+/// The passes of each contour: what each is, its offset, its lines, its length and time.
+std::string passTable(const Structure& structure) {
+  std::string t =
+      "<table>\n<thead><tr><th>pass</th><th>what</th><th>offset</th><th>condition</th><th>lines</th>"
+      "<th>length</th><th>time</th></tr></thead>\n<tbody>\n";
+  for (std::size_t c = 0; c < structure.contours.size(); ++c)
+    for (std::size_t k = 0; k < structure.contours[c].passes.size(); ++k) {
+      const Pass& p = structure.contours[c].passes[k];
+      t += "<tr><td>" + passName(c, k) + "</td><td>" + passRole(p, k) + "</td><td>" + markupText(offsetText(p)) +
+           "</td><td>" + markupText(p.condition) + "</td><td>" + std::to_string(p.firstLine) + "–" +
+           std::to_string(p.lastLine) + "</td>" + number(formatFixed(p.length, 3) + " mm", p.length) +
+           (p.minutes ? number(formatFixed(*p.minutes, 2) + " min", *p.minutes) : std::string("<td></td>")) + "</tr>\n";
+    }
+  return t + "</tbody>\n</table>\n";
+}
+
+/// The part from above and in iso, and the link to its 3D page.
+std::string views(const HtmlReportEntry& e) {
+  std::string v;
+  for (const auto& [file, caption] : {std::pair{&e.top, "from above"}, std::pair{&e.iso, "iso"}})
+    if (!file->empty())
+      v += "<figure><img src=\"" + markupText(*file) + "\" width=\"480\" height=\"360\" alt=\"the part " + caption +
+           "\"><figcaption>" + caption + "</figcaption></figure>\n";
+  if (!e.page3d.empty())
+    v += "<p><a href=\"" + markupText(e.page3d) + "\">the part in 3D, beside the program</a></p>\n";
+  return v;
 }
 
 }  // namespace
@@ -89,18 +136,25 @@ std::vector<std::string> htmlPageNames(std::span<const std::string> programs) {
       if (!safe) c = '_';
     }
     if (base.empty() || base.front() == '.') base.insert(0, "program");
-    std::string name = base + ".html";
-    for (int k = 2; !used.insert(name).second; ++k) name = base + "-" + std::to_string(k) + ".html";
-    names.push_back(name);
+    // A page <stem>.html keeps <stem>.3d.html for its 3D page: neither may be another's.
+    std::string stem = base;
+    for (int k = 2; used.count(stem + ".html") || used.count(stem + ".3d.html"); ++k)
+      stem = base + "-" + std::to_string(k);
+    used.insert(stem + ".3d.html");
+    used.insert(stem + ".html");
+    names.push_back(stem + ".html");
   }
   return names;
 }
 
-std::string htmlReportIndex(std::span<const HtmlReportEntry> entries, const std::string& summaryLine) {
-  std::string body = "<h1>Kerf check</h1>\n<p>" + markupText(summaryLine) +
-                     "</p>\n<table>\n<thead><tr><th>program</th><th>verdict</th><th>errors</th><th>warnings</th>"
-                     "<th>notes</th><th>dialect</th><th>machine</th><th>passes</th><th>cut length</th>"
-                     "<th>time</th></tr></thead>\n<tbody>\n";
+std::string htmlReportIndex(std::span<const HtmlReportEntry> entries, const std::string& summaryLine,
+                            const std::string& note) {
+  std::string body = "<h1>Kerf check</h1>\n<p>" + markupText(summaryLine) + "</p>\n";
+  if (!note.empty()) body += "<p>" + markupText(note) + "</p>\n";
+  body +=
+      "<table>\n<thead><tr><th>program</th><th>verdict</th><th>errors</th><th>warnings</th>"
+      "<th>notes</th><th>dialect</th><th>machine</th><th>passes</th><th>cut length</th>"
+      "<th>time</th><th>drawing</th></tr></thead>\n<tbody>\n";
   for (const HtmlReportEntry& e : entries) body += row(e);
   body += "</tbody>\n</table>\n";
   return page("Kerf check", body, true);
@@ -112,11 +166,14 @@ std::string htmlReportPage(const HtmlReportEntry& e) {
                      std::to_string(e.errors) + " errors, " + std::to_string(e.warnings) + " warnings, " +
                      std::to_string(e.notes) + " notes)</p>\n";
   if (!e.failure.empty()) body += "<p>" + markupText(e.failure) + "</p>\n";
+  body += views(e);
   if (!e.summaryText.empty()) body += "<h2>Summary</h2>\n<pre>" + markupText(e.summaryText) + "</pre>\n";
+  if (e.summary && !e.summary->structure.contours.empty())
+    body += "<h2>Passes</h2>\n" + passTable(e.summary->structure);
   body += "<h2>Diagnostics</h2>\n";
   body +=
       e.diagnosticsText.empty() ? std::string("<p>none</p>\n") : "<pre>" + markupText(e.diagnosticsText) + "</pre>\n";
-  return page(e.name + " — Kerf check", body, false);
+  return page(programTitle(e.name, " — Kerf check"), body, false);
 }
 
 }  // namespace kerf::converter

@@ -691,9 +691,9 @@ PassMarks passMarks(const Structure* structure, std::size_t moves) {
     for (std::size_t k = 0; k < c.passes.size(); ++k) {
       const Pass& p = c.passes[k];
       if (p.first >= p.end || p.end > moves) continue;
-      const std::string name = "pass " + std::to_string(k + 1) + " of contour " + std::to_string(ci + 1);
+      const std::string name = passName(ci, k);
       const int kept = keptSide(p);
-      const std::string what = p.cutOff ? "the cut-off through the tab" : k == 0 ? "the rough cut" : "a skim";
+      const std::string what = passRole(p, k);
       marks.before[p.first] = "\n== " + name + " begins (" + std::to_string(c.passes.size()) +
                               " passes from the hole at " + formatPoint(c.startHole) + "): " + what + ", " +
                               offsetText(p) + ", " + directionName(p.direction) +

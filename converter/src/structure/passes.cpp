@@ -279,6 +279,14 @@ std::string offsetText(const Pass& p) {
   return t + " (offset at the machine)";
 }
 
+const char* passRole(const Pass& pass, std::size_t index) {
+  return pass.cutOff ? "the cut-off through the tab" : index == 0 ? "the rough cut" : "a skim";
+}
+
+std::string passName(std::size_t contour, std::size_t index) {
+  return "pass " + std::to_string(index + 1) + " of contour " + std::to_string(contour + 1);
+}
+
 std::vector<std::uint8_t> movePasses(const Structure& structure, std::size_t moves) {
   std::vector<std::uint8_t> out(moves, 0);
   for (const Contour& c : structure.contours)

@@ -1,6 +1,7 @@
 // kerf check FILE|DIR... : diagnostics, geometric findings and the part's numbers, for each file;
 // folders are walked, files are checked on every core, and the exit code is the worst one.
 #include "commands.h"
+#include "draw_module.h"
 #include "file_io.h"
 #include "load.h"
 
@@ -129,6 +130,7 @@ struct Outcome {
   // --format html: what its page shows.
   std::optional<converter::Summary> summary;
   std::string summaryText, diagnosticsPlain;
+  std::optional<double> worstDeviation, tolerance;  ///< --drawing's
 };
 
 Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
@@ -171,6 +173,10 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
       if (format == "html") {
         o.summaryText = std::move(summary);
         o.summary = *p.summary;
+        if (p.comparison) {
+          o.worstDeviation = p.comparison->worst;
+          o.tolerance = p.comparison->tolerance;
+        }
       }
     }
   }
@@ -182,39 +188,60 @@ Outcome checkOne(const CheckArgs& a, const std::string& file, bool many) {
   return o;
 }
 
-/// --format html: the report's folder (converter/report/html_report.h), written whole or not at
-/// all; false, said, when it cannot be.
-bool writeHtmlReport(const std::string& folder, const std::vector<std::string>& files,
-                     const std::vector<Outcome>& outcomes, const std::string& summaryLine) {
+/// --format html: the report's folder (converter/report/html_report.h) with each program's pictures
+/// and 3D page (drawn by the drawing module; without it, the pages say so), written whole or not
+/// at all; false, said, when it cannot be.
+bool writeHtmlReport(const CheckArgs& a, const std::vector<std::string>& files, const std::vector<Outcome>& outcomes,
+                     const std::string& summaryLine) {
   std::vector<std::string> names;
   for (const std::string& f : files) names.push_back(displayName(f));
   const std::vector<std::string> pages = converter::htmlPageNames(names);
-  std::vector<converter::HtmlReportEntry> entries;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    const Outcome& o = outcomes[i];
-    converter::HtmlReportEntry e;
-    e.name = names[i];
-    e.page = pages[i];
-    e.exit = o.exit;
-    e.failure = o.failure;
-    e.errors = o.errors;
-    e.warnings = o.warnings;
-    for (const converter::Diagnostic& d : o.shown.all()) e.notes += d.severity == converter::Severity::Note;
-    e.diagnosticsText = o.diagnosticsPlain;
-    e.summaryText = o.summaryText;
-    e.summary = o.summary ? &*o.summary : nullptr;
-    entries.push_back(std::move(e));
-  }
-  std::vector<std::pair<std::string, std::string>> out;
-  out.emplace_back("index.html", converter::htmlReportIndex(entries, summaryLine));
-  for (const converter::HtmlReportEntry& e : entries) out.emplace_back(e.page, converter::htmlReportPage(e));
+  std::string moduleError, note;
+  const DrawCommands* draw = loadDrawCommands(moduleError);
+  if (!draw) note = "No pictures: " + moduleError + ".";
+  auto fill = [&](const std::string& folder, std::string& error) {
+    ReportArgs pictures{&a.common, files, names, {}, folder};
+    for (const std::string& page : pages) pictures.stems.push_back(page.substr(0, page.size() - 5));  // ".html"
+    if (draw) draw->reportPictures(pictures);
+    std::vector<converter::HtmlReportEntry> entries;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      const Outcome& o = outcomes[i];
+      converter::HtmlReportEntry e;
+      e.name = names[i];
+      e.page = pages[i];
+      e.exit = o.exit;
+      e.failure = o.failure;
+      e.errors = o.errors;
+      e.warnings = o.warnings;
+      for (const converter::Diagnostic& d : o.shown.all()) e.notes += d.severity == converter::Severity::Note;
+      e.diagnosticsText = o.diagnosticsPlain;
+      e.summaryText = o.summaryText;
+      e.summary = o.summary ? &*o.summary : nullptr;
+      e.worstDeviation = o.worstDeviation;
+      e.tolerance = o.tolerance;
+      // What the drawing module made of it.
+      const ReportAssets made(pictures.stems[i]);
+      const auto kept = [&folder](const std::string& name) {
+        return std::filesystem::exists(std::filesystem::path(folder) / name) ? name : std::string();
+      };
+      e.thumbnail = kept(made.thumbnail);
+      e.top = kept(made.top);
+      e.iso = kept(made.iso);
+      e.page3d = kept(made.page3d);
+      entries.push_back(std::move(e));
+    }
+    if (!writeFileIn(folder, "index.html", converter::htmlReportIndex(entries, summaryLine, note), error)) return false;
+    for (const converter::HtmlReportEntry& e : entries)
+      if (!writeFileIn(folder, e.page, converter::htmlReportPage(e), error)) return false;
+    return true;
+  };
   std::string error;
-  if (!writeFolder(folder, out, error)) {
+  if (!writeFolder(a.output, fill, error)) {
     reportError(error);
     return false;
   }
   std::cerr << "kerf: wrote the report of " << files.size() << (files.size() == 1 ? " program" : " programs") << " to "
-            << folder << "/index.html\n";
+            << a.output << "/index.html\n";
   return true;
 }
 
@@ -312,7 +339,7 @@ int runCheck(const CheckArgs& a) {
       (errors == 1 ? " error, " : " errors, ") + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") +
       "; worst: " + verdict;
   if (many && !a.common.checks.quiet) std::cerr << "kerf: " << summaryLine << "\n";
-  if (format == "html" && !writeHtmlReport(a.output, files, outcomes, summaryLine)) return kExitUsage;
+  if (format == "html" && !writeHtmlReport(a, files, outcomes, summaryLine)) return kExitUsage;
   return worst;
 }
 

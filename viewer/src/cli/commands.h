@@ -73,6 +73,23 @@ struct ExportArgs {
 CLI::App* addExportCommand(CLI::App& app, ExportArgs& args);
 int runExport(const ExportArgs& args);
 
+/// kerf check --format html, in the drawing module: each program's pictures and 3D page, written
+/// into the report's new folder before it is put in place (check_command.cpp).
+struct ReportArgs {
+  const CommonOptions* common = nullptr;  ///< the check's options
+  std::vector<std::string> files;         ///< the programs, as checked
+  std::vector<std::string> names;         ///< their names on the pages
+  std::vector<std::string> stems;         ///< each program's stem in the folder (ReportAssets)
+  std::string folder;
+};
+
+/// The files of a program in the report's folder beside its page <stem>.html.
+struct ReportAssets {
+  std::string thumbnail, top, iso, page3d;
+  explicit ReportAssets(const std::string& stem)
+      : thumbnail(stem + ".thumb.png"), top(stem + ".top.png"), iso(stem + ".iso.png"), page3d(stem + ".3d.html") {}
+};
+
 struct ViewArgs {
   CommonOptions common;
   std::optional<std::string> screenshot;

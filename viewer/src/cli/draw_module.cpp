@@ -74,7 +74,7 @@ const DrawCommands* loadDrawCommands(std::string& error) {
 }
 
 int drawModuleMissing(const std::string& error) {
-  reportError(error + "; render, view and mesh export need it (check, explain, convert and cam do not)");
+  reportError(error + "; render, view, mesh and page export need it (check, explain, convert and cam do not)");
   return kExitUsage;
 }
 

@@ -17,9 +17,9 @@ namespace kerf::cli {
 
 /// Changes with the layout of the arguments the program hands the module, so a module from another
 /// build is refused instead of misread.
-inline constexpr std::uint64_t kDrawAbi = 1u + (sizeof(RenderArgs) << 8) + (sizeof(ViewArgs) << 24) +
-                                          (static_cast<std::uint64_t>(sizeof(ExportArgs)) << 40) +
-                                          (static_cast<std::uint64_t>(sizeof(CommonOptions)) << 52);
+inline constexpr std::uint64_t kDrawAbi =
+    1u + (sizeof(RenderArgs) << 8) + (sizeof(ViewArgs) << 24) + (static_cast<std::uint64_t>(sizeof(ExportArgs)) << 40) +
+    (static_cast<std::uint64_t>(sizeof(CommonOptions)) << 52) + (static_cast<std::uint64_t>(sizeof(ReportArgs)) << 32);
 inline constexpr const char* kDrawVersion = KERF_VERSION;
 
 struct DrawCommands {
@@ -27,7 +27,10 @@ struct DrawCommands {
   const char* version;
   int (*render)(const RenderArgs&);
   int (*view)(const ViewArgs&);
-  int (*exportMesh)(const ExportArgs&);
+  int (*exportMesh)(const ExportArgs&);  ///< -o .vtp, .stl, .ply
+  int (*exportPage)(const ExportArgs&);  ///< -o .html: the 3D page
+  /// Writes what it can of each program's pictures and 3D page; the number of programs drawn.
+  std::size_t (*reportPictures)(const ReportArgs&);
 };
 
 /// The module's commands, loaded once; nothing, with the reason in error, when the module is

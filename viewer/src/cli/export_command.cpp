@@ -1,6 +1,7 @@
 // kerf export FILE -o part.dxf: the contours as a drawing (converter/formats/dxf/write_dxf.h); -o
 // part.vtp|.stl|.ply: the ruled surface for ParaView and CAD, written with VTK by the drawing
-// module (draw/export.cpp). Its findings are those kerf check reports for the same options.
+// module (draw/export.cpp); -o part.html: the 3D page that teaches (draw/page.cpp). Its findings
+// are those kerf check reports for the same options.
 #include "commands.h"
 #include "draw_module.h"
 #include "file_io.h"
@@ -12,14 +13,18 @@
 
 #include <cctype>
 #include <iostream>
+#include <string_view>
 
 namespace kerf::cli {
 
 CLI::App* addExportCommand(CLI::App& app, ExportArgs& a) {
   CLI::App* cmd = app.add_subcommand(
-      "export", "the ruled surface as a .vtp, .stl or .ply mesh (VTK), or the contours as a .dxf drawing");
+      "export",
+      "the ruled surface as a .vtp, .stl or .ply mesh (VTK), the contours as a .dxf drawing, or the part in 3D "
+      "beside the program as one .html page");
   addCommonOptions(*cmd, a.common, false);
-  cmd->add_option("-o,--output", a.output, "file to write: .vtp, .stl, .ply (a mesh) or .dxf (a drawing)")
+  cmd->add_option("-o,--output", a.output,
+                  "file to write: .vtp, .stl, .ply (a mesh), .dxf (a drawing) or .html (a 3D page)")
       ->required()
       ->group("Output");
   addMeshOptions(*cmd, a.mesh, false);
@@ -31,11 +36,12 @@ CLI::App* addExportCommand(CLI::App& app, ExportArgs& a) {
 
 namespace {
 
-bool endsWithDxf(const std::string& path) {
-  if (path.size() < 4) return false;
-  std::string ext = path.substr(path.size() - 4);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".dxf";
+/// The path ends in `ext` (lower case, with its dot), in any case.
+bool endsWith(const std::string& path, std::string_view ext) {
+  if (path.size() < ext.size()) return false;
+  std::string tail = path.substr(path.size() - ext.size());
+  for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return tail == ext;
 }
 
 int runDxfExport(const ExportArgs& a) {
@@ -69,7 +75,7 @@ int runDxfExport(const ExportArgs& a) {
 }  // namespace
 
 int runExport(const ExportArgs& a) {
-  if (endsWithDxf(a.output)) return runDxfExport(a);
+  if (endsWith(a.output, ".dxf")) return runDxfExport(a);
   if (a.rapids || a.dxfVersion != "r2000") {
     reportError("--dxf and --rapids are for a drawing: -o must end in .dxf");
     return kExitUsage;
@@ -77,7 +83,7 @@ int runExport(const ExportArgs& a) {
   std::string error;
   const DrawCommands* draw = loadDrawCommands(error);
   if (!draw) return drawModuleMissing(error);
-  return draw->exportMesh(a);
+  return endsWith(a.output, ".html") ? draw->exportPage(a) : draw->exportMesh(a);
 }
 
 }  // namespace kerf::cli

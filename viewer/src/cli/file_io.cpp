@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <system_error>
 
@@ -273,11 +274,24 @@ bool finishStandardOutput(std::string& error) {
   return true;
 }
 
-bool writeFolder(const std::string& path, const std::vector<std::pair<std::string, std::string>>& files,
+bool writeFileIn(const std::string& folder, const std::string& name, std::string_view bytes, std::string& error) {
+  const std::string file = (fs::path(folder) / name).string();
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  const bool written = fd >= 0 && writeAll(fd, bytes.data(), bytes.size());
+  std::string closing;
+  if (fd >= 0 && ::close(fd) != 0) closing = errnoText();
+  if (written && closing.empty()) return true;
+  error = "cannot write '" + file + "': " + (closing.empty() ? errnoText() : closing);
+  return false;
+}
+
+bool writeFolder(const std::string& path, const std::function<bool(const std::string&, std::string&)>& fill,
                  std::string& error) {
   constexpr const char* kMark = ".kerf-report";
   std::error_code ec;
-  const fs::path target(path);
+  std::string named = path;  // "report/" is the folder report
+  while (named.size() > 1 && named.back() == '/') named.pop_back();
+  const fs::path target(named);
   const fs::file_status status = fs::symlink_status(target, ec);
   const bool exists = fs::exists(status);
   if (exists && (!fs::is_directory(status) || !fs::exists(target / kMark, ec))) {
@@ -292,18 +306,11 @@ bool writeFolder(const std::string& path, const std::vector<std::pair<std::strin
     error = "cannot make the folder '" + partial.string() + "': " + ec.message();
     return false;
   }
-  std::vector<std::pair<std::string, std::string>> all = files;
-  all.emplace_back(kMark, "a report written by Kerf: kerf check --format html replaces this folder\n");
-  for (const auto& [name, text] : all) {
-    const std::string file = (partial / name).string();
-    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    const bool written = fd >= 0 && writeAll(fd, text.data(), text.size());
-    if (fd >= 0 && ::close(fd) != 0) error = errnoText();
-    if (!written || !error.empty()) {
-      error = "cannot write '" + file + "': " + (error.empty() ? errnoText() : error);
-      fs::remove_all(partial, ec);
-      return false;
-    }
+  if (!fill(partial.string(), error) ||
+      !writeFileIn(partial.string(), kMark, "a report written by Kerf: kerf check --format html replaces this folder\n",
+                   error)) {
+    fs::remove_all(partial, ec);
+    return false;
   }
   if (exists) fs::rename(target, old, ec);
   if (!ec) fs::rename(partial, target, ec);

@@ -15,6 +15,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -41,11 +42,15 @@ bool writeOutputVia(const std::string& path, const std::vector<std::string>& inp
 /// disk, a closed pipe).
 bool finishStandardOutput(std::string& error);
 
-/// A folder of files (name, text) written whole or not at all: into a new folder beside `path`,
-/// then renamed to it. An existing `path` is replaced only when it is a folder Kerf wrote so (it
-/// holds the `.kerf-report` mark); anything else there is left alone and refused. The names are
-/// plain file names (no '/').
-bool writeFolder(const std::string& path, const std::vector<std::pair<std::string, std::string>>& files,
-                 std::string& error);
+/// A folder written whole or not at all: `fill` writes the files into a new folder beside `path`
+/// (whose path it is given; false, with the reason in its error, abandons it), which is then
+/// renamed to `path`. An existing `path` is replaced only when it is a folder Kerf wrote so (it
+/// holds the `.kerf-report` mark); anything else there is left alone and refused.
+bool writeFolder(const std::string& path,
+                 const std::function<bool(const std::string& folder, std::string& error)>& fill, std::string& error);
+
+/// Writes a new file `name` (a plain file name) in `folder`; false, with the reason, when it exists
+/// or cannot be written.
+bool writeFileIn(const std::string& folder, const std::string& name, std::string_view bytes, std::string& error);
 
 }  // namespace kerf::cli

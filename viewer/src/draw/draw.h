@@ -8,6 +8,7 @@
 #include "kerf/converter/pipeline.h"
 #include "kerf/render/scene.h"
 #include "ui/overlay.h"
+#include "ui/picture.h"
 
 #include <optional>
 #include <string>
@@ -26,6 +27,13 @@ bool guidesShowable(const converter::Pipeline& p, const render::SceneOptions& so
 /// (said) without --drawing.
 bool colourByDeviation(const converter::Pipeline& pipeline, render::SceneOptions& options, ui::Annotation& legend);
 
+/// The scene of a picture as `kerf render` draws it, coloured by `colourBy` ("slope", "pass",
+/// "deviation"; else plain): `so` and `request`'s colouring and annotation filled to match.
+/// Nothing, after saying why, when the colouring or --show cannot be had.
+std::optional<render::Scene> pictureScene(const converter::Pipeline& pipeline, const std::string& file,
+                                          const MeshOptions& mesh, const std::string& colourBy,
+                                          ui::PictureRequest& request, render::SceneOptions& so);
+
 /// The first move on `line`; nothing after saying, for `option`, that no move is programmed there
 /// and which lines nearest have one (a comment, a blank, past the end is said, not ignored).
 std::optional<std::size_t> moveOnLine(const converter::Pipeline& pipeline, std::size_t line, const std::string& option);
@@ -33,5 +41,7 @@ std::optional<std::size_t> moveOnLine(const converter::Pipeline& pipeline, std::
 int drawRender(const RenderArgs& args);
 int drawView(const ViewArgs& args);
 int drawExportMesh(const ExportArgs& args);
+int drawExportPage(const ExportArgs& args);
+std::size_t drawReportPictures(const ReportArgs& args);
 
 }  // namespace kerf::cli

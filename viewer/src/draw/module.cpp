@@ -6,8 +6,9 @@
 
 namespace {
 
-const kerf::cli::DrawCommands kCommands{kerf::cli::kDrawAbi, kerf::cli::kDrawVersion, &kerf::cli::drawRender,
-                                        &kerf::cli::drawView, &kerf::cli::drawExportMesh};
+const kerf::cli::DrawCommands kCommands{
+    kerf::cli::kDrawAbi,        kerf::cli::kDrawVersion,    &kerf::cli::drawRender,        &kerf::cli::drawView,
+    &kerf::cli::drawExportMesh, &kerf::cli::drawExportPage, &kerf::cli::drawReportPictures};
 
 }  // namespace
 

@@ -17,25 +17,17 @@
 
 namespace kerf::cli {
 
-int drawRender(const RenderArgs& a) {
-  ui::PictureRequest request;
-  if (!sizeOption(a.size, request.width, request.height)) return kExitUsage;
-  request.view = *render::parseView(a.view);
-  request.backend = *headless::parseBackend(a.backend);
-  request.samples = a.samples;
-  request.options.colourBySlope = a.colourBy == "slope";
-  request.options.colourByPass = a.colourBy == "pass";
-  request.options.highlightFindings = a.highlight;
-  const std::string& file = a.common.input.files.front();
-  std::optional<Loaded> in = loadOne(a.common, {.centreWords = a.explainLine.has_value()});
-  if (!in) return kExitUsage;
-  const converter::Pipeline& p = in->pipeline;
+std::optional<render::Scene> pictureScene(const converter::Pipeline& p, const std::string& file,
+                                          const MeshOptions& mesh, const std::string& colourBy,
+                                          ui::PictureRequest& request, render::SceneOptions& so) {
+  request.options.colourBySlope = colourBy == "slope";
+  request.options.colourByPass = colourBy == "pass";
   const std::vector<geometry::Segment> reference = converter::referenceGeometry(p);
   // No mesh piece is forced narrower than a pixel, and no line follows its arc closer than a
   // quarter of one (half a pixel shows the surface's edge beside the line): finer shows nothing
   // (docs/rendering.md).
-  render::SceneOptions so = sceneOptionsOf(a.mesh);
-  if (!guidesShowable(p, so)) return kExitUsage;
+  so = sceneOptionsOf(mesh);
+  if (!guidesShowable(p, so)) return std::nullopt;
   if (p.comparisonUpper) so.referenceUpper = p.comparisonUpper->drawn;
   so.minForcedPieceLength = ui::picturePixelMm(p.toolpath, so, request);
   so.lineTolerance = 0.25 * so.minForcedPieceLength;
@@ -44,12 +36,30 @@ int drawRender(const RenderArgs& a) {
     so.passLines = true;
   }
   request.annotation = annotationOf(file, p);
-  if (a.colourBy == "deviation" && !colourByDeviation(p, so, request.annotation)) return kExitUsage;
+  if (colourBy == "deviation" && !colourByDeviation(p, so, request.annotation)) return std::nullopt;
   render::Scene scene = render::buildScene(p.toolpath, p.diags.all(), so, reference);
   request.annotation.legend = request.options.colourBySlope;
   if (request.options.colourByPass)
     for (std::size_t k = 1; k <= std::min(scene.passes, render::kPassColours); ++k)
       request.annotation.passLegend.push_back("pass " + std::to_string(k) + (k == 1 ? " (rough)" : ""));
+  return scene;
+}
+
+int drawRender(const RenderArgs& a) {
+  ui::PictureRequest request;
+  if (!sizeOption(a.size, request.width, request.height)) return kExitUsage;
+  request.view = *render::parseView(a.view);
+  request.backend = *headless::parseBackend(a.backend);
+  request.samples = a.samples;
+  request.options.highlightFindings = a.highlight;
+  const std::string& file = a.common.input.files.front();
+  std::optional<Loaded> in = loadOne(a.common, {.centreWords = a.explainLine.has_value()});
+  if (!in) return kExitUsage;
+  const converter::Pipeline& p = in->pipeline;
+  render::SceneOptions so;
+  std::optional<render::Scene> built = pictureScene(p, file, a.mesh, a.colourBy.value_or(""), request, so);
+  if (!built) return kExitUsage;
+  render::Scene& scene = *built;
   request.annotation.labels = a.highlight;
   render::ConstructionScene construction;
   if (a.explainLine) {

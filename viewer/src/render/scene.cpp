@@ -108,6 +108,13 @@ void LineSet::add(const Vec3& a, const Vec3& b, std::uint32_t colour) {
   vertices.push_back({toFloat(b), colour});
 }
 
+SceneOptions coarseSceneOptions(SceneOptions exact, double mmPerPixel) {
+  exact.tolerance = std::max(exact.tolerance, 0.5 * mmPerPixel);
+  exact.mergeTolerance = 0.5 * mmPerPixel;
+  exact.minTaperPieces = 1;
+  return exact;
+}
+
 geometry::Planes displayPlanes(const converter::Toolpath& toolpath, double displayHeight) {
   if (toolpath.isTaper() && toolpath.heights.known) return toolpath.heights.planes;
   geometry::Box box;

@@ -49,11 +49,7 @@ void onKey(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int /*
 }
 
 constexpr float kTextPanel = 0.30f;
-// Above this many triangles the view is drawn from a coarse scene while it moves (orbit, pan, zoom,
-// playback): a surface within half a pixel of the exact one at the fitted zoom, no forced pieces,
-// and runs of moves that stay within half a pixel of their chord drawn as one patch.
-constexpr std::size_t kCoarseAbove = 250'000;  // triangles of the exact scene
-constexpr float kSidePanel = 290.0f;           // pixels
+constexpr float kSidePanel = 290.0f;  // pixels
 
 struct State {
   const WindowRequest* request = nullptr;
@@ -541,11 +537,10 @@ bool FrameLoop::fitView(const Layout& l, std::string& error) {
   shown_.valid = false;
   if (!fittedOnce_) s_.camera = s_.fitted;
   fittedOnce_ = true;
-  if (coarse_ || scene.triangles() <= kCoarseAbove) return true;
-  render::SceneOptions so = request_.sceneOptions;
-  so.tolerance = std::max(so.tolerance, 0.5 * s_.fitted.mmPerPixel(l.viewH));
-  so.mergeTolerance = 0.5 * s_.fitted.mmPerPixel(l.viewH);
-  so.minTaperPieces = 1;
+  // Above render::kCoarseAboveTriangles the view is drawn from a coarse scene while it moves
+  // (orbit, pan, zoom, playback), at the fitted zoom's pixel.
+  if (coarse_ || scene.triangles() <= render::kCoarseAboveTriangles) return true;
+  const render::SceneOptions so = render::coarseSceneOptions(request_.sceneOptions, s_.fitted.mmPerPixel(l.viewH));
   coarse_ = render::buildScene(*request_.toolpath, request_.findings, so, request_.reference);
   if (!coarseRenderer_.init(error)) return false;
   coarseRenderer_.setScene(*coarse_);
@@ -624,10 +619,8 @@ void FrameLoop::showPasses() {
   shownScene_ = render::buildScene(*request_.toolpath, request_.findings, so, request_.reference);
   renderer_.setScene(*shownScene_);
   if (coarse_) {
-    so.tolerance = std::max(so.tolerance, 0.5 * s_.fitted.mmPerPixel(targetH_));
-    so.mergeTolerance = 0.5 * s_.fitted.mmPerPixel(targetH_);
-    so.minTaperPieces = 1;
-    coarse_ = render::buildScene(*request_.toolpath, request_.findings, so, request_.reference);
+    coarse_ = render::buildScene(*request_.toolpath, request_.findings,
+                                 render::coarseSceneOptions(so, s_.fitted.mmPerPixel(targetH_)), request_.reference);
     coarseRenderer_.setScene(*coarse_);
   }
   shown_.valid = false;

@@ -168,6 +168,15 @@ Scene buildScene(const converter::Toolpath& toolpath, std::span<const converter:
 /// built: what a picture needs to know its scale.
 void toolpathBounds(const converter::Toolpath& toolpath, double displayHeight, geometry::Vec3& lo, geometry::Vec3& hi);
 
+/// Above this many triangles a view shows a coarse scene where it must stay responsive: the window
+/// while the view moves, the 3D page (export/part_page.h) always.
+inline constexpr std::size_t kCoarseAboveTriangles = 250'000;
+
+/// The coarse level of `exact` for a view at `mmPerPixel`: a surface within half a pixel of the
+/// exact one, no forced pieces, and runs of moves within half a pixel of their chord drawn as one
+/// patch (displayRuns).
+SceneOptions coarseSceneOptions(SceneOptions exact, double mmPerPixel);
+
 /// The planes a toolpath is drawn between (taper: its own; 2-axis: lower .. lower + display height).
 geometry::Planes displayPlanes(const converter::Toolpath& toolpath, double displayHeight);
 

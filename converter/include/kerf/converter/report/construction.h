@@ -51,6 +51,10 @@ struct ConstructionMark {
   std::string label;   ///< beside the mark (ASCII: the pictures' font has no Greek); empty: none
 };
 
+/// The role's name: "path", "upper", "chord", "bisector", "centre", "rejected", "vector", "radius",
+/// "angle", "sample", "deviation", "programmed", "offset" (the 3D page's data and its tests).
+const char* markRoleName(ConstructionMark::Role role);
+
 /// One word of the block and what it sets.
 struct WordMeaning {
   std::string word;  ///< as written ("X40.", "R40.")

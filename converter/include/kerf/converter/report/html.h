@@ -24,6 +24,10 @@ std::string markupText(std::string_view text);
 /// with its UTF-8 replacement).
 std::string scriptJson(std::string_view json);
 
+/// A page's title for a program named `name` (a path): its file name, cut to 48 bytes (on a UTF-8
+/// character's boundary, "…" added), then `suffix`. Markup is not escaped here.
+std::string programTitle(std::string_view name, std::string_view suffix);
+
 /// SHA-256 of the bytes (FIPS 180-4).
 std::array<std::uint8_t, 32> sha256(std::string_view bytes);
 
@@ -33,7 +37,10 @@ std::string base64(std::span<const std::uint8_t> bytes);
 /// A Content-Security-Policy for a page whose only scripts and styles are the embedded ones given:
 /// nothing from the network, no other script or style (an injected one does not run), images only
 /// from data: URLs and the page's own folder. For the double-quoted content attribute of a
-/// `<meta http-equiv="Content-Security-Policy">` (the result holds no double quote).
-std::string contentSecurityPolicy(std::span<const std::string_view> scripts, std::span<const std::string_view> styles);
+/// `<meta http-equiv="Content-Security-Policy">` (the result holds no double quote). scriptFiles:
+/// the page's scripts are files of its own folder instead (`script-src 'self'`: a report's pages
+/// share one copy of a large script), `scripts` unused.
+std::string contentSecurityPolicy(std::span<const std::string_view> scripts, std::span<const std::string_view> styles,
+                                  bool scriptFiles = false);
 
 }  // namespace kerf::converter

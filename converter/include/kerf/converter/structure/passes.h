@@ -85,6 +85,13 @@ int keptSide(const Pass& pass);
 /// one.
 Structure findStructure(const Toolpath& toolpath, double tolerance);
 
+/// What pass `index` (0 = the first) of its contour is, for a sentence: "the rough cut", "a skim",
+/// "the cut-off through the tab".
+const char* passRole(const Pass& pass, std::size_t index);
+
+/// "pass 2 of contour 1" (both 0-based in, 1-based out).
+std::string passName(std::size_t contour, std::size_t index);
+
 /// Each move's pass number in its contour (1 = the first, the rough cut), 0 for a move in no pass
 /// (a rapid, a move before the first cut); one entry for each of a toolpath's `moves` moves.
 /// Numbers above 255 read 255.

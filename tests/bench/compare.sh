@@ -25,8 +25,9 @@
 #   the 3D page of the render benchmark's part (kerf export part.nc -o part.html at the same 0.002 mm:
 #   1,000,000 triangles exact, sent at the window's coarse level), in Debian's headless Chromium
 #   (tests/browser/pages.mjs orbit, WebGL on SwiftShader, 1280x800): the page's size, the export's
-#   wall time, and the frame rate of a scripted full turn of 120 frames; no peer (no other tool
-#   makes such a page). KERF_COMPARE_PAGE=0 skips it.
+#   wall time, and the frame rate of a scripted full turn of 120 frames; then once the exact million
+#   triangles on the page (--page-triangles), 4 frames; no peer (no other tool makes such a page).
+#   KERF_COMPARE_PAGE=0 skips it.
 #   kerf check of a folder of 1,000 programs (the real corpus's programs and drawings copied in turn,
 #   KERF_COMPARE_REALWORLD points at it; KERF_COMPARE_BATCH=0 skips it) in one call against 1,000
 #   separate calls (issue 14): wall time.
@@ -130,6 +131,10 @@ if [[ "${KERF_COMPARE_PAGE:-1}" != 0 ]] && command -v chromium > /dev/null && [[
   printf "page: %.1f MiB; export %s; orbit %s frames/s (min / median / max)\n" \
     "$(awk -v b="$(stat -c %s "$work/part.html")" 'BEGIN {print b / 1048576}')" "$(stats_pair "$work/pe")" \
     "$(stats 1 < "$work/pf" | sed 's/ / \/ /g')"
+  # Once, what the budget spares the browser: the exact million triangles on the page.
+  "$build/viewer/kerf" export "$work/part.nc" --mesh-tolerance 0.002 --page-triangles 2000000 -o "$work/exact.html" 2> /dev/null
+  printf "page, exact (--page-triangles 2000000): %s\n" \
+    "$(KERF_TEST_TOOLS="$tools" node "$here/../browser/pages.mjs" orbit "$work/exact.html" 4)"
 else
   echo "compare.sh: the page is skipped (KERF_COMPARE_PAGE=0, or chromium or puppeteer-core is not installed: .ci/install-deps.sh --tests)" >&2
 fi

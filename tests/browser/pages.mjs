@@ -29,6 +29,7 @@ const check = (ok, what) => { if (!ok) fail(what); };
 async function launch() {
   return puppeteer.launch({
     executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    protocolTimeout: 900000, // ms: an exact 10⁶-triangle page draws a frame in seconds on SwiftShader
     headless: true,
     // WebGL on SwiftShader (no GPU); no background traffic (this network is closed).
     args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-first-run',
@@ -53,7 +54,7 @@ async function openPage(browser, file) {
     return r.abort();
   });
   await page.setOfflineMode(true);
-  await page.goto(pathToFileURL(file).href, { waitUntil: 'load' });
+  await page.goto(pathToFileURL(file).href, { waitUntil: 'load', timeout: 300000 });
   return page;
 }
 
@@ -178,12 +179,14 @@ async function hostile(files) {
 
 async function orbit(file, frames) {
   const browser = await launch();
+  const start = Date.now();
   const page = await openPage(browser, file);
   await waitReady(page, file);
-  await page.evaluate((n) => window.kerf.orbit(n), 10); // warm up
+  const loaded = Date.now() - start;
+  await page.evaluate((n) => window.kerf.orbit(n), Math.min(frames, 10)); // warm up
   const r = await page.evaluate((n) => window.kerf.orbit(n), frames);
-  console.log(JSON.stringify({ frames: r.frames, ms: Math.round(r.ms), fps: +(r.frames / (r.ms / 1000)).toFixed(1),
-                               bytes: fs.statSync(file).size }));
+  console.log(JSON.stringify({ frames: r.frames, ms: Math.round(r.ms), fps: +(r.frames / (r.ms / 1000)).toFixed(2),
+                               loadMs: loaded, bytes: fs.statSync(file).size }));
   await browser.close();
 }
 

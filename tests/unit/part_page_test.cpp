@@ -47,7 +47,7 @@ TEST(part_page_test, the_data_is_the_program) {
   // A construction for each block with a move, the arc's with both candidate centres.
   EXPECT_EQ(page.constructions, 4u);
   bool arc = false;
-  for (const auto& c : data["constructions"])
+  for (const auto& c : data["constructions"]["blocks"])
     if (c["line"] == 4) {
       arc = true;
       const auto& roles = c["roles"];

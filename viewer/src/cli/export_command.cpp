@@ -29,6 +29,11 @@ CLI::App* addExportCommand(CLI::App& app, ExportArgs& a) {
       ->group("Output");
   addMeshOptions(*cmd, a.mesh, false);
   cmd->add_flag("--caps", a.caps, "close closed contours with flat caps (a solid for CAD)")->group("Mesh");
+  cmd->add_option("--page-triangles", a.pageTriangles,
+                  "3D page: above this many triangles the part is sent at the coarse level the window draws "
+                  "while it moves (default 250000)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}))
+      ->group("Page");
   cmd->add_option("--dxf", a.dxfVersion, "DXF version: r12 or r2000 (default)")->group("Drawing");
   cmd->add_flag("--rapids", a.rapids, "DXF: the rapids too, on layer RAPID")->group("Drawing");
   return cmd;
@@ -76,6 +81,10 @@ int runDxfExport(const ExportArgs& a) {
 
 int runExport(const ExportArgs& a) {
   if (endsWith(a.output, ".dxf")) return runDxfExport(a);
+  if (a.pageTriangles && !endsWith(a.output, ".html")) {
+    reportError("--page-triangles is for a 3D page: -o must end in .html");
+    return kExitUsage;
+  }
   if (a.rapids || a.dxfVersion != "r2000") {
     reportError("--dxf and --rapids are for a drawing: -o must end in .dxf");
     return kExitUsage;

@@ -67,7 +67,8 @@ int drawExportPage(const ExportArgs& a) {
   std::optional<Loaded> in = loadOne(a.common, {.centreWords = true});
   if (!in) return kExitUsage;
   const converter::Pipeline& p = in->pipeline;
-  const exporter::PartPageOptions options = partPageOptions(p, a.common, a.mesh);
+  exporter::PartPageOptions options = partPageOptions(p, a.common, a.mesh);
+  if (a.pageTriangles) options.triangleBudget = *a.pageTriangles;
   if (!guidesShowable(p, options.scene)) return kExitUsage;
   const converter::Diagnostics shown = shownDiagnostics(p.diags, a.common.checks);
   const exporter::PartPage page = exporter::partPage(p, displayName(file), shown.all(), options);

@@ -66,13 +66,13 @@ json point(const geometry::Vec3& p) { return json::array({p.x(), p.y(), p.z()});
 // ---- 2. the scene -------------------------------------------------------------------------------
 
 /// The scene the page shows: at the asked tolerance, or at the coarse level of the page's view when
-/// that has more than kCoarseAboveTriangles triangles.
+/// that has more than the budget's triangles.
 render::Scene pageScene(const converter::Pipeline& p, std::span<const converter::Diagnostic> shown,
                         const PartPageOptions& o, PartPage& page) {
   const std::vector<geometry::Segment> reference = converter::referenceGeometry(p);
   render::Scene scene = render::buildScene(p.toolpath, shown, o.scene, reference);
   page.exactTriangles = scene.triangles();
-  if (scene.triangles() > render::kCoarseAboveTriangles) {
+  if (scene.triangles() > o.triangleBudget) {
     const geometry::Vec3 size = scene.boundsMax - scene.boundsMin;
     const double mmPerPixel = std::max({size.x(), size.y(), size.z(), 1e-3}) / o.viewPixels;
     scene = render::buildScene(p.toolpath, shown, render::coarseSceneOptions(o.scene, mmPerPixel), reference);
@@ -109,7 +109,7 @@ json colourData() {
   return {{"ramp", ramp}, {"passes", passes}};
 }
 
-json sceneData(const render::Scene& scene, const PartPage& page, double tolerance) {
+json sceneData(const render::Scene& scene, const PartPage& page, const PartPageOptions& o) {
   json lines = json::object();
   const std::pair<const char*, const render::LineSet*> sets[] = {
       {"lower", &scene.lower},   {"upper", &scene.upper},         {"generators", &scene.generators},
@@ -120,8 +120,8 @@ json sceneData(const render::Scene& scene, const PartPage& page, double toleranc
   std::string size = std::to_string(page.triangles) + " triangles";
   if (page.coarse)
     size += ", drawn coarse: the exact surface (" + std::to_string(page.exactTriangles) + " triangles at " +
-            converter::formatFixed(tolerance, 3) + " mm) is over the page's " +
-            std::to_string(render::kCoarseAboveTriangles) + "; kerf view draws it exact";
+            converter::formatFixed(o.scene.tolerance, 3) + " mm) is over the page's " +
+            std::to_string(o.triangleBudget) + " (--page-triangles); kerf view draws it exact";
   return {{"surface", surfaceData(scene)},
           {"lines", lines},
           {"boundsMin", point(scene.boundsMin)},
@@ -191,7 +191,9 @@ json markersData(const std::vector<render::Marker>& markers) {
   return out;
 }
 
-json constructionData(const converter::Construction& c, const render::ConstructionScene& drawn) {
+/// A block's construction; its modes as indexes into `sentences` (blocks mostly inherit the same).
+json constructionData(const converter::Construction& c, const render::ConstructionScene& drawn,
+                      std::vector<std::string>& sentences) {
   json words = json::array();
   for (const converter::WordMeaning& w : c.words) words.push_back(json::array({w.word, w.sets}));
   json key = json::array(), roles = json::array();  // each role once, in the marks' order
@@ -200,13 +202,19 @@ json constructionData(const converter::Construction& c, const render::Constructi
     const std::string role = converter::markRoleName(m.role);
     if (std::find(roles.begin(), roles.end(), role) == roles.end()) roles.push_back(role);
   }
+  json modes = json::array();
+  for (const std::string& m : c.modes) {
+    const auto at = std::find(sentences.begin(), sentences.end(), m);
+    modes.push_back(at - sentences.begin());
+    if (at == sentences.end()) sentences.push_back(m);
+  }
   return {{"move", c.move},
           {"line", c.line},
           {"block", c.block},
           {"key", key},
           {"roles", roles},
           {"words", words},
-          {"modes", c.modes},
+          {"modes", modes},
           {"pass", c.pass},
           {"lines", lineSetData(drawn.lines)},
           {"dashed", lineSetData(drawn.dashed)},
@@ -214,27 +222,30 @@ json constructionData(const converter::Construction& c, const render::Constructi
           {"labels", markersData(drawn.labels)}};
 }
 
-/// The constructions of the first move of each line, in order, within the options' budgets.
+/// The constructions of the first move of each line, in order, within the options' budgets:
+/// {blocks: [...], sentences: [the modes' sentences]}.
 json constructionsData(const converter::Pipeline& p, const render::Scene& scene, const PartPageOptions& o,
                        PartPage& page) {
-  json out = json::array();
-  if (!p.source) return out;
-  std::size_t vertices = 0;
+  json blocks = json::array();
+  std::vector<std::string> sentences;
+  std::size_t bytes = 0;
   std::uint32_t lastLine = 0;
   const double tolerance = o.scene.lineTolerance > 0 ? o.scene.lineTolerance : o.scene.tolerance;
-  for (std::size_t i = 0; i < p.toolpath.moves.size() && page.constructions < o.constructionBlocks; ++i) {
+  for (std::size_t i = 0; p.source && i < p.toolpath.moves.size() && page.constructions < o.constructionBlocks;
+       ++i) {
     const std::uint32_t line = p.toolpath.moves[i].line;
     if (line == 0 || line == lastLine) continue;
     lastLine = line;
     const converter::Construction c =
         converter::constructionOf(*p.source, p.toolpath, &p.structure, o.sampling, i, o.parse);
     const render::ConstructionScene drawn = render::constructionScene(c, scene.planes, tolerance, 0);
-    vertices += drawn.lines.vertices.size() + drawn.dashed.vertices.size();
-    if (vertices > o.constructionVertices) break;
-    out.push_back(constructionData(c, drawn));
+    json block = constructionData(c, drawn, sentences);
+    bytes += block.dump(-1, ' ', false, json::error_handler_t::replace).size();
+    if (bytes > o.constructionBytes) break;
+    blocks.push_back(std::move(block));
     ++page.constructions;
   }
-  return out;
+  return {{"blocks", std::move(blocks)}, {"sentences", std::move(sentences)}};
 }
 
 // ---- 5. the page --------------------------------------------------------------------------------
@@ -306,7 +317,7 @@ PartPage partPage(const converter::Pipeline& p, const std::string& name, std::sp
   json data = {{"name", name},
                {"dialect", p.toolpath.isTaper() ? converter::dialectName(p.toolpath.dialect) : "2-axis"},
                {"colourBy", o.colourBy.empty() ? tellingColouring(p) : o.colourBy},
-               {"scene", sceneData(scene, page, o.scene.tolerance)},
+               {"scene", sceneData(scene, page, o)},
                {"program", programData(p)},
                {"findings", findingsData(p, shown)},
                {"passes", passesData(p)},

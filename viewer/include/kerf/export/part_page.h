@@ -29,13 +29,14 @@ struct PartPageOptions {
   render::SceneOptions scene;
   geometry::Sampling sampling;    ///< the constructions' step (kerf explain's)
   converter::ParseOptions parse;  ///< how the constructions read a block's words (the machine's)
-  /// Above render::kCoarseAboveTriangles the part is sent at the coarse level of a view
-  /// `viewPixels` high (render::coarseSceneOptions), and the page says so.
+  /// Above `triangleBudget` triangles the part is sent at the coarse level of a view `viewPixels`
+  /// high (render::coarseSceneOptions, the window's while it moves), and the page says so.
+  std::size_t triangleBudget = render::kCoarseAboveTriangles;
   double viewPixels = 900.0;
-  /// The blocks whose construction the page carries, in the program's order, and the line
-  /// vertices all of them may hold; past either, a block's construction is named, not drawn.
+  /// The blocks whose construction the page carries, in the program's order, and the bytes of
+  /// data all of them may take; past either, a block's construction is named, not drawn.
   std::size_t constructionBlocks = 4000;
-  std::size_t constructionVertices = 400'000;
+  std::size_t constructionBytes = 4u << 20;
   /// Open in this colouring: "slope", "pass", "deviation" or "plain"; empty: slope for a taper,
   /// pass for a program with several passes, deviation with a drawing, else plain.
   std::string colourBy;

@@ -36,7 +36,8 @@
   const firstMoveOfLine = new Map();
   for (let m = 0; m < moveLine.length; ++m) if (!firstMoveOfLine.has(moveLine[m])) firstMoveOfLine.set(moveLine[m], m);
   const blockLines = Array.from(firstMoveOfLine.keys()).filter((l) => l > 0).sort((a, b) => a - b);
-  const constructionOfLine = new Map(data.constructions.map((c) => [c.line, c]));
+  const constructions = data.constructions.blocks;
+  const constructionOfLine = new Map(constructions.map((c) => [c.line, c]));
   const findingsOfLine = new Map();
   data.findings.forEach((f) => {
     if (f.line && (!findingsOfLine.has(f.line) || f.severity === 'error')) findingsOfLine.set(f.line, f.severity);
@@ -283,7 +284,7 @@
     }
     if (!c) {
       const text = firstMoveOfLine.has(line)
-        ? 'This page carries the constructions of the first ' + data.constructions.length +
+        ? 'This page carries the constructions of the first ' + constructions.length +
           ' blocks; kerf render FILE --explain-line ' + line + ' draws this one.'
         : 'No move is programmed on line ' + line + '.';
       panel.appendChild(element('p', text));
@@ -301,7 +302,7 @@
     }
     panel.appendChild(words);
     const modes = element('ul', undefined, 'modes');
-    c.modes.forEach((m) => modes.appendChild(element('li', m)));
+    c.modes.forEach((m) => modes.appendChild(element('li', data.constructions.sentences[m])));
     panel.appendChild(modes);
   }
 

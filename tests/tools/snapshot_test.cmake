@@ -2,7 +2,8 @@
 # compare with the baseline by SSIM error (tests/image/ssim.h).
 #   cmake -DKERF=... -DCOMPARE=... -DBASELINE=... -DOUTPUT=... -DTHRESHOLD=... -DEXIT=0|1 -DMODE=render|window
 #         -DXVFB=... -DARGS="a;b;c" -P snapshot_test.cmake
-# KERF_UPDATE_SNAPSHOTS=1 in the environment accepts the new picture as the baseline.
+# KERF_UPDATE_SNAPSHOTS=1 in the environment accepts the new picture as the baseline
+# (compare_snapshot.cmake).
 # On failure the rendered picture (OUTPUT) and a diff image (OUTPUT without .png + .diff.png) stay.
 get_filename_component(out_dir "${OUTPUT}" DIRECTORY)
 file(MAKE_DIRECTORY "${out_dir}")
@@ -23,18 +24,6 @@ endif()
 if(NOT EXISTS "${OUTPUT}" OR NOT rc STREQUAL "${EXIT}")
   message(FATAL_ERROR "kerf ${MODE} gave exit ${rc}, expected ${EXIT}:\n${err}")
 endif()
-if(DEFINED ENV{KERF_UPDATE_SNAPSHOTS} AND NOT "$ENV{KERF_UPDATE_SNAPSHOTS}" STREQUAL "0")
-  file(COPY_FILE "${OUTPUT}" "${BASELINE}")
-  message(STATUS "snapshot baseline updated: ${BASELINE}")
-  return()
-endif()
-if(NOT EXISTS "${BASELINE}")
-  message(FATAL_ERROR "no baseline ${BASELINE}: look at ${OUTPUT} and accept it with KERF_UPDATE_SNAPSHOTS=1")
-endif()
-execute_process(COMMAND ${COMPARE} ${BASELINE} ${OUTPUT} --threshold ${THRESHOLD} --diff ${diff}
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message(STATUS "${out}")
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "snapshot differs from ${BASELINE}: ${out}${err}rendered: ${OUTPUT}\ndiff: ${diff}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/compare_snapshot.cmake)
+kerf_compare_snapshot("${COMPARE}" "${BASELINE}" "${OUTPUT}" "${THRESHOLD}" "${diff}")
 file(REMOVE "${OUTPUT}")

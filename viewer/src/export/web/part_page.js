@@ -462,10 +462,25 @@
   function draw() {
     drawPending = false;
     renderer.render(scene, camera);
+    placeLabels();
+  }
+
+  // Each label beside its mark, in the first of four places that covers no label placed before it;
+  // else hidden (the side panel lists them all), as kerf render places them.
+  function placeLabels() {
     const w = canvas.clientWidth, h = canvas.clientHeight;
+    const placed = [];
+    const overlaps = (r) => placed.some((q) => r.x < q.x + q.w && q.x < r.x + r.w && r.y < q.y + q.h && q.y < r.y + r.h);
     for (const l of labels) {
       const p = l.at.clone().project(camera);
-      l.element.style.transform = 'translate(' + ((p.x + 1) / 2) * w + 'px,' + ((1 - p.y) / 2) * h + 'px)';
+      const x = ((p.x + 1) / 2) * w, y = ((1 - p.y) / 2) * h;
+      const lw = l.element.offsetWidth, lh = l.element.offsetHeight;
+      const tries = [[4, -lh - 2], [4, 2], [-lw - 4, -lh - 2], [-lw - 4, 2]];
+      const spot = tries.map(([dx, dy]) => ({ x: x + dx, y: y + dy, w: lw, h: lh })).find((r) => !overlaps(r));
+      l.element.style.visibility = spot ? 'visible' : 'hidden';
+      if (!spot) continue;
+      placed.push(spot);
+      l.element.style.transform = 'translate(' + spot.x + 'px,' + spot.y + 'px)';
     }
   }
   function requestDraw() {

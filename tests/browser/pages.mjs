@@ -11,6 +11,8 @@
 //                                              findings and passes lists; offline; a screenshot
 //   node pages.mjs hostile FILE...             pages of programs that try to be markup: the page's own
 //                                              title, no element from the input, the page still works
+//   node pages.mjs open COLOUR FILE...         3D pages that open in that colouring with no error, every
+//                                              colouring drawn in turn
 //   node pages.mjs orbit FILE FRAMES           the frame rate of a scripted orbit (tests/bench)
 //
 // Environment: KERF_TEST_TOOLS (the folder whose node_modules holds puppeteer-core), CHROMIUM.
@@ -177,6 +179,23 @@ async function hostile(files) {
   await browser.close();
 }
 
+async function open(colour, files) {
+  const browser = await launch();
+  for (const file of files) {
+    const page = await openPage(browser, file);
+    await waitReady(page, file);
+    const shown = await page.evaluate(() => document.documentElement.dataset.colourBy);
+    check(shown === colour, path.basename(file) + ': opens coloured by ' + shown + ', not ' + colour);
+    for (const mode of await page.$$eval('#tools select option', (os) => os.map((o) => o.value))) {
+      await page.select('#tools select', mode);
+      check((await page.evaluate(() => document.documentElement.dataset.colourBy)) === mode,
+            path.basename(file) + ': colours by ' + mode);
+    }
+    await page.close();
+  }
+  await browser.close();
+}
+
 async function orbit(file, frames) {
   const browser = await launch();
   const start = Date.now();
@@ -194,6 +213,7 @@ const [mode, ...args] = process.argv.slice(2);
 if (mode === 'report') await report(args[0], args[1], args.slice(2));
 else if (mode === 'part') await part(args[0], args[1]);
 else if (mode === 'hostile') await hostile(args);
+else if (mode === 'open') await open(args[0], args.slice(1));
 else if (mode === 'orbit') await orbit(args[0], Number(args[1] || 120));
 else fail('usage: node pages.mjs report|part|hostile|orbit ...');
 process.exit(failures.length ? 1 : 0);

@@ -5,7 +5,8 @@
 #         -DNODE=... -DTOOLS=... -DCHROMIUM=... -DTHRESHOLD=... [-DREALWORLD=...] -P browser_test.cmake
 #   report     samples/ as a report: every page loads clean; the index and two pages' screenshots
 #   realworld  samples/ and every real program: every page loads clean, the HTML is valid
-#   part       kerf export samples/sector_r40.nc -o sector.html: clicks, keys, offline; a screenshot
+#   part       kerf export samples/sector_r40.nc -o sector.html: clicks, keys, offline; a screenshot;
+#              pages that open coloured by deviation, pass and slope
 #   hostile    programs whose text and name try to be markup: their report pages and 3D page
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/shots")
@@ -73,6 +74,13 @@ elseif(CASE STREQUAL "part")
   validate("${WORK}/sector.html")
   browse(part "${WORK}/sector.html" "${WORK}/shots")
   compare_shot(sector_r40_line15)
+  # Each colouring a page opens in: against a drawing, by pass, by slope.
+  run("${KERF}" export samples/plate.nc --drawing samples/plate.dxf -o "${WORK}/plate.html")
+  browse(open deviation "${WORK}/plate.html")
+  run("${KERF}" export tests/passes/die_robofil_circle.nc -o "${WORK}/die.html")
+  browse(open pass "${WORK}/die.html")
+  run("${KERF}" export samples/taper_punch_2deg.nc -o "${WORK}/taper.html")
+  browse(open slope "${WORK}/taper.html")
 elseif(CASE STREQUAL "hostile")
   file(GLOB hostile "${SOURCE}/tests/bad/html_*.nc")  # in the bad-input corpus, each with its diagnostic
   file(MAKE_DIRECTORY "${WORK}/in")

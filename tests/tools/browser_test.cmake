@@ -8,6 +8,9 @@
 #   part       kerf export samples/sector_r40.nc -o sector.html: clicks, keys, offline; a screenshot;
 #              pages that open coloured by deviation, pass and slope
 #   hostile    programs whose text and name try to be markup: their report pages and 3D page
+if(NOT THRESHOLD)
+  message(FATAL_ERROR "no SSIM threshold given (-DTHRESHOLD): a comparison against 0 is not one")
+endif()
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/shots")
 set(ENV{KERF_TEST_TOOLS} "${TOOLS}")

@@ -241,7 +241,7 @@ bool writeHtmlReport(const CheckArgs& a, const std::vector<std::string>& files, 
     return false;
   }
   std::cerr << "kerf: wrote the report of " << files.size() << (files.size() == 1 ? " program" : " programs") << " to "
-            << a.output << "/index.html\n";
+            << (std::filesystem::path(a.output) / "index.html").string() << "\n";
   return true;
 }
 

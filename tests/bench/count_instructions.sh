@@ -23,7 +23,7 @@ if ((${#programs[@]} == 0)); then
   programs=("$work/benchmark.nc" "$work/crossing.nc")
 fi
 
-millions() { awk '{printf "%\047.0f M", $1 / 1e6}'; }
+millions() { awk '{printf "%.0f M", $1 / 1e6}'; }
 # The inclusive count of the first function whose name holds $2, in callgrind_annotate's output $1.
 phase() { awk -v f="$2" 'index($0, f) && $1 ~ /^[0-9,]+$/ {gsub(",", "", $1); print $1; exit}' "$1"; }
 

@@ -164,24 +164,26 @@
   const views = {
     top: [0, -1e-4, 1], front: [0, -1, 0], side: [1, 0, 0], iso: [Math.SQRT1_2, -Math.SQRT1_2, Math.SQRT1_2 * 1.0],
   };
-  function fit(view) {
+  // Frames the sphere (at, r): the view's direction kept, or the named view's.
+  function frame(at, r, view) {
     const w = canvas.clientWidth || 1, h = canvas.clientHeight || 1;
     const aspect = w / h;
-    const half = radius * 1.1;
+    const half = r * 1.1;
     camera.left = -half * Math.max(aspect, 1);
     camera.right = half * Math.max(aspect, 1);
     camera.top = half / Math.min(aspect, 1);
     camera.bottom = -half / Math.min(aspect, 1);
     camera.zoom = 1;
-    if (view) {
-      const dir = new THREE.Vector3().fromArray(views[view]).normalize();
-      camera.position.copy(centre).addScaledVector(dir, radius * 4);
-    }
-    controls.target.copy(centre);
+    const dir = view ? new THREE.Vector3().fromArray(views[view]).normalize()
+                     : camera.position.clone().sub(controls.target).normalize();
+    camera.position.copy(at).addScaledVector(dir, Math.max(r, radius) * 4);
+    controls.target.copy(at);
     camera.updateProjectionMatrix();
     controls.update();
     requestDraw();
   }
+  const fit = (view) => frame(centre, radius, view);
+
   function resize() {
     const w = canvas.clientWidth, h = canvas.clientHeight;
     renderer.setSize(w, h, false);
@@ -333,7 +335,9 @@
     if (row) select(Number(row.dataset.line));
   });
 
-  function select(line) {
+  // Selects a line's block; `framed`: the view frames its construction, as the window frames a
+  // block stepped to (not when the block was picked on the part: the view stays where it was).
+  function select(line, framed = true) {
     const move = firstMoveOfLine.has(line) ? firstMoveOfLine.get(line) : null;
     window.kerf.selectedLine = line;
     window.kerf.selectedMove = move;
@@ -343,6 +347,11 @@
     drawConstruction(c);
     showConstructionText(line, c);
     highlightMove(move);
+    if (framed && construction.children.length) {
+      const box = new THREE.Box3().setFromObject(construction);
+      const sphere = box.getBoundingSphere(new THREE.Sphere());
+      if (Number.isFinite(sphere.radius) && sphere.radius > 0) frame(sphere.center, sphere.radius * 1.15, null);
+    }
     const y = (line - 1) * LINE_HEIGHT;
     if (y < textPanel.scrollTop || y > textPanel.scrollTop + textPanel.clientHeight - 2 * LINE_HEIGHT)
       textPanel.scrollTop = Math.max(0, y - textPanel.clientHeight / 3);
@@ -380,7 +389,7 @@
     const ray = new THREE.Raycaster();
     ray.setFromCamera(ndc, camera);
     const hit = ray.intersectObject(surface)[0];
-    if (hit) select(moveLine[surfaceMove[hit.face.a]]);
+    if (hit) select(moveLine[surfaceMove[hit.face.a]], false);
   });
 
   function fillPanels() {

@@ -43,7 +43,7 @@ TEST(part_page_test, the_data_is_the_program) {
   EXPECT_EQ(data["name"], "sector.nc");
   EXPECT_GT(page.triangles, 0u);
   EXPECT_FALSE(page.coarse);
-  EXPECT_EQ(page.triangles, page.exactTriangles);
+  EXPECT_FALSE(page.truncated);
   // A construction for each block with a move, the arc's with both candidate centres.
   EXPECT_EQ(page.constructions, 4u);
   bool arc = false;
@@ -72,14 +72,29 @@ TEST(part_page_test, input_stays_data) {
   EXPECT_EQ(data["program"]["lines"][1], hostile);
 }
 
+// Over the budget the part is sent coarse (the exact mesh stops at the budget), and the page says so.
+TEST(part_page_test, a_part_over_the_budget_is_sent_coarse) {
+  const Pipeline p = pipelineOf("sector.nc", "G92 X0 Y0\nG01 X40. Y0\nG03 X0 Y40. R40.\nG01 X0 Y0\nM02\n");
+  PartPageOptions options;
+  const auto exact = partPage(p, "sector.nc", p.diags.all(), options);
+  ASSERT_GT(exact.triangles, 8u);
+  options.triangleBudget = 8;
+  const auto page = partPage(p, "sector.nc", p.diags.all(), options);
+  EXPECT_TRUE(page.coarse);
+  EXPECT_FALSE(page.truncated);
+  EXPECT_LT(page.triangles, exact.triangles);
+  EXPECT_NE(pageData(page.html)["scene"]["size"].get<std::string>().find("drawn coarse"), std::string::npos);
+}
+
 TEST(part_page_test, a_report_page_loads_its_scripts_from_the_folder) {
   const Pipeline p = pipelineOf("line.nc", "G92 X0 Y0\nG01 X10. Y0\nM02\n");
   PartPageOptions options;
   options.scriptFiles = true;
   const auto page = partPage(p, "line.nc", p.diags.all(), options);
-  for (const auto& [file, text] : kerf::exporter::partPageScripts()) {
-    EXPECT_NE(page.html.find("<script src=\"" + file + "\">"), std::string::npos) << file;
-    EXPECT_FALSE(text.empty());
+  for (const kerf::exporter::PageScript& script : kerf::exporter::partPageScripts()) {
+    EXPECT_NE(page.html.find("<script src=\"" + std::string(script.file) + "\">"), std::string::npos)
+        << script.file;
+    EXPECT_FALSE(script.text.empty());
   }
   EXPECT_NE(page.html.find("script-src 'self'"), std::string::npos);
 }

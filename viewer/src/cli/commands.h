@@ -67,8 +67,8 @@ struct ExportArgs {
   std::string output;
   MeshOptions mesh;
   bool caps = false;
-  std::string dxfVersion = "r2000";  ///< -o .dxf: r12 or r2000
-  bool rapids = false;               ///< -o .dxf: the rapids too, on layer RAPID
+  std::string dxfVersion = "r2000";          ///< -o .dxf: r12 or r2000
+  bool rapids = false;                       ///< -o .dxf: the rapids too, on layer RAPID
   std::optional<std::size_t> pageTriangles;  ///< -o .html: above this, the part is sent coarse
 };
 CLI::App* addExportCommand(CLI::App& app, ExportArgs& args);

@@ -78,7 +78,8 @@ int drawExportPage(const ExportArgs& a) {
     return kExitUsage;
   }
   std::cerr << "kerf: wrote the 3D page (" << page.triangles << " triangles"
-            << (page.coarse ? ", coarse: " + std::to_string(page.exactTriangles) + " at the tolerance" : std::string())
+            << (page.coarse ? ", coarse: more than " + std::to_string(options.triangleBudget) + " at the tolerance"
+                            : std::string())
             << "; the construction of " << page.constructions << (page.constructions == 1 ? " block" : " blocks")
             << ", " << page.html.size() / 1024 << " KiB) to " << a.output << "\n";
   return verdictExit(p);
@@ -86,10 +87,12 @@ int drawExportPage(const ExportArgs& a) {
 
 std::size_t drawReportPictures(const ReportArgs& a) {
   // The 3D pages share one copy of their scripts (three.js is most of a page).
-  for (const auto& [file, text] : exporter::partPageScripts())
-    if (!writeInFolder(a.folder, file, std::string(text))) return 0;
+  for (const exporter::PageScript& script : exporter::partPageScripts())
+    if (!writeInFolder(a.folder, script.file, std::string(script.text))) return 0;
   std::size_t drawn = 0;
   for (std::size_t i = 0; i < a.files.size(); ++i) {
+    // Read again here: the program and the module share no object (draw_module.h), so the check's
+    // pipelines stay on the program's side.
     std::string failure;
     std::optional<Loaded> in = loadQuietly(*a.common, a.files[i], {.centreWords = true}, failure);
     if (!in || !in->pipeline.read) continue;  // its row says why

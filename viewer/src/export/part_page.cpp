@@ -65,20 +65,23 @@ json point(const geometry::Vec3& p) { return json::array({p.x(), p.y(), p.z()});
 
 // ---- 2. the scene -------------------------------------------------------------------------------
 
-/// The scene the page shows: at the asked tolerance, or at the coarse level of the page's view when
-/// that has more than the budget's triangles.
+/// The scene the page shows: at the asked tolerance, or, when that would pass the budget's
+/// triangles, at the coarse level of the page's view. The exact mesh stops at the budget (meshing
+/// stops there, not after a million triangles thrown away).
 render::Scene pageScene(const converter::Pipeline& p, std::span<const converter::Diagnostic> shown,
                         const PartPageOptions& o, PartPage& page) {
   const std::vector<geometry::Segment> reference = converter::referenceGeometry(p);
-  render::Scene scene = render::buildScene(p.toolpath, shown, o.scene, reference);
-  page.exactTriangles = scene.triangles();
-  if (scene.triangles() > o.triangleBudget) {
+  render::SceneOptions exact = o.scene;
+  exact.maxTriangles = std::min(exact.maxTriangles, o.triangleBudget);
+  render::Scene scene = render::buildScene(p.toolpath, shown, exact, reference);
+  if (scene.truncated && o.triangleBudget < o.scene.maxTriangles) {
     const geometry::Vec3 size = scene.boundsMax - scene.boundsMin;
     const double mmPerPixel = std::max({size.x(), size.y(), size.z(), 1e-3}) / o.viewPixels;
     scene = render::buildScene(p.toolpath, shown, render::coarseSceneOptions(o.scene, mmPerPixel), reference);
     page.coarse = true;
   }
   page.triangles = scene.triangles();
+  page.truncated = scene.truncated;
   return scene;
 }
 
@@ -119,9 +122,10 @@ json sceneData(const render::Scene& scene, const PartPage& page, const PartPageO
     if (!set->vertices.empty()) lines[name] = lineSetData(*set);
   std::string size = std::to_string(page.triangles) + " triangles";
   if (page.coarse)
-    size += ", drawn coarse: the exact surface (" + std::to_string(page.exactTriangles) + " triangles at " +
-            converter::formatFixed(o.scene.tolerance, 3) + " mm) is over the page's " +
-            std::to_string(o.triangleBudget) + " (--page-triangles); kerf view draws it exact";
+    size += ", drawn coarse: the exact surface (at " + converter::formatFixed(o.scene.tolerance, 3) +
+            " mm) has more than the page's " + std::to_string(o.triangleBudget) +
+            " (--page-triangles); kerf view draws it exact";
+  if (page.truncated) size += "; incomplete: the triangle limit was reached";
   return {{"surface", surfaceData(scene)},
           {"lines", lines},
           {"boundsMin", point(scene.boundsMin)},
@@ -231,8 +235,7 @@ json constructionsData(const converter::Pipeline& p, const render::Scene& scene,
   std::size_t bytes = 0;
   std::uint32_t lastLine = 0;
   const double tolerance = o.scene.lineTolerance > 0 ? o.scene.lineTolerance : o.scene.tolerance;
-  for (std::size_t i = 0; p.source && i < p.toolpath.moves.size() && page.constructions < o.constructionBlocks;
-       ++i) {
+  for (std::size_t i = 0; p.source && i < p.toolpath.moves.size() && page.constructions < o.constructionBlocks; ++i) {
     const std::uint32_t line = p.toolpath.moves[i].line;
     if (line == 0 || line == lastLine) continue;
     lastLine = line;
@@ -250,24 +253,12 @@ json constructionsData(const converter::Pipeline& p, const render::Scene& scene,
 
 // ---- 5. the page --------------------------------------------------------------------------------
 
-/// The scripts in the order the page runs them, with the names they have as files.
-struct PageScript {
-  const char* file;
-  std::string_view text;
-};
-std::span<const PageScript> pageScripts() {
-  static const PageScript scripts[] = {{"kerf-three.min.js", web::kThreeMinJs},
-                                       {"kerf-orbit-controls.js", web::kOrbitcontrolsJs},
-                                       {"kerf-part-page.js", web::kPartPageJs}};
-  return scripts;
-}
-
 /// The page's frame: the panels the script fills (no text from the input here but the title).
 std::string pageHtml(const std::string& name, const std::string& data, bool scriptFiles) {
   static const std::string_view styles[] = {web::kPartPageCss};
   static const std::string policy = [] {
     std::vector<std::string_view> texts;
-    for (const PageScript& s : pageScripts()) texts.push_back(s.text);
+    for (const PageScript& s : partPageScripts()) texts.push_back(s.text);
     return converter::contentSecurityPolicy(texts, styles);
   }();
   static const std::string filesPolicy = converter::contentSecurityPolicy({}, styles, true);
@@ -290,7 +281,7 @@ std::string pageHtml(const std::string& name, const std::string& data, bool scri
       "</main>\n"
       "<script type=\"application/json\" id=\"kerf-data\">" +
       data + "</script>\n";
-  for (const PageScript& s : pageScripts())
+  for (const PageScript& s : partPageScripts())
     html += scriptFiles ? "<script src=\"" + std::string(s.file) + "\"></script>\n"
                         : "<script>" + std::string(s.text) + "</script>\n";
   return html + "</body>\n</html>\n";
@@ -298,10 +289,11 @@ std::string pageHtml(const std::string& name, const std::string& data, bool scri
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::string_view>> partPageScripts() {
-  std::vector<std::pair<std::string, std::string_view>> out;
-  for (const PageScript& s : pageScripts()) out.emplace_back(s.file, s.text);
-  return out;
+std::span<const PageScript> partPageScripts() {
+  static const PageScript scripts[] = {{"kerf-three.min.js", web::kThreeMinJs},
+                                       {"kerf-orbit-controls.js", web::kOrbitcontrolsJs},
+                                       {"kerf-part-page.js", web::kPartPageJs}};
+  return scripts;
 }
 
 std::string tellingColouring(const converter::Pipeline& p) {

@@ -18,8 +18,6 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <utility>
-#include <vector>
 
 namespace kerf::exporter {
 
@@ -47,14 +45,20 @@ struct PartPageOptions {
 
 struct PartPage {
   std::string html;
-  std::size_t triangles = 0;       ///< in the page
-  std::size_t exactTriangles = 0;  ///< at the asked tolerance (== triangles unless coarse)
-  bool coarse = false;
+  std::size_t triangles = 0;  ///< in the page
+  bool coarse = false;        ///< at the asked tolerance the part has more than the budget's triangles
+  bool truncated = false;     ///< the scene's own limit (SceneOptions::maxTriangles) was reached
   std::size_t constructions = 0;  ///< blocks whose construction the page draws
 };
 
-/// The scripts a page made with PartPageOptions::scriptFiles loads from its folder: {file name, text}.
-std::vector<std::pair<std::string, std::string_view>> partPageScripts();
+/// A script of the page: the name it has as a file beside the page (PartPageOptions::scriptFiles)
+/// and its text.
+struct PageScript {
+  const char* file;
+  std::string_view text;
+};
+/// The page's scripts in the order it runs them.
+std::span<const PageScript> partPageScripts();
 
 /// The colouring that tells most about a program: "deviation" against a drawing, "pass" for
 /// several passes, "slope" for a taper, else "plain" (the page opens in it, the report's pictures

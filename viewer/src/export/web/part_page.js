@@ -78,22 +78,31 @@
   scene.add(surface);
 
   // Line sets: each keeps its vertices by move (moveFirst) so hidden passes can be left out.
-  const lineSets = {};
-  for (const name of Object.keys(sceneData.lines)) {
-    const d = sceneData.lines[name];
+  // A line set of the data (vertex pairs, ABGR colours) as line segments; dashed ones measure their
+  // length for the dashes; an overlay (the construction) is drawn over the part.
+  function lineObject(d, dashed, overlay) {
     const colours = u32(d.colours);
     const colourArray = new Float32Array(colours.length * 3);
     colours.forEach((c, i) => colourArray.set(rgb(c), 3 * i));
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.BufferAttribute(f32(d.positions), 3));
     g.setAttribute('color', new THREE.BufferAttribute(colourArray, 3));
-    const object = new THREE.LineSegments(g, new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors }));
-    if (name === 'reference') {
-      object.material = new THREE.LineDashedMaterial({ vertexColors: THREE.VertexColors, dashSize: radius / 60,
-                                                        gapSize: radius / 80 });
-      object.computeLineDistances();
-    }
-    lineSets[name] = { object: object, moveFirst: u32(d.moveFirst), count: colours.length };
+    const style = { vertexColors: THREE.VertexColors, depthTest: !overlay };
+    const material = dashed
+      ? new THREE.LineDashedMaterial(Object.assign(style, overlay ? { dashSize: radius / 50, gapSize: radius / 70 }
+                                                                    : { dashSize: radius / 60, gapSize: radius / 80 }))
+      : new THREE.LineBasicMaterial(style);
+    const object = new THREE.LineSegments(g, material);
+    if (dashed) object.computeLineDistances();
+    if (overlay) object.renderOrder = 3;
+    return object;
+  }
+
+  const lineSets = {};
+  for (const name of Object.keys(sceneData.lines)) {
+    const d = sceneData.lines[name];
+    const object = lineObject(d, name === 'reference', false);
+    lineSets[name] = { object: object, moveFirst: u32(d.moveFirst) };
     scene.add(object);
   }
 
@@ -162,7 +171,7 @@
   controls.enableKeys = false;
   controls.addEventListener('change', () => requestDraw());
   const views = {
-    top: [0, -1e-4, 1], front: [0, -1, 0], side: [1, 0, 0], iso: [Math.SQRT1_2, -Math.SQRT1_2, Math.SQRT1_2 * 1.0],
+    top: [0, -1e-4, 1], front: [0, -1, 0], side: [1, 0, 0], iso: [Math.SQRT1_2, -Math.SQRT1_2, Math.SQRT1_2],
   };
   // Frames the sphere (at, r): the view's direction kept, or the named view's.
   function frame(at, r, view) {
@@ -204,24 +213,6 @@
   const labelLayer = document.getElementById('labels');
   let labels = [];
 
-  function lineObject(d, dashed) {
-    const colours = u32(d.colours);
-    if (colours.length === 0) return null;
-    const colourArray = new Float32Array(colours.length * 3);
-    colours.forEach((c, i) => colourArray.set(rgb(c), 3 * i));
-    const g = new THREE.BufferGeometry();
-    g.setAttribute('position', new THREE.BufferAttribute(f32(d.positions), 3));
-    g.setAttribute('color', new THREE.BufferAttribute(colourArray, 3));
-    const material = dashed
-      ? new THREE.LineDashedMaterial({ vertexColors: THREE.VertexColors, dashSize: radius / 50, gapSize: radius / 70,
-                                       depthTest: false })
-      : new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors, depthTest: false });
-    const object = new THREE.LineSegments(g, material);
-    if (dashed) object.computeLineDistances();
-    object.renderOrder = 3;
-    return object;
-  }
-
   function clearGroup(group) {
     for (const child of group.children.slice()) {
       group.remove(child);
@@ -236,10 +227,8 @@
     labels = [];
     window.kerf.drawnRoles = [];
     if (!c) return;
-    for (const [d, dashed] of [[c.lines, false], [c.dashed, true]]) {
-      const object = lineObject(d, dashed);
-      if (object) construction.add(object);
-    }
+    for (const [d, dashed] of [[c.lines, false], [c.dashed, true]])
+      if (d.colours) construction.add(lineObject(d, dashed, true));
     if (c.points.length) construction.add(pointsObject(c.points.map((p) => ({ p: p.p, colour: rgb(p.colour) })), 8));
     for (const l of c.labels) {
       if (!l.label) continue;

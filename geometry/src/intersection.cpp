@@ -386,7 +386,75 @@ struct StopAtContact {
   [[nodiscard]] bool full() const { return true; }
 };
 
-/// The decision sweep, in its stages: the events (makeEvents), then each event's pieces entering
+/// The decision sweep's events: every live segment's x-monotone pieces (forEachPiece), their ends
+/// sorted by x, then y. Made once for a search and read by each of its sweeps — the decision sweep
+/// and every dropping sweep after it (which pass the pieces of segments dropped since by).
+struct SweepEvents {
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  // An event: a point where one or two pieces enter or leave the sweep. Neighbouring pieces of a
+  // path share their joint, so one event serves both and a closed path of n pieces sorts about n
+  // events, not 2n. An entry is piece << 3 | sub-piece of its segment << 1 | enters.
+  struct Event {
+    double x, y;  // plain doubles: 24 bytes, not the 32 an aligned Vec2 would make it
+    std::uint32_t entry[2];
+  };
+  std::vector<Event> events;
+  /// Piece -> its segment; empty when every segment is live and a line (then piece k is segment
+  /// k: 4 bytes a piece saved).
+  std::vector<std::uint32_t> pieceSeg;
+  bool identity = true;
+  std::uint32_t probeIndex = 0;  ///< the index after the last piece: the probe's
+  [[nodiscard]] std::uint32_t segOf(std::uint32_t piece) const { return identity ? piece : pieceSeg[piece]; }
+};
+
+template <typename IsLive>
+SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) {
+  using Event = SweepEvents::Event;
+  SweepEvents out;
+  out.identity = live == path.size();
+  for (std::size_t i = 0; i < path.size() && out.identity; ++i) out.identity = !path[i].isArc();
+  if (!out.identity) out.pieceSeg.reserve(live + live / 8 + 16);
+  std::vector<Event>& events = out.events;
+  events.reserve(live + live / 8 + 16);
+  std::size_t pieces = 0;
+  std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
+  for (std::uint32_t i = 0; i < path.size(); ++i) {
+    if (!isLive(i)) continue;
+    unsigned sub = 0;
+    forEachPiece(path[i], i, [&](const Piece& piece) {
+      const std::size_t k = pieces++;
+      if (k >= (std::size_t{1} << 29)) throw std::length_error("findSelfIntersections: more than 2^29 pieces");
+      if (!out.identity) out.pieceSeg.push_back(i);
+      std::size_t mine[2];
+      for (int end = 0; end < 2; ++end) {
+        const Vec2& at = end == 0 ? piece.left : piece.right;
+        const std::uint32_t entry = static_cast<std::uint32_t>(k) << 3 | sub << 1 | (end == 0 ? 1u : 0u);
+        mine[end] = SIZE_MAX;
+        for (const std::size_t e : previous)
+          if (e != SIZE_MAX && events[e].entry[1] == SweepEvents::kNone && events[e].x == at.x() &&
+              events[e].y == at.y()) {
+            events[e].entry[1] = entry;
+            mine[end] = e;
+            break;
+          }
+        if (mine[end] == SIZE_MAX) {
+          events.push_back({at.x(), at.y(), {entry, SweepEvents::kNone}});
+          mine[end] = events.size() - 1;
+        }
+      }
+      previous[0] = mine[0];
+      previous[1] = mine[1];
+      ++sub;
+    });
+  }
+  geometry::parallelSort(events.begin(), events.end(),
+                         [](const Event& a, const Event& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  out.probeIndex = static_cast<std::uint32_t>(pieces);
+  if (!out.identity) out.pieceSeg.push_back(std::numeric_limits<std::uint32_t>::max());
+  return out;
+}
+
+/// The decision sweep, in its stages: the events (SweepEvents), then each event's pieces entering
 /// (enter) and leaving (leave) the order along the sweep line, each new pair of neighbours tested.
 ///
 /// run() is true when no pair of the live segments (isLive) touches (`touches` decides a pair
@@ -404,15 +472,21 @@ struct StopAtContact {
 template <bool kDrop, typename IsLive, typename Touches, typename Drop>
 class DecisionSweep {
  public:
-  DecisionSweep(SegmentView path, std::size_t live, IsLive& isLive, Touches& touches, double near, std::size_t& tested,
-                Drop& drop)
-      : path_(path), live_(live), isLive_(isLive), touches_(touches), near_(near), tested_(tested), drop_(drop) {}
+  DecisionSweep(SegmentView path, const SweepEvents& events, IsLive& isLive, Touches& touches, double near,
+                std::size_t& tested, Drop& drop)
+      : path_(path),
+        events_(events.events),
+        shared_(events),
+        isLive_(isLive),
+        touches_(touches),
+        near_(near),
+        tested_(tested),
+        drop_(drop) {}
 
   bool run() {
-    makeEvents();
     probe_.seg = std::numeric_limits<std::uint32_t>::max();
-    probe_.index = probeIndex_;
-    where_.assign(pieces_, order_.end());
+    probe_.index = shared_.probeIndex;
+    where_.assign(std::size_t{shared_.probeIndex} + 1, order_.end());
     for (std::size_t g = 0; g < events_.size();) {
       const Vec2 at(events_[g].x, events_[g].y);
       std::size_t h = g + 1;
@@ -438,65 +512,15 @@ class DecisionSweep {
   }
 
  private:
-  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-  // An event: a point where one or two pieces enter or leave the sweep. Neighbouring pieces of a
-  // path share their joint, so one event serves both and a closed path of n pieces sorts about n
-  // events, not 2n. An entry is piece << 3 | sub-piece of its segment << 1 | enters.
-  struct Event {
-    double x, y;  // plain doubles: 24 bytes, not the 32 an aligned Vec2 would make it
-    std::uint32_t entry[2];
-  };
+  static constexpr std::uint32_t kNone = SweepEvents::kNone;
 
-  [[nodiscard]] std::uint32_t segOf(std::uint32_t piece) const { return identity_ ? piece : pieceSeg_[piece]; }
+  [[nodiscard]] std::uint32_t segOf(std::uint32_t piece) const { return shared_.segOf(piece); }
   // The probe is a line: its segment unused.
   double yNow(const Piece& p) const {
     return p.vertical() ? p.left.y() : yAt(p, p.arc ? path_[p.seg] : path_[0], sweepX_);
   }
   double slopeNow(const Piece& p) const {
     return p.vertical() ? 1e300 : slopeAt(p, p.arc ? path_[p.seg] : path_[0], sweepX_);
-  }
-
-  /// Every live segment's pieces, their ends as events sorted by x, then y.
-  void makeEvents() {
-    // Piece -> its segment; not kept when every segment is live and a line (then piece k is
-    // segment k: 4 bytes a piece saved).
-    identity_ = live_ == path_.size();
-    for (std::size_t i = 0; i < path_.size() && identity_; ++i) identity_ = !path_[i].isArc();
-    if (!identity_) pieceSeg_.reserve(live_ + live_ / 8 + 16);
-    events_.reserve(live_ + live_ / 8 + 16);
-    std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
-    for (std::uint32_t i = 0; i < path_.size(); ++i) {
-      if (!isLive_(i)) continue;
-      unsigned sub = 0;
-      forEachPiece(path_[i], i, [&](const Piece& piece) {
-        const std::size_t k = pieces_++;
-        if (k >= (std::size_t{1} << 29)) throw std::length_error("findSelfIntersections: more than 2^29 pieces");
-        if (!identity_) pieceSeg_.push_back(i);
-        std::size_t mine[2];
-        for (int end = 0; end < 2; ++end) {
-          const Vec2& at = end == 0 ? piece.left : piece.right;
-          const std::uint32_t entry = static_cast<std::uint32_t>(k) << 3 | sub << 1 | (end == 0 ? 1u : 0u);
-          mine[end] = SIZE_MAX;
-          for (const std::size_t e : previous)
-            if (e != SIZE_MAX && events_[e].entry[1] == kNone && events_[e].x == at.x() && events_[e].y == at.y()) {
-              events_[e].entry[1] = entry;
-              mine[end] = e;
-              break;
-            }
-          if (mine[end] == SIZE_MAX) {
-            events_.push_back({at.x(), at.y(), {entry, kNone}});
-            mine[end] = events_.size() - 1;
-          }
-        }
-        previous[0] = mine[0];
-        previous[1] = mine[1];
-        ++sub;
-      });
-    }
-    geometry::parallelSort(events_.begin(), events_.end(),
-                           [](const Event& a, const Event& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
-    probeIndex_ = static_cast<std::uint32_t>(pieces_++);
-    if (!identity_) pieceSeg_.push_back(std::numeric_limits<std::uint32_t>::max());
   }
 
   /// Whether the pieces a and b touch (with kDrop: whether the sweep must stop).
@@ -599,7 +623,7 @@ class DecisionSweep {
       const std::uint32_t seg = segOf(piece);
       std::uint32_t first = piece, last = piece;
       while (first > 0 && segOf(first - 1) == seg) --first;
-      while (last + 1 < probeIndex_ && segOf(last + 1) == seg) ++last;
+      while (last + 1 < shared_.probeIndex && segOf(last + 1) == seg) ++last;
       for (std::uint32_t q = first; q <= last; ++q)
         if (where_[q] != order_.end() && !leave(q, Vec2(sweepX_, yNow(*where_[q])))) return false;
     }
@@ -617,17 +641,13 @@ class DecisionSweep {
   using Less = OrderAtSweep<const YNow, const SlopeNow>;
 
   SegmentView path_;
-  std::size_t live_;
+  const std::vector<SweepEvents::Event>& events_;
+  const SweepEvents& shared_;
   IsLive& isLive_;
   Touches& touches_;
   double near_;
   std::size_t& tested_;
   Drop& drop_;
-  bool identity_ = true;
-  std::vector<std::uint32_t> pieceSeg_;
-  std::size_t pieces_ = 0;
-  std::uint32_t probeIndex_ = 0;
-  std::vector<Event> events_;
   Piece probe_;  // a flat piece, to find where a vertical line's range starts
   double sweepX_ = 0.0;
   const YNow yNow_{this};
@@ -644,10 +664,10 @@ class DecisionSweep {
 
 /// True when no pair of the live segments touches (DecisionSweep, above).
 template <bool kDrop = false, typename IsLive, typename Touches, typename Drop = StopAtContact>
-bool sweepFindsNoContact(SegmentView path, std::size_t live, IsLive&& isLive, Touches&& touches, double near,
+bool sweepFindsNoContact(SegmentView path, const SweepEvents& events, IsLive&& isLive, Touches&& touches, double near,
                          std::size_t& tested, Drop&& drop = Drop{}) {
   return DecisionSweep<kDrop, std::remove_reference_t<IsLive>, std::remove_reference_t<Touches>,
-                       std::remove_reference_t<Drop>>(path, live, isLive, touches, near, tested, drop)
+                       std::remove_reference_t<Drop>>(path, events, isLive, touches, near, tested, drop)
       .run();
 }
 
@@ -770,21 +790,22 @@ bool byPair(const Contact& l, const Contact& r) { return l.first != r.first ? l.
 /// of its two was dropped. Each drop lists at least the pair that caused it, so at most maxContacts
 /// segments are dropped: O(maxContacts (n log n)) at worst, one sweep and a pass over n boxes a
 /// drop; two sweeps when the crossings are found in one.
+/// The sweeps read the events the decision sweep read (a dropped segment's pieces are passed by);
+/// a drop's pass over the segments reads their boxes, made once (boxes: one per segment, in the
+/// segments' order).
 template <typename IsLive, typename IsForward, typename IsWrap, typename Touches>
-SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOptions& options, std::size_t n,
-                                    std::size_t live, IsLive&& isLive, IsForward&& isForward, IsWrap&& isWrap,
-                                    Touches&& touches, std::size_t tested) {
-  const double tol = options.tolerance;
+SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOptions& options, const SweepEvents& events,
+                                    const std::vector<SweepBox>& boxes, IsLive&& isLive, IsForward&& isForward,
+                                    IsWrap&& isWrap, Touches&& touches, std::size_t tested) {
+  const std::size_t n = path.size();
   SelfIntersectionResult r;
   std::vector<char> dropped(n, 0);
-  std::size_t remaining = live;
   auto stillLive = [&](std::size_t i) { return isLive(i) && !dropped[i]; };
   struct Dropper {
     SegmentView path;
     const SelfIntersectionOptions& options;
-    std::size_t n;
+    const std::vector<SweepBox>& boxes;
     std::vector<char>& dropped;
-    std::size_t& remaining;
     SelfIntersectionResult& r;
     IsLive& isLive;
     IsForward& isForward;
@@ -793,12 +814,12 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
     std::optional<std::uint32_t> operator()(std::uint32_t a, std::uint32_t b) {
       const std::uint32_t s = path[a].length() >= path[b].length() ? a : b;
       dropped[s] = 1;
-      --remaining;
       ++dropsNow;
       // s against every segment not dropped before it, on every core; the parts' contacts join in
       // the order of the segments.
       const double tol = options.tolerance;
-      const Box box = path[s].bounds();
+      const SweepBox box = boxes[s];
+      const std::size_t n = path.size();
       std::mutex mutex;
       std::vector<std::pair<std::size_t, std::vector<Contact>>> parts;
       std::size_t pairs = 0;
@@ -806,7 +827,7 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
         std::vector<Contact> found;
         std::size_t count = 0;
         for (std::size_t j = lo; j < hi; ++j) {
-          if (j == s || !isLive(j) || dropped[j] || !box.overlaps(path[j].bounds(), tol)) continue;
+          if (j == s || !isLive(j) || dropped[j] || !box.meets(boxes[j])) continue;
           const std::size_t i = std::min<std::size_t>(s, j), k = std::max<std::size_t>(s, j);
           ++count;
           classifyPair(path, i, k, isForward(i, k), isWrap(i, k), tol, found);
@@ -821,12 +842,12 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
       return s;
     }
     [[nodiscard]] bool full() const { return r.contacts.size() >= options.maxContacts; }
-  } drop{path, options, n, dropped, remaining, r, isLive, isForward, isWrap};
+  } drop{path, options, boxes, dropped, r, isLive, isForward, isWrap};
   r.candidatePairs = tested;
   for (;;) {
     drop.dropsNow = 0;
     std::size_t swept = 0;
-    const bool clean = sweepFindsNoContact<true>(path, remaining, stillLive, touches, tol, swept, drop);
+    const bool clean = sweepFindsNoContact<true>(path, events, stillLive, touches, options.tolerance, swept, drop);
     r.candidatePairs += swept;
     if (drop.full() || (clean && drop.dropsNow == 0)) break;
   }
@@ -895,12 +916,12 @@ class SelfIntersectionSearch {
   double lowX_ = 0.0, highX_ = 0.0, widths_ = 0.0;  // the live boxes' extent in x, their widths' sum
   std::size_t selfLoop_ = SIZE_MAX;                 // the first segment that ends on its own start
   // Sorting (min x, index) pairs directly is much faster than sorting indices through boxes; only
-  // the box sweep needs them. Up to a million segments (16 MiB) the sweep's boxes are kept too,
-  // in the segments' order; past that the memory would grow with the path, so each is made again
-  // when its segment enters the sweep.
+  // the box sweep needs them.
   XKeys byMinX_;
   bool sorted_ = false;
-  std::vector<SweepBox> keptBoxes_;
+  // Every live segment's box, in the segments' order, made once by measure (an arc's box takes
+  // its axis extremes: most of the work of a box): the box sweep and the dropping sweeps read it.
+  std::vector<SweepBox> boxes_;
   // The first loop (findLoop): the least (k, v), v < k, whose end of k lies within tol of the start
   // of v, as k << 32 | v, among the pairs the box sweep tested.
   std::uint64_t loop_ = UINT64_MAX;
@@ -909,9 +930,7 @@ class SelfIntersectionSearch {
 
 void SelfIntersectionSearch::measure() {
   if (boxesFirst()) byMinX_.resize(n_);
-  constexpr std::size_t kKeptBoxesMost = std::size_t{1} << 20;
-  if (boxesFirst() && n_ <= kKeptBoxesMost) keptBoxes_.resize(n_);
-  const bool keepBoxes = !keptBoxes_.empty();
+  boxes_.resize(n_);
   // On every core, in stretches of a fixed length whose sums are added in order: the figures do
   // not depend on the number of threads.
   constexpr std::size_t kStretch = 4096;
@@ -936,8 +955,8 @@ void SelfIntersectionSearch::measure() {
         e.lowX = std::min(e.lowX, b.min.x());
         e.highX = std::max(e.highX, b.max.x());
         e.widths += b.max.x() - b.min.x() + 2 * tol_;
-        if (boxesFirst()) byMinX_[i] = {LooseBox::below(b.min.x()), static_cast<std::uint32_t>(i)};
-        if (keepBoxes) keptBoxes_[i] = SweepBox::of(LooseBox::around(b), tol_);
+        boxes_[i] = SweepBox::of(LooseBox::around(b), tol_);
+        if (boxesFirst()) byMinX_[i] = {boxes_[i].minX, static_cast<std::uint32_t>(i)};
         if (options_.findLoop && e.selfLoop == SIZE_MAX && near(path_[i].end, path_[i].start, tol_)) e.selfLoop = i;
       }
       extents[st] = e;
@@ -968,7 +987,7 @@ void SelfIntersectionSearch::sortByMinX() {
   if (byMinX_.empty()) {  // not made yet, or given back for the decision sweep
     byMinX_.reserve(live_);
     for (std::size_t i = 0; i < n_; ++i)
-      if (isLive(i)) byMinX_.push_back({LooseBox::below(path_[i].bounds().min.x()), static_cast<std::uint32_t>(i)});
+      if (isLive(i)) byMinX_.push_back({boxes_[i].minX, static_cast<std::uint32_t>(i)});
   }
   if (!sorted_) sortByX(byMinX_);  // byMinX_ comes in the order of the segments
   sorted_ = true;
@@ -1027,22 +1046,15 @@ bool SelfIntersectionSearch::flush(std::vector<std::pair<std::uint32_t, std::uin
   return true;
 }
 
-// The boxes in the sweep's order from `base`, made a block at a time on every core before the
-// sweep reads them in turn (rather than fetching the segments one by one out of order).
+// The boxes in the sweep's order from `base`, gathered a block at a time on every core before the
+// sweep reads them in turn (rather than fetching them one by one out of order).
 void SelfIntersectionSearch::fillBoxBlock(std::vector<SweepBox>& boxes, std::size_t base) const {
   const std::size_t count = std::min(boxes.size(), byMinX_.size() - base);
   geometry::parallelFor(count, 4096, [&](std::size_t b, std::size_t e) {
     constexpr std::size_t kAhead = 8;
-    if (!keptBoxes_.empty()) {
-      for (std::size_t q = b; q < e; ++q) {
-        if (q + kAhead < e) __builtin_prefetch(&keptBoxes_[byMinX_[base + q + kAhead].seg]);
-        boxes[q] = keptBoxes_[byMinX_[base + q].seg];
-      }
-      return;
-    }
     for (std::size_t q = b; q < e; ++q) {
-      if (q + kAhead < e) __builtin_prefetch(&path_[byMinX_[base + q + kAhead].seg]);
-      boxes[q] = SweepBox::of(LooseBox::around(path_[byMinX_[base + q].seg].bounds()), tol_);
+      if (q + kAhead < e) __builtin_prefetch(&boxes_[byMinX_[base + q + kAhead].seg]);
+      boxes[q] = boxes_[byMinX_[base + q].seg];
     }
   });
 }
@@ -1125,12 +1137,12 @@ SelfIntersectionResult SelfIntersectionSearch::run() {
   // The decision sweep does not need the boxes' order: its memory goes back first (8 bytes a
   // segment: 80 MB at 1e7), and a box sweep after it sorts again.
   XKeys().swap(byMinX_);
-  std::vector<SweepBox>().swap(keptBoxes_);
   sorted_ = false;
   auto isLiveSegment = [this](std::size_t i) { return isLive(i); };
   auto touchesPair = [this](std::size_t a, std::size_t b) { return touches(a, b); };
   std::size_t tested = 0;
-  if (sweepFindsNoContact(path_, live_, isLiveSegment, touchesPair, tol_, tested)) {
+  const SweepEvents events = makeSweepEvents(path_, live_, isLiveSegment);
+  if (sweepFindsNoContact(path_, events, isLiveSegment, touchesPair, tol_, tested)) {
     SelfIntersectionResult clean;
     clean.candidatePairs = tested;
     return clean;
@@ -1143,7 +1155,7 @@ SelfIntersectionResult SelfIntersectionSearch::run() {
   }
   auto forward = [this](std::size_t i, std::size_t j) { return isForward(i, j); };
   auto wrap = [this](std::size_t i, std::size_t j) { return isWrap(i, j); };
-  return dropAndSweep(path_, options_, n_, live_, isLiveSegment, forward, wrap, touchesPair, tested);
+  return dropAndSweep(path_, options_, events, boxes_, isLiveSegment, forward, wrap, touchesPair, tested);
 }
 
 }  // namespace

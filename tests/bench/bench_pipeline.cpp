@@ -15,11 +15,11 @@
 // adversarial shape for a sweep over boxes, issue 13). --shape spiral: N modal `X Y` lines at 3
 // decimals, 1,000 a turn, on a spiral of radius 5000 mm growing 0.05 mm a turn, which never meets
 // itself (issue 13's 200 MB program is --blocks 10000000 --write: the turns' boxes pile up, so the
-// check takes the decision sweep). --shape crossing: issue 39's adversarial program, random where
-// the others are regular: N moves around a ring of radius 5 m in random steps, lines and arcs in
-// every form (R of both signs, I J), G90 and G91 switching every few hundred blocks, and six
-// excursions across the ring and back, whose long chords cross one another (60 crossings): the
-// check must report them, not only find one.
+// check takes the decision sweep). --shape crossing: a tangled walk, random where the others are
+// regular (issue 58): N moves wandering in random steps over a field 800 mm across, lines and arcs
+// in every form (R of both signs, I J arcs swept up to nearly a full turn), one step in fifty a long
+// one across the tangle, G90 and G91 switching every 300 blocks. It crosses itself many thousands
+// of times: the check must report them (up to its limit), not only find one.
 #include "kerf/converter/check/checks.h"
 #include "kerf/converter/check/summary.h"
 #include "kerf/converter/interpret/analysis.h"
@@ -111,17 +111,16 @@ std::string decimal(long long t) {
 std::string generateCrossing(std::size_t blocks) {
   std::string text;
   text.reserve(blocks * 40);
-  text += "%\nO9003 (kerf benchmark crossing)\nG21 G90 G17\nG92 X5000. Y0\nF2.\n";
+  text += "%\nO9003 (kerf benchmark crossing)\nG21 G90 G17\nG92 X0 Y0\nF2.\n";
   std::uint64_t state = 0x9E3779B97F4A7C15ull;
   auto uniform = [&] {  // [0, 1), a fixed sequence on every machine
     state = state * 6364136223846793005ull + 1442695040888963407ull;
     return static_cast<double>(state >> 11) * 0x1.0p-53;
   };
-  const double ring = 5000.0, step = 2 * M_PI / static_cast<double>(blocks);
-  constexpr int kExcursions = 6;
-  long long x = tenths(ring), y = 0;
+  constexpr double kField = 400.0;  // the walk turns back at this distance from the origin, mm
+  long long x = 0, y = 0;
   bool incremental = false;
-  double angle = 0.0;
+  double heading = 0.0;
   auto moveTo = [&](const char* code, long long nx, long long ny, const std::string& more) {
     text += code;
     text += " X" + decimal(incremental ? nx - x : nx) + " Y" + decimal(incremental ? ny - y : ny) + more + "\n";
@@ -129,38 +128,33 @@ std::string generateCrossing(std::size_t blocks) {
     y = ny;
   };
   for (std::size_t i = 1; i <= blocks; ++i) {
-    if (i % 400 == 0) {  // the distance mode changes every 400 blocks
+    if (i % 300 == 0) {  // the distance mode changes every 300 blocks
       incremental = !incremental;
       text += incremental ? "G91\n" : "G90\n";
     }
-    if (i % (blocks / kExcursions) == blocks / (2 * kExcursions)) {  // across the ring and back
-      const double far = angle + M_PI * (0.9 + 0.2 * uniform());
-      moveTo("G01", tenths(0.8 * ring * std::cos(far)), tenths(0.8 * ring * std::sin(far)), "");
-      angle += step;
-      moveTo("G01", tenths(ring * std::cos(angle)), tenths(ring * std::sin(angle)), "");
-      continue;
-    }
-    angle = i == blocks ? 2 * M_PI : angle + step * (0.5 + uniform());
-    const double r = ring + (i == blocks ? 0.0 : 0.02 * (uniform() - 0.5));
-    const long long nx = i == blocks ? tenths(ring) : tenths(r * std::cos(angle));
-    const long long ny = i == blocks ? 0 : tenths(r * std::sin(angle));
+    // The heading wanders; past the field's edge it turns back towards the middle.
+    const double px = static_cast<double>(x) / 10000.0, py = static_cast<double>(y) / 10000.0;
+    heading += 0.8 * (uniform() - 0.5);
+    if (std::hypot(px, py) > kField) heading = std::atan2(-py, -px) + 0.6 * (uniform() - 0.5);
+    // Mostly short steps; one in 50 a long one across the tangle.
+    const double step = uniform() < 0.02 ? 20.0 + 60.0 * uniform() : 0.3 + 3.0 * uniform();
+    const long long nx = tenths(px + step * std::cos(heading)), ny = tenths(py + step * std::sin(heading));
     const double chord = std::hypot(static_cast<double>(nx - x), static_cast<double>(ny - y)) / 10000.0;
     const double pick = uniform();
-    if (pick < 0.4 || chord < 0.05 || i == blocks) {
+    if (pick < 0.4 || chord < 0.05) {
       moveTo("G01", nx, ny, "");
-    } else if (pick < 0.7) {  // R, the short way: G03 bulges out of the ring, G02 into it
-      moveTo(pick < 0.55 ? "G03" : "G02", nx, ny, " R" + decimal(tenths(chord * (0.6 + 2 * uniform()))));
-    } else if (pick < 0.8) {  // R negative: the long way round a circle just wider than the chord, outside
-      moveTo("G03", nx, ny, " R" + decimal(-tenths(chord * 0.52)));
-    } else {  // I J: the centre on the chord's bisector, inside the ring; the arc bulges out
-      const double along = 0.5 + 2 * uniform();  // the centre's distance from the chord, in chords
-      const long long cx = (x + nx) / 2 - tenths(along * chord * std::cos(angle));
-      const long long cy = (y + ny) / 2 - tenths(along * chord * std::sin(angle));
-      // The end moved onto the circle through the start, to the written 0.1 µm.
-      const double radius = std::hypot(static_cast<double>(x - cx), static_cast<double>(y - cy));
-      const double to = std::atan2(static_cast<double>(ny - cy), static_cast<double>(nx - cx));
-      moveTo("G03", cx + std::llround(radius * std::cos(to)), cy + std::llround(radius * std::sin(to)),
+    } else if (pick < 0.65) {  // R, the short way
+      moveTo(uniform() < 0.5 ? "G03" : "G02", nx, ny, " R" + decimal(tenths(chord * (0.6 + 2 * uniform()))));
+    } else if (pick < 0.8) {  // R negative: the long way round a circle a little wider than the chord
+      moveTo(uniform() < 0.5 ? "G03" : "G02", nx, ny, " R" + decimal(-tenths(chord * (0.52 + 0.5 * uniform()))));
+    } else {  // I J: a circle through the start, swept up to nearly all the way round
+      const double radius = chord * (0.3 + uniform()), toCentre = heading + M_PI / 2;
+      const long long cx = x + tenths(radius * std::cos(toCentre)), cy = y + tenths(radius * std::sin(toCentre));
+      const double r = std::hypot(static_cast<double>(x - cx), static_cast<double>(y - cy));
+      const double to = std::atan2(static_cast<double>(y - cy), static_cast<double>(x - cx)) + 0.2 + 6.0 * uniform();
+      moveTo("G03", cx + std::llround(r * std::cos(to)), cy + std::llround(r * std::sin(to)),
              " I" + decimal(cx - x) + " J" + decimal(cy - y));
+      heading = to + M_PI / 2;
     }
   }
   text += "G90\nM02\n%\n";
@@ -293,7 +287,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (crossing ? contacts < 6 * 5 * 2 : contacts != 0 || checkDiags.hasErrors()) {
-    std::fprintf(stderr, crossing ? "the crossing program should cross itself at its excursions\n"
+    std::fprintf(stderr, crossing ? "the crossing program should cross itself\n"
                                   : "the benchmark contour should not meet itself\n");
     return 1;
   }

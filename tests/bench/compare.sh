@@ -11,10 +11,10 @@
 #   memory (GNU time), both reading, interpreting and (Kerf) checking the whole program; then Kerf
 #   once on the same kind of program ten times as long, for the memory's slope (bytes per input
 #   byte without the fixed amount).
-#   kerf check against rs274 -g on issue 39's adversarial program (kerf_bench --shape crossing
-#   --blocks 200000 --write: random lines and arcs, R of both signs and I J, G90/G91 switching,
-#   long moves crossing one another): the same pair on a program that is not regular, and whose
-#   self-intersections must be reported, not only found. KERF_COMPARE_CROSSING=0 skips it.
+#   kerf check against rs274 -g on a tangled walk (kerf_bench --shape crossing --blocks 200000
+#   --write: random lines and arcs, R of both signs and I J up to nearly full turns, G90/G91
+#   switching, crossing itself many thousands of times): the same pair on a program that is not
+#   regular, and whose self-intersections must be reported, not only found. KERF_COMPARE_CROSSING=0 skips it.
 #   kerf check of issue 13's 200 MB program (kerf_bench --shape spiral, 10 M modal X Y lines; no peer:
 #   its target is 2 GB of memory), once: wall time and peak memory. KERF_COMPARE_SPIRAL=N sets the
 #   lines (0 skips it).

@@ -15,7 +15,7 @@ const BlockWords& Interpreter::cornerWords(const BlockWords& bw, BlockWords& bar
   if (motion_ != Motion::Line && !arcWithCentre) return bw;  // an R arc's R is its radius
   bare = bw;
   bare.cornerRound = bw['R'];
-  bare.letter[static_cast<std::size_t>('R' - 'A')] = nullptr;
+  bare.clearLetter('R');
   return bare;
 }
 

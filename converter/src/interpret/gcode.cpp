@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 namespace kerf::converter::interp {
@@ -79,6 +80,18 @@ constexpr std::array<MCodeInfo, 12> kMCodes = {{
     {MCode::ReturnFromSubprogram, 99, "return from a subprogram"},
 }};
 
+constexpr std::uint8_t kNoCode = 0xFF;
+/// kGCodes' index of each whole code G0 - G149 (kNoCode where there is none): a G word's entry in
+/// one look, not a pass over the table.
+constexpr std::array<std::uint8_t, 150> kWholeCodes = [] {
+  std::array<std::uint8_t, 150> index{};
+  index.fill(kNoCode);
+  for (std::size_t k = 0; k < kGCodes.size(); ++k)
+    if (kGCodes[k].fraction == 0 && kGCodes[k].number < static_cast<int>(index.size()))
+      index[static_cast<std::size_t>(kGCodes[k].number)] = static_cast<std::uint8_t>(k);
+  return index;
+}();
+
 }  // namespace
 
 bool splitGNumber(double value, int& number, int& fraction) {
@@ -105,6 +118,10 @@ const GCodeInfo* findGCode(double value) {
   if (fraction == 0 && (number == 112 || number == 113)) {
     number -= 100;
     fraction = 1;
+  }
+  if (fraction == 0 && number < static_cast<int>(kWholeCodes.size())) {
+    const std::uint8_t k = kWholeCodes[static_cast<std::size_t>(number)];
+    return k == kNoCode ? nullptr : &kGCodes[k];
   }
   for (const GCodeInfo& g : kGCodes)
     if (g.number == number && g.fraction == fraction) return &g;

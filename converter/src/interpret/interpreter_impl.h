@@ -32,6 +32,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <optional>
 #include <set>
@@ -52,13 +53,18 @@ Motion motionOf(GCode code);
 
 /// Phase 1: one side of a block's words — one value per letter, G codes by modal group.
 struct BlockWords {
-  std::array<const Word*, 26> letter{};  // X Y I J R F P L D H ... (not G, M)
-  std::array<const Word*, static_cast<std::size_t>(ModalGroup::Count)> g{};
-  std::array<GCode, static_cast<std::size_t>(ModalGroup::Count)> gCode{};
-  std::array<const Word*, 4> m{};  // M codes the standard set or no profile knows
+  // A table entry holds something only where its mask has the bit (m and machine: below their
+  // counts); the rest is left unwritten, so that making a block's BlockWords (three a block) sets
+  // a few words, not 450 bytes.
+  std::uint32_t letters = 0;           ///< bit c - 'A': letter[c - 'A'] holds the block's word c
+  std::uint32_t groups = 0;            ///< bit g: g[g] and gCode[g] hold the block's code of modal group g
+  std::array<const Word*, 26> letter;  // X Y I J R F P L D H ... (not G, M)
+  std::array<const Word*, static_cast<std::size_t>(ModalGroup::Count)> g;
+  std::array<GCode, static_cast<std::size_t>(ModalGroup::Count)> gCode;
+  std::array<const Word*, 4> m;  // M codes the standard set or no profile knows
   std::size_t mCount = 0;
   /// Codes the machine profile knows (G, M, T, C ... and macro calls), in the order written.
-  std::array<std::pair<const Word*, const KnownCode*>, 6> machine{};
+  std::array<std::pair<const Word*, const KnownCode*>, 6> machine;
   std::size_t machineCount = 0;
   /// The corner at the block's end: Fanuc's `,R` and `,C` (Word::corner), or a bare R on a cut
   /// block where the profile reads it so (`cut_r = corner`, NCVC).
@@ -66,15 +72,59 @@ struct BlockWords {
   const Word* cornerChamfer = nullptr;
   bool bad = false;
 
-  [[nodiscard]] const Word* operator[](char c) const { return letter[static_cast<std::size_t>(c - 'A')]; }
+  BlockWords() {}  // NOLINT: the tables stay unwritten (see above)
+  BlockWords(const BlockWords& other) { *this = other; }
+  BlockWords& operator=(const BlockWords& other) {
+    letters = other.letters;
+    groups = other.groups;
+    for (std::uint32_t bits = letters; bits; bits &= bits - 1)
+      letter[std::countr_zero(bits)] = other.letter[std::countr_zero(bits)];
+    for (std::uint32_t bits = groups; bits; bits &= bits - 1) {
+      g[std::countr_zero(bits)] = other.g[std::countr_zero(bits)];
+      gCode[std::countr_zero(bits)] = other.gCode[std::countr_zero(bits)];
+    }
+    mCount = other.mCount;
+    std::copy_n(other.m.begin(), mCount, m.begin());
+    machineCount = other.machineCount;
+    std::copy_n(other.machine.begin(), machineCount, machine.begin());
+    cornerRound = other.cornerRound;
+    cornerChamfer = other.cornerChamfer;
+    bad = other.bad;
+    return *this;
+  }
+
+  [[nodiscard]] const Word* operator[](char c) const {
+    const auto i = static_cast<unsigned>(c - 'A');
+    return (letters >> i & 1U) != 0 ? letter[i] : nullptr;
+  }
   [[nodiscard]] bool has(char c) const { return (*this)[c] != nullptr; }
-  [[nodiscard]] const Word* group(ModalGroup gr) const { return g[static_cast<std::size_t>(gr)]; }
-  [[nodiscard]] GCode code(ModalGroup gr) const { return gCode[static_cast<std::size_t>(gr)]; }
+  void setLetter(char c, const Word* w) {
+    const auto i = static_cast<unsigned>(c - 'A');
+    letter[i] = w;
+    letters |= 1U << i;
+  }
+  void clearLetter(char c) { letters &= ~(1U << static_cast<unsigned>(c - 'A')); }
+  [[nodiscard]] const Word* group(ModalGroup gr) const {
+    const auto i = static_cast<unsigned>(gr);
+    return (groups >> i & 1U) != 0 ? g[i] : nullptr;
+  }
+  /// The group's code; GCode::Rapid when the block has none in it.
+  [[nodiscard]] GCode code(ModalGroup gr) const {
+    const auto i = static_cast<unsigned>(gr);
+    return (groups >> i & 1U) != 0 ? gCode[i] : GCode{};
+  }
+  void setGroup(ModalGroup gr, const Word* w, GCode c) {
+    const auto i = static_cast<unsigned>(gr);
+    g[i] = w;
+    gCode[i] = c;
+    groups |= 1U << i;
+  }
   [[nodiscard]] bool hasCode(GCode c) const {
     const ModalGroup gr = info(c).group;
     return group(gr) && code(gr) == c;
   }
 };
+static_assert(static_cast<std::size_t>(ModalGroup::Count) <= 32, "BlockWords::groups has a bit a group");
 
 /// Phase 2: what the block does, with what it leaves out taken from the modal state.
 struct BlockPlan {

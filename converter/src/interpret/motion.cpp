@@ -11,9 +11,10 @@ void Interpreter::reportArc(const geometry::ArcBuild& build, const BlockWords& b
   const char* u = inch_ ? " in" : " mm";
   switch (build.status) {
     case geometry::ArcStatus::RadiusTooSmall:
-      diags_.error(Code::RadiusTooSmall, src_, bw['R']->span(),
-                   side + "arc radius " + formatFixed(std::abs(length(*bw['R'])) / unit, 3) +
-                       " is shorter than half the chord " + formatFixed(build.halfChord / unit, 3) + u);
+      if (const Word* r = bw['R'])  // an arc given by R: always here
+        diags_.error(Code::RadiusTooSmall, src_, r->span(),
+                     side + "arc radius " + formatFixed(std::abs(length(*r)) / unit, 3) +
+                         " is shorter than half the chord " + formatFixed(build.halfChord / unit, 3) + u);
       break;
     case geometry::ArcStatus::FullCircleWithRadius:
       diags_.error(Code::FullCircleWithRadius, src_, bw['R']->span(),

@@ -85,16 +85,14 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
       bw.bad = true;
       return;
     }
-    const auto gi_ = static_cast<std::size_t>(gi->group);
-    if (bw.g[gi_]) {
+    if (bw.group(gi->group)) {
       diags_.error(
           Code::ModalGroupConflict, src_, w.span(),
-          gName(gi->code) + " and " + gName(bw.gCode[gi_]) + " are in the same group and cannot share a block");
+          gName(gi->code) + " and " + gName(bw.code(gi->group)) + " are in the same group and cannot share a block");
       bw.bad = true;
       return;
     }
-    bw.g[gi_] = &w;
-    bw.gCode[gi_] = gi->code;
+    bw.setGroup(gi->group, &w, gi->code);
     return;
   }
   if (w.letter == 'M') {
@@ -121,14 +119,13 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
       return;
     }
   }
-  const auto li = static_cast<std::size_t>(w.letter - 'A');
-  if (bw.letter[li]) {
+  if (bw.has(w.letter)) {
     diags_.error(Code::RepeatedWord, src_, w.span(),
                  std::string("word '") + w.letter + "' appears twice on the same side of the block");
     bw.bad = true;
     return;
   }
-  bw.letter[li] = &w;
+  bw.setLetter(w.letter, &w);
 }
 
 /// In a two-sided dialect the upper side's coordinates and motion word go to ubw; every other word

@@ -5,6 +5,7 @@
 #include "kerf/converter/nc/program.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -20,19 +21,29 @@ namespace {
 
 // ---- 1. characters and numbers --------------------------------------------------------------
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+/// What a byte is, as bits: one look per character on the common road.
+enum CharClass : std::uint8_t { kBlank = 1, kDigit = 2, kPlainLetter = 4 };
+constexpr std::array<std::uint8_t, 256> kCharClass = [] {
+  std::array<std::uint8_t, 256> t{};
+  for (const unsigned char c : {' ', '\t', '\r', '\f', '\v'}) t[c] = kBlank;
+  for (unsigned char c = '0'; c <= '9'; ++c) t[c] = kDigit;
+  // The letters of Block::plain's words other than G.
+  for (const unsigned char c : {'X', 'Y', 'I', 'J', 'R', 'F'}) t[c] = kPlainLetter;
+  return t;
+}();
+bool hasClass(char c, std::uint8_t bits) { return (kCharClass[static_cast<unsigned char>(c)] & bits) != 0; }
+
+bool isDigit(char c) { return hasClass(c, kDigit); }
 bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 bool isLowerLetter(char c) { return c >= 'a' && c <= 'z'; }
 char upper(char c) { return isLowerLetter(c) ? static_cast<char>(c - 'a' + 'A') : c; }
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+bool isBlank(char c) { return hasClass(c, kBlank); }
 
 /// Letters that are words in ISO wire programs. B is not: it belongs to 3B code.
 bool isWordLetter(char u) { return u != 'B'; }
 
 /// The letters of Block::plain's words other than G.
-bool isPlainLetter(char letter) {
-  return letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'F';
-}
+bool isPlainLetter(char letter) { return hasClass(letter, kPlainLetter); }
 
 /// A word Block::plain allows: X Y I J R F, or G00-G03 written as a whole number.
 bool isPlainWord(char letter, WordValue kind, double value) {
@@ -76,28 +87,30 @@ constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,
 /// accurately", PLDI 1990: the fast path). Longer numbers go to std::from_chars.
 NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit, bool convert = true) {
   NumberScan s;
-  std::size_t i = pos;
-  const bool negative = i < limit && text[i] == '-';
-  if (i < limit && (text[i] == '+' || text[i] == '-')) ++i;
-  const std::size_t first = i;
-  while (i < limit && text[i] == '0') ++i;  // leading zeros
-  const std::size_t significant = i;
-  std::uint64_t whole = 0;  // the digits read as a whole number; wraps past 19 digits (then unused)
-  for (; i < limit && isDigit(text[i]); ++i) whole = whole * 10 + static_cast<std::uint64_t>(text[i] - '0');
-  s.integerDigits = i - significant;
-  const bool tooMany = s.integerDigits > static_cast<std::size_t>(kMaxDigits);
-  bool anyDigit = i > first;
+  const char* const base = text.data();
+  const char* p = base + pos;
+  const char* const stop = base + limit;
+  const bool negative = p < stop && *p == '-';
+  if (p < stop && (*p == '+' || *p == '-')) ++p;
+  const char* const first = p;
+  while (p < stop && *p == '0') ++p;  // leading zeros
+  const char* const significant = p;
+  // The digits read as a whole number; wraps past 19 digits (then unused).
+  std::uint64_t whole = 0;
+  for (unsigned d; p < stop && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p) whole = whole * 10 + d;
+  s.integerDigits = static_cast<std::size_t>(p - significant);
+  bool anyDigit = p > first;
   std::size_t fractionDigits = 0;
-  if (i < limit && text[i] == '.') {
+  if (p < stop && *p == '.') {
     s.hasPoint = true;
-    const std::size_t point = ++i;
-    for (; i < limit && isDigit(text[i]); ++i) whole = whole * 10 + static_cast<std::uint64_t>(text[i] - '0');
-    fractionDigits = i - point;
-    anyDigit = anyDigit || i > point;
+    const char* const point = ++p;
+    for (unsigned d; p < stop && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p) whole = whole * 10 + d;
+    fractionDigits = static_cast<std::size_t>(p - point);
+    anyDigit = anyDigit || p > point;
   }
-  s.end = i;
+  s.end = static_cast<std::size_t>(p - base);
   if (!anyDigit) return s;  // Missing
-  if (tooMany) {
+  if (s.integerDigits > static_cast<std::size_t>(kMaxDigits)) {
     s.status = NumberScan::TooManyDigits;
     return s;
   }
@@ -108,9 +121,9 @@ NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit,
     v = static_cast<double>(whole) / kExactPowersOfTen[fractionDigits];
   } else {
     // from_chars takes no '+' and no lone '.' after the digits in every library: the digits alone.
-    std::size_t digitsEnd = i;
-    if (s.hasPoint && text[digitsEnd - 1] == '.') --digitsEnd;
-    std::from_chars(text.data() + first, text.data() + digitsEnd, v, std::chars_format::fixed);
+    const char* digitsEnd = p;
+    if (s.hasPoint && digitsEnd[-1] == '.') --digitsEnd;
+    std::from_chars(first, digitsEnd, v, std::chars_format::fixed);
   }
   s.value = negative ? -v : v;
   return s;
@@ -321,10 +334,12 @@ class LineParser {
   /// once, or G00-G03 written as digits, each letter followed at once by [sign] digits [. digits],
   /// blanks between the words, up to the end of the line or a ';'. What it accepts the word loop
   /// below would read as the same plain block, with the same integer-unit evidence and no
-  /// diagnostic (parser_test holds the two roads equal); it keeps no word and converts a number
-  /// only when it is an integer length (the evidence needs its value). Anything else — a comment, a
-  /// blank after a letter, lower case, a second motion word after a coordinate, anything an error —
-  /// returns i, and the word loop reads the block.
+  /// diagnostic (parser_test holds the two roads equal). It is a pass over the characters that
+  /// reads no number: it keeps no word (the interpreter's WordReader reads them, the only time the
+  /// numbers are read), and converts a number only when it is an integer length (the evidence
+  /// needs its value). Anything else — a comment, a blank after a letter, lower case, a second
+  /// motion word after a coordinate, anything an error — returns begin, and the word loop reads
+  /// the block.
   std::size_t tryPlainBlock(const std::size_t begin, const std::size_t end, const std::uint32_t line) {
     constexpr std::uint16_t kMostWords = 64;  // more: the word loop (a plain block has at most 7 letters and its G's)
     std::uint32_t letters = 0;                // X Y I J R F seen (each may stand once)
@@ -332,9 +347,14 @@ class LineParser {
     bool sawMotion = false, sawCoordinate = false, anyPoint = false;
     std::uint32_t integers = 0;
     Word largest;  // the block's largest integer length word, if any (largest.length > 0)
+    const char* const text = text_.data();
     std::size_t i = begin, blockEnd = end, next = end;
+    auto digitsFrom = [&](std::size_t k) {
+      while (k < end && isDigit(text[k])) ++k;
+      return k;
+    };
     while (i < end) {
-      const char c = text_[i];
+      const char c = text[i];
       if (isBlank(c)) {
         ++i;
         continue;
@@ -345,16 +365,32 @@ class LineParser {
       }
       const bool motion = c == 'G';
       if ((!motion && !isPlainLetter(c)) || ++count > kMostWords) return begin;
-      if (motion && i + 1 < end && (text_[i + 1] == '+' || text_[i + 1] == '-')) return begin;
-      const NumberScan n = scanNumber(text_, i + 1, end, false);
-      if (n.status != NumberScan::Ok || n.integerDigits >= kLargestDigits) return begin;
-      if (n.end < end && !isBlank(text_[n.end]) && text_[n.end] != ';' && text_[n.end] != 'G' &&
-          !isPlainLetter(text_[n.end]))
+      // [sign] digits [. digits], at least one digit; fewer than kLargestDigits significant
+      // digits before the point.
+      std::size_t k = i + 1;
+      if (k < end && (text[k] == '+' || text[k] == '-')) {
+        if (motion) return begin;
+        ++k;
+      }
+      const std::size_t first = k;
+      while (k < end && text[k] == '0') ++k;
+      const std::size_t significant = k;
+      k = digitsFrom(k);
+      const std::size_t integerDigits = k - significant;
+      bool anyDigit = k > first;
+      const bool point = k < end && text[k] == '.';
+      if (point) {
+        const std::size_t fraction = k + 1;
+        k = digitsFrom(fraction);
+        anyDigit = anyDigit || k > fraction;
+      }
+      if (!anyDigit || integerDigits >= kLargestDigits) return begin;
+      if (k < end && !hasClass(text[k], kBlank | kPlainLetter) && text[k] != ';' && text[k] != 'G')
         return begin;  // what follows makes it no number, or is no plain word
       if (motion) {
         // G00-G03: at most one significant digit, 0-3, no point; a second after a coordinate
         // opens an upper side (noteForSides).
-        if (n.hasPoint || n.integerDigits > 1 || text_[n.end - 1] > '3' || (sawCoordinate && sawMotion)) return begin;
+        if (point || integerDigits > 1 || text[k - 1] > '3' || (sawCoordinate && sawMotion)) return begin;
         sawMotion = true;
       } else {
         const std::uint32_t bit = 1u << (c - 'A');
@@ -362,7 +398,7 @@ class LineParser {
         letters |= bit;
         if (c != 'F') {  // a length letter (isLengthLetter)
           sawCoordinate = true;
-          if (n.hasPoint) {
+          if (point) {
             anyPoint = true;
           } else {
             ++integers;
@@ -370,13 +406,13 @@ class LineParser {
             if (std::abs(v) > std::abs(largest.value) || largest.length == 0) {
               largest.letter = c;
               largest.offset = static_cast<std::uint32_t>(i);
-              largest.length = static_cast<std::uint16_t>(n.end - i);
+              largest.length = static_cast<std::uint16_t>(k - i);
               largest.value = v;
             }
           }
         }
       }
-      i = n.end;
+      i = k;
     }
     if (count == 0) return begin;
     program_.anyDecimalPoint = program_.anyDecimalPoint || anyPoint;

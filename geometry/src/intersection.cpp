@@ -791,12 +791,11 @@ bool byPair(const Contact& l, const Contact& r) { return l.first != r.first ? l.
 /// segments are dropped: O(maxContacts (n log n)) at worst, one sweep and a pass over n boxes a
 /// drop; two sweeps when the crossings are found in one.
 /// The sweeps read the events the decision sweep read (a dropped segment's pieces are passed by);
-/// a drop's pass over the segments reads their boxes, made once (boxes: one per segment, in the
-/// segments' order).
-template <typename IsLive, typename IsForward, typename IsWrap, typename Touches>
+/// a drop's pass over the segments reads their boxes (boxOf(i): segment i's SweepBox).
+template <typename BoxOf, typename IsLive, typename IsForward, typename IsWrap, typename Touches>
 SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOptions& options, const SweepEvents& events,
-                                    const std::vector<SweepBox>& boxes, IsLive&& isLive, IsForward&& isForward,
-                                    IsWrap&& isWrap, Touches&& touches, std::size_t tested) {
+                                    BoxOf&& boxOf, IsLive&& isLive, IsForward&& isForward, IsWrap&& isWrap,
+                                    Touches&& touches, std::size_t tested) {
   const std::size_t n = path.size();
   SelfIntersectionResult r;
   std::vector<char> dropped(n, 0);
@@ -804,7 +803,7 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
   struct Dropper {
     SegmentView path;
     const SelfIntersectionOptions& options;
-    const std::vector<SweepBox>& boxes;
+    BoxOf& boxOf;
     std::vector<char>& dropped;
     SelfIntersectionResult& r;
     IsLive& isLive;
@@ -818,7 +817,7 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
       // s against every segment not dropped before it, on every core; the parts' contacts join in
       // the order of the segments.
       const double tol = options.tolerance;
-      const SweepBox box = boxes[s];
+      const SweepBox box = boxOf(s);
       const std::size_t n = path.size();
       std::mutex mutex;
       std::vector<std::pair<std::size_t, std::vector<Contact>>> parts;
@@ -827,7 +826,7 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
         std::vector<Contact> found;
         std::size_t count = 0;
         for (std::size_t j = lo; j < hi; ++j) {
-          if (j == s || !isLive(j) || dropped[j] || !box.meets(boxes[j])) continue;
+          if (j == s || !isLive(j) || dropped[j] || !box.meets(boxOf(j))) continue;
           const std::size_t i = std::min<std::size_t>(s, j), k = std::max<std::size_t>(s, j);
           ++count;
           classifyPair(path, i, k, isForward(i, k), isWrap(i, k), tol, found);
@@ -842,7 +841,7 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
       return s;
     }
     [[nodiscard]] bool full() const { return r.contacts.size() >= options.maxContacts; }
-  } drop{path, options, boxes, dropped, r, isLive, isForward, isWrap};
+  } drop{path, options, boxOf, dropped, r, isLive, isForward, isWrap};
   r.candidatePairs = tested;
   for (;;) {
     drop.dropsNow = 0;
@@ -920,8 +919,13 @@ class SelfIntersectionSearch {
   XKeys byMinX_;
   bool sorted_ = false;
   // Every live segment's box, in the segments' order, made once by measure (an arc's box takes
-  // its axis extremes: most of the work of a box): the box sweep and the dropping sweeps read it.
+  // its axis extremes: most of the work of a box) and read by the box sweep and the dropping
+  // sweeps — up to a million segments (16 MiB); past that the memory would grow with the path, so
+  // each box is made again where it is needed (boxOf).
   std::vector<SweepBox> boxes_;
+  [[nodiscard]] SweepBox boxOf(std::size_t i) const {
+    return boxes_.empty() ? SweepBox::of(LooseBox::around(path_[i].bounds()), tol_) : boxes_[i];
+  }
   // The first loop (findLoop): the least (k, v), v < k, whose end of k lies within tol of the start
   // of v, as k << 32 | v, among the pairs the box sweep tested.
   std::uint64_t loop_ = UINT64_MAX;
@@ -930,7 +934,9 @@ class SelfIntersectionSearch {
 
 void SelfIntersectionSearch::measure() {
   if (boxesFirst()) byMinX_.resize(n_);
-  boxes_.resize(n_);
+  constexpr std::size_t kKeptBoxesMost = std::size_t{1} << 20;
+  if (n_ <= kKeptBoxesMost) boxes_.resize(n_);
+  const bool keepBoxes = !boxes_.empty();
   // On every core, in stretches of a fixed length whose sums are added in order: the figures do
   // not depend on the number of threads.
   constexpr std::size_t kStretch = 4096;
@@ -955,8 +961,9 @@ void SelfIntersectionSearch::measure() {
         e.lowX = std::min(e.lowX, b.min.x());
         e.highX = std::max(e.highX, b.max.x());
         e.widths += b.max.x() - b.min.x() + 2 * tol_;
-        boxes_[i] = SweepBox::of(LooseBox::around(b), tol_);
-        if (boxesFirst()) byMinX_[i] = {boxes_[i].minX, static_cast<std::uint32_t>(i)};
+        const SweepBox box = SweepBox::of(LooseBox::around(b), tol_);
+        if (keepBoxes) boxes_[i] = box;
+        if (boxesFirst()) byMinX_[i] = {box.minX, static_cast<std::uint32_t>(i)};
         if (options_.findLoop && e.selfLoop == SIZE_MAX && near(path_[i].end, path_[i].start, tol_)) e.selfLoop = i;
       }
       extents[st] = e;
@@ -987,7 +994,7 @@ void SelfIntersectionSearch::sortByMinX() {
   if (byMinX_.empty()) {  // not made yet, or given back for the decision sweep
     byMinX_.reserve(live_);
     for (std::size_t i = 0; i < n_; ++i)
-      if (isLive(i)) byMinX_.push_back({boxes_[i].minX, static_cast<std::uint32_t>(i)});
+      if (isLive(i)) byMinX_.push_back({boxOf(i).minX, static_cast<std::uint32_t>(i)});
   }
   if (!sorted_) sortByX(byMinX_);  // byMinX_ comes in the order of the segments
   sorted_ = true;
@@ -1052,9 +1059,16 @@ void SelfIntersectionSearch::fillBoxBlock(std::vector<SweepBox>& boxes, std::siz
   const std::size_t count = std::min(boxes.size(), byMinX_.size() - base);
   geometry::parallelFor(count, 4096, [&](std::size_t b, std::size_t e) {
     constexpr std::size_t kAhead = 8;
+    if (!boxes_.empty()) {
+      for (std::size_t q = b; q < e; ++q) {
+        if (q + kAhead < e) __builtin_prefetch(&boxes_[byMinX_[base + q + kAhead].seg]);
+        boxes[q] = boxes_[byMinX_[base + q].seg];
+      }
+      return;
+    }
     for (std::size_t q = b; q < e; ++q) {
-      if (q + kAhead < e) __builtin_prefetch(&boxes_[byMinX_[base + q + kAhead].seg]);
-      boxes[q] = boxes_[byMinX_[base + q].seg];
+      if (q + kAhead < e) __builtin_prefetch(&path_[byMinX_[base + q + kAhead].seg]);
+      boxes[q] = boxOf(byMinX_[base + q].seg);
     }
   });
 }
@@ -1155,7 +1169,8 @@ SelfIntersectionResult SelfIntersectionSearch::run() {
   }
   auto forward = [this](std::size_t i, std::size_t j) { return isForward(i, j); };
   auto wrap = [this](std::size_t i, std::size_t j) { return isWrap(i, j); };
-  return dropAndSweep(path_, options_, events, boxes_, isLiveSegment, forward, wrap, touchesPair, tested);
+  auto box = [this](std::size_t i) { return boxOf(i); };
+  return dropAndSweep(path_, options_, events, box, isLiveSegment, forward, wrap, touchesPair, tested);
 }
 
 }  // namespace

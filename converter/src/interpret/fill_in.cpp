@@ -28,14 +28,12 @@ BlockPlan Interpreter::fillIn(const Block& block, const BlockWords& bw, const Bl
   p.setPosition = bw.hasCode(GCode::SetPosition);
   p.dwell = bw.hasCode(GCode::Dwell);
   // G53 alone moves nothing (a machine-coordinate move needs its axis words).
-  const bool axisWords = bw.has('X') || bw.has('Y') || bw.has('U') || bw.has('V') || ubw.has('U') || ubw.has('V');
+  const bool axisWords = bw.hasAny(letterBits("XYUV")) || ubw.hasAny(letterBits("UV"));
   p.homing = bw.hasCode(GCode::ReferenceReturn) || bw.hasCode(GCode::SecondReference) ||
              (bw.hasCode(GCode::MachineCoordinates) && axisWords);
-  p.lowerWords =
-      bw.has('X') || bw.has('Y') || bw.has('I') || bw.has('J') || bw.has('R') || (options_.millTurn && bw.has('C'));
-  p.upperWords = bw.has('U') || bw.has('V');
-  if (block.upperFrom < block.wordCount)
-    for (char c : {'U', 'V', 'X', 'Y', 'I', 'J', 'R', 'K', 'L'}) p.upperWords |= ubw.has(c);
+  p.lowerWords = bw.hasAny(letterBits("XYIJR")) || (options_.millTurn && bw.has('C'));
+  p.upperWords = bw.hasAny(letterBits("UV"));
+  if (block.upperFrom < block.wordCount) p.upperWords |= ubw.hasAny(letterBits("UVXYIJRKL"));
   if (block.unusualValues)
     for (const BlockWords* side : {&bw, &ubw})
       for (char c : {'X', 'Y', 'U', 'V', 'I', 'J', 'R', 'K', 'L'})

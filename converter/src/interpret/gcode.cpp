@@ -114,6 +114,10 @@ std::string codeKey(char letter, double value) {
 const GCodeInfo* findGCode(double value) {
   int number = 0, fraction = 0;
   if (!splitGNumber(value, number, fraction)) return nullptr;
+  return findGCode(number, fraction);
+}
+
+const GCodeInfo* findGCode(int number, int fraction) {
   // Fanuc writes G12.1 / G13.1 also as G112 / G113.
   if (fraction == 0 && (number == 112 || number == 113)) {
     number -= 100;

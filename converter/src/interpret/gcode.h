@@ -87,6 +87,8 @@ struct GCodeInfo {
 
 /// The code written as `value` (G2, G02, G12.1, G112), or nothing when it is not in the table.
 const GCodeInfo* findGCode(double value);
+/// The same, for a code already split into its number and tenths (splitGNumber).
+const GCodeInfo* findGCode(int number, int fraction);
 const GCodeInfo& info(GCode code);
 /// "G02", "G12.1".
 std::string gName(int number, int fraction = 0);

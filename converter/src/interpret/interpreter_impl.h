@@ -37,6 +37,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -52,6 +53,13 @@ enum class Motion : std::uint8_t { None, Rapid, Line, Clockwise, CounterClockwis
 Motion motionOf(GCode code);
 
 /// Phase 1: one side of a block's words — one value per letter, G codes by modal group.
+/// The letters of `letters` as BlockWords::letters bits.
+constexpr std::uint32_t letterBits(std::string_view letters) {
+  std::uint32_t bits = 0;
+  for (const char c : letters) bits |= 1U << static_cast<unsigned>(c - 'A');
+  return bits;
+}
+
 struct BlockWords {
   // A table entry holds something only where its mask has the bit (m and machine: below their
   // counts); the rest is left unwritten, so that making a block's BlockWords (three a block) sets
@@ -98,6 +106,8 @@ struct BlockWords {
     return (letters >> i & 1U) != 0 ? letter[i] : nullptr;
   }
   [[nodiscard]] bool has(char c) const { return (*this)[c] != nullptr; }
+  /// Some letter of `mask` (letterBits) is in the block.
+  [[nodiscard]] bool hasAny(std::uint32_t mask) const { return (letters & mask) != 0; }
   void setLetter(char c, const Word* w) {
     const auto i = static_cast<unsigned>(c - 'A');
     letter[i] = w;

@@ -71,11 +71,12 @@ void Interpreter::readWord(const Word& w, BlockWords& bw) {
       bw.bad = true;
       return;
     }
-    if (const KnownCode* k = profileCode(machine_, w); k && k->number >= 0) {  // the profile's meaning wins
+    if (const KnownCode* k = machine_.codes.empty() ? nullptr : machine_.find('G', number, fraction);
+        k && k->number >= 0) {  // the profile's meaning wins
       addMachine(k);
       return;
     }
-    const GCodeInfo* gi = findGCode(w.value);
+    const GCodeInfo* gi = findGCode(number, fraction);
     if (!gi) {
       const std::string_view raw = src_->text().substr(w.offset, w.length);
       diags_.error(Code::UnknownGCode, src_, w.span(),

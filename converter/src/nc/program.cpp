@@ -85,7 +85,8 @@ constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,
 /// is m / 10^k (k digits after the point): both operands are exact doubles and IEEE division rounds correctly, so the
 /// quotient is the correctly rounded value (Clinger, "How to read floating point numbers
 /// accurately", PLDI 1990: the fast path). Longer numbers go to std::from_chars.
-NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit, bool convert = true) {
+[[gnu::always_inline]] inline NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit,
+                                                    bool convert = true) {
   NumberScan s;
   const char* const base = text.data();
   const char* p = base + pos;
@@ -938,8 +939,9 @@ std::span<const Word> WordReader::words(const Block& b) {
   // scanNumber as the parse, so each word comes out as the parse made it (parser_test holds it).
   const std::string_view text = program_.source->text();
   const std::size_t end = std::min<std::size_t>(text.size(), std::size_t{b.offset} + b.length);
-  buffer_.clear();
-  for (std::size_t i = b.offset; i < end && buffer_.size() < b.wordCount;) {
+  if (buffer_.size() < b.wordCount) buffer_.resize(b.wordCount);
+  std::size_t count = 0;
+  for (std::size_t i = b.offset; i < end && count < b.wordCount;) {
     const char c = text[i];
     if (c == '(') {
       const std::size_t close = text.find(')', i);
@@ -954,16 +956,16 @@ std::span<const Word> WordReader::words(const Block& b) {
     const std::size_t start = i++;
     while (i < end && isBlank(text[i])) ++i;
     const NumberScan n = scanNumber(text, i, end);
-    Word w;
+    Word& w = buffer_[count++];
+    w = Word{};
     w.letter = c;
     w.hasPoint = n.hasPoint;
     w.offset = static_cast<std::uint32_t>(start);
     w.length = static_cast<std::uint16_t>(std::min<std::size_t>(n.end - start, 0xFFFF));
     w.value = n.value;
-    buffer_.push_back(w);
     i = std::max(n.end, i);
   }
-  return buffer_;
+  return {buffer_.data(), count};
 }
 
 // ---- 6. the whole text ------------------------------------------------------------------------

@@ -15,14 +15,14 @@
 //   mill_turn.cpp      a mill-turn face program: X/C, polar interpolation
 //   heights.cpp        the plane heights, after the last block
 //   taper_offsets.cpp  taper-angle and xyuv-rel contours, after the last block
-//   gcode.cpp          the G-code table (gcode.h)
 // Beside the class: dialect.cpp (choosing the 4-axis dialect), machine.cpp (machine profiles),
 // offset_table.cpp (--offsets), analysis.cpp (a program read as its machine means it) and
-// workpiece.cpp (the part between the work's faces).
+// workpiece.cpp (the part between the work's faces). The G-code table is nc/gcode.h: the parser
+// classifies G words by it too.
 // Sections: 1. a block's words and plan  2. what is kept between blocks  3. the interpreter
 #pragma once
 
-#include "gcode.h"
+#include "../nc/gcode.h"
 #include "kerf/converter/interpret/interpreter.h"
 #include "kerf/converter/interpret/mill_turn.h"
 #include "kerf/converter/nc/number_format.h"

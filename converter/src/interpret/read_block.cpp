@@ -7,8 +7,6 @@
 namespace kerf::converter::interp {
 namespace {
 
-bool isMotionG(const Word& w) { return w.value >= 0 && w.value <= 3 && w.value == std::floor(w.value); }
-
 bool isUpperLetter(char c) {
   return c == 'X' || c == 'Y' || c == 'U' || c == 'V' || c == 'I' || c == 'J' || c == 'R' || c == 'K' || c == 'L';
 }
@@ -137,7 +135,7 @@ bool Interpreter::readBlock(const Block& block, BlockWords& bw, BlockWords& ubw)
   for (std::size_t k = 0; k < words.size(); ++k) {
     const Word& w = words[k];
     const bool upperSide =
-        split && k >= block.upperFrom && (isUpperLetter(w.letter) || (w.letter == 'G' && isMotionG(w)));
+        split && k >= block.upperFrom && (isUpperLetter(w.letter) || (w.letter == 'G' && isMotionCode(w.value)));
     readWord(w, upperSide ? ubw : bw);
   }
   return !bw.bad && !ubw.bad;

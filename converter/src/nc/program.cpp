@@ -4,6 +4,8 @@
 //           4. the sides of a 4-axis block  5. plain blocks read again  6. the whole text
 #include "kerf/converter/nc/program.h"
 
+#include "gcode.h"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -45,10 +47,10 @@ bool isWordLetter(char u) { return u != 'B'; }
 /// The letters of Block::plain's words other than G.
 bool isPlainLetter(char letter) { return hasClass(letter, kPlainLetter); }
 
-/// A word Block::plain allows: X Y I J R F, or G00-G03 written as a whole number.
+/// A word Block::plain allows: X Y I J R F, or a code of the motion group (G00-G03).
 bool isPlainWord(char letter, WordValue kind, double value) {
   if (kind != WordValue::Number) return false;
-  if (letter == 'G') return value == 0 || value == 1 || value == 2 || value == 3;
+  if (letter == 'G') return isMotionCode(value);
   return isPlainLetter(letter);
 }
 
@@ -350,6 +352,11 @@ class LineParser {
     Word largest;  // the block's largest integer length word, if any (largest.length > 0)
     const char* const text = text_.data();
     std::size_t i = begin, blockEnd = end, next = end;
+    auto wholeNumber = [&](std::size_t from, std::size_t to) {  // digits, fewer than kLargestDigits
+      std::uint64_t n = 0;
+      for (std::size_t d = from; d < to; ++d) n = n * 10 + static_cast<std::uint64_t>(text[d] - '0');
+      return n;
+    };
     auto digitsFrom = [&](std::size_t k) {
       while (k < end && isDigit(text[k])) ++k;
       return k;
@@ -389,9 +396,9 @@ class LineParser {
       if (k < end && !hasClass(text[k], kBlank | kPlainLetter) && text[k] != ';' && text[k] != 'G')
         return begin;  // what follows makes it no number, or is no plain word
       if (motion) {
-        // G00-G03: at most one significant digit, 0-3, no point; a second after a coordinate
-        // opens an upper side (noteForSides).
-        if (point || integerDigits > 1 || text[k - 1] > '3' || (sawCoordinate && sawMotion)) return begin;
+        // A code of the motion group written as digits, without a point; a second after a
+        // coordinate opens an upper side (noteForSides).
+        if (point || !isMotionCode(wholeNumber(significant, k)) || (sawCoordinate && sawMotion)) return begin;
         sawMotion = true;
       } else {
         const std::uint32_t bit = 1u << (c - 'A');
@@ -846,13 +853,13 @@ class LineParser {
   /// A second motion word after a coordinate opens the upper side (`G2 X Y I J G1 U V`, cnc3); a
   /// single motion word may stand anywhere (`X10 Y5 G1`). G28/G30 let axes stand bare after them.
   void noteForSides(const Block& block, char letter, double value) {
-    const bool motionG = letter == 'G' && value >= 0 && value <= 3 && value == std::floor(value);
+    const bool motionG = letter == 'G' && isMotionCode(value);
     if (splitAt_ < 0 && motionG && sawCoordinate_ && sawMotion_) splitAt_ = wordsSoFar(block);
     sawMotion_ |= motionG;
     if (letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == 'R' || letter == 'U' ||
         letter == 'V')
       sawCoordinate_ = true;
-    if (letter == 'G' && (value == 28 || value == 30)) homing_ = true;
+    if (letter == 'G' && isHomingCode(value)) homing_ = true;
   }
 
   // ---- 4. the sides of a 4-axis block ----------------------------------------------------------

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 
-namespace kerf::converter::interp {
+namespace kerf::converter {
 namespace {
 
 using G = GCode;
@@ -132,6 +132,22 @@ const GCodeInfo* findGCode(int number, int fraction) {
   return nullptr;
 }
 
+bool isMotionCode(double value) {
+  const GCodeInfo* g = findGCode(value);
+  return g && g->group == ModalGroup::Motion;
+}
+
+bool isMotionCode(std::uint64_t number) {
+  if (number >= kWholeCodes.size()) return false;
+  const std::uint8_t k = kWholeCodes[static_cast<std::size_t>(number)];
+  return k != kNoCode && kGCodes[k].group == ModalGroup::Motion;
+}
+
+bool isHomingCode(double value) {
+  const GCodeInfo* g = findGCode(value);
+  return g && (g->code == GCode::ReferenceReturn || g->code == GCode::SecondReference);
+}
+
 // The table is in the enum's order, so a code's entry is found by its value.
 constexpr bool inEnumOrder() {
   for (std::size_t k = 0; k < kGCodes.size(); ++k)
@@ -164,4 +180,4 @@ const MCodeInfo* findMCode(double value) {
   return nullptr;
 }
 
-}  // namespace kerf::converter::interp
+}  // namespace kerf::converter

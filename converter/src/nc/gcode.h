@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace kerf::converter::interp {
+namespace kerf::converter {
 
 /// Modal groups: two codes of one group cannot share a block (K0203).
 enum class ModalGroup : std::uint8_t {
@@ -89,6 +89,13 @@ struct GCodeInfo {
 const GCodeInfo* findGCode(double value);
 /// The same, for a code already split into its number and tenths (splitGNumber).
 const GCodeInfo* findGCode(int number, int fraction);
+/// A G word's value that names a code of the motion group (G00-G03): what makes a block plain
+/// for the parser (program.h) and a second motion word open a block's upper side.
+bool isMotionCode(double value);
+/// The same for a whole code number (G01: 1).
+bool isMotionCode(std::uint64_t number);
+/// A G word's value that homes the axes (G28, G30): the axis letters after it may stand bare.
+bool isHomingCode(double value);
 const GCodeInfo& info(GCode code);
 /// "G02", "G12.1".
 std::string gName(int number, int fraction = 0);
@@ -122,4 +129,4 @@ struct MCodeInfo {
 };
 const MCodeInfo* findMCode(double value);
 
-}  // namespace kerf::converter::interp
+}  // namespace kerf::converter

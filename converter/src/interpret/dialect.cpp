@@ -1,5 +1,7 @@
 #include "kerf/converter/interpret/dialect.h"
 
+#include "../nc/gcode.h"
+
 #include "kerf/converter/nc/number_format.h"
 
 #include <cmath>
@@ -67,10 +69,12 @@ NumberEvidence compareNumbers(const Program& program) {
     std::array<const Word*, 4> given{};
     for (const Word& w : reader.words(b)) {
       if (w.letter == 'G' && w.isNumber()) {
-        if (w.value == 90) incremental = false;
-        if (w.value == 91) incremental = true;
-        if (w.value == 92) setPosition = true;
-        if (w.value == 28 || w.value == 30) home = true;
+        const GCodeInfo* g = findGCode(w.value);
+        const GCode code = g ? g->code : GCode::Rapid;
+        if (g && code == GCode::Absolute) incremental = false;
+        if (g && code == GCode::Incremental) incremental = true;
+        if (g && code == GCode::SetPosition) setPosition = true;
+        home |= isHomingCode(w.value);
       }
       for (std::size_t k = 0; k < kAxes.size(); ++k)
         if (w.letter == kAxes[k] && !given[k]) given[k] = &w;

@@ -248,58 +248,6 @@ void classifyPair(SegmentView path, std::size_t i, std::size_t j, bool adjacentF
 
 }  // namespace
 
-// ---- sorting by key ----------------------------------------------------------------------------
-
-namespace {
-
-/// A float's place in the order of floats, as an unsigned integer: negative floats have their
-/// bits reversed, positive ones the sign bit set. -0 counts as +0, as the comparison of floats has
-/// it; a NaN (no coordinate is one) lands past +infinity.
-std::uint32_t orderKey(float f) {
-  const auto bits = std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f);
-  return (bits & 0x80000000U) != 0 ? ~bits : bits | 0x80000000U;
-}
-
-/// The same for a double.
-std::uint64_t orderKey(double d) {
-  const auto bits = std::bit_cast<std::uint64_t>(d == 0.0 ? 0.0 : d);
-  return (bits & 0x8000000000000000ULL) != 0 ? ~bits : bits | 0x8000000000000000ULL;
-}
-
-/// Sorts items by key(item), an unsigned integer, stably: a least-significant-digit radix sort,
-/// 11 bits a pass, a pass skipped where every key has the same digit. O(n) where std::sort is
-/// O(n log n); at 400,000 events of a tangled walk it takes half std::sort's instructions.
-template <typename T, typename Key>
-void radixSort(std::vector<T>& items, Key key) {
-  using K = decltype(key(items.front()));
-  constexpr int kBits = 11;
-  constexpr int kPasses = (static_cast<int>(sizeof(K)) * 8 + kBits - 1) / kBits;
-  constexpr std::size_t kBuckets = std::size_t{1} << kBits;
-  const std::size_t n = items.size();
-  if (n < 64) {
-    std::stable_sort(items.begin(), items.end(), [&](const T& a, const T& b) { return key(a) < key(b); });
-    return;
-  }
-  if (n >= std::numeric_limits<std::uint32_t>::max()) throw std::length_error("radixSort: more than 2^32 - 2 items");
-  std::vector<std::array<std::uint32_t, kBuckets>> counts(kPasses);
-  for (auto& c : counts) c.fill(0);
-  for (const T& item : items) {
-    const K k = key(item);
-    for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(k >> (pass * kBits)) & (kBuckets - 1)];
-  }
-  std::vector<T> other(n);
-  for (int pass = 0; pass < kPasses; ++pass) {
-    auto& c = counts[static_cast<std::size_t>(pass)];
-    if (std::find(c.begin(), c.end(), n) != c.end()) continue;  // one digit in every key
-    std::uint32_t at = 0;
-    for (std::uint32_t& bucket : c) at += std::exchange(bucket, at);
-    for (const T& item : items) other[c[(key(item) >> (pass * kBits)) & (kBuckets - 1)]++] = item;
-    items.swap(other);
-  }
-}
-
-}  // namespace
-
 // ---- 3. decision sweep ------------------------------------------------------------------------
 //
 // Shamos and Hoey's sweep (1976): a vertical line swept left to right over x-monotone pieces (a
@@ -499,16 +447,8 @@ SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) 
       ++sub;
     });
   }
-  // By x, then the few events of one x by y.
-  radixSort(events, [](const Event& e) { return orderKey(e.x); });
-  for (std::size_t a = 0; a < events.size();) {
-    std::size_t b = a + 1;
-    while (b < events.size() && events[b].x == events[a].x) ++b;
-    if (b - a > 1)
-      std::sort(events.begin() + static_cast<std::ptrdiff_t>(a), events.begin() + static_cast<std::ptrdiff_t>(b),
-                [](const Event& l, const Event& r) { return l.y < r.y; });
-    a = b;
-  }
+  geometry::parallelSort(events.begin(), events.end(),
+                         [](const Event& a, const Event& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   out.probeIndex = static_cast<std::uint32_t>(pieces);
   if (!out.identity) out.pieceSeg.push_back(std::numeric_limits<std::uint32_t>::max());
   return out;
@@ -788,6 +728,14 @@ struct SweepBox {
   }
 };
 
+/// A float's place in the order of floats, as an unsigned integer: negative floats have their
+/// bits reversed, positive ones the sign bit set. -0 counts as +0, as the comparison of floats has
+/// it; a NaN (no coordinate is one) lands past +infinity.
+std::uint32_t orderKey(float f) {
+  const auto bits = std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f);
+  return (bits & 0x80000000U) != 0 ? ~bits : bits | 0x80000000U;
+}
+
 /// A segment's place in the box sweep: the least x of its box (rounded down to a float), then its
 /// index. Made in place by the extents pass.
 struct XKey {
@@ -798,10 +746,32 @@ struct XKey {
 using XKeys = std::vector<XKey>;
 
 /// Sorts (x, segment) keys that come in the order of their segments by x, then segment: the
-/// order std::sort gives them (the radix sort is stable, so pairs of one x keep their segments'
-/// order).
+/// order std::sort gives them. A least-significant-digit radix sort of the keys in
+/// three passes of 11 bits, each stable, so pairs of one x keep their segments' order: O(n) where
+/// std::sort is O(n log n). A pass whose digit is the same in every key is skipped.
 void sortByX(XKeys& pairs) {
-  radixSort(pairs, [](const XKey& p) { return orderKey(p.x); });
+  constexpr int kBits = 11, kPasses = 3;
+  constexpr std::size_t kBuckets = std::size_t{1} << kBits;
+  const std::size_t n = pairs.size();
+  if (n < 64) {
+    std::sort(pairs.begin(), pairs.end());
+    return;
+  }
+  std::vector<std::array<std::uint32_t, kBuckets>> counts(kPasses);
+  for (auto& c : counts) c.fill(0);
+  for (const XKey& p : pairs) {
+    const std::uint32_t key = orderKey(p.x);
+    for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(key >> (pass * kBits)) & (kBuckets - 1)];
+  }
+  XKeys other(n);
+  for (int pass = 0; pass < kPasses; ++pass) {
+    auto& c = counts[static_cast<std::size_t>(pass)];
+    if (std::find(c.begin(), c.end(), n) != c.end()) continue;  // one digit in every key
+    std::uint32_t at = 0;
+    for (std::uint32_t& bucket : c) at += std::exchange(bucket, at);
+    for (const auto& p : pairs) other[c[(orderKey(p.x) >> (pass * kBits)) & (kBuckets - 1)]++] = p;
+    pairs.swap(other);
+  }
 }
 
 }  // namespace

@@ -8,6 +8,9 @@
 # Without programs: the 6.1 MB benchmark program (kerf_bench --blocks 200000 --write) and the
 # crossing program (kerf_bench --shape crossing --blocks 200000 --write), generated here.
 # KERF=path/to/kerf counts another build's program (an earlier commit's) on the same files.
+# kerf runs on one thread (KERF_THREADS=1): the total is the same work, and each phase's count is
+# then its own (with two, a worker thread's share lands outside the phase that started it, and
+# differently from run to run on a busy machine).
 set -euo pipefail
 export LC_ALL=C
 build=${1:?usage: count_instructions.sh BUILD_DIR [PROGRAM...]}
@@ -30,7 +33,7 @@ phase() { awk -v f="$2" 'index($0, f) && $1 ~ /^[0-9,]+$/ {gsub(",", "", $1); pr
 for program in "${programs[@]}"; do
   out="$work/callgrind.out"
   rm -f "$out"*
-  valgrind --tool=callgrind --callgrind-out-file="$out" "$kerf" check "$program" > /dev/null 2>&1 || true
+  KERF_THREADS=1 valgrind --tool=callgrind --callgrind-out-file="$out" "$kerf" check "$program" > /dev/null 2>&1 || true
   callgrind_annotate --inclusive=yes --threshold=100 "$out" > "$work/annotated" 2> /dev/null
   total=$(awk '/PROGRAM TOTALS/ {gsub(",", "", $1); print $1; exit}' "$work/annotated")
   printf "%s: %s" "$(basename "$program")" "$(echo "$total" | millions)"

@@ -8,7 +8,7 @@
 namespace kerf::geometry::detail {
 
 /// a reduced into [0, 2 pi).
-inline double wrapPositive(double a) {
+[[gnu::always_inline]] inline double wrapPositive(double a) {
   // Within two turns either way (nearly every angle a program gives), fmod(a, 2 pi) is a, a - 2 pi
   // or a + 2 pi, and those differences are exact (Sterbenz: |a| <= 2 * 2 pi), so the fast path
   // gives fmod's result bit for bit without the library call (a bounding box takes four).
@@ -31,7 +31,7 @@ inline double wrapPositive(double a) {
 
 /// How far along the arc (radians, >= 0, in the direction of travel) the angle phi lies from the
 /// start. Values above |sweep| mean off the arc.
-inline double angleAlong(const Segment& arc, double phi) {
+[[gnu::always_inline]] inline double angleAlong(const Segment& arc, double phi) {
   return arc.sweep >= 0 ? wrapPositive(phi - arc.startAngle) : wrapPositive(arc.startAngle - phi);
 }
 

@@ -95,6 +95,12 @@ constexpr std::array<std::uint8_t, 150> kWholeCodes = [] {
 }  // namespace
 
 bool splitGNumber(double value, int& number, int& fraction) {
+  // A whole number (nearly every code written): the general rule below gives the same.
+  if (value >= 0 && value < 1e6 && value == static_cast<double>(static_cast<int>(value))) {
+    number = static_cast<int>(value);
+    fraction = 0;
+    return true;
+  }
   const long tenths = roundHalfAway(value * 10);
   if (value < 0 || std::abs(value * 10 - static_cast<double>(tenths)) > 1e-6) return false;
   number = static_cast<int>(tenths / 10);

@@ -334,15 +334,15 @@ class LineParser {
   }
 
   /// The short road for the common block (Block::plain): words of an upper-case X Y I J R F, each
-  /// once, or G00-G03 written as digits, each letter followed at once by [sign] digits [. digits],
-  /// blanks between the words, up to the end of the line or a ';'. What it accepts the word loop
-  /// below would read as the same plain block, with the same integer-unit evidence and no
-  /// diagnostic (parser_test holds the two roads equal). It is a pass over the characters that
-  /// reads no number: it keeps no word (the interpreter's WordReader reads them, the only time the
-  /// numbers are read), and converts a number only when it is an integer length (the evidence
-  /// needs its value). Anything else — a comment, a blank after a letter, lower case, a second
-  /// motion word after a coordinate, anything an error — returns begin, and the word loop reads
-  /// the block.
+  /// once, or a motion-group code (the G-code table's G00-G03) written as digits, each letter
+  /// followed at once by [sign] digits [. digits], blanks between the words, up to the end of the
+  /// line or a ';'. What it accepts the word loop below would read as the same plain block, with
+  /// the same integer-unit evidence and no diagnostic (parser_test holds the two roads equal). It
+  /// is a pass over the characters that checks the numbers' syntax without reading them: it keeps
+  /// no word (the interpreter's WordReader reads them, the only time the numbers are read), and
+  /// reads only a G word's digits (its code) and an integer length (the evidence needs its value).
+  /// Anything else — a comment, a blank after a letter, lower case, a second motion word after a
+  /// coordinate, anything an error — returns begin, and the word loop reads the block.
   std::size_t tryPlainBlock(const std::size_t begin, const std::size_t end, const std::uint32_t line) {
     constexpr std::uint16_t kMostWords = 64;  // more: the word loop (a plain block has at most 7 letters and its G's)
     std::uint32_t letters = 0;                // X Y I J R F seen (each may stand once)

@@ -474,23 +474,16 @@ class DecisionSweep {
  public:
   DecisionSweep(SegmentView path, const SweepEvents& events, IsLive& isLive, Touches& touches, double near,
                 std::size_t& tested, Drop& drop)
-      : path_(path),
-        events_(events.events),
-        shared_(events),
-        isLive_(isLive),
-        touches_(touches),
-        near_(near),
-        tested_(tested),
-        drop_(drop) {}
+      : path_(path), shared_(events), isLive_(isLive), touches_(touches), near_(near), tested_(tested), drop_(drop) {}
 
   bool run() {
     probe_.seg = std::numeric_limits<std::uint32_t>::max();
     probe_.index = shared_.probeIndex;
     where_.assign(std::size_t{shared_.probeIndex} + 1, order_.end());
-    for (std::size_t g = 0; g < events_.size();) {
-      const Vec2 at(events_[g].x, events_[g].y);
+    for (std::size_t g = 0; g < shared_.events.size();) {
+      const Vec2 at(shared_.events[g].x, shared_.events[g].y);
       std::size_t h = g + 1;
-      while (h < events_.size() && events_[h].x == at.x() && events_[h].y == at.y()) ++h;
+      while (h < shared_.events.size() && shared_.events[h].x == at.x() && shared_.events[h].y == at.y()) ++h;
       sweepX_ = at.x();
       if (sweepX_ != verticalsX_) {
         verticals_.clear();
@@ -499,10 +492,10 @@ class DecisionSweep {
       // At one point the pieces enter before any leaves, so that everything meeting there is in
       // the order at once.
       for (std::size_t e = g; e < h; ++e)
-        for (const std::uint32_t entry : events_[e].entry)
+        for (const std::uint32_t entry : shared_.events[e].entry)
           if (entry != kNone && (entry & 1u) && !enter(entry >> 3, (entry >> 1) & 3u, at)) return false;
       for (std::size_t e = g; e < h; ++e)
-        for (const std::uint32_t entry : events_[e].entry)
+        for (const std::uint32_t entry : shared_.events[e].entry)
           if (entry != kNone && !(entry & 1u) && !leave(entry >> 3, at)) return false;
       if constexpr (kDrop)
         if (!leaveDropped()) return false;
@@ -641,7 +634,6 @@ class DecisionSweep {
   using Less = OrderAtSweep<const YNow, const SlopeNow>;
 
   SegmentView path_;
-  const std::vector<SweepEvents::Event>& events_;
   const SweepEvents& shared_;
   IsLive& isLive_;
   Touches& touches_;

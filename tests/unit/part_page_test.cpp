@@ -92,8 +92,7 @@ TEST(part_page_test, a_report_page_loads_its_scripts_from_the_folder) {
   options.scriptFiles = true;
   const auto page = partPage(p, "line.nc", p.diags.all(), options);
   for (const kerf::exporter::PageScript& script : kerf::exporter::partPageScripts()) {
-    EXPECT_NE(page.html.find("<script src=\"" + std::string(script.file) + "\">"), std::string::npos)
-        << script.file;
+    EXPECT_NE(page.html.find("<script src=\"" + std::string(script.file) + "\">"), std::string::npos) << script.file;
     EXPECT_FALSE(script.text.empty());
   }
   EXPECT_NE(page.html.find("script-src 'self'"), std::string::npos);

@@ -4,10 +4,6 @@
 namespace kerf::converter::interp {
 
 bool Interpreter::checkDialectWords(const Block& block, const BlockWords& bw, const BlockWords& ubw, bool setPosition) {
-  // A 2-axis program's block with no upper-side word, ':' or 4-axis code: nothing to refuse.
-  if (dialect_ == Dialect::Plain && !bw.hasAny(letterBits("UV")) && !ubw.hasAny(letterBits("UV")) && !block.colon &&
-      !bw.group(ModalGroup::Taper) && !bw.group(ModalGroup::ColonMode))
-    return true;
   // Built only when a word is refused: this runs for every block.
   const char* choose = "choose the dialect with --dialect";
   auto refuse = [&](const Word* w, const std::string& message, const std::string& help = {}) {

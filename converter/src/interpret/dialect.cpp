@@ -68,13 +68,11 @@ NumberEvidence compareNumbers(const Program& program) {
     bool setPosition = false, home = false;
     std::array<const Word*, 4> given{};
     for (const Word& w : reader.words(b)) {
-      if (w.letter == 'G' && w.isNumber()) {
-        const GCodeInfo* g = findGCode(w.value);
-        const GCode code = g ? g->code : GCode::Rapid;
-        if (g && code == GCode::Absolute) incremental = false;
-        if (g && code == GCode::Incremental) incremental = true;
-        if (g && code == GCode::SetPosition) setPosition = true;
-        home |= isHomingCode(w.value);
+      if (const GCodeInfo* g = w.letter == 'G' && w.isNumber() ? findGCode(w.value) : nullptr) {
+        if (g->code == GCode::Absolute) incremental = false;
+        if (g->code == GCode::Incremental) incremental = true;
+        if (g->code == GCode::SetPosition) setPosition = true;
+        home |= g->code == GCode::ReferenceReturn || g->code == GCode::SecondReference;
       }
       for (std::size_t k = 0; k < kAxes.size(); ++k)
         if (w.letter == kAxes[k] && !given[k]) given[k] = &w;

@@ -143,10 +143,10 @@ bool isMotionCode(double value) {
   return g && g->group == ModalGroup::Motion;
 }
 
-bool isMotionCode(std::uint64_t number) {
-  if (number >= kWholeCodes.size()) return false;
-  const std::uint8_t k = kWholeCodes[static_cast<std::size_t>(number)];
-  return k != kNoCode && kGCodes[k].group == ModalGroup::Motion;
+bool isWholeMotionCode(std::uint64_t number) {
+  if (number >= kWholeCodes.size()) return false;  // no motion code is that large
+  const GCodeInfo* g = findGCode(static_cast<int>(number), 0);
+  return g && g->group == ModalGroup::Motion;
 }
 
 bool isHomingCode(double value) {

@@ -92,8 +92,8 @@ const GCodeInfo* findGCode(int number, int fraction);
 /// A G word's value that names a code of the motion group (G00-G03): what makes a block plain
 /// for the parser (program.h) and a second motion word open a block's upper side.
 bool isMotionCode(double value);
-/// The same for a whole code number (G01: 1).
-bool isMotionCode(std::uint64_t number);
+/// The same for a whole code number as written without a point (G01: 1).
+bool isWholeMotionCode(std::uint64_t number);
 /// A G word's value that homes the axes (G28, G30): the axis letters after it may stand bare.
 bool isHomingCode(double value);
 const GCodeInfo& info(GCode code);

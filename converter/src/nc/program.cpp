@@ -398,7 +398,7 @@ class LineParser {
       if (motion) {
         // A code of the motion group written as digits, without a point; a second after a
         // coordinate opens an upper side (noteForSides).
-        if (point || !isMotionCode(wholeNumber(significant, k)) || (sawCoordinate && sawMotion)) return begin;
+        if (point || !isWholeMotionCode(wholeNumber(significant, k)) || (sawCoordinate && sawMotion)) return begin;
         sawMotion = true;
       } else {
         const std::uint32_t bit = 1u << (c - 'A');

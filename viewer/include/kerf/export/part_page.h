@@ -45,9 +45,9 @@ struct PartPageOptions {
 
 struct PartPage {
   std::string html;
-  std::size_t triangles = 0;  ///< in the page
-  bool coarse = false;        ///< at the asked tolerance the part has more than the budget's triangles
-  bool truncated = false;     ///< the scene's own limit (SceneOptions::maxTriangles) was reached
+  std::size_t triangles = 0;      ///< in the page
+  bool coarse = false;            ///< at the asked tolerance the part has more than the budget's triangles
+  bool truncated = false;         ///< the scene's own limit (SceneOptions::maxTriangles) was reached
   std::size_t constructions = 0;  ///< blocks whose construction the page draws
 };
 

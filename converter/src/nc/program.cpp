@@ -24,13 +24,20 @@ namespace {
 // ---- 1. characters and numbers --------------------------------------------------------------
 
 /// What a byte is, as bits: one look per character on the common road.
-enum CharClass : std::uint8_t { kBlank = 1, kDigit = 2, kPlainLetter = 4 };
+enum CharClass : std::uint8_t {
+  kBlank = 1,
+  kDigit = 2,
+  kPlainLetter = 4,      ///< the letters of Block::plain's words other than G
+  kMotionLetter = 8,     ///< G
+  kEndsPlainNumber = 16  ///< may follow a number in a plain block: a blank, a word's letter, ';', the line's end
+};
 constexpr std::array<std::uint8_t, 256> kCharClass = [] {
   std::array<std::uint8_t, 256> t{};
-  for (const unsigned char c : {' ', '\t', '\r', '\f', '\v'}) t[c] = kBlank;
+  for (const unsigned char c : {' ', '\t', '\r', '\f', '\v'}) t[c] = kBlank | kEndsPlainNumber;
   for (unsigned char c = '0'; c <= '9'; ++c) t[c] = kDigit;
-  // The letters of Block::plain's words other than G.
-  for (const unsigned char c : {'X', 'Y', 'I', 'J', 'R', 'F'}) t[c] = kPlainLetter;
+  for (const unsigned char c : {'X', 'Y', 'I', 'J', 'R', 'F'}) t[c] = kPlainLetter | kEndsPlainNumber;
+  t['G'] = kMotionLetter | kEndsPlainNumber;
+  for (const unsigned char c : {';', '\n', '\0'}) t[c] = kEndsPlainNumber;
   return t;
 }();
 bool hasClass(char c, std::uint8_t bits) { return (kCharClass[static_cast<unsigned char>(c)] & bits) != 0; }
@@ -80,6 +87,14 @@ struct NumberScan {
 constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,
                                         1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19};
 
+/// How scanNumber finds the end of a number's digits.
+enum class DigitsEnd {
+  AtLimit,     ///< at `limit` or the first character that is not a digit
+  AtNonDigit,  ///< at the first character that is not a digit, wherever it is: for text a NUL
+               ///< follows (a std::string's, as SourceFile's) and where one of the number's own
+               ///< characters or the line's end follows the number (a block the parse accepted)
+};
+
 /// [sign] digits [. digits] in text[pos, limit) — no exponent, no spaces inside. Leading zeros are
 /// not significant; more than 18 significant digits before the point are refused. The value is the
 /// correctly rounded double nearest the decimal (what std::from_chars gives), unless `convert` is
@@ -87,8 +102,10 @@ constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,
 /// is m / 10^k (k digits after the point): both operands are exact doubles and IEEE division rounds correctly, so the
 /// quotient is the correctly rounded value (Clinger, "How to read floating point numbers
 /// accurately", PLDI 1990: the fast path). Longer numbers go to std::from_chars.
+template <DigitsEnd kEnd = DigitsEnd::AtLimit>
 [[gnu::always_inline]] inline NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit,
                                                     bool convert = true) {
+  constexpr bool kChecked = kEnd == DigitsEnd::AtLimit;
   NumberScan s;
   const char* const base = text.data();
   const char* p = base + pos;
@@ -96,18 +113,20 @@ constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,
   const bool negative = p < stop && *p == '-';
   if (p < stop && (*p == '+' || *p == '-')) ++p;
   const char* const first = p;
-  while (p < stop && *p == '0') ++p;  // leading zeros
+  while ((!kChecked || p < stop) && *p == '0') ++p;  // leading zeros
   const char* const significant = p;
   // The digits read as a whole number; wraps past 19 digits (then unused).
   std::uint64_t whole = 0;
-  for (unsigned d; p < stop && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p) whole = whole * 10 + d;
+  for (unsigned d; (!kChecked || p < stop) && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p)
+    whole = whole * 10 + d;
   s.integerDigits = static_cast<std::size_t>(p - significant);
   bool anyDigit = p > first;
   std::size_t fractionDigits = 0;
-  if (p < stop && *p == '.') {
+  if ((!kChecked || p < stop) && *p == '.') {
     s.hasPoint = true;
     const char* const point = ++p;
-    for (unsigned d; p < stop && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p) whole = whole * 10 + d;
+    for (unsigned d; (!kChecked || p < stop) && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p)
+      whole = whole * 10 + d;
     fractionDigits = static_cast<std::size_t>(p - point);
     anyDigit = anyDigit || p > point;
   }
@@ -236,8 +255,9 @@ class LineParser {
   std::size_t parseBlock(std::size_t i, std::size_t end, std::uint32_t line) {
     while (i < end && isBlank(text_[i])) ++i;
     if (i >= end) return end;
-    if (trySetting(i, end, line)) return end;
+    // The common block first: no setting is plain (its '=' is no plain block's character).
     if (const std::size_t next = tryPlainBlock(i, end, line); next != i) return next;
+    if (trySetting(i, end, line)) return end;
 
     Block block;
     block.firstWord = static_cast<std::uint32_t>(program_.words.size());
@@ -350,55 +370,50 @@ class LineParser {
     bool sawMotion = false, sawCoordinate = false, anyPoint = false;
     std::uint32_t integers = 0;
     Word largest;  // the block's largest integer length word, if any (largest.length > 0)
+    // The line ends at `end` with a line break or the text's end: '\n', '\r' or the NUL a
+    // std::string keeps after its text (SourceFile holds one). None is a digit, a sign or a point,
+    // so the scans below stop there without comparing with `end`.
     const char* const text = text_.data();
-    std::size_t i = begin, blockEnd = end, next = end;
-    auto wholeNumber = [&](std::size_t from, std::size_t to) {  // digits, fewer than kLargestDigits
-      std::uint64_t n = 0;
-      for (std::size_t d = from; d < to; ++d) n = n * 10 + static_cast<std::uint64_t>(text[d] - '0');
-      return n;
-    };
-    auto digitsFrom = [&](std::size_t k) {
-      while (k < end && isDigit(text[k])) ++k;
-      return k;
-    };
-    while (i < end) {
-      const char c = text[i];
-      if (isBlank(c)) {
-        ++i;
-        continue;
-      }
+    const char* const stop = text + end;
+    const char* p = text + begin;
+    std::size_t blockEnd = end, next = end;
+    for (;;) {
+      while (isBlank(*p)) ++p;  // past stop by one at most: a '\r' before the '\n'
+      if (p >= stop) break;
+      const char c = *p;
       if (c == ';') {
-        endAtSemicolon(i, end, blockEnd, next);
+        endAtSemicolon(static_cast<std::size_t>(p - text), end, blockEnd, next);
         break;
       }
+      if (!hasClass(c, kPlainLetter | kMotionLetter) || ++count > kMostWords) return begin;
       const bool motion = c == 'G';
-      if ((!motion && !isPlainLetter(c)) || ++count > kMostWords) return begin;
       // [sign] digits [. digits], at least one digit; fewer than kLargestDigits significant
       // digits before the point.
-      std::size_t k = i + 1;
-      if (k < end && (text[k] == '+' || text[k] == '-')) {
+      const char* k = p + 1;
+      if (*k == '+' || *k == '-') {
         if (motion) return begin;
         ++k;
       }
-      const std::size_t first = k;
-      while (k < end && text[k] == '0') ++k;
-      const std::size_t significant = k;
-      k = digitsFrom(k);
-      const std::size_t integerDigits = k - significant;
+      const char* const first = k;
+      while (*k == '0') ++k;
+      const char* const significant = k;
+      while (isDigit(*k)) ++k;
+      const auto integerDigits = static_cast<std::size_t>(k - significant);
       bool anyDigit = k > first;
-      const bool point = k < end && text[k] == '.';
+      const bool point = *k == '.';
       if (point) {
-        const std::size_t fraction = k + 1;
-        k = digitsFrom(fraction);
+        const char* const fraction = ++k;
+        while (isDigit(*k)) ++k;
         anyDigit = anyDigit || k > fraction;
       }
       if (!anyDigit || integerDigits >= kLargestDigits) return begin;
-      if (k < end && !hasClass(text[k], kBlank | kPlainLetter) && text[k] != ';' && text[k] != 'G')
-        return begin;  // what follows makes it no number, or is no plain word
+      if (!hasClass(*k, kEndsPlainNumber)) return begin;  // what follows makes it no number, or is no plain word
       if (motion) {
         // A code of the motion group written as digits, without a point; a second after a
         // coordinate opens an upper side (noteForSides).
-        if (point || !isWholeMotionCode(wholeNumber(significant, k)) || (sawCoordinate && sawMotion)) return begin;
+        std::uint64_t code = 0;
+        for (const char* d = significant; d < k; ++d) code = code * 10 + static_cast<std::uint64_t>(*d - '0');
+        if (point || !isWholeMotionCode(code) || (sawCoordinate && sawMotion)) return begin;
         sawMotion = true;
       } else {
         const std::uint32_t bit = 1u << (c - 'A');
@@ -410,17 +425,18 @@ class LineParser {
             anyPoint = true;
           } else {
             ++integers;
-            const double v = scanNumber(text_, i + 1, end).value;
+            const auto at = static_cast<std::size_t>(p - text);
+            const double v = scanNumber(text_, at + 1, end).value;
             if (std::abs(v) > std::abs(largest.value) || largest.length == 0) {
               largest.letter = c;
-              largest.offset = static_cast<std::uint32_t>(i);
-              largest.length = static_cast<std::uint16_t>(k - i);
+              largest.offset = static_cast<std::uint32_t>(at);
+              largest.length = static_cast<std::uint16_t>(k - p);
               largest.value = v;
             }
           }
         }
       }
-      i = k;
+      p = k;
     }
     if (count == 0) return begin;
     program_.anyDecimalPoint = program_.anyDecimalPoint || anyPoint;
@@ -944,35 +960,40 @@ std::span<const Word> WordReader::words(const Block& b) {
   // A plain block parsed without an error: words of an upper-case letter and a number (with
   // blanks between them allowed), blanks, comments closed on the line, a leading '/'. The same
   // scanNumber as the parse, so each word comes out as the parse made it (parser_test holds it).
+  // The parse accepted the block, so each number ends at a character that is not part of it, and
+  // the text ends with a NUL: the digits' scan needs no limit.
   const std::string_view text = program_.source->text();
-  const std::size_t end = std::min<std::size_t>(text.size(), std::size_t{b.offset} + b.length);
+  const char* const base = text.data();
+  const char* p = base + b.offset;
+  const char* const stop = base + std::min<std::size_t>(text.size(), std::size_t{b.offset} + b.length);
   if (buffer_.size() < b.wordCount) buffer_.resize(b.wordCount);
-  std::size_t count = 0;
-  for (std::size_t i = b.offset; i < end && count < b.wordCount;) {
-    const char c = text[i];
-    if (c == '(') {
-      const std::size_t close = text.find(')', i);
-      if (close == std::string_view::npos) break;
-      i = close + 1;
-      continue;
-    }
+  Word* const first = buffer_.data();
+  Word* out = first;
+  Word* const last = first + b.wordCount;
+  while (p < stop && out < last) {
+    const char c = *p;
     if (!isLetter(c)) {
-      ++i;
+      if (c == '(') {
+        const void* close = std::memchr(p, ')', static_cast<std::size_t>(stop - p));
+        if (!close) break;
+        p = static_cast<const char*>(close);
+      }
+      ++p;
       continue;
     }
-    const std::size_t start = i++;
-    while (i < end && isBlank(text[i])) ++i;
-    const NumberScan n = scanNumber(text, i, end);
-    Word& w = buffer_[count++];
-    w = Word{};
-    w.letter = c;
-    w.hasPoint = n.hasPoint;
-    w.offset = static_cast<std::uint32_t>(start);
-    w.length = static_cast<std::uint16_t>(std::min<std::size_t>(n.end - start, 0xFFFF));
-    w.value = n.value;
-    i = std::max(n.end, i);
+    const char* const letter = p++;
+    while (isBlank(*p)) ++p;
+    const NumberScan n = scanNumber<DigitsEnd::AtNonDigit>(text, static_cast<std::size_t>(p - base),
+                                                           static_cast<std::size_t>(stop - base));
+    const auto offset = static_cast<std::size_t>(letter - base);
+    *out++ = Word{.letter = c,
+                  .hasPoint = n.hasPoint,
+                  .length = static_cast<std::uint16_t>(std::min<std::size_t>(n.end - offset, 0xFFFF)),
+                  .offset = static_cast<std::uint32_t>(offset),
+                  .value = n.value};
+    p = std::max(base + n.end, p);
   }
-  return {buffer_.data(), count};
+  return {first, static_cast<std::size_t>(out - first)};
 }
 
 // ---- 6. the whole text ------------------------------------------------------------------------

@@ -81,24 +81,33 @@ class StructureFinder {
     auto nextOffset = offsetStarts.begin();
     std::size_t from = c.first;
     bool offsetSince = spanStartingAt(c.first) != nullptr;  // a G41/G42 run began in [from, k]
-    double area = 0.0, length = 0.0;  // of the moves [from, k]: the path back to the hole encloses area
+    // The area and length of the moves [from, summed), summed up to k only where a return to the
+    // hole asks for them (the area of an arc takes a sine): the path back to the hole encloses area.
+    double area = 0.0, length = 0.0;
+    std::size_t summed = from;
+    auto enclosesArea = [&](std::size_t k) {
+      for (; summed <= k; ++summed) {
+        const Segment& s = moves_[summed].lower;
+        area += geometry::areaTerm(s);
+        length += s.length();
+      }
+      return std::abs(area) > tol_ * length;
+    };
     for (std::size_t k = c.first; k + 1 < c.end; ++k) {
       const Segment& s = moves_[k].lower;
-      area += geometry::areaTerm(s);
-      length += s.length();
       const bool offsetNext = nextOffset != offsetStarts.end() && *nextOffset == k + 1;
       if (offsetNext) ++nextOffset;
       // A G41/G42 run ends the pass before it, unless that is only an approach (a move or two
       // without an offset): then the run's pass takes it in.
       const bool offsetSplit = offsetNext && (offsetSince || k + 1 - from >= 3);
-      const bool passBack =
-          atHole(c, s.end) && k + 1 - from >= 3 && c.end - (k + 1) >= 3 && std::abs(area) > tol_ * length;
+      const bool passBack = atHole(c, s.end) && k + 1 - from >= 3 && c.end - (k + 1) >= 3 && enclosesArea(k);
       if (offsetNext && !offsetSplit) offsetSince = true;
       if (!offsetSplit && !passBack) continue;
       starts.push_back(k + 1);
       from = k + 1;
       offsetSince = offsetNext;
       area = length = 0.0;
+      summed = from;
     }
     return starts;
   }

@@ -681,39 +681,23 @@ bool strictlyOneSide(const Segment& a, const Segment& b, double tol) {
 
 constexpr std::uint32_t kDead = std::numeric_limits<std::uint32_t>::max();  // a segment too short to test
 
-/// One float down or up (kerf/geometry/float_steps.h).
-float nextDown(float f) { return floatStepDownIf(f, 1); }
-float nextUp(float f) { return floatStepUpIf(f, 1); }
-
-/// A box in floats, rounded outwards: half the memory of a Box, and a filter that never drops a
-/// pair whose boxes overlap (only lets a few more through, which the exact tests settle).
-struct LooseBox {
-  float minX, minY, maxX, maxY;
-  // A finite double past the floats' range rounds to an infinity; the next float inwards, the
-  // largest finite one, is then on the right side of it, as std::nextafter gives.
-  static float below(double v) { return floatBelow(v); }
-  static float above(double v) { return floatAbove(v); }
-  /// One float further out than the rounding needs: then two points within the tolerance of each
-  /// other, as (p - q).norm() <= tol computes it, lie in boxes that overlap by this test, whatever
-  /// the rounding of that norm and of the test's own sums (a float step is 2^29 times the double
-  /// steps those are made of). The first loop found from the sweep's pairs relies on it.
-  static LooseBox around(const Box& b) {
-    return {nextDown(below(b.min.x())), nextDown(below(b.min.y())), nextUp(above(b.max.x())), nextUp(above(b.max.y()))};
-  }
-};
-
-/// A LooseBox as the box sweep keeps it: its far sides moved out by the tolerance once, in doubles,
-/// and rounded up to floats (reach >= d(max) + tol), so that whether two boxes come within tol of
-/// each other is four comparisons of floats: every pair with d(a.min) <= d(b.max) + tol on both
-/// axes both ways passes (a min is a float, so min <= reach follows), and a box leaves the active
-/// list only when reach < the entering box's min, which implies d(max) < d(min) - tol (two floats
-/// lie a float step apart, far more than the rounding of doubles): none leaves that the double
-/// test kept.
+/// A segment's box as the box sweep keeps it, in floats (half the memory of a Box), a filter that
+/// never drops a pair whose boxes come within tol of each other (it only lets a few more through,
+/// which the exact tests settle). The near sides are rounded down by more than a float step
+/// (floatWellBelow); the far sides are moved out by the tolerance once, in doubles, and rounded up
+/// the same way (reach > d(max) + tol by a float step). So whether two boxes come within tol is four
+/// comparisons of floats: every pair with d(a.min) <= d(b.max) + tol on both axes both ways passes,
+/// and a box leaves the active list only when reach < the entering box's min, which implies
+/// d(max) < d(min) - tol: none leaves that the double test kept. The float step to spare makes two
+/// points within the tolerance of each other, as (p - q).norm() <= tol computes it, lie in boxes
+/// that meet by this test, whatever the rounding of that norm and of the test's own sums (a float
+/// step is 2^29 times the double steps those are made of). The first loop found from the sweep's
+/// pairs relies on it.
 struct SweepBox {
   float minX, minY, reachX, reachY;
-  static SweepBox of(const LooseBox& b, double tol) {
-    return {b.minX, b.minY, LooseBox::above(static_cast<double>(b.maxX) + tol),
-            LooseBox::above(static_cast<double>(b.maxY) + tol)};
+  static SweepBox around(const Box& b, double tol) {
+    return {floatWellBelow(b.min.x()), floatWellBelow(b.min.y()), floatWellAbove(b.max.x() + tol),
+            floatWellAbove(b.max.y() + tol)};
   }
   [[nodiscard]] bool meets(const SweepBox& b) const {
     return minX <= b.reachX && b.minX <= reachX && minY <= b.reachY && b.minY <= reachY;
@@ -916,7 +900,7 @@ class SelfIntersectionSearch {
   // each box is made again where it is needed (boxOf).
   std::vector<SweepBox> boxes_;
   [[nodiscard]] SweepBox boxOf(std::size_t i) const {
-    return boxes_.empty() ? SweepBox::of(LooseBox::around(path_[i].bounds()), tol_) : boxes_[i];
+    return boxes_.empty() ? SweepBox::around(path_[i].bounds(), tol_) : boxes_[i];
   }
   // The first loop (findLoop): the least (k, v), v < k, whose end of k lies within tol of the start
   // of v, as k << 32 | v, among the pairs the box sweep tested.
@@ -953,7 +937,7 @@ void SelfIntersectionSearch::measure() {
         e.lowX = std::min(e.lowX, b.min.x());
         e.highX = std::max(e.highX, b.max.x());
         e.widths += b.max.x() - b.min.x() + 2 * tol_;
-        const SweepBox box = SweepBox::of(LooseBox::around(b), tol_);
+        const SweepBox box = SweepBox::around(b, tol_);
         if (keepBoxes) boxes_[i] = box;
         if (boxesFirst()) byMinX_[i] = {box.minX, static_cast<std::uint32_t>(i)};
         if (options_.findLoop && e.selfLoop == SIZE_MAX && near(path_[i].end, path_[i].start, tol_)) e.selfLoop = i;

@@ -1,41 +1,27 @@
-// Doubles rounded to floats in a chosen direction, and one float step, without branches: the
-// boxes the self-intersection sweeps keep (floats, rounded outwards) are made with these.
+// Doubles rounded to floats outwards with room to spare: the boxes the self-intersection sweeps
+// keep (floats) are made with these.
 #pragma once
 
-#include <bit>
-#include <cstdint>
+#include <cmath>
+#include <limits>
 
 namespace kerf::geometry {
 
-/// f itself when step is 0; when it is 1, the float next to f towards minus infinity, as
-/// std::nextafter(f, -infinity) gives it (+infinity gives the largest finite float; f is not
-/// -infinity or NaN). By the bits, since floats of one sign are ordered as their bits are: a
-/// positive f steps down by one, a negative one up by one, either zero goes to the least negative
-/// float. Without a branch, because which way a coordinate's rounding to a float went follows no
-/// pattern, so a branch on it is mispredicted (docs/performance.md measures the difference).
-inline float floatStepDownIf(float f, std::uint32_t step) {
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  const std::uint32_t stepped = bits - step + 2 * step * (bits >> 31);
-  const std::uint32_t fromZero = bits + step * (0x80000001U - bits);
-  const std::uint32_t zero = std::uint32_t{0} - static_cast<std::uint32_t>((bits << 1) == 0);
-  return std::bit_cast<float>((stepped & ~zero) | (fromZero & zero));
+/// A float below v by more than one float step: at most the float next below the greatest float
+/// not above v (what std::nextafter(floor-to-float(v), -infinity) gives), for any v that is not
+/// NaN. v moved down by 2^-21 of itself and by the least normal float, then rounded to the nearest
+/// float: two float steps below v are at most 2^-22 |v| (a float's step is at most 2^-23 of it) or
+/// 2^-148 (steps below the normal floats), the rounding moves it at most half a step back, and
+/// the sum's own rounding in doubles is 2^-29 of a float step. Past the floats' range it is the
+/// float next below the largest one (-infinity below them all). A few float steps wider than the
+/// tightest such float, and six instructions where the tightest takes twenty: a box is made of four.
+inline float floatWellBelow(double v) {
+  constexpr double kLowestTop = 0x1.fffffcp127;  // the float next below the largest float
+  const double w = v - (std::abs(v) * 0x1p-21 + 0x1p-126);
+  return static_cast<float>(w < kLowestTop ? w : kLowestTop);  // +infinity made a NaN: the top
 }
 
-/// f itself when step is 0; when it is 1, the float next to f towards plus infinity (f is not
-/// +infinity or NaN).
-inline float floatStepUpIf(float f, std::uint32_t step) { return -floatStepDownIf(-f, step); }
-
-/// The greatest float not above v (v not NaN): past the floats' range, the largest finite float
-/// of v's sign, or minus infinity below them all.
-inline float floatBelow(double v) {
-  const auto f = static_cast<float>(v);
-  return floatStepDownIf(f, static_cast<std::uint32_t>(static_cast<double>(f) > v));
-}
-
-/// The least float not below v (v not NaN).
-inline float floatAbove(double v) {
-  const auto f = static_cast<float>(v);
-  return floatStepUpIf(f, static_cast<std::uint32_t>(static_cast<double>(f) < v));
-}
+/// A float above v by more than one float step (floatWellBelow mirrored).
+inline float floatWellAbove(double v) { return -floatWellBelow(-v); }
 
 }  // namespace kerf::geometry

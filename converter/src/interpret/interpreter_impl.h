@@ -60,6 +60,13 @@ constexpr std::uint32_t letterBits(std::string_view letters) {
   return bits;
 }
 
+/// Letters a profile may name as codes (T84) or as a whole letter (C): never the geometry's.
+constexpr bool profileMayName(char c) {
+  return c == 'A' || c == 'C' || c == 'E' || c == 'Q' || c == 'S' || c == 'T' || c == 'W' || c == 'Z';
+}
+/// A letter whose word only takes its slot in BlockWords: no G or M, none a profile may name.
+constexpr bool isPlainAddress(char c) { return c != 'G' && c != 'M' && !profileMayName(c); }
+
 struct BlockWords {
   // A table entry holds something only where its mask has the bit (m and machine: below their
   // counts); the rest is left unwritten, so that making a block's BlockWords (three a block) sets
@@ -253,7 +260,17 @@ class Interpreter {
   Flow executeProgramFlow(const BlockWords& bw, std::size_t pc, std::size_t& next);
   // read_block.cpp (phase 1)
   bool readBlock(const Block& block, BlockWords& bw, BlockWords& ubw);
-  void readWord(const Word& w, BlockWords& bw);
+  /// The word into bw: an address letter's slot (the common word, inline), or readCodeWord.
+  void readWord(const Word& w, BlockWords& bw) {
+    if (!options_.millTurn && !w.corner && isPlainAddress(w.letter) && !bw.has(w.letter)) {
+      bw.setLetter(w.letter, &w);
+      return;
+    }
+    readCodeWord(w, bw);
+  }
+  /// A G or M code, a code or letter the profile may name, a face program's word, a corner word,
+  /// or a letter the block already has (reported).
+  void readCodeWord(const Word& w, BlockWords& bw);
   bool splitsBlocks() const;
   // fill_in.cpp (phase 2)
   BlockPlan fillIn(const Block& block, const BlockWords& bw, const BlockWords& ubw) const;
@@ -277,17 +294,17 @@ class Interpreter {
   bool executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
   bool executeMove(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
   bool buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
-                 const std::string& side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
+                 std::string_view side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
                  Move* record);
   /// The line or arc from start to end with the block's I J or R; I J are turned by centreTurn
   /// degrees (a mill-turn polar frame; 0 elsewhere). False, with the error reported, when it
   /// cannot be built.
   bool buildSegment(const BlockWords& w, Motion motion, const Vec2& start, const Vec2& end, const Vec2& shift,
-                    double centreTurn, const std::string& side, const Block& block, const Word* motionWord,
-                    Segment& out, Move* record);
+                    double centreTurn, std::string_view side, const Block& block, const Word* motionWord, Segment& out,
+                    Move* record);
   void tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift, bool closedAsUsed,
                       std::uint32_t line);
-  void reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block, const std::string& side);
+  void reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block, std::string_view side);
   void push(Move&& m, Segment upper);
   // corner.cpp
   /// bw, or (with the profile's `corner_r = bare`) its copy in bare whose R rounds the corner.

@@ -6,19 +6,20 @@
 namespace kerf::converter::interp {
 
 void Interpreter::reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block,
-                            const std::string& side) {
+                            std::string_view side) {
   const double unit = inch_ ? 25.4 : 1.0;
   const char* u = inch_ ? " in" : " mm";
   switch (build.status) {
     case geometry::ArcStatus::RadiusTooSmall:
       if (const Word* r = bw['R'])  // an arc given by R: always here
         diags_.error(Code::RadiusTooSmall, src_, r->span(),
-                     side + "arc radius " + formatFixed(std::abs(length(*r)) / unit, 3) +
+                     std::string(side) + "arc radius " + formatFixed(std::abs(length(*r)) / unit, 3) +
                          " is shorter than half the chord " + formatFixed(build.halfChord / unit, 3) + u);
       break;
     case geometry::ArcStatus::FullCircleWithRadius:
       diags_.error(Code::FullCircleWithRadius, src_, bw['R']->span(),
-                   side + "arc ends where it starts, and R cannot describe a full circle", "give the centre with I J");
+                   std::string(side) + "arc ends where it starts, and R cannot describe a full circle",
+                   "give the centre with I J");
       break;
     case geometry::ArcStatus::ZeroRadius:
       diags_.error(Code::ZeroRadius, src_,
@@ -26,7 +27,7 @@ void Interpreter::reportArc(const geometry::ArcBuild& build, const BlockWords& b
                           : bw.has('I') ? bw['I']
                                         : bw['J'],
                           block),
-                   side + "arc radius is zero",
+                   std::string(side) + "arc radius is zero",
                    bw.has('R') || options_.arcCentre == ArcCentreMode::Absolute
                        ? std::string{}
                        : "if the post writes I J as absolute centres (Charmilles Robofil does), use --arc-centre "
@@ -34,7 +35,7 @@ void Interpreter::reportArc(const geometry::ArcBuild& build, const BlockWords& b
       break;
     case geometry::ArcStatus::EndOffCircle:
       diags_.error(Code::ArcEndOffCircle, src_, spanOf(bw.has('I') ? bw['I'] : bw['J'], block),
-                   side + "arc end point is " + formatFixed(std::abs(build.radiusError) / unit, 3) + u +
+                   std::string(side) + "arc end point is " + formatFixed(std::abs(build.radiusError) / unit, 3) + u +
                        " off the circle through the start (limit " + formatFixed(tolerance_.centreAbsolute / unit, 3) +
                        u + ")",
                    options_.arcCentre == ArcCentreMode::Incremental
@@ -64,8 +65,8 @@ void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2&
 }
 
 bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
-                            const std::string& side, const Block& block, const Word* motionWord, Segment& out,
-                            Vec2& end, Move* record) {
+                            std::string_view side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
+                            Move* record) {
   Vec2 endProgram = start + shift;  // in program coordinates; unwritten axes stay
   if (const Word* x = w[xl]) endProgram.x() = incremental_ ? endProgram.x() + length(*x) : length(*x);
   if (const Word* y = w[yl]) endProgram.y() = incremental_ ? endProgram.y() + length(*y) : length(*y);
@@ -74,7 +75,7 @@ bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion
 }
 
 bool Interpreter::buildSegment(const BlockWords& w, Motion motion, const Vec2& start, const Vec2& end,
-                               const Vec2& shift, double centreTurn, const std::string& side, const Block& block,
+                               const Vec2& shift, double centreTurn, std::string_view side, const Block& block,
                                const Word* motionWord, Segment& out, Move* record) {
   const bool hasCentre = w.has('I') || w.has('J');
   const bool hasRadius = w.has('R');
@@ -90,13 +91,14 @@ bool Interpreter::buildSegment(const BlockWords& w, Motion motion, const Vec2& s
   const geometry::ArcDirection dir =
       motion == Motion::Clockwise ? geometry::ArcDirection::Clockwise : geometry::ArcDirection::CounterClockwise;
   if (hasRadius && hasCentre) {
-    diags_.error(Code::RadiusAndCentre, src_, w['R']->span(), side + "arc has both R and I/J: give one of them");
+    diags_.error(Code::RadiusAndCentre, src_, w['R']->span(),
+                 std::string(side) + "arc has both R and I/J: give one of them");
     return false;
   }
   if (!hasRadius && !hasCentre) {
     diags_.error(Code::ArcWithoutCentre, src_,
                  motionWord && motionWord->offset >= block.offset ? motionWord->span() : block.span(),
-                 side + "arc needs its centre (I J) or its radius (R)",
+                 std::string(side) + "arc needs its centre (I J) or its radius (R)",
                  side.empty() ? std::string{} : "in xyuv-abs and sodick-colon the upper arc has its own I J or R");
     return false;
   }

@@ -11,11 +11,6 @@ bool isUpperLetter(char c) {
   return c == 'X' || c == 'Y' || c == 'U' || c == 'V' || c == 'I' || c == 'J' || c == 'R' || c == 'K' || c == 'L';
 }
 
-/// Letters a profile may name as codes (T84) or as a whole letter (C): never the geometry's.
-bool profileMayName(char c) {
-  return c == 'A' || c == 'C' || c == 'E' || c == 'Q' || c == 'S' || c == 'T' || c == 'W' || c == 'Z';
-}
-
 /// The profile's entry for a word's code (G60, T84) or its letter (C); null when it has none.
 const KnownCode* profileCode(const MachineProfile& m, const Word& w) {
   if (m.codes.empty()) return nullptr;
@@ -41,7 +36,7 @@ bool Interpreter::splitsBlocks() const {
          dialect_ == Dialect::SodickColon;
 }
 
-void Interpreter::readWord(const Word& w, BlockWords& bw) {
+void Interpreter::readCodeWord(const Word& w, BlockWords& bw) {
   if (options_.millTurn && readFaceWord(w)) return;
   auto addMachine = [&](const KnownCode* k) {
     if (bw.machineCount == bw.machine.size()) {

@@ -9,13 +9,13 @@
 
 namespace kerf::converter {
 namespace {
-
 using G = GCode;
 using MG = ModalGroup;
+}  // namespace
 
 // Every code Kerf knows under every profile. Meanings follow RS274/NGC and the wire-EDM usage in
 // docs/formats.md; the ones with no effect on the programmed path are marked so.
-constexpr std::array<GCodeInfo, 45> kGCodes = {{
+constexpr std::array<GCodeInfo, kGCodeCount> kGCodeTable = {{
     {G::Rapid, 0, 0, MG::Motion, "rapid positioning (not cut)"},
     {G::Line, 1, 0, MG::Motion, "linear interpolation"},
     {G::ArcClockwise, 2, 0, MG::Motion, "circular interpolation, clockwise"},
@@ -65,6 +65,8 @@ constexpr std::array<GCodeInfo, 45> kGCodes = {{
     {G::ColonOnAlternate, 142, 0, MG::ColonMode, "different upper and lower contours (Sodick)"},
 }};
 
+namespace {
+
 constexpr std::array<MCodeInfo, 12> kMCodes = {{
     {MCode::ProgramStop, 0, "program stop"},
     {MCode::OptionalStop, 1, "optional stop"},
@@ -81,14 +83,14 @@ constexpr std::array<MCodeInfo, 12> kMCodes = {{
 }};
 
 constexpr std::uint8_t kNoCode = 0xFF;
-/// kGCodes' index of each whole code G0 - G149 (kNoCode where there is none): a G word's entry in
+/// kGCodeTable' index of each whole code G0 - G149 (kNoCode where there is none): a G word's entry in
 /// one look, not a pass over the table.
 constexpr std::array<std::uint8_t, 150> kWholeCodes = [] {
   std::array<std::uint8_t, 150> index{};
   index.fill(kNoCode);
-  for (std::size_t k = 0; k < kGCodes.size(); ++k)
-    if (kGCodes[k].fraction == 0 && kGCodes[k].number < static_cast<int>(index.size()))
-      index[static_cast<std::size_t>(kGCodes[k].number)] = static_cast<std::uint8_t>(k);
+  for (std::size_t k = 0; k < kGCodeTable.size(); ++k)
+    if (kGCodeTable[k].fraction == 0 && kGCodeTable[k].number < static_cast<int>(index.size()))
+      index[static_cast<std::size_t>(kGCodeTable[k].number)] = static_cast<std::uint8_t>(k);
   return index;
 }();
 
@@ -131,9 +133,9 @@ const GCodeInfo* findGCode(int number, int fraction) {
   }
   if (fraction == 0 && number < static_cast<int>(kWholeCodes.size())) {
     const std::uint8_t k = kWholeCodes[static_cast<std::size_t>(number)];
-    return k == kNoCode ? nullptr : &kGCodes[k];
+    return k == kNoCode ? nullptr : &kGCodeTable[k];
   }
-  for (const GCodeInfo& g : kGCodes)
+  for (const GCodeInfo& g : kGCodeTable)
     if (g.number == number && g.fraction == fraction) return &g;
   return nullptr;
 }
@@ -156,13 +158,11 @@ bool isHomingCode(double value) {
 
 // The table is in the enum's order, so a code's entry is found by its value.
 constexpr bool inEnumOrder() {
-  for (std::size_t k = 0; k < kGCodes.size(); ++k)
-    if (static_cast<std::size_t>(kGCodes[k].code) != k) return false;
+  for (std::size_t k = 0; k < kGCodeTable.size(); ++k)
+    if (static_cast<std::size_t>(kGCodeTable[k].code) != k) return false;
   return true;
 }
-static_assert(inEnumOrder(), "kGCodes must list the codes in the order of enum GCode");
-
-const GCodeInfo& info(GCode code) { return kGCodes[static_cast<std::size_t>(code)]; }
+static_assert(inEnumOrder(), "kGCodeTable must list the codes in the order of enum GCode");
 
 std::string gName(int number, int fraction) {
   char buf[24];

@@ -3,6 +3,8 @@
 // these come from its profile (machine.h).
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -96,7 +98,10 @@ bool isMotionCode(double value);
 bool isWholeMotionCode(std::uint64_t number);
 /// A G word's value that homes the axes (G28, G30): the axis letters after it may stand bare.
 bool isHomingCode(double value);
-const GCodeInfo& info(GCode code);
+/// The table of every code, in the order of enum GCode (gcode.cpp).
+inline constexpr std::size_t kGCodeCount = static_cast<std::size_t>(GCode::ColonOnAlternate) + 1;
+extern const std::array<GCodeInfo, kGCodeCount> kGCodeTable;
+inline const GCodeInfo& info(GCode code) { return kGCodeTable[static_cast<std::size_t>(code)]; }
 /// "G02", "G12.1".
 std::string gName(int number, int fraction = 0);
 std::string gName(GCode code);

@@ -61,11 +61,13 @@ constexpr std::uint32_t letterBits(std::string_view letters) {
 }
 
 /// Letters a profile may name as codes (T84) or as a whole letter (C): never the geometry's.
-constexpr bool profileMayName(char c) {
-  return c == 'A' || c == 'C' || c == 'E' || c == 'Q' || c == 'S' || c == 'T' || c == 'W' || c == 'Z';
+inline constexpr std::uint32_t kProfileLetters = letterBits("ACEQSTWZ");
+constexpr bool profileMayName(char c) { return (kProfileLetters >> static_cast<unsigned>(c - 'A') & 1U) != 0; }
+/// A word's letter (upper case A-Z) that only takes its slot in BlockWords: no G or M, none a
+/// profile may name.
+constexpr bool isPlainAddress(char c) {
+  return (~(kProfileLetters | letterBits("GM")) >> static_cast<unsigned>(c - 'A') & 1U) != 0;
 }
-/// A letter whose word only takes its slot in BlockWords: no G or M, none a profile may name.
-constexpr bool isPlainAddress(char c) { return c != 'G' && c != 'M' && !profileMayName(c); }
 
 struct BlockWords {
   // A table entry holds something only where its mask has the bit (m and machine: below their

@@ -125,8 +125,8 @@ void Interpreter::readCodeWord(const Word& w, BlockWords& bw) {
 /// In a two-sided dialect the upper side's coordinates and motion word go to ubw; every other word
 /// (F, M, modal G codes) belongs to the block as a whole.
 bool Interpreter::readBlock(const Block& block, BlockWords& bw, BlockWords& ubw) {
-  const bool split = splitsBlocks();
   const auto words = words_.words(block);
+  const bool split = block.upperFrom < words.size() && splitsBlocks();
   for (std::size_t k = 0; k < words.size(); ++k) {
     const Word& w = words[k];
     const bool upperSide =

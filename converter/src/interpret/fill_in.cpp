@@ -39,10 +39,10 @@ BlockPlan Interpreter::fillIn(const Block& block, const BlockWords& bw, const Bl
       for (char c : {'X', 'Y', 'U', 'V', 'I', 'J', 'R', 'K', 'L'})
         if (!p.unknownValue && isValueUnknown((*side)[c])) p.unknownValue = (*side)[c];
   for (std::size_t k = 0; k < bw.machineCount; ++k) {
-    const KnownCode* code = bw.machine[k].second;
+    const KnownCode* code = bw.machine[k].code;
     if (code->effect == CodeEffect::Position && !p.positionCode) {
       p.positionCode = code;
-      p.positionCodeWord = bw.machine[k].first;
+      p.positionCodeWord = bw.machine[k].word;
     }
     if (code->effect == CodeEffect::NoMotion) p.noMotion = true;
   }

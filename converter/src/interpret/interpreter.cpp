@@ -258,7 +258,7 @@ Flow Interpreter::executeProgramFlow(const BlockWords& bw, std::size_t pc, std::
     if (f == Flow::Stop) return f;
   }
   for (std::size_t k = 0; k < bw.machineCount; ++k)
-    if (bw.machine[k].second->effect == CodeEffect::ProgramEnd) {
+    if (bw.machine[k].code->effect == CodeEffect::ProgramEnd) {
       toolpath_.endedProperly = true;
       return Flow::Stop;
     }

@@ -80,8 +80,13 @@ struct BlockWords {
   std::array<GCode, static_cast<std::size_t>(ModalGroup::Count)> gCode;
   std::array<const Word*, 4> m;  // M codes the standard set or no profile knows
   std::size_t mCount = 0;
-  /// Codes the machine profile knows (G, M, T, C ... and macro calls), in the order written.
-  std::array<std::pair<const Word*, const KnownCode*>, 6> machine;
+  /// Codes the machine profile knows (G, M, T, C ... and macro calls), in the order written. A
+  /// plain struct, not a std::pair, whose constructor would clear all six for every block.
+  struct MachineWord {
+    const Word* word;
+    const KnownCode* code;
+  };
+  std::array<MachineWord, 6> machine;
   std::size_t machineCount = 0;
   /// The corner at the block's end: Fanuc's `,R` and `,C` (Word::corner), or a bare R on a cut
   /// block where the profile reads it so (`cut_r = corner`, NCVC).

@@ -32,8 +32,8 @@ bool Interpreter::recordGuides(const BlockWords& bw, const Block& block, const s
 
 Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) {
   for (std::size_t k = 0; k < bw.machineCount; ++k) {
-    const Word& w = *bw.machine[k].first;
-    const KnownCode& code = *bw.machine[k].second;
+    const Word& w = *bw.machine[k].word;
+    const KnownCode& code = *bw.machine[k].code;
     const std::string key = w.isNumber() ? codeKey(w.letter, w.value) : std::string(1, w.letter);
     const std::string as = written(src_, w);
     CodeEffect effect = code.effect;

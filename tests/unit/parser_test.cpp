@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -26,7 +27,8 @@ namespace {
 
 Program parse(const SourceFile& src, Diagnostics& d) { return parseProgram(src, d); }
 
-/// Every block's words in order, a plain block's read again from the text (WordReader).
+/// Every block's words in order, a plain block's as the parse kept them or, once given back,
+/// parsed again (WordReader).
 std::vector<Word> allWords(const Program& p) {
   WordReader reader(p);
   std::vector<Word> out;
@@ -35,6 +37,18 @@ std::vector<Word> allWords(const Program& p) {
     out.insert(out.end(), words.begin(), words.end());
   }
   return out;
+}
+
+/// The same words: letter, value, point, kind, corner, column and length.
+::testing::AssertionResult sameWords(const std::vector<Word>& a, const std::vector<Word>& b) {
+  if (a.size() != b.size()) return ::testing::AssertionFailure() << a.size() << " words against " << b.size();
+  auto fields = [](const Word& w) {
+    return std::tuple(w.letter, w.value, w.hasPoint, w.kind, w.corner, w.length, w.offset);
+  };
+  for (std::size_t k = 0; k < a.size(); ++k)
+    if (fields(a[k]) != fields(b[k]))
+      return ::testing::AssertionFailure() << "word " << k << " at offset " << a[k].offset << " differs";
+  return ::testing::AssertionSuccess();
 }
 
 TEST(parser_test, words_keep_offset_line_and_column) {
@@ -62,7 +76,7 @@ TEST(parser_test, numbers_are_correctly_rounded) {
   SourceFile src("p.nc", "X0.1 Y-000000.1300 I123456.789012 J.5 R5.\n");
   Diagnostics d;
   const Program p = parse(src, d);
-  EXPECT_TRUE(p.words.empty());  // a plain block's words are read again when needed
+  EXPECT_TRUE(p.words.empty());  // a plain block's words are kept apart (Program::plainWords)
   const std::vector<Word> words = allWords(p);
   ASSERT_EQ(words.size(), 5u);
   EXPECT_EQ(words[0].value, 0.1);
@@ -533,9 +547,10 @@ std::string readAll(const std::filesystem::path& path) {
 
 }  // namespace
 
-// The parse keeps no word of a plain block; WordReader reads them again from the text. Over every
-// sample and real program, each plain block's words as read again equal the words the parser
-// makes of the same text when the block is not plain (an M word added at its end).
+// The parse keeps a plain block's words apart (Program::plainWords), whichever road read it, and
+// WordReader parses the block again where they were given back. Over every sample and real
+// program, each plain block's words, as kept and as parsed again, equal the words the parser makes
+// of the same text when the block is not plain (an M word added at its end).
 TEST(parser_test, plain_blocks_read_again_as_the_parse_read_them) {
   namespace fs = std::filesystem;
   std::vector<fs::path> files;
@@ -551,6 +566,9 @@ TEST(parser_test, plain_blocks_read_again_as_the_parse_read_them) {
     Diagnostics d;
     const Program p = parse(src, d);
     WordReader reader(p);
+    const std::vector<Word> kept = allWords(p);
+    p.plainWords.giveBackBefore(std::numeric_limits<std::uint32_t>::max());
+    ASSERT_TRUE(sameWords(allWords(p), kept)) << file << ": the words parsed again and those kept";
     for (const Block& b : p.blocks) {
       if (!b.plain) continue;
       const std::string text = std::string(p.textOf(b)) + " M0";
@@ -594,7 +612,7 @@ TEST(parser_test, numbers_convert_as_from_chars_converts_them) {
     if (n.find_first_of("0123456789") == std::string::npos) n += '5';
     numbers.push_back(n);
     text += (rng() % 2 ? "G01 X-" : "G01 X") + n + " M0\n";  // not plain: the parse converts
-    text += (rng() % 2 ? "Y-" : "Y") + n + "\n";             // plain: WordReader converts
+    text += (rng() % 2 ? "Y-" : "Y") + n + "\n";             // plain: the short road converts
   }
   Diagnostics d;
   const SourceFile src("numbers.nc", text);
@@ -615,6 +633,11 @@ TEST(parser_test, numbers_convert_as_from_chars_converts_them) {
     ++compared;
   }
   EXPECT_EQ(compared, 2 * numbers.size());
+  // The plain blocks' words, kept by the parse, and parsed again once given back.
+  EXPECT_NE(p.plainWords.find(p.blocks.back().firstWord), nullptr);
+  p.plainWords.giveBackBefore(std::numeric_limits<std::uint32_t>::max());
+  EXPECT_EQ(p.plainWords.find(p.blocks.back().firstWord), nullptr);
+  EXPECT_TRUE(sameWords(allWords(p), words));
 }
 
 namespace {

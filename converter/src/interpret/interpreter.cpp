@@ -62,6 +62,10 @@ Interpretation Interpreter::run() {
       const Flow flow = executeBlock(pc, next);
       if (flow == Flow::Stop) break;
     }
+    // The kept words behind this block are given back, in the main program: the moves made from
+    // here on take their place. Not inside a subprogram, which may lie past the rest of the main
+    // program (after its M30); a block run again all the same is parsed again (WordReader).
+    if (block.plain && stack_.empty()) program_.plainWords.giveBackBefore(block.firstWord);
     if (toolpath_.moves.size() > options_.maxMoves) {
       diags_.error(Code::ExecutionLimit, src_, block.span(),
                    "stopped after " + std::to_string(options_.maxMoves) + " moves (the limit of one run)");

@@ -425,7 +425,7 @@ class Interpreter {
   std::unordered_map<std::size_t, std::uint64_t> blocksOfCall_;  // per subprogram start (memo)
 
   const Program& program_;
-  WordReader words_;  // each block's words as the run comes to it (a plain block's read again)
+  WordReader words_;  // each block's words as the run comes to it (a plain block's as the parse kept them)
   const SourceFile* src_;
   const InterpreterOptions& options_;
   const MachineProfile& machine_;

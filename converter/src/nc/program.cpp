@@ -1,7 +1,7 @@
 // ISO block parser.
 //
 // Sections: 1. characters and numbers  2. values known only at the machine  3. one block
-//           4. the sides of a 4-axis block  5. plain blocks read again  6. the whole text
+//           4. the sides of a 4-axis block  5. plain blocks' words  6. the whole text
 #include "kerf/converter/nc/program.h"
 
 #include "gcode.h"
@@ -87,6 +87,28 @@ struct NumberScan {
 constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,
                                         1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19};
 
+/// The value of a decimal number read as digits: `whole` its digits as one whole number (wrapped
+/// past 19 digits), integerDigits significant digits before the point and fractionDigits after it,
+/// its characters after the sign in [first, end). The correctly rounded double nearest the
+/// decimal (what std::from_chars gives): a number of at most 19 digits whose digits, read as a
+/// whole number m, stay at most 2^53 is m / 10^k (k digits after the point), both operands exact
+/// doubles, and IEEE division rounds correctly, so the quotient is the correctly rounded value
+/// (Clinger, "How to read floating point numbers accurately", PLDI 1990: the fast path). Longer
+/// numbers go to std::from_chars.
+[[gnu::always_inline]] inline double decimalValue(std::uint64_t whole, std::size_t integerDigits,
+                                                  std::size_t fractionDigits, bool negative, const char* first,
+                                                  const char* end) {
+  double v = 0.0;
+  if (integerDigits + fractionDigits <= 19 && whole <= (std::uint64_t{1} << 53)) {
+    v = static_cast<double>(whole) / kExactPowersOfTen[fractionDigits];
+  } else {
+    // from_chars takes no '+' and no lone '.' after the digits in every library: the digits alone.
+    if (end[-1] == '.') --end;
+    std::from_chars(first, end, v, std::chars_format::fixed);
+  }
+  return negative ? -v : v;
+}
+
 /// How scanNumber finds the end of a number's digits.
 enum class DigitsEnd {
   AtLimit,     ///< at `limit` or the first character that is not a digit
@@ -96,12 +118,8 @@ enum class DigitsEnd {
 };
 
 /// [sign] digits [. digits] in text[pos, limit) — no exponent, no spaces inside. Leading zeros are
-/// not significant; more than 18 significant digits before the point are refused. The value is the
-/// correctly rounded double nearest the decimal (what std::from_chars gives), unless `convert` is
-/// false. A number of at most 19 digits whose digits, read as a whole number m, stay at most 2^53
-/// is m / 10^k (k digits after the point): both operands are exact doubles and IEEE division rounds correctly, so the
-/// quotient is the correctly rounded value (Clinger, "How to read floating point numbers
-/// accurately", PLDI 1990: the fast path). Longer numbers go to std::from_chars.
+/// not significant; more than 18 significant digits before the point are refused. The value is
+/// decimalValue's, unless `convert` is false.
 template <DigitsEnd kEnd = DigitsEnd::AtLimit>
 [[gnu::always_inline]] inline NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit,
                                                     bool convert = true) {
@@ -137,26 +155,8 @@ template <DigitsEnd kEnd = DigitsEnd::AtLimit>
     return s;
   }
   s.status = NumberScan::Ok;
-  if (!convert) return s;
-  double v = 0.0;
-  if (s.integerDigits + fractionDigits <= 19 && whole <= (std::uint64_t{1} << 53)) {
-    v = static_cast<double>(whole) / kExactPowersOfTen[fractionDigits];
-  } else {
-    // from_chars takes no '+' and no lone '.' after the digits in every library: the digits alone.
-    const char* digitsEnd = p;
-    if (s.hasPoint && digitsEnd[-1] == '.') --digitsEnd;
-    std::from_chars(first, digitsEnd, v, std::chars_format::fixed);
-  }
-  s.value = negative ? -v : v;
+  if (convert) s.value = decimalValue(whole, s.integerDigits, fractionDigits, negative, first, p);
   return s;
-}
-
-/// The value of a word whose number the parse did not convert: its text read again.
-double wordValue(std::string_view text, const Word& w) {
-  std::size_t i = w.offset + 1;
-  const std::size_t end = std::size_t{w.offset} + w.length;
-  while (i < end && isBlank(text[i])) ++i;
-  return scanNumber(text, i, end).value;
 }
 
 std::string describeChar(char c) {
@@ -228,6 +228,11 @@ std::size_t scanMacroValue(std::string_view text, std::size_t pos, std::size_t l
 
 // ---- 3. one block ----------------------------------------------------------------------------
 
+}  // namespace
+
+// The parser of lines, in a namespace of its own: WordReader keeps one (its type has linkage).
+namespace line_parser {
+
 /// The macro B statements of some lines: how many, the first one, and the lines they span.
 struct MacroTally {
   std::size_t count = 0;
@@ -241,7 +246,9 @@ class LineParser {
       : src_(src), text_(src.text()), program_(program), diags_(diags), options_(options) {}
 
   /// Parses [begin, end) — one line without its line break: one block, or several when `;` ends
-  /// blocks (ParseOptions::semicolonEndsBlock).
+  /// blocks (ParseOptions::semicolonEndsBlock); or a block's span as a parse gave it (WordReader).
+  /// The character at `end` is none of a number's (a line break, the NUL after the text, a blank or
+  /// a ';'): the short road's scans stop there without comparing with `end`.
   void parseLine(std::size_t begin, std::size_t end, std::uint32_t line) {
     std::size_t i = begin;
     while (i < end) i = parseBlock(i, end, line);
@@ -347,7 +354,6 @@ class LineParser {
       i = parseWord(block, i, end);
       if (block.hasError) break;  // one error per block: what follows is likely noise from it
     }
-    if (!isPlainCandidate(block)) convertDeferred();  // before assignSides reorders the words
     if (!block.hasError) assignSides(block);
     finish(block, blockEnd);
     return next;
@@ -358,9 +364,8 @@ class LineParser {
   /// followed at once by [sign] digits [. digits], blanks between the words, up to the end of the
   /// line or a ';'. What it accepts the word loop below would read as the same plain block, with
   /// the same integer-unit evidence and no diagnostic (parser_test holds the two roads equal). It
-  /// is a pass over the characters that checks the numbers' syntax without reading them: it keeps
-  /// no word (the interpreter's WordReader reads them, the only time the numbers are read), and
-  /// reads only a G word's digits (its code) and an integer length (the evidence needs its value).
+  /// reads each number once, in the same pass that checks its syntax, and keeps the block's words
+  /// in Program::plainWords, where the interpreter's WordReader finds them.
   /// Anything else — a comment, a blank after a letter, lower case, a second motion word after a
   /// coordinate, anything an error — returns begin, and the word loop reads the block.
   std::size_t tryPlainBlock(const std::size_t begin, const std::size_t end, const std::uint32_t line) {
@@ -369,27 +374,30 @@ class LineParser {
     std::uint16_t count = 0;
     bool sawMotion = false, sawCoordinate = false, anyPoint = false;
     std::uint32_t integers = 0;
-    Word largest;  // the block's largest integer length word, if any (largest.length > 0)
-    // The line ends at `end` with a line break or the text's end: '\n', '\r' or the NUL a
-    // std::string keeps after its text (SourceFile holds one). None is a digit, a sign or a point,
-    // so the scans below stop there without comparing with `end`.
+    const Word* largest = nullptr;  // the block's largest integer length word, if any
+    // The words go where the program keeps them; they are kept only if the block is plain.
+    Word* const words = program_.plainWords.room(kMostWords);
+    // At `end` stands a line break ('\n', '\r'), the NUL a std::string keeps after its text
+    // (SourceFile holds one), or a blank or ';' after a block's span (parseLine): none is a digit,
+    // a sign or a point, so the scans below stop there without comparing with `end`.
     const char* const text = text_.data();
     const char* const stop = text + end;
     const char* p = text + begin;
     std::size_t blockEnd = end, next = end;
     for (;;) {
-      while (isBlank(*p)) ++p;  // past stop by one at most: a '\r' before the '\n'
+      while (isBlank(*p)) ++p;  // may pass stop over blanks: a '\r' before the '\n', a span's trailing blanks
       if (p >= stop) break;
       const char c = *p;
       if (c == ';') {
         endAtSemicolon(static_cast<std::size_t>(p - text), end, blockEnd, next);
         break;
       }
-      if (!hasClass(c, kPlainLetter | kMotionLetter) || ++count > kMostWords) return begin;
+      if (!hasClass(c, kPlainLetter | kMotionLetter) || count == kMostWords) return begin;
       const bool motion = c == 'G';
-      // [sign] digits [. digits], at least one digit; fewer than kLargestDigits significant
-      // digits before the point.
+      // [sign] digits [. digits], at least one digit, fewer than kLargestDigits significant digits
+      // before the point (scanNumber's syntax and value); no sign on a code.
       const char* k = p + 1;
+      const bool negative = *k == '-';
       if (*k == '+' || *k == '-') {
         if (motion) return begin;
         ++k;
@@ -397,13 +405,16 @@ class LineParser {
       const char* const first = k;
       while (*k == '0') ++k;
       const char* const significant = k;
-      while (isDigit(*k)) ++k;
+      std::uint64_t whole = 0;  // the digits as a whole number (wraps past 19 digits: then not used)
+      for (unsigned d; (d = static_cast<unsigned char>(*k) - unsigned{'0'}) <= 9; ++k) whole = whole * 10 + d;
       const auto integerDigits = static_cast<std::size_t>(k - significant);
       bool anyDigit = k > first;
       const bool point = *k == '.';
+      std::size_t fractionDigits = 0;
       if (point) {
         const char* const fraction = ++k;
-        while (isDigit(*k)) ++k;
+        for (unsigned d; (d = static_cast<unsigned char>(*k) - unsigned{'0'}) <= 9; ++k) whole = whole * 10 + d;
+        fractionDigits = static_cast<std::size_t>(k - fraction);
         anyDigit = anyDigit || k > fraction;
       }
       if (!anyDigit || integerDigits >= kLargestDigits) return begin;
@@ -411,29 +422,26 @@ class LineParser {
       if (motion) {
         // A code of the motion group written as digits, without a point; a second after a
         // coordinate opens an upper side (noteForSides).
-        std::uint64_t code = 0;
-        for (const char* d = significant; d < k; ++d) code = code * 10 + static_cast<std::uint64_t>(*d - '0');
-        if (point || !isWholeMotionCode(code) || (sawCoordinate && sawMotion)) return begin;
+        if (point || !isWholeMotionCode(whole) || (sawCoordinate && sawMotion)) return begin;
         sawMotion = true;
       } else {
         const std::uint32_t bit = 1u << (c - 'A');
         if (letters & bit) return begin;  // a repeated word: the word loop reports it
         letters |= bit;
-        if (c != 'F') {  // a length letter (isLengthLetter)
-          sawCoordinate = true;
-          if (point) {
-            anyPoint = true;
-          } else {
-            ++integers;
-            const auto at = static_cast<std::size_t>(p - text);
-            const double v = scanNumber(text_, at + 1, end).value;
-            if (std::abs(v) > std::abs(largest.value) || largest.length == 0) {
-              largest.letter = c;
-              largest.offset = static_cast<std::uint32_t>(at);
-              largest.length = static_cast<std::uint16_t>(k - p);
-              largest.value = v;
-            }
-          }
+      }
+      Word& w = words[count++];
+      w = Word{.letter = c,
+               .hasPoint = point,
+               .length = static_cast<std::uint16_t>(std::min<std::ptrdiff_t>(k - p, 0xFFFF)),
+               .offset = static_cast<std::uint32_t>(p - text),
+               .value = decimalValue(whole, integerDigits, fractionDigits, negative, first, k)};
+      if (!motion && c != 'F') {  // a length letter (isLengthLetter)
+        sawCoordinate = true;
+        if (point) {
+          anyPoint = true;
+        } else {
+          ++integers;
+          if (!largest || std::abs(w.value) > std::abs(largest->value)) largest = &w;
         }
       }
       p = k;
@@ -441,11 +449,13 @@ class LineParser {
     if (count == 0) return begin;
     program_.anyDecimalPoint = program_.anyDecimalPoint || anyPoint;
     program_.integerLengthWords += integers;
-    if (largest.length > 0 && std::abs(largest.value) > program_.largestInteger) {
-      program_.largestInteger = std::abs(largest.value);
-      program_.largestIntegerWord = largest;
+    if (largest && std::abs(largest->value) > program_.largestInteger) {
+      program_.largestInteger = std::abs(largest->value);
+      program_.largestIntegerWord = *largest;
     }
     Block block;
+    block.firstWord = program_.plainWords.at();
+    program_.plainWords.keep(count);
     block.offset = static_cast<std::uint32_t>(begin);
     block.line = line;
     std::size_t last = blockEnd;
@@ -472,18 +482,6 @@ class LineParser {
     }
   }
 
-  /// Can the block being read still be plain (Block::plain), from what it has shown so far?
-  [[nodiscard]] bool isPlainCandidate(const Block& block) const {
-    return plainWords_ && !block.lowerCase && !block.unusualValues && splitAt_ < 0 && !upperLetters_;
-  }
-
-  /// Converts the numbers parseWord left for WordReader, now that their block is known to keep
-  /// its words.
-  void convertDeferred() {
-    for (const std::uint32_t k : deferred_) program_.words[k].value = wordValue(text_, program_.words[k]);
-    deferred_.clear();
-  }
-
   /// Trims the block's text span, counts its words and keeps it when it has content.
   void finish(Block& block, std::size_t blockEnd) {
     std::size_t last = blockEnd;
@@ -498,12 +496,12 @@ class LineParser {
                   !block.colon && !block.twoMotions && !block.lowerCase && !block.unusualValues &&
                   block.upperFrom == block.wordCount;
     plainWords_ = true;
-    if (block.plain) {  // WordReader reads its words again when they are needed
+    if (block.plain) {  // its words go where the short road keeps a plain block's
+      Word* const kept = program_.plainWords.room(block.wordCount);
+      std::copy_n(program_.words.begin() + block.firstWord, block.wordCount, kept);
       program_.words.resize(block.firstWord);
-      block.firstWord = 0;
-      deferred_.clear();
-    } else {
-      convertDeferred();
+      block.firstWord = program_.plainWords.at();
+      program_.plainWords.keep(block.wordCount);
     }
     if (block.wordCount > 0 || block.hasError || block.kind != BlockKind::Words) {
       if (!block.plain) program_.notPlain.push_back(static_cast<std::uint32_t>(program_.blocks.size()));
@@ -723,11 +721,7 @@ class LineParser {
     if (!isWordLetter(letter) && !(letter == 'B' && homing_)) return unknownLetter(block, start, i, end, letter);
     if (std::size_t next = 0; letter == 'T' && tryHeightWord(block, start, i, end, next)) return next;
     if (const std::size_t next = valueAtMachine(block, start, i, end, letter); next != i) return next;
-    // A plain letter's number with a point is converted only if the block turns out not to be
-    // plain (convertDeferred): a plain block's words are read again, and converted, by WordReader.
-    const bool defer = isPlainLetter(letter) && isPlainCandidate(block);
-    NumberScan n = scanNumber(text_, i, end, !defer);
-    if (defer && !n.hasPoint) n = scanNumber(text_, i, end);  // the integer-unit evidence needs its value
+    const NumberScan n = scanNumber(text_, i, end);
     if (n.status == NumberScan::Missing) return noNumber(block, start, i, end, letter);
     const std::size_t stop = n.end;
     if (n.status == NumberScan::TooManyDigits) {
@@ -740,7 +734,6 @@ class LineParser {
       return stop;
     }
     noteForSides(block, letter, n.value);
-    if (defer && n.hasPoint) deferred_.push_back(static_cast<std::uint32_t>(program_.words.size()));
     push(block, start, stop, letter, WordValue::Number, n.value, n.hasPoint);
     return stop;
   }
@@ -937,63 +930,78 @@ class LineParser {
   Program& program_;
   Diagnostics& diags_;
   const ParseOptions& options_;
-  std::vector<std::uint8_t> sides_;      ///< assignSides' side of each of the block's words
-  std::vector<Word> scratch_;            ///< assignSides' copy of a block it reorders
-  bool upperLetters_ = false;            ///< U V K L among the block's words
-  bool plainWords_ = true;               ///< every word of the block so far is plain (Block::plain)
-  int splitAt_ = -1;                     ///< index in the block's words where a positional upper side starts
-  bool colon_ = false;                   ///< that split was a ':'
-  bool sawCoordinate_ = false;           ///< X Y I J R U V seen in this block
-  bool sawMotion_ = false;               ///< a motion word (G00-G03) seen in this block
-  bool homing_ = false;                  ///< G28 or G30 seen in this block: bare axis letters allowed
-  bool hasUpper_ = false;                ///< assignSides set upperFrom for this block
-  std::vector<std::uint32_t> deferred_;  ///< the block's words (in Program::words) whose value is not converted yet
+  std::vector<std::uint8_t> sides_;  ///< assignSides' side of each of the block's words
+  std::vector<Word> scratch_;        ///< assignSides' copy of a block it reorders
+  bool upperLetters_ = false;        ///< U V K L among the block's words
+  bool plainWords_ = true;           ///< every word of the block so far is plain (Block::plain)
+  int splitAt_ = -1;                 ///< index in the block's words where a positional upper side starts
+  bool colon_ = false;               ///< that split was a ':'
+  bool sawCoordinate_ = false;       ///< X Y I J R U V seen in this block
+  bool sawMotion_ = false;           ///< a motion word (G00-G03) seen in this block
+  bool homing_ = false;              ///< G28 or G30 seen in this block: bare axis letters allowed
+  bool hasUpper_ = false;            ///< assignSides set upperFrom for this block
   MacroTally macros_;
 };
 
-}  // namespace
+}  // namespace line_parser
 
-// ---- 5. plain blocks read again -------------------------------------------------------------
+using line_parser::LineParser;
+using line_parser::MacroTally;
+
+// ---- 5. plain blocks' words ----------------------------------------------------------------
+
+Word* PlainWords::roomInAnotherChunk(std::size_t n) {
+  std::size_t chunk = size_ / kChunkWords;
+  if (size_ % kChunkWords + n > kChunkWords) {  // a block's words lie in one chunk
+    ++chunk;
+    if (chunk >= std::numeric_limits<std::uint32_t>::max() / kChunkWords)
+      throw std::length_error("parseProgram: more than 2^32 words");
+    size_ = static_cast<std::uint32_t>(chunk * kChunkWords);
+  }
+  if (chunks_.size() <= chunk) chunks_.resize(chunk + 1);
+  if (!chunks_[chunk]) chunks_[chunk].reset(new Word[kChunkWords]);
+  return chunks_[chunk].get() + size_ % kChunkWords;
+}
+
+void PlainWords::clear() {
+  chunks_.resize(std::min<std::size_t>(chunks_.size(), 1));
+  givenBack_ = 0;
+  size_ = 0;
+}
+
+struct WordReader::Again {
+  explicit Again(const SourceFile& source) : parser(source, program, diags, options) { program.source = &source; }
+  Program program;
+  Diagnostics diags;
+  const ParseOptions options;
+  LineParser parser;
+};
+
+WordReader::WordReader(const Program& program) : program_(program) {}
+WordReader::~WordReader() = default;
 
 std::span<const Word> WordReader::words(const Block& b) {
   if (!b.plain) return program_.wordsOf(b);
-  // A plain block parsed without an error: words of an upper-case letter and a number (with
-  // blanks between them allowed), blanks, comments closed on the line, a leading '/'. The same
-  // scanNumber as the parse, so each word comes out as the parse made it (parser_test holds it).
-  // The parse accepted the block, so each number ends at a character that is not part of it, and
-  // the text ends with a NUL: the digits' scan needs no limit.
-  const std::string_view text = program_.source->text();
-  const char* const base = text.data();
-  const char* p = base + b.offset;
-  const char* const stop = base + std::min<std::size_t>(text.size(), std::size_t{b.offset} + b.length);
-  if (buffer_.size() < b.wordCount) buffer_.resize(b.wordCount);
-  Word* const first = buffer_.data();
-  Word* out = first;
-  Word* const last = first + b.wordCount;
-  while (p < stop && out < last) {
-    const char c = *p;
-    if (!isLetter(c)) {
-      if (c == '(') {
-        const void* close = std::memchr(p, ')', static_cast<std::size_t>(stop - p));
-        if (!close) break;
-        p = static_cast<const char*>(close);
-      }
-      ++p;
-      continue;
-    }
-    const char* const letter = p++;
-    while (isBlank(*p)) ++p;
-    const NumberScan n = scanNumber<DigitsEnd::AtNonDigit>(text, static_cast<std::size_t>(p - base),
-                                                           static_cast<std::size_t>(stop - base));
-    const auto offset = static_cast<std::size_t>(letter - base);
-    *out++ = Word{.letter = c,
-                  .hasPoint = n.hasPoint,
-                  .length = static_cast<std::uint16_t>(std::min<std::size_t>(n.end - offset, 0xFFFF)),
-                  .offset = static_cast<std::uint32_t>(offset),
-                  .value = n.value};
-    p = std::max(base + n.end, p);
+  if (const Word* kept = program_.plainWords.find(b.firstWord)) return {kept, b.wordCount};
+  // Given back: the block's text parsed again, alone, by the parser. Its span ends where a ';', a
+  // blank or the line's end follows, none of a number's characters (LineParser::parseLine); a
+  // plain block has no Z (ParseOptions::upperAxesUZ) and no ';' (semicolonEndsBlock) inside it,
+  // so the default options read it as its first parse did.
+  if (!again_) again_ = std::make_unique<Again>(*program_.source);
+  Program& again = again_->program;
+  again.blocks.clear();
+  again.words.clear();
+  again.notPlain.clear();
+  again.plainWords.clear();
+  again_->parser.parseLine(b.offset, std::size_t{b.offset} + b.length, b.line);
+  buffer_.clear();
+  if (!again.blocks.empty()) {
+    const Block& read = again.blocks.front();
+    const std::span<const Word> words =
+        read.plain ? std::span<const Word>(again.plainWords.find(read.firstWord), read.wordCount) : again.wordsOf(read);
+    buffer_.assign(words.begin(), words.end());
   }
-  return {first, static_cast<std::size_t>(out - first)};
+  return buffer_;
 }
 
 // ---- 6. the whole text ------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -78,7 +79,7 @@ struct Block {
   /// bytes: a program holds one per line). The parser reports a longer block (K0114).
   static constexpr std::size_t kMaxWords = 0xFFFF;
 
-  std::uint32_t firstWord = 0;  ///< index in Program::words (0 for a plain block, whose words are not kept)
+  std::uint32_t firstWord = 0;  ///< index in Program::words, or in Program::plainWords for a plain block
   std::uint32_t offset = 0;     ///< start of the block's text
   std::uint32_t length = 0;     ///< to the end of the block's text (without the line break)
   std::uint32_t line = 0;       ///< 1-based
@@ -99,7 +100,7 @@ struct Block {
   /// Words only, every one X Y I J R F or a motion code G00-G03, all numbers, none written in
   /// lower case, one side, no error: nothing the whole-program scans look for (machine and dialect
   /// evidence, labels, calls, polar and rotary words), so they pass such a block by. Most blocks
-  /// of a wire program are.
+  /// of a wire program are. Its words are kept in Program::plainWords.
   bool plain : 1 = false;
   std::uint8_t unusedBit : 1 = 0;  ///< named so that copying a block writes whole bytes (see Word)
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
@@ -127,12 +128,54 @@ struct ParseOptions {
   bool operator==(const ParseOptions&) const = default;
 };
 
+/// The words of the plain blocks (Block::plain), apart from the others' so that a long program's
+/// can be given back as it runs: the parse reads each number once and the interpreter reads the
+/// words kept. They are kept in chunks of kChunkWords words, a block's words in one chunk, which
+/// the one reader that passes every block in order (the interpreter) gives back behind it: a long
+/// program's words are never all held while its moves are made (at the start of a run they are,
+/// with the text and the blocks and no move yet). A block whose chunk was given back is parsed
+/// again by WordReader, to the same words: giving back changes no answer, which is why it may be
+/// done through a const Program. Not for readers on several threads at once.
+class PlainWords {
+ public:
+  static constexpr std::uint32_t kChunkWords = std::uint32_t{1} << 16;
+
+  /// Room for up to n (at most kChunkWords) words in one chunk, at index `at()`: the parse writes
+  /// a block's words there, then keeps them (keep) or not (the room is used by the next block).
+  Word* room(std::size_t n) {
+    const std::size_t chunk = size_ / kChunkWords, at = size_ % kChunkWords;
+    if (at + n <= kChunkWords && chunk < chunks_.size() && chunks_[chunk]) return chunks_[chunk].get() + at;
+    return roomInAnotherChunk(n);
+  }
+  /// No word, the first chunk kept for the next (WordReader's block parsed again).
+  void clear();
+  [[nodiscard]] std::uint32_t at() const { return size_; }
+  void keep(std::size_t n) { size_ += static_cast<std::uint32_t>(n); }
+  /// The words from index `first`; null when their chunk was given back.
+  [[nodiscard]] const Word* find(std::uint32_t first) const {
+    const std::size_t chunk = first / kChunkWords;
+    return chunk < chunks_.size() && chunks_[chunk] ? chunks_[chunk].get() + first % kChunkWords : nullptr;
+  }
+  /// Gives back the chunks before the one that holds index `first`.
+  void giveBackBefore(std::uint32_t first) const {
+    for (const std::size_t chunk = first / kChunkWords; givenBack_ < chunk && givenBack_ < chunks_.size();)
+      chunks_[givenBack_++].reset();
+  }
+
+ private:
+  Word* roomInAnotherChunk(std::size_t n);
+
+  mutable std::vector<std::unique_ptr<Word[]>> chunks_;
+  mutable std::size_t givenBack_ = 0;  ///< chunks before this are given back
+  std::uint32_t size_ = 0;             ///< index of the next word
+};
+
 struct Program {
   const SourceFile* source = nullptr;
-  /// The words of the blocks that are not plain, in order. A plain block's words are not kept:
-  /// WordReader reads them again from the text when the interpreter comes to the block, so the
-  /// parse of a long program (its moves nearly all plain) is never held whole.
+  /// The words of the blocks that are not plain, in order.
   std::vector<Word> words;
+  /// The words of the plain blocks.
+  PlainWords plainWords;
   /// Only blocks with at least one word, a macro statement or an error.
   std::vector<Block> blocks;
   std::vector<Setting> settings;
@@ -146,7 +189,8 @@ struct Program {
   /// through these alone (a long program's thousands of moves are plain). parseProgram fills it.
   std::vector<std::uint32_t> notPlain;
 
-  /// The words of a block that is not plain (a plain block's: WordReader).
+  /// The words of a block that is not plain (a plain block's: WordReader, which parses a block
+  /// whose kept words were given back again).
   [[nodiscard]] std::span<const Word> wordsOf(const Block& b) const {
     assert(!b.plain);
     return {words.data() + b.firstWord, b.wordCount};
@@ -155,13 +199,18 @@ struct Program {
   [[nodiscard]] std::string_view textOf(const Block& b) const { return source->text().substr(b.offset, b.length); }
 };
 
-/// The words of any block of a program, as the parser read them: a plain block's read again from
-/// its text (exactly as parseProgram read them: the same scanner), another block's from
-/// Program::words. The spans returned stay valid until this reader's next call; a reader reuses
-/// one buffer, so reading block after block allocates nothing once it has grown.
+/// The words of any block of a program, as the parser read them: a block that is not plain's from
+/// Program::words, a plain block's from Program::plainWords, or, where those were given back, from
+/// the block's text parsed again by the parser itself (the same words: the same parse). The spans
+/// returned stay valid until this reader's next call (and a kept block's until its chunk is given
+/// back); a reader reuses one buffer, so reading block after block allocates nothing once it has
+/// grown.
 class WordReader {
  public:
-  explicit WordReader(const Program& program) : program_(program) {}
+  explicit WordReader(const Program& program);
+  ~WordReader();
+  WordReader(const WordReader&) = delete;
+  WordReader& operator=(const WordReader&) = delete;
 
   [[nodiscard]] std::span<const Word> words(const Block& b);
   /// The lower side's words (all of them when the block has no upper side).
@@ -169,8 +218,11 @@ class WordReader {
   [[nodiscard]] std::span<const Word> upperWords(const Block& b) { return words(b).subspan(b.upperFrom); }
 
  private:
+  struct Again;  // the parser that parses a given-back block again, and its program (program.cpp)
+
   const Program& program_;
   std::vector<Word> buffer_;
+  std::unique_ptr<Again> again_;  ///< made at the first block given back
 };
 
 /// Parses the whole text. Errors go to diags; a block with an error is kept (hasError) so the

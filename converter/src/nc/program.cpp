@@ -959,7 +959,7 @@ Word* PlainWords::roomInAnotherChunk(std::size_t n) {
     size_ = static_cast<std::uint32_t>(chunk * kChunkWords);
   }
   if (chunks_.size() <= chunk) chunks_.resize(chunk + 1);
-  if (!chunks_[chunk]) chunks_[chunk].reset(new Word[kChunkWords]);
+  if (!chunks_[chunk]) chunks_[chunk].reset(static_cast<Word*>(::operator new(kChunkWords * sizeof(Word))));
   return chunks_[chunk].get() + size_ % kChunkWords;
 }
 

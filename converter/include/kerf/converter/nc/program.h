@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <new>
 #include <span>
 #include <string>
 #include <vector>
@@ -164,8 +165,14 @@ class PlainWords {
 
  private:
   Word* roomInAnotherChunk(std::size_t n);
+  /// A chunk's memory, allocated and not written: a Word (an aggregate) begins its life there when
+  /// the parse writes it, and the pages a short program leaves unwritten are never touched.
+  struct FreeChunk {
+    void operator()(Word* words) const noexcept { ::operator delete(words); }
+  };
+  using Chunk = std::unique_ptr<Word, FreeChunk>;
 
-  mutable std::vector<std::unique_ptr<Word[]>> chunks_;
+  mutable std::vector<Chunk> chunks_;
   mutable std::size_t givenBack_ = 0;  ///< chunks before this are given back
   std::uint32_t size_ = 0;             ///< index of the next word
 };

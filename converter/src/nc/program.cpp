@@ -952,14 +952,14 @@ using line_parser::MacroTally;
 
 Word* PlainWords::roomInAnotherChunk(std::size_t n) {
   std::size_t chunk = size_ / kChunkWords;
-  if (size_ % kChunkWords + n > kChunkWords) {  // a block's words lie in one chunk
+  while (size_ % kChunkWords + n > capacityOf(chunk)) {  // a block's words lie in one chunk
     ++chunk;
     if (chunk >= std::numeric_limits<std::uint32_t>::max() / kChunkWords)
       throw std::length_error("parseProgram: more than 2^32 words");
     size_ = static_cast<std::uint32_t>(chunk * kChunkWords);
   }
   if (chunks_.size() <= chunk) chunks_.resize(chunk + 1);
-  if (!chunks_[chunk]) chunks_[chunk].reset(static_cast<Word*>(::operator new(kChunkWords * sizeof(Word))));
+  if (!chunks_[chunk]) chunks_[chunk].reset(static_cast<Word*>(::operator new(capacityOf(chunk) * sizeof(Word))));
   return chunks_[chunk].get() + size_ % kChunkWords;
 }
 

@@ -139,13 +139,18 @@ struct ParseOptions {
 /// done through a const Program. Not for readers on several threads at once.
 class PlainWords {
  public:
+  /// Each chunk spans this many indices; the first ones hold fewer words (capacityOf), so that a
+  /// program of one block (`kerf explain` parses each block alone) does not take a megabyte.
   static constexpr std::uint32_t kChunkWords = std::uint32_t{1} << 16;
+  static constexpr std::uint32_t capacityOf(std::size_t chunk) {
+    return chunk >= 6 ? kChunkWords : std::uint32_t{1024} << chunk;
+  }
 
   /// Room for up to n (at most kChunkWords) words in one chunk, at index `at()`: the parse writes
   /// a block's words there, then keeps them (keep) or not (the room is used by the next block).
   Word* room(std::size_t n) {
     const std::size_t chunk = size_ / kChunkWords, at = size_ % kChunkWords;
-    if (at + n <= kChunkWords && chunk < chunks_.size() && chunks_[chunk]) return chunks_[chunk].get() + at;
+    if (at + n <= capacityOf(chunk) && chunk < chunks_.size() && chunks_[chunk]) return chunks_[chunk].get() + at;
     return roomInAnotherChunk(n);
   }
   /// No word, the first chunk kept for the next (WordReader's block parsed again).
@@ -166,7 +171,7 @@ class PlainWords {
  private:
   Word* roomInAnotherChunk(std::size_t n);
   /// A chunk's memory, allocated and not written: a Word (an aggregate) begins its life there when
-  /// the parse writes it, and the pages a short program leaves unwritten are never touched.
+  /// the parse writes it.
   struct FreeChunk {
     void operator()(Word* words) const noexcept { ::operator delete(words); }
   };

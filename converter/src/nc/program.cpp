@@ -12,15 +12,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <limits>
-#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
-
-#include <sys/mman.h>
 
 namespace kerf::converter {
 namespace {
@@ -963,20 +959,7 @@ Word* PlainWords::roomInAnotherChunk(std::size_t n) {
     size_ = static_cast<std::uint32_t>(chunk * kChunkWords);
   }
   if (chunks_.size() <= chunk) chunks_.resize(chunk + 1);
-  if (!chunks_[chunk]) {
-    // A full chunk is 2 MiB on 2 MiB pages where Linux gives them (transparent huge pages on
-    // request): the kept words of a long program are written once and read once, and in 4 KiB
-    // pages their first writes cost more than the parse saves (docs/performance.md).
-    constexpr std::size_t kHugePage = std::size_t{1} << 21;
-    const std::size_t bytes = capacityOf(chunk) * sizeof(Word);
-    const bool huge = bytes % kHugePage == 0;
-    void* memory = std::aligned_alloc(huge ? kHugePage : alignof(Word), bytes);
-    if (!memory) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-    if (huge) madvise(memory, bytes, MADV_HUGEPAGE);  // a hint: without it the pages are small
-#endif
-    chunks_[chunk].reset(static_cast<Word*>(memory));
-  }
+  if (!chunks_[chunk]) chunks_[chunk].reset(static_cast<Word*>(::operator new(capacityOf(chunk) * sizeof(Word))));
   return chunks_[chunk].get() + size_ % kChunkWords;
 }
 

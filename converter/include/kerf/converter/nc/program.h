@@ -10,8 +10,8 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <memory>
+#include <new>
 #include <span>
 #include <string>
 #include <vector>
@@ -139,12 +139,11 @@ struct ParseOptions {
 /// done through a const Program. Not for readers on several threads at once.
 class PlainWords {
  public:
-  /// Each chunk spans this many indices (2 MiB of words); the first ones hold fewer words
-  /// (capacityOf), so that a program of one block (`kerf explain` parses each block alone) does
-  /// not take two megabytes.
-  static constexpr std::uint32_t kChunkWords = std::uint32_t{1} << 17;
+  /// Each chunk spans this many indices; the first ones hold fewer words (capacityOf), so that a
+  /// program of one block (`kerf explain` parses each block alone) does not take a megabyte.
+  static constexpr std::uint32_t kChunkWords = std::uint32_t{1} << 16;
   static constexpr std::uint32_t capacityOf(std::size_t chunk) {
-    return chunk >= 7 ? kChunkWords : std::uint32_t{1024} << chunk;
+    return chunk >= 6 ? kChunkWords : std::uint32_t{1024} << chunk;
   }
 
   /// Room for up to n (at most kChunkWords) words in one chunk, at index `at()`: the parse writes
@@ -171,10 +170,10 @@ class PlainWords {
 
  private:
   Word* roomInAnotherChunk(std::size_t n);
-  /// A chunk's memory, allocated (std::aligned_alloc) and not written: a Word (an aggregate)
-  /// begins its life there when the parse writes it.
+  /// A chunk's memory, allocated and not written: a Word (an aggregate) begins its life there when
+  /// the parse writes it.
   struct FreeChunk {
-    void operator()(Word* words) const noexcept { std::free(words); }
+    void operator()(Word* words) const noexcept { ::operator delete(words); }
   };
   using Chunk = std::unique_ptr<Word, FreeChunk>;
 

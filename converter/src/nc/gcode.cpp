@@ -83,7 +83,7 @@ constexpr std::array<MCodeInfo, 12> kMCodes = {{
 }};
 
 constexpr std::uint8_t kNoCode = 0xFF;
-/// kGCodeTable' index of each whole code G0 - G149 (kNoCode where there is none): a G word's entry in
+/// kGCodeTable's index of each whole code G0 - G149 (kNoCode where there is none): a G word's entry in
 /// one look, not a pass over the table.
 constexpr std::array<std::uint8_t, 150> kWholeCodes = [] {
   std::array<std::uint8_t, 150> index{};

@@ -109,21 +109,11 @@ constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,
   return negative ? -v : v;
 }
 
-/// How scanNumber finds the end of a number's digits.
-enum class DigitsEnd {
-  AtLimit,     ///< at `limit` or the first character that is not a digit
-  AtNonDigit,  ///< at the first character that is not a digit, wherever it is: for text a NUL
-               ///< follows (a std::string's, as SourceFile's) and where one of the number's own
-               ///< characters or the line's end follows the number (a block the parse accepted)
-};
-
 /// [sign] digits [. digits] in text[pos, limit) — no exponent, no spaces inside. Leading zeros are
 /// not significant; more than 18 significant digits before the point are refused. The value is
 /// decimalValue's, unless `convert` is false.
-template <DigitsEnd kEnd = DigitsEnd::AtLimit>
 [[gnu::always_inline]] inline NumberScan scanNumber(std::string_view text, std::size_t pos, std::size_t limit,
                                                     bool convert = true) {
-  constexpr bool kChecked = kEnd == DigitsEnd::AtLimit;
   NumberScan s;
   const char* const base = text.data();
   const char* p = base + pos;
@@ -131,20 +121,18 @@ template <DigitsEnd kEnd = DigitsEnd::AtLimit>
   const bool negative = p < stop && *p == '-';
   if (p < stop && (*p == '+' || *p == '-')) ++p;
   const char* const first = p;
-  while ((!kChecked || p < stop) && *p == '0') ++p;  // leading zeros
+  while (p < stop && *p == '0') ++p;  // leading zeros
   const char* const significant = p;
   // The digits read as a whole number; wraps past 19 digits (then unused).
   std::uint64_t whole = 0;
-  for (unsigned d; (!kChecked || p < stop) && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p)
-    whole = whole * 10 + d;
+  for (unsigned d; p < stop && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p) whole = whole * 10 + d;
   s.integerDigits = static_cast<std::size_t>(p - significant);
   bool anyDigit = p > first;
   std::size_t fractionDigits = 0;
-  if ((!kChecked || p < stop) && *p == '.') {
+  if (p < stop && *p == '.') {
     s.hasPoint = true;
     const char* const point = ++p;
-    for (unsigned d; (!kChecked || p < stop) && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p)
-      whole = whole * 10 + d;
+    for (unsigned d; p < stop && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p) whole = whole * 10 + d;
     fractionDigits = static_cast<std::size_t>(p - point);
     anyDigit = anyDigit || p > point;
   }

@@ -107,7 +107,6 @@ Segment Placement::apply(const Segment& s) const {
   out.end = apply(s.end);
   if (s.isArc()) {
     out.centre = apply(s.centre);
-    out.startAngle = std::atan2(out.start.y() - out.centre.y(), out.start.x() - out.centre.x());
     if (mirror) out.sweep = -s.sweep;
   }
   return out;

@@ -29,16 +29,19 @@ namespace kerf::geometry::detail {
   return r;
 }
 
-/// How far along the arc (radians, >= 0, in the direction of travel) the angle phi lies from the
-/// start. Values above |sweep| mean off the arc.
-[[gnu::always_inline]] inline double angleAlong(const Segment& arc, double phi) {
-  return arc.sweep >= 0 ? wrapPositive(phi - arc.startAngle) : wrapPositive(arc.startAngle - phi);
+/// How far along an arc that starts at the angle `startAngle` and turns by `sweep` (radians, >= 0,
+/// in the direction of travel) the angle phi lies from the start. Values above |sweep| mean off
+/// the arc. A caller that asks for several angles of one arc takes its startAngle() once.
+[[gnu::always_inline]] inline double angleAlong(double startAngle, double sweep, double phi) {
+  return sweep >= 0 ? wrapPositive(phi - startAngle) : wrapPositive(startAngle - phi);
 }
+inline double angleAlong(const Segment& arc, double phi) { return angleAlong(arc.startAngle(), arc.sweep, phi); }
 
 /// Is the point p (assumed on the arc's circle) on the arc, within tol mm along the circle?
 inline bool onArc(const Segment& arc, const Vec2& p, double tol) {
   const double along = angleAlong(arc, angleOf(p - arc.centre));
-  const double angTol = arc.radius > 0 ? tol / arc.radius : 0.0;
+  const double r = arc.radius();
+  const double angTol = r > 0 ? tol / r : 0.0;
   return along <= std::abs(arc.sweep) + angTol || along >= kTwoPi - angTol;
 }
 

@@ -78,7 +78,7 @@ std::vector<Chain> chainSegments(std::span<const Segment> segments, const ChainO
         const Vec2 join = c.path.back().end;
         if (s.isArc()) {
           const ArcDirection d = s.direction();
-          const bool full = (s.end - s.start).norm() <= 1e-12 * std::max(1.0, s.radius);
+          const bool full = (s.end - s.start).norm() <= 1e-12 * std::max(1.0, s.radius());
           s = Segment::arc(join, full ? join : s.end, s.centre, d);
         } else {
           s.start = join;
@@ -148,7 +148,7 @@ namespace {
 /// origin, then, for an arc, the circular segment beyond its chord (summed in that order).
 void addTwiceArea(double& twice, const Segment& s) {
   twice += cross(s.start, s.end);
-  if (s.isArc()) twice += s.radius * s.radius * (s.sweep - std::sin(s.sweep));
+  if (s.isArc()) twice += s.radius() * s.radius() * (s.sweep - std::sin(s.sweep));
 }
 
 }  // namespace

@@ -36,8 +36,8 @@ Meets meet(const Segment& a, const Segment& b) {
     const Segment& arc = a.isArc() ? a : b;
     const Vec2 u = (line.end - line.start).normalized();
     const Vec2 foot = line.start + u * u.dot(arc.centre - line.start);
-    const double h2 = arc.radius * arc.radius - (foot - arc.centre).squaredNorm();
-    if (h2 < -1e-12 * arc.radius * arc.radius) return m;
+    const double h2 = arc.radius() * arc.radius() - (foot - arc.centre).squaredNorm();
+    if (h2 < -1e-12 * arc.radius() * arc.radius()) return m;
     const double h = std::sqrt(std::max(0.0, h2));
     m.add(foot - u * h);
     if (h > 0) m.add(foot + u * h);
@@ -46,9 +46,9 @@ Meets meet(const Segment& a, const Segment& b) {
   const Vec2 d = b.centre - a.centre;
   const double dist = d.norm();
   if (dist <= 1e-15) return m;  // concentric
-  const double x = (dist * dist + a.radius * a.radius - b.radius * b.radius) / (2 * dist);
-  const double h2 = a.radius * a.radius - x * x;
-  if (h2 < -1e-12 * a.radius * a.radius) return m;
+  const double x = (dist * dist + a.radius() * a.radius() - b.radius() * b.radius()) / (2 * dist);
+  const double h2 = a.radius() * a.radius() - x * x;
+  if (h2 < -1e-12 * a.radius() * a.radius()) return m;
   const double h = std::sqrt(std::max(0.0, h2));
   const Vec2 e = d / dist, n(-e.y(), e.x());
   m.add(a.centre + e * x - n * h);
@@ -64,7 +64,7 @@ Vec2 footOn(const Segment& s, const Vec2& p) {
   }
   const Vec2 r = p - s.centre;
   const double n = r.norm();
-  return n > 0 ? Vec2(s.centre + r * (s.radius / n)) : s.start;
+  return n > 0 ? Vec2(s.centre + r * (s.radius() / n)) : s.start;
 }
 
 /// s from its start to p (a point of s), or nothing when less than keep mm of it would remain or
@@ -162,10 +162,10 @@ Corner chamferCorner(const Segment& a, const Segment& b, double c, double joinTo
   // The point of s at the straight distance c from its end (towards = -1) or start (+1).
   auto at = [&](const Segment& s, const Vec2& corner, double towards) -> std::optional<Vec2> {
     if (!s.isArc()) return corner + towards * c * (s.end - s.start).normalized();
-    if (c >= 2 * s.radius) return std::nullopt;
-    const double step = 2 * std::asin(c / (2 * s.radius));
+    if (c >= 2 * s.radius()) return std::nullopt;
+    const double step = 2 * std::asin(c / (2 * s.radius()));
     const double angle = angleOf(corner - s.centre) + towards * (s.sweep < 0 ? -step : step);
-    return s.centre + s.radius * direction(angle);
+    return s.centre + s.radius() * direction(angle);
   };
   const std::optional<Vec2> ta = at(a, a.end, -1.0), tb = at(b, a.end, 1.0);
   if (!ta || !tb) return fail;

@@ -35,7 +35,7 @@ DeviationSet::DeviationSet(SegmentView segments, double chordDeviation, std::siz
       continue;
     }
     // A chord of sweep a on radius r stands at most r (1 - cos(a / 2)) off its arc.
-    const double r = std::max(s.radius, 1e-12);
+    const double r = std::max(s.radius(), 1e-12);
     const double most = 2.0 * std::acos(std::clamp(1.0 - chordDeviation / r, -1.0, 1.0));
     const double pieces = std::ceil(std::abs(s.sweep) / std::max(most, 1e-9));
     if (!(pieces <= static_cast<double>(maxChords)) || chords_.size() + static_cast<std::size_t>(pieces) > maxChords) {

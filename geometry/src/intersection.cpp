@@ -73,13 +73,13 @@ SegmentIntersection lineArc(const Segment& line, const Segment& arc, double tol)
   const Vec2 f = line.start - arc.centre;
   const double t0 = -f.dot(d) / len2;  // foot of the perpendicular from the centre
   const double dist = (f + t0 * d).norm();
-  if (dist > arc.radius + tol) return r;
+  if (dist > arc.radius() + tol) return r;
   double ts[2];
   int n = 0;
-  if (std::abs(dist - arc.radius) <= tol) {
+  if (std::abs(dist - arc.radius()) <= tol) {
     ts[n++] = t0;  // tangent
   } else {
-    const double h = std::sqrt(std::max(0.0, arc.radius * arc.radius - dist * dist)) / len;
+    const double h = std::sqrt(std::max(0.0, arc.radius() * arc.radius() - dist * dist)) / len;
     ts[n++] = t0 - h;
     ts[n++] = t0 + h;
   }
@@ -100,15 +100,15 @@ struct AngleInterval {
 };
 
 AngleInterval ccwInterval(const Segment& arc) {
-  if (arc.sweep >= 0) return {detail::wrapPositive(arc.startAngle), arc.sweep};
-  return {detail::wrapPositive(arc.startAngle + arc.sweep), -arc.sweep};
+  if (arc.sweep >= 0) return {detail::wrapPositive(arc.startAngle()), arc.sweep};
+  return {detail::wrapPositive(arc.startAngle() + arc.sweep), -arc.sweep};
 }
 
 SegmentIntersection arcArc(const Segment& a, const Segment& b, double tol) {
   SegmentIntersection r;
   const Vec2 dc = b.centre - a.centre;
   const double d = dc.norm();
-  if (d <= tol && std::abs(a.radius - b.radius) <= tol) {
+  if (d <= tol && std::abs(a.radius() - b.radius()) <= tol) {
     // Same circle: shared stretches of the two angular intervals.
     const AngleInterval ia = ccwInterval(a), ib = ccwInterval(b);
     const double offset = detail::wrapPositive(ib.from - ia.from);
@@ -121,10 +121,10 @@ SegmentIntersection arcArc(const Segment& a, const Segment& b, double tol) {
         bestTo = hi;
       }
     }
-    if (best * a.radius > tol) {
+    if (best * a.radius() > tol) {
       r.overlap = true;
-      addPoint(r, a.centre + a.radius * direction(ia.from + bestFrom), tol);
-      addPoint(r, a.centre + a.radius * direction(ia.from + bestTo), tol);
+      addPoint(r, a.centre + a.radius() * direction(ia.from + bestFrom), tol);
+      addPoint(r, a.centre + a.radius() * direction(ia.from + bestTo), tol);
       return r;
     }
     // No shared stretch: they can still touch at end points.
@@ -134,9 +134,9 @@ SegmentIntersection arcArc(const Segment& a, const Segment& b, double tol) {
       if (detail::onArc(b, p, tol)) addPoint(r, p, tol);
     return r;
   }
-  if (d > a.radius + b.radius + tol || d < std::abs(a.radius - b.radius) - tol || d == 0.0) return r;
-  const double along = (a.radius * a.radius - b.radius * b.radius + d * d) / (2 * d);
-  const double h2 = a.radius * a.radius - along * along;
+  if (d > a.radius() + b.radius() + tol || d < std::abs(a.radius() - b.radius()) - tol || d == 0.0) return r;
+  const double along = (a.radius() * a.radius() - b.radius() * b.radius() + d * d) / (2 * d);
+  const double h2 = a.radius() * a.radius() - along * along;
   const Vec2 u = dc / d;
   const Vec2 base = a.centre + along * u;
   const Vec2 perp(-u.y(), u.x());
@@ -188,7 +188,7 @@ bool sameDirection(const Segment& a, const Segment& b, const Vec2& at) {
 /// sweep tests: a few products instead of lineArc.
 bool meetOnlyAtVertex(const Segment& arc, const Vec2& v, const Vec2& lineEnd, double tol) {
   const Vec2 g = v - arc.centre, w = lineEnd - v;
-  const double r = arc.radius;
+  const double r = arc.radius();
   const double size = std::abs(v.x()) + std::abs(v.y()) + std::abs(arc.centre.x()) + std::abs(arc.centre.y()) +
                       std::abs(w.x()) + std::abs(w.y()) + r;
   if (!(tol > 0) || !(r > 0)) return false;
@@ -276,7 +276,7 @@ double yAt(const Piece& p, const Segment& s, double x) {
   if (x >= p.right.x()) return p.right.y();
   if (!p.arc) return p.left.y() + (x - p.left.x()) * p.slope;
   const double dx = x - s.centre.x();
-  const double h = std::sqrt(std::max(0.0, s.radius * s.radius - dx * dx));
+  const double h = std::sqrt(std::max(0.0, s.radius() * s.radius() - dx * dx));
   return s.centre.y() + (p.upper ? h : -h);
 }
 
@@ -284,7 +284,7 @@ double yAt(const Piece& p, const Segment& s, double x) {
 double slopeAt(const Piece& p, const Segment& s, double x) {
   if (!p.arc) return p.slope;
   const double dx = x - s.centre.x();
-  const double h = std::sqrt(std::max(0.0, s.radius * s.radius - dx * dx));
+  const double h = std::sqrt(std::max(0.0, s.radius() * s.radius() - dx * dx));
   // Where x turns, the slope is infinite: upwards from the circle's left point on the upper half,
   // downwards on the lower; the other way round at its right point.
   if (h <= 1e-300) return (p.upper == (dx < 0)) ? 1e300 : -1e300;
@@ -312,7 +312,7 @@ void forEachPiece(const Segment& s, std::uint32_t index, F&& f) {
     return;
   }
   // Split where x turns: at the angles 0 and pi (mod 2 pi) inside the sweep.
-  const double a0 = s.startAngle, a1 = s.startAngle + s.sweep;
+  const double a0 = s.startAngle(), a1 = s.startAngle() + s.sweep;
   const double lo = std::min(a0, a1), hi = std::max(a0, a1);
   double cuts[5];
   int count = 0;
@@ -323,7 +323,7 @@ void forEachPiece(const Segment& s, std::uint32_t index, F&& f) {
   auto at = [&](double ang) {
     if (ang == a0) return s.start;
     if (ang == a1) return s.end;  // the ends exactly: the neighbours share them, bit for bit
-    return Vec2(s.centre + s.radius * Vec2(std::cos(ang), std::sin(ang)));
+    return Vec2(s.centre + s.radius() * Vec2(std::cos(ang), std::sin(ang)));
   };
   for (int k = 0; k + 1 < count; ++k) {
     const double mid = (cuts[k] + cuts[k + 1]) / 2;

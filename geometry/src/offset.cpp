@@ -27,7 +27,7 @@ int carrierIntersections(const Segment& a, const Segment& b, Vec2 out[2]) {
     if (len == 0.0) return 0;
     const Vec2 u = d / len;
     const Vec2 foot = line.start + u * u.dot(arc.centre - line.start);
-    const double h2 = arc.radius * arc.radius - (foot - arc.centre).squaredNorm();
+    const double h2 = arc.radius() * arc.radius() - (foot - arc.centre).squaredNorm();
     if (h2 < 0) return 0;
     const double h = std::sqrt(h2);
     out[0] = foot - h * u;
@@ -37,8 +37,8 @@ int carrierIntersections(const Segment& a, const Segment& b, Vec2 out[2]) {
   const Vec2 d = b.centre - a.centre;
   const double dist = d.norm();
   if (dist == 0.0) return 0;
-  const double x = (dist * dist + a.radius * a.radius - b.radius * b.radius) / (2 * dist);
-  const double h2 = a.radius * a.radius - x * x;
+  const double x = (dist * dist + a.radius() * a.radius() - b.radius() * b.radius()) / (2 * dist);
+  const double h2 = a.radius() * a.radius() - x * x;
   if (h2 < 0) return 0;
   const Vec2 u = d / dist;
   const Vec2 mid = a.centre + x * u;
@@ -69,8 +69,6 @@ bool trim(const Segment& offset, const Vec2& s, const Vec2& e, Segment& out) {
   out = offset;
   out.start = s;
   out.end = e;
-  out.radius = (s - offset.centre).norm();
-  out.startAngle = angleOf(s - offset.centre);
   out.sweep = offset.sweep < 0 ? -magnitude : magnitude;
   return magnitude > 0.0;
 }
@@ -86,12 +84,12 @@ std::optional<Segment> offsetSegment(const Segment& s, double d) {
     return Segment::line(s.start + shift, s.end + shift);
   }
   // Left of a counter-clockwise arc is towards the centre.
-  const double r = s.sweep >= 0 ? s.radius - d : s.radius + d;
+  const double r = s.sweep >= 0 ? s.radius() - d : s.radius() + d;
   if (r <= 0.0) return std::nullopt;
   Segment o = s;
-  o.radius = r;
-  o.start = s.centre + r * direction(s.startAngle);
-  o.end = s.centre + r * direction(s.startAngle + s.sweep);
+  const double a0 = s.startAngle();
+  o.start = s.centre + r * direction(a0);
+  o.end = s.centre + r * direction(a0 + s.sweep);
   return o;
 }
 

@@ -31,8 +31,8 @@ class Walk {
  public:
   Walk(const Segment& s, double t0, double dt) : s_(s) {
     if (!s.isArc()) return;
-    const double a = s.startAngle + t0 * s.sweep, step = s.sweep * dt;
-    radius_ = s.radius * Vec2(std::cos(a), std::sin(a));
+    const double a = s.startAngle() + t0 * s.sweep, step = s.sweep * dt;
+    radius_ = s.radius() * Vec2(std::cos(a), std::sin(a));
     rotation_ = Vec2(std::cos(step), std::sin(step));
   }
   /// The point at t, the parameter the walk has reached.
@@ -59,8 +59,8 @@ struct PointJet {
 };
 PointJet jetAt(const Segment& s, double t) {
   if (!s.isArc()) return {s.pointAt(t), s.end - s.start, Vec2::Zero()};
-  const double a = s.startAngle + t * s.sweep;
-  const Vec2 r = s.radius * Vec2(std::cos(a), std::sin(a));
+  const double a = s.startAngle() + t * s.sweep;
+  const Vec2 r = s.radius() * Vec2(std::cos(a), std::sin(a));
   // The ends exactly, as pointAt gives them (the samples use those).
   const Vec2 p = t <= 0.0 ? s.start : t >= 1.0 ? s.end : Vec2(s.centre + r);
   return {p, s.sweep * Vec2(-r.y(), r.x()), -s.sweep * s.sweep * r};
@@ -99,7 +99,7 @@ double newtonMax(G&& g, double t0, double h) {
 double tangentAngle(const Segment& s, double t) {
   if (!s.isArc()) return angleOf(s.end - s.start);
   const double turn = s.sweep >= 0 ? kPi / 2 : -kPi / 2;
-  return s.startAngle + t * s.sweep + turn;
+  return s.startAngle() + t * s.sweep + turn;
 }
 
 double wrapSigned(double a) {
@@ -313,14 +313,12 @@ std::optional<Segment> singleSection(const Segment& lower, const Segment& upper,
     // d max(rL, rU) of the true section; that is accepted up to half the tolerance.
     const double d = std::abs(lower.sweep - upper.sweep);
     const Vec2 z =
-        (1.0 - s) * lower.radius * direction(lower.startAngle) + s * upper.radius * direction(upper.startAngle);
-    if (d * std::max(lower.radius, upper.radius) <= tolerance / 2 && z.norm() > tolerance) {
+        (1.0 - s) * lower.radius() * direction(lower.startAngle()) + s * upper.radius() * direction(upper.startAngle());
+    if (d * std::max(lower.radius(), upper.radius()) <= tolerance / 2 && z.norm() > tolerance) {
       Segment arc = lower;
       arc.centre = (1.0 - s) * lower.centre + s * upper.centre;
       arc.start = a;
       arc.end = b;
-      arc.radius = (a - arc.centre).norm();
-      arc.startAngle = angleOf(a - arc.centre);
       arc.sweep = (1.0 - s) * lower.sweep + s * upper.sweep;
       exact = d == 0.0;
       return arc;

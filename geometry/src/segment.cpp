@@ -22,29 +22,28 @@ Segment Segment::arc(const Vec2& start, const Vec2& end, const Vec2& centre, Arc
   s.start = start;
   s.end = end;
   s.centre = centre;
-  s.radius = (start - centre).norm();
-  s.startAngle = angleOf(start - centre);
+  const double startAngle = angleOf(start - centre);
   const double endAngle = angleOf(end - centre);
-  const bool full = (end - start).norm() <= 1e-12 * std::max(1.0, s.radius);
+  const bool full = (end - start).norm() <= 1e-12 * std::max(1.0, (start - centre).norm());
   if (dir == ArcDirection::CounterClockwise) {
-    double w = detail::wrapPositive(endAngle - s.startAngle);
+    double w = detail::wrapPositive(endAngle - startAngle);
     if (full || w == 0.0) w = kTwoPi;
     s.sweep = w;
   } else {
-    double w = detail::wrapPositive(s.startAngle - endAngle);
+    double w = detail::wrapPositive(startAngle - endAngle);
     if (full || w == 0.0) w = kTwoPi;
     s.sweep = -w;
   }
   return s;
 }
 
-double Segment::length() const { return kind == SegmentKind::Line ? (end - start).norm() : radius * std::abs(sweep); }
+double Segment::length() const { return kind == SegmentKind::Line ? (end - start).norm() : radius() * std::abs(sweep); }
 
 Vec2 Segment::pointAt(double t) const {
   if (kind == SegmentKind::Line) return start + t * (end - start);
   if (t <= 0.0) return start;
   if (t >= 1.0) return end;
-  return centre + radius * geometry::direction(startAngle + t * sweep);
+  return centre + radius() * geometry::direction(startAngle() + t * sweep);
 }
 
 Vec2 Segment::tangentAt(double t) const {
@@ -53,7 +52,7 @@ Vec2 Segment::tangentAt(double t) const {
     const double n = d.norm();
     return n > 0 ? Vec2(d / n) : Vec2(Vec2::Zero());
   }
-  const double a = startAngle + t * sweep;
+  const double a = startAngle() + t * sweep;
   const Vec2 radial = geometry::direction(a);
   // Counter-clockwise travel is the radial direction turned by +90 degrees.
   return sweep >= 0 ? Vec2(-radial.y(), radial.x()) : Vec2(radial.y(), -radial.x());
@@ -68,9 +67,10 @@ Box Segment::bounds() const {
     // The directions are exact (cos and sin of q pi/2 are not: cos(pi/2) is 6e-17), and no sine is
     // taken: the sweeps make every segment's box.
     static constexpr double kAxis[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    const double a0 = startAngle(), r = radius();
     for (int q = 0; q < 4; ++q) {
       const double phi = q * kPi / 2;
-      if (detail::angleAlong(*this, phi) <= std::abs(sweep)) b.add(centre + radius * Vec2(kAxis[q][0], kAxis[q][1]));
+      if (detail::angleAlong(a0, sweep, phi) <= std::abs(sweep)) b.add(centre + r * Vec2(kAxis[q][0], kAxis[q][1]));
     }
   }
   return b;
@@ -81,10 +81,7 @@ Segment Segment::reversed() const {
   Segment s = *this;
   s.start = end;
   s.end = start;
-  s.sweep = -sweep;
-  // The radius is defined by the start point; keep the circle, re-anchor on the new start.
-  s.radius = (s.start - centre).norm();
-  s.startAngle = angleOf(s.start - centre);
+  s.sweep = -sweep;  // the circle is the one through the new start (radius() and startAngle() follow it)
   return s;
 }
 

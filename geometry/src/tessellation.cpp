@@ -36,8 +36,8 @@ ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
   const double sweep = std::abs(arc.sweep);
   ChordPlan plan;
   if (sampling.mode == SamplingMode::Step) {
-    plan.span = stepAngle(sampling.value, arc.radius);
-    if (sampling.value < 2 * arc.radius) plan.sinHalf = sampling.value / (2 * arc.radius);
+    plan.span = stepAngle(sampling.value, arc.radius());
+    if (sampling.value < 2 * arc.radius()) plan.sinHalf = sampling.value / (2 * arc.radius());
     // A remainder smaller than 1e-9 of a step is rounding noise, not a chord.
     const double q = sweep / plan.span;
     const double whole = std::floor(q + 1e-9);
@@ -46,7 +46,7 @@ ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
     if (plan.rest <= 1e-9 * plan.span) plan.rest = 0.0;
     if (plan.full == 0) plan.rest = sweep;  // the whole arc is shorter than one step
   } else {
-    const double maxSpan = toleranceAngle(sampling.value, arc.radius);
+    const double maxSpan = toleranceAngle(sampling.value, arc.radius());
     plan.full = static_cast<std::size_t>(std::max(1.0, std::ceil(sweep / maxSpan - 1e-9)));
     plan.span = sweep / static_cast<double>(plan.full);
     plan.rest = 0.0;
@@ -143,21 +143,21 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
   if (out) {
     out->reserve(out->size() + total);
     for (std::size_t i = 1; i < total; ++i) {
-      const double a = seg.startAngle + dir * plan.span * static_cast<double>(i);
-      out->push_back(seg.centre + seg.radius * direction(a));
+      const double a = seg.startAngle() + dir * plan.span * static_cast<double>(i);
+      out->push_back(seg.centre + seg.radius() * direction(a));
     }
     out->push_back(seg.end);
   }
   const double sweep = std::abs(seg.sweep);
   double weighted = 0.0;
   if (plan.full > 0) {
-    const ChordError e =
-        plan.sinHalf > 0 ? chordErrorOfSine(seg.radius, plan.span, plan.sinHalf) : chordError(seg.radius, plan.span);
+    const ChordError e = plan.sinHalf > 0 ? chordErrorOfSine(seg.radius(), plan.span, plan.sinHalf)
+                                          : chordError(seg.radius(), plan.span);
     stats.maxDeviation = e.sagitta;
     weighted += static_cast<double>(plan.full) * plan.span * e.meanRelative;
   }
   if (plan.rest > 0) {
-    const ChordError e = chordError(seg.radius, plan.rest);
+    const ChordError e = chordError(seg.radius(), plan.rest);
     stats.maxDeviation = std::max(stats.maxDeviation, e.sagitta);
     weighted += plan.rest * e.meanRelative;
   }
@@ -236,7 +236,7 @@ CapacityFit fitToCapacity(std::span<const Segment> path, std::size_t maxPoints, 
   CapacityFit fit;
   double maxRadius = 0.0;
   for (const Segment& s : path)
-    if (s.isArc()) maxRadius = std::max(maxRadius, s.radius);
+    if (s.isArc()) maxRadius = std::max(maxRadius, s.radius());
   // Coarsest possible sampling: every arc in half circles (and no finer).
   const double coarsest = mode == SamplingMode::Step ? 2 * maxRadius : maxRadius;
   const Sampling coarse{mode, std::max(coarsest, 1e-9)};
@@ -281,9 +281,9 @@ CapacityFit fitToCapacity(std::span<const Segment> path, std::size_t maxPoints, 
 SeedArcAngles seedAngles(const Segment& arc, double k) {
   SeedArcAngles a;
   // The seed measures angles clockwise from +X, so its angle is minus ours.
-  a.alpha = detail::wrapPositive(-arc.startAngle);
+  a.alpha = detail::wrapPositive(-arc.startAngle());
   a.beta = a.alpha - arc.sweep;  // clockwise sweep (G2) makes delta grow
-  a.gamma = stepAngle(k, arc.radius);
+  a.gamma = stepAngle(k, arc.radius());
   return a;
 }
 
@@ -297,7 +297,8 @@ std::vector<Vec2> seedArcPoints(const Segment& arc, double k) {
   for (std::size_t i = 1; i <= steps; ++i) {
     const double delta = a.alpha + (clockwise ? 1.0 : -1.0) * a.gamma * static_cast<double>(i);
     if (std::abs(delta - a.alpha) >= total - 1e-9 * a.gamma) break;  // reached beta
-    points.emplace_back(arc.centre.x() + std::cos(delta) * arc.radius, arc.centre.y() - std::sin(delta) * arc.radius);
+    points.emplace_back(arc.centre.x() + std::cos(delta) * arc.radius(),
+                        arc.centre.y() - std::sin(delta) * arc.radius());
   }
   points.push_back(arc.end);
   return points;

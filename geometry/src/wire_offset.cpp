@@ -40,15 +40,15 @@ Segment exactOffset(const Segment& s, double d, double tol) {
   // an arc whose end sits off its circle (within the tolerance it was accepted with) keeps meeting
   // its neighbour's offset where the contour meets it.
   const double toward = s.sweep >= 0 ? -d : d;
-  const double r = s.radius + toward;
+  const double r = s.radius() + toward;
   if (std::abs(r) <= tol) return Segment::line(s.centre, s.centre);
   Segment o = s;
-  o.radius = std::abs(r);
-  if (r < 0) o.startAngle = s.startAngle + kPi;
-  o.start = o.centre + o.radius * direction(o.startAngle);
+  const double radius = std::abs(r);
+  const double a0 = r < 0 ? s.startAngle() + kPi : s.startAngle();
+  o.start = o.centre + radius * direction(a0);
   const Vec2 ue = s.end - s.centre;
   const double re = ue.norm();
-  o.end = o.centre + o.radius * direction(o.startAngle + o.sweep);
+  o.end = o.centre + radius * direction(a0 + o.sweep);
   if (re > 0) o.end = s.centre + ue * ((re + toward) / re);
   return o;
 }
@@ -58,8 +58,6 @@ Segment joinArc(const Vec2& c, const Vec2& p, const Vec2& q, double sweep) {
   Segment a;
   a.kind = SegmentKind::Arc;
   a.centre = c;
-  a.radius = (p - c).norm();
-  a.startAngle = angleOf(p - c);
   a.sweep = sweep;
   a.start = p;
   a.end = q;
@@ -83,10 +81,10 @@ struct Sub {
 Segment subSegment(const Segment& s, double t0, double t1) {
   if (!s.isArc()) return Segment::line(t0 <= 0 ? s.start : s.pointAt(t0), t1 >= 1 ? s.end : s.pointAt(t1));
   Segment a = s;
-  a.startAngle = s.startAngle + s.sweep * t0;
+  const double a0 = s.startAngle() + s.sweep * t0, r = s.radius();
   a.sweep = s.sweep * (t1 - t0);
-  a.start = t0 <= 0 ? s.start : s.centre + s.radius * direction(a.startAngle);
-  a.end = t1 >= 1 ? s.end : s.centre + s.radius * direction(a.startAngle + a.sweep);
+  a.start = t0 <= 0 ? s.start : s.centre + r * direction(a0);
+  a.end = t1 >= 1 ? s.end : s.centre + r * direction(a0 + a.sweep);
   return a;
 }
 
@@ -111,8 +109,8 @@ int windingOf(const Segment& s, const Vec2& p) {
       return w;
     }
     const double dy = p.y() - s.centre.y();
-    if (std::abs(dy) >= s.radius) return w;
-    const double h = std::sqrt(s.radius * s.radius - dy * dy);
+    if (std::abs(dy) >= s.radius()) return w;
+    const double h = std::sqrt(s.radius() * s.radius() - dy * dy);
     for (const double x : {s.centre.x() - h, s.centre.x() + h}) {
       if (x <= p.x()) continue;
       const Vec2 q(x, p.y());
@@ -244,8 +242,7 @@ void WireOffsetBuilder::offsetAndJoin() {
     Segment& b = off[next];
     const Vec2 p = a.end, q = b.start;
     if ((p - q).norm() <= tol_) {
-      b.start = p;  // exactly shared, for the linking below
-      if (b.isArc()) b.startAngle = angleOf(p - b.centre);
+      b.start = p;  // exactly shared, for the linking below (an arc's circle follows its start)
       continue;
     }
     const Vec2 v = contour_[kept_[k]].end;
@@ -356,7 +353,6 @@ bool WireOffsetBuilder::keep() {
       Segment piece = subSegment(raw_[i].seg, at[s].first, at[s + 1].first);
       piece.start = at[s].second;
       piece.end = at[s + 1].second;
-      if (piece.isArc()) piece.startAngle = angleOf(piece.start - piece.centre);
       if (piece.length() <= tol_ * 0.01) continue;
       if (!valid(piece.pointAt(0.5))) continue;
       subs_.push_back({piece, i, at[s].first, at[s + 1].first});
@@ -409,7 +405,6 @@ void WireOffsetBuilder::link() {
       Segment merged = subSegment(raw_[sub.raw].seg, lastT0, sub.t1);
       merged.start = path.back().segment.start;
       merged.end = sub.seg.end;
-      if (merged.isArc()) merged.startAngle = angleOf(merged.start - merged.centre);
       path.back().segment = merged;
     } else {
       path.push_back({sub.seg, raw_[sub.raw].element, raw_[sub.raw].corner});
@@ -502,7 +497,7 @@ void WireOffsetBuilder::findLost() {
     }
     if (!std::isfinite(run.uncut)) run.uncut = 0;
     const Segment& s0 = contour_[run.first];
-    run.fillet = run.count == 1 && s0.isArc() && s0.radius < dist_ && (d_ > 0) == (s0.sweep > 0);
+    run.fillet = run.count == 1 && s0.isArc() && s0.radius() < dist_ && (d_ > 0) == (s0.sweep > 0);
     result_.lost.push_back(run);
     r = e;
   }

@@ -82,7 +82,7 @@ TEST(biarc_test, a_circle_is_fitted_by_its_own_arcs) {
   c.t1 = 3;
   const BiarcFit fit = fitBiarcs(c, {});
   EXPECT_EQ(fit.spans.size(), 1u);
-  for (const Segment& s : fit.segments) EXPECT_NEAR(s.radius, 7.0, 1e-6);
+  for (const Segment& s : fit.segments) EXPECT_NEAR(s.radius(), 7.0, 1e-6);
 }
 
 TEST(seed003_table1_test, sine_within_5um_in_no_more_spans_than_cawep) {

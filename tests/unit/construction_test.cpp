@@ -30,7 +30,7 @@ std::string readText(const fs::path& path) {
 }
 
 bool finite(const kerf::geometry::Segment& s) {
-  return s.start.allFinite() && s.end.allFinite() && s.centre.allFinite() && std::isfinite(s.radius) &&
+  return s.start.allFinite() && s.end.allFinite() && s.centre.allFinite() && std::isfinite(s.radius()) &&
          std::isfinite(s.sweep);
 }
 

@@ -21,7 +21,7 @@ using kerf::geometry::Vec2;
 void expectTangentFillet(const Corner& c, double r) {
   ASSERT_EQ(c.status, CornerStatus::Ok);
   ASSERT_TRUE(c.corner.isArc());
-  EXPECT_NEAR(c.corner.radius, r, 1e-12);
+  EXPECT_NEAR(c.corner.radius(), r, 1e-12);
   EXPECT_NEAR((c.first.end - c.corner.start).norm(), 0.0, 1e-12);
   EXPECT_NEAR((c.corner.end - c.second.start).norm(), 0.0, 1e-12);
   EXPECT_NEAR((c.first.tangentAt(1.0) - c.corner.tangentAt(0.0)).norm(), 0.0, 1e-9);

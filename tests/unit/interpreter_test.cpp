@@ -137,7 +137,7 @@ TEST(interpreter_test, g41_with_an_h_register_is_applied_with_arcs_at_convex_cor
   for (std::size_t i = 0; i < t.moves.size(); ++i) {
     if (t.offsetRole[i] != kerf::converter::OffsetRole::Corner) continue;
     ++corners;
-    EXPECT_NEAR(t.moves[i].lower.radius, 0.13, 1e-12);
+    EXPECT_NEAR(t.moves[i].lower.radius(), 0.13, 1e-12);
     EXPECT_LT(t.moves[i].lower.sweep, 0) << "a left offset rolls clockwise round a convex corner";
   }
   EXPECT_EQ(corners, 3);

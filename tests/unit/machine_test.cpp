@@ -128,7 +128,7 @@ TEST(machine_test, micrometres_and_absolute_centres_from_the_evidence) {
   const std::string& note = first(p, Code::MachineDetected).message;
   EXPECT_NE(note.find("µm integers: 12 coordinates without a decimal point, largest 6500"), std::string::npos) << note;
   EXPECT_NE(note.find("absolute centres: 2 of 2 arcs close only that way"), std::string::npos) << note;
-  EXPECT_NEAR(p.toolpath.moves[1].lower.radius, 6.5, 1e-12);
+  EXPECT_NEAR(p.toolpath.moves[1].lower.radius(), 6.5, 1e-12);
   // Explicit options win over the evidence.
   PipelineOptions o;
   o.read.integerUnit = IntegerUnit::Millimetre;
@@ -171,7 +171,7 @@ TEST(machine_test, a_long_program_reads_the_same_when_its_parse_tree_goes_back_a
     ASSERT_EQ(p.toolpath.moves[static_cast<std::size_t>(i) + 1].lower.end, end) << "move " << i + 1;
   }
   EXPECT_EQ(p.toolpath.moves[30001].lower.centre, kerf::geometry::Vec2(0, 0));
-  EXPECT_NEAR(p.toolpath.moves[30001].lower.radius, std::hypot(1.0, 30000.0), 1e-9);
+  EXPECT_NEAR(p.toolpath.moves[30001].lower.radius(), std::hypot(1.0, 30000.0), 1e-9);
   EXPECT_EQ(p.toolpath.moves[30002].lower.end, kerf::geometry::Vec2(0, 0));
 
   // The G01 of line 2 is the motion word in force 30,000 blocks on: an arc that cannot be built

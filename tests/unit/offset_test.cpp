@@ -20,7 +20,7 @@ using kerf::geometry::Vec2;
 
 /// Distance from p to the carrier of s (infinite line or full circle).
 double carrierDistance(const Segment& s, const Vec2& p) {
-  if (s.isArc()) return std::abs((p - s.centre).norm() - s.radius);
+  if (s.isArc()) return std::abs((p - s.centre).norm() - s.radius());
   const Vec2 d = (s.end - s.start).normalized();
   return std::abs(kerf::geometry::cross(d, p - s.start));
 }
@@ -36,13 +36,13 @@ TEST(offset_test, line_moves_left_by_the_distance) {
 
 TEST(offset_test, arcs_stay_concentric_and_collapse_at_their_radius) {
   const Segment ccw = Segment::arc({5, 0}, {0, 5}, {0, 0}, ArcDirection::CounterClockwise);
-  EXPECT_NEAR(offsetSegment(ccw, 1.0)->radius, 4.0, 1e-15);  // left of CCW is the centre
-  EXPECT_NEAR(offsetSegment(ccw, -1.0)->radius, 6.0, 1e-15);
+  EXPECT_NEAR(offsetSegment(ccw, 1.0)->radius(), 4.0, 1e-15);  // left of CCW is the centre
+  EXPECT_NEAR(offsetSegment(ccw, -1.0)->radius(), 6.0, 1e-15);
   EXPECT_EQ(offsetSegment(ccw, 1.0)->centre, ccw.centre);
   EXPECT_FALSE(offsetSegment(ccw, 5.0).has_value());   // radius 0: collapsed
   EXPECT_TRUE(offsetSegment(ccw, 4.999).has_value());  // near miss
   const Segment cw = ccw.reversed();
-  EXPECT_NEAR(offsetSegment(cw, 1.0)->radius, 6.0, 1e-15);
+  EXPECT_NEAR(offsetSegment(cw, 1.0)->radius(), 6.0, 1e-15);
 }
 
 TEST(offset_test, sharp_corners_meet_at_the_offset_lines_intersection) {

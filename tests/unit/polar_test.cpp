@@ -42,7 +42,7 @@ TEST(spiral_as_arcs_test, constant_radius_is_exact_arcs_about_the_centre) {
   for (const Segment& p : s.pieces) {
     ASSERT_TRUE(p.isArc());
     EXPECT_NEAR(p.centre.norm(), 0.0, 1e-9);
-    EXPECT_NEAR(p.radius, 20.0, 1e-9);
+    EXPECT_NEAR(p.radius(), 20.0, 1e-9);
     EXPECT_GT(p.sweep, 0.0);  // C increasing: counter-clockwise
   }
   EXPECT_NEAR(s.pieces.front().start.x(), 20 * std::cos(10 / kDegreesPerRadian), 1e-12);

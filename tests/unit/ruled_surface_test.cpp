@@ -137,7 +137,7 @@ TEST(ruled_surface_test, sections_of_lines_and_matching_arcs_are_exact) {
   const Segment lo = Segment::arc({10, 0}, {0, 10}, {0, 0}, ArcDirection::CounterClockwise);
   const Segment up = Segment::arc({8, 0}, {0, 8}, {0, 0}, ArcDirection::CounterClockwise);
   EXPECT_TRUE(appendSection(lo, up, 0.5, 1e-3, out));
-  EXPECT_NEAR(out.back().radius, 9.0, 1e-12);
+  EXPECT_NEAR(out.back().radius(), 9.0, 1e-12);
   // An arc with a line: a polyline, equal steps of t, each chord within the tolerance.
   out.clear();
   const Segment chordLine = Segment::line({8, 0}, {0, 8});

@@ -152,7 +152,7 @@ TEST(taper_test, taper_angle_offsets_by_height_times_tangent) {
   EXPECT_NEAR(up[1].start.y(), d, 1e-12);
   EXPECT_NEAR(up[1].end.y(), d, 1e-12);
   EXPECT_NEAR((up[0].end - Vec2(-d, d)).norm(), 0.0, 1e-12);  // sharp corner of the start-up
-  EXPECT_NEAR(up[2].radius, 5.0 - d, 1e-12);                  // concentric, left of CCW: smaller
+  EXPECT_NEAR(up[2].radius(), 5.0 - d, 1e-12);                // concentric, left of CCW: smaller
   EXPECT_EQ(up[0].start, Vec2(0, -5));
   EXPECT_EQ(up.back().end, Vec2(20, 10));
   // On the arc the offset is square to the travel: exactly 2 degrees. At the sharp start-up

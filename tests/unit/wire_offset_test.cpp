@@ -60,7 +60,7 @@ TEST(wire_offset_test, a_square_outside_gets_arcs_at_its_corners_of_the_offset_r
     if (!p.corner) continue;
     ++corners;
     ASSERT_TRUE(p.segment.isArc());
-    EXPECT_NEAR(p.segment.radius, 1.0, 1e-12);
+    EXPECT_NEAR(p.segment.radius(), 1.0, 1e-12);
     EXPECT_GT(p.segment.sweep, 0) << "a right offset turns counter-clockwise round a convex corner";
     EXPECT_NEAR(std::abs(p.segment.sweep), std::numbers::pi / 2, 1e-12);
   }

@@ -106,7 +106,7 @@ void reportContourWire(const ContourWire& wire, std::size_t number, const Drawin
     if (run.fillet) {
       diags.note(Code::InsideCornerRadius, source, spanOf(k),
                  "the inside corner of " + name + " at " + formatPoint(run.where) + " has radius " +
-                     formatFixed(chain.path[k].radius, 3) + " mm, smaller than the wire offset " +
+                     formatFixed(chain.path[k].radius(), 3) + " mm, smaller than the wire offset " +
                      formatFixed(radius, 3) + " mm: the wire cuts it with radius " + formatFixed(radius, 3) + " mm",
                  formatFixed(run.uncut, 4) + " mm of material stays in the corner");
       continue;

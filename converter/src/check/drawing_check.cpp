@@ -78,7 +78,8 @@ std::vector<geometry::Segment> programmedRun(const Toolpath& tp, const EdgeRun& 
 /// radius about that corner, which moving back by d collapses into its centre?
 bool isCornerArc(const std::vector<geometry::Segment>& path, std::size_t k, double d) {
   const geometry::Segment& s = path[k];
-  return s.isArc() && std::abs(s.radius - std::abs(d)) <= kJoinTolerance && !geometry::offsetSegment(s, d * (1 + 1e-9));
+  return s.isArc() && std::abs(s.radius() - std::abs(d)) <= kJoinTolerance &&
+         !geometry::offsetSegment(s, d * (1 + 1e-9));
 }
 
 /// A wire path's corner arcs, moved back by d, become their centres: the corner a wire rolls round

@@ -18,8 +18,8 @@ void Interpreter::reportOffsetIssues(const geometry::OffsetChainResult& r, const
     switch (issue.problem) {
       case geometry::OffsetProblem::Collapsed:
         message = std::string("the taper offset of ") + formatFixed(std::abs(distance[issue.index]), 3) +
-                  " mm on the " + plane + " plane is larger than this arc's radius " + formatFixed(m.lower.radius, 3) +
-                  " mm: there the arc shrinks to a sharp corner";
+                  " mm on the " + plane + " plane is larger than this arc's radius " +
+                  formatFixed(m.lower.radius(), 3) + " mm: there the arc shrinks to a sharp corner";
         break;
       case geometry::OffsetProblem::Reversed:
         message = std::string("the taper offset of ") + formatFixed(std::abs(distance[issue.index]), 3) +
@@ -118,7 +118,7 @@ std::vector<TaperCorner> Interpreter::cornersOfRun(std::size_t k, std::size_t e)
     if (!tangent(moves[m - 1].lower.tangentAt(1.0), arc.tangentAt(0.0)) ||
         !tangent(arc.tangentAt(1.0), moves[m + 1].lower.tangentAt(0.0)))
       continue;
-    out.push_back({m, CodeEffect::CornerEqual, arc.radius, std::nullopt, false, arc.sweep > 0});
+    out.push_back({m, CodeEffect::CornerEqual, arc.radius(), std::nullopt, false, arc.sweep > 0});
   }
   std::sort(out.begin(), out.end(), [](const TaperCorner& a, const TaperCorner& b) { return a.move < b.move; });
   return out;

@@ -152,7 +152,7 @@ void Interpreter::reportLostRuns(const OffsetRun& run, const std::vector<geometr
     const Move& m = toolpath_.moves[run.first + 1 + lost.first];
     if (lost.fillet)
       diags_.note(Code::InsideCornerRadius, src_, m.span,
-                  "this arc's radius " + formatFixed(m.lower.radius, 3) + " mm is smaller than the wire offset " +
+                  "this arc's radius " + formatFixed(m.lower.radius(), 3) + " mm is smaller than the wire offset " +
                       formatFixed(*run.value, 3) + " mm: the wire cuts the corner with radius " +
                       formatFixed(*run.value, 3) + " mm");
     else
@@ -282,7 +282,7 @@ void Interpreter::renumberAfterOffset(OffsetBuild& b) {
     if (c.chamfer || c.move >= newCount || b.rows[c.move].offsetRole != OffsetRole::Element ||
         !b.rows[c.move].move.lower.isArc())
       continue;
-    const double grown = b.rows[c.move].move.lower.radius - c.size;
+    const double grown = b.rows[c.move].move.lower.radius() - c.size;
     c.size += grown;
     if (c.upperSize) *c.upperSize += grown;
   }

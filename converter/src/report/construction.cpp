@@ -77,9 +77,9 @@ void radiusConstruction(std::vector<Mark>& marks, const Segment& d, double r) {
   // The bisector runs through both centres and a little beyond; when they coincide (a half circle)
   // it is drawn a quarter of the radius either side.
   Vec2 along = rejected - taken;
-  if (along.norm() < 1e-9 * std::max(1.0, d.radius)) {
+  if (along.norm() < 1e-9 * std::max(1.0, d.radius())) {
     const Vec2 chord = (d.end - d.start).normalized();
-    along = 0.5 * d.radius * Vec2(-chord.y(), chord.x());
+    along = 0.5 * d.radius() * Vec2(-chord.y(), chord.x());
   }
   add(marks, Mark::Kind::Segment, Mark::Role::Bisector, Segment::line(taken - 0.15 * along, rejected + 0.15 * along),
       "perpendicular bisector of the chord");
@@ -105,14 +105,14 @@ void vectorConstruction(std::vector<Mark>& marks, const Toolpath& tp, std::size_
   // The vector already joins the start and the centre: the radius is drawn to the end, which lies
   // on the circle within the accepted tolerance.
   add(marks, Mark::Kind::Segment, Mark::Role::Radius, Segment::line(d.centre, d.end),
-      "r = |start - centre| = " + mm(d.radius));
+      "r = |start - centre| = " + mm(d.radius()));
 }
 
 /// The angles about the centre: the +X ray they are measured from, the start and end angles
 /// (counter-clockwise, and seed 000's clockwise alpha and beta), the sweep and direction.
 void angleConstruction(std::vector<Mark>& marks, const Segment& s, const geometry::SeedArcAngles& seed) {
   const Vec2 c = s.centre;
-  const double r = s.radius;
+  const double r = s.radius();
   add(marks, Mark::Kind::Segment, Mark::Role::Angle, Segment::line(c, c + Vec2(0.45 * r, 0)), "+X");
   auto angleArc = [&](double a, double radius, std::string label) {
     const double to = ccwAngle(a);
@@ -126,10 +126,10 @@ void angleConstruction(std::vector<Mark>& marks, const Segment& s, const geometr
                      geometry::ArcDirection::CounterClockwise),
         std::move(label));
   };
-  angleArc(s.startAngle, 0.3 * r,
-           "start " + deg(ccwAngle(s.startAngle)) + " deg ccw; alpha " + deg(seed.alpha) + " (seed, cw)");
-  angleArc(s.startAngle + s.sweep, 0.2 * r,
-           "end " + deg(ccwAngle(s.startAngle + s.sweep)) + " deg ccw; beta " + deg(seed.beta) + " (seed, cw)");
+  angleArc(s.startAngle(), 0.3 * r,
+           "start " + deg(ccwAngle(s.startAngle())) + " deg ccw; alpha " + deg(seed.alpha) + " (seed, cw)");
+  angleArc(s.startAngle() + s.sweep, 0.2 * r,
+           "end " + deg(ccwAngle(s.startAngle() + s.sweep)) + " deg ccw; beta " + deg(seed.beta) + " (seed, cw)");
 }
 
 /// The chords at the sampling and the largest deviation, marked on the first chord (every full
@@ -148,7 +148,7 @@ std::optional<double> chordConstruction(std::vector<Mark>& marks, const Segment&
     }
   const Vec2 a = s.start, b = points.front(), m = 0.5 * (a + b);
   add(marks, Mark::Kind::Segment, Mark::Role::Deviation, Segment::line(a, b));  // the worst chord
-  const Vec2 onArc = (m - s.centre).norm() > 0 ? s.centre + s.radius * (m - s.centre).normalized() : m;
+  const Vec2 onArc = (m - s.centre).norm() > 0 ? s.centre + s.radius() * (m - s.centre).normalized() : m;
   const bool step = sampling.mode == geometry::SamplingMode::Step;
   add(marks, Mark::Kind::Segment, Mark::Role::Deviation, Segment::line(m, onArc),
       "max deviation " + formatFixed(st.maxDeviation, 6) + " mm" +
@@ -247,7 +247,7 @@ std::vector<Mark> marksOf(const Toolpath& tp, std::size_t i, const geometry::Sam
     const geometry::SeedArcAngles seed = geometry::seedAngles(s, k);
     angleConstruction(marks, s, seed);
     marks[0].label = "sweep " + deg(std::abs(s.sweep)) + " deg " +
-                     (s.sweep < 0 ? "clockwise (G02)" : "counter-clockwise (G03)") + ", radius " + mm(s.radius);
+                     (s.sweep < 0 ? "clockwise (G02)" : "counter-clockwise (G03)") + ", radius " + mm(s.radius());
     maxDeviation = chordConstruction(marks, s, sampling, seed);
   } else {
     marks[0].label = std::string(m.kind == MoveKind::Rapid ? "rapid" : "line") + ", length " + mm(s.length()) + " mm";

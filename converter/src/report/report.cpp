@@ -150,7 +150,7 @@ std::string segmentText(const geometry::Segment& s, int decimals) {
   std::string out = s.isArc() ? std::string("arc ") + (s.sweep < 0 ? "cw " : "ccw ") : "line ";
   out += p(s.start) + " -> " + p(s.end);
   if (s.isArc())
-    out += " centre " + p(s.centre) + " r " + formatFixed(s.radius, decimals) + " sweep " +
+    out += " centre " + p(s.centre) + " r " + formatFixed(s.radius(), decimals) + " sweep " +
            formatFixed(s.sweep * 180.0 / geometry::kPi, decimals);
   return out;
 }
@@ -342,7 +342,7 @@ json segmentJson(const geometry::Segment& s) {
   e["end"] = vec(s.end);
   if (s.isArc()) {
     e["centre"] = vec(s.centre);
-    e["radius"] = s.radius;
+    e["radius"] = s.radius();
     e["sweep"] = s.sweep;
   }
   return e;
@@ -528,7 +528,7 @@ std::string formatTrace(const Toolpath& toolpath, const Diagnostics& diags) {
     if (m.kind == MoveKind::Arc) out += s.sweep < 0 ? " cw" : " ccw";
     out += " " + p6(s.start) + " -> " + p6(s.end);
     if (m.kind == MoveKind::Arc)
-      out += " centre " + p6(s.centre) + " r " + f6(s.radius) + " sweep " + f6(s.sweep * 180.0 / geometry::kPi) +
+      out += " centre " + p6(s.centre) + " r " + f6(s.radius()) + " sweep " + f6(s.sweep * 180.0 / geometry::kPi) +
              " from " + centreFormName(m.centreForm);
     if (m.callDepth > 0) out += " depth " + std::to_string(m.callDepth);
     out += "\n";
@@ -631,7 +631,7 @@ void explainLower(std::string& out, const Toolpath& toolpath, std::size_t i, con
   const OffsetRole role = i < toolpath.offsetRole.size() ? toolpath.offsetRole[i] : OffsetRole::None;
   const geometry::Segment& d = role == OffsetRole::Element ? toolpath.programmed[i] : s;
   if (role == OffsetRole::Corner) {
-    out += "  centre " + formatPoint(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius) +
+    out += "  centre " + formatPoint(s.centre) + ": the programmed corner; radius = the wire offset " + mm(s.radius()) +
            " mm\n";
   } else if (const Toolpath::CornerMade* corner = toolpath.cornerAt(i); corner && m.centreForm == CentreForm::None) {
     out += "  centre " + formatPoint(d.centre) + ": the fillet of the corner word, radius " + mm(corner->size) +
@@ -649,7 +649,7 @@ void explainLower(std::string& out, const Toolpath& toolpath, std::size_t i, con
     const Vec2 xy = toolpath.programmedCentreWords(i);
     out += "  3B arc: x y = start - centre = (" + mm(xy.x()) + ", " + mm(xy.y()) +
            ") (signs from the start's quadrant in SR/NR), so the centre is " + formatPoint(s.centre) + ", radius " +
-           mm(s.radius) +
+           mm(s.radius()) +
            " mm; the arc ends where it has travelled J along the count axis, over every quadrant it "
            "crosses\n";
   } else {
@@ -657,14 +657,14 @@ void explainLower(std::string& out, const Toolpath& toolpath, std::size_t i, con
     const std::string rule = arcCentreRule(arcCentreOf(m.centreForm));
     out += "  centre " + formatPoint(d.centre) + " from I " + mm(ij.x()) + " J " + mm(ij.y()) + ": " + rule +
            (role == OffsetRole::Element ? " (the programmed start " + formatPoint(d.start) + ")" : std::string()) +
-           "; radius by formula (3) = |start - centre| = " + mm(d.radius) + " mm\n";
+           "; radius by formula (3) = |start - centre| = " + mm(d.radius()) + " mm\n";
     if (const double error = programmedRadiusError(toolpath, i); std::abs(error) > 0.0005)
       out += "  the end point is " + mm(std::abs(error)) + " mm off that circle (within the accepted tolerance)\n";
   }
   if (role == OffsetRole::Element)
-    out += "  the wire path keeps that centre, " + std::string(s.radius > d.radius ? "outside" : "inside") +
+    out += "  the wire path keeps that centre, " + std::string(s.radius() > d.radius() ? "outside" : "inside") +
            " the programmed arc by the offset\n";
-  out += "  radius " + mm(s.radius) + " mm, sweep " + deg(std::abs(s.sweep)) + " degrees, length " + mm(s.length()) +
+  out += "  radius " + mm(s.radius()) + " mm, sweep " + deg(std::abs(s.sweep)) + " degrees, length " + mm(s.length()) +
          " mm\n";
   const geometry::ArcSampleStats st = geometry::sample(s, sampling, nullptr);  // counts only
   if (sampling.mode == geometry::SamplingMode::Step) {
@@ -782,7 +782,7 @@ std::string explainJson(const SourceFile& source, const Toolpath& toolpath, cons
       up["length"] = u.length();
       if (u.isArc()) {
         up["centre"] = vec(u.centre);
-        up["radius"] = u.radius;
+        up["radius"] = u.radius();
         up["direction"] = u.sweep < 0 ? "cw" : "ccw";
       }
       up["pairing"] = pairingReason(toolpath, i);
@@ -794,7 +794,7 @@ std::string explainJson(const SourceFile& source, const Toolpath& toolpath, cons
     }
     if (m.kind == MoveKind::Arc) {
       e["centre"] = vec(s.centre);
-      e["radius"] = s.radius;
+      e["radius"] = s.radius();
       e["direction"] = s.sweep < 0 ? "cw" : "ccw";
       e["sweep_deg"] = std::abs(s.sweep) * 180.0 / geometry::kPi;
       e["centre_from"] = toolpath.format == InputFormat::ThreeB ? "3B-xy" : centreFormName(m.centreForm);

@@ -163,7 +163,7 @@ double strayFrom(const Segment& s, const Vec2& p, const Vec2& q) {
     return (x - (p + t * d)).norm();
   };
   double bulge = 0.0;
-  if (s.isArc()) bulge = std::abs(s.sweep) >= geometry::kPi ? 2 * s.radius : s.radius * (1 - std::cos(s.sweep / 2));
+  if (s.isArc()) bulge = std::abs(s.sweep) >= geometry::kPi ? 2 * s.radius() : s.radius() * (1 - std::cos(s.sweep / 2));
   return std::max(distance(s.start), distance(s.end)) + bulge;
 }
 

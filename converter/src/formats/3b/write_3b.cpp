@@ -185,7 +185,7 @@ struct ArcChoice {
 std::optional<ArcChoice> nearestArcRecord(const Micro& at, const Micro& to, const geometry::Segment& s, bool ccw,
                                           bool exactEnd) {
   const Vec2 centre = s.centre * 1000.0, sourceEnd = s.end * 1000.0;
-  const double radius = s.radius * 1000.0;
+  const double radius = s.radius() * 1000.0;
   const Micro c0 = toMicro(s.centre);
   std::optional<ArcChoice> found;
   double bestOff = 1e300;
@@ -261,7 +261,7 @@ Written records(const Toolpath& toolpath, const std::vector<std::size_t>& order,
     }
     // The last record ends exactly where the source does.
     const std::optional<ArcChoice> choice = nearestArcRecord(at, to, s, ccw, i == order.back());
-    if (!choice && std::abs(s.sweep) < kPi && s.radius * (1 - std::cos(std::abs(s.sweep) / 2)) < 0.0005) {
+    if (!choice && std::abs(s.sweep) < kPi && s.radius() * (1 - std::cos(std::abs(s.sweep) / 2)) < 0.0005) {
       // An arc that bulges from its chord by less than half a micrometre is, in whole
       // micrometres, the line of its chord; where no count lands on its end (a micro arc's count
       // runs on round the circle), it is written as that line.
@@ -336,7 +336,7 @@ double signedArea(const std::vector<geometry::Segment>& path) {
   double a = 0.0;
   for (const geometry::Segment& s : path) {
     a += 0.5 * (s.start.x() * s.end.y() - s.end.x() * s.start.y());
-    if (s.isArc()) a += 0.5 * s.radius * s.radius * (s.sweep - std::sin(s.sweep));  // the cap beyond the chord
+    if (s.isArc()) a += 0.5 * s.radius() * s.radius() * (s.sweep - std::sin(s.sweep));  // the cap beyond the chord
   }
   return a;
 }

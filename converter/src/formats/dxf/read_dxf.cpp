@@ -560,9 +560,9 @@ class DrawingReader {
 
   void add(const Entity& e, const std::string& layer, const Segment& s) {
     if (!inRange(s.start) || !inRange(s.end) ||
-        (s.isArc() && (!inRange(s.centre) || !(s.radius <= kLargestCoordinate)))) {
+        (s.isArc() && (!inRange(s.centre) || !(s.radius() <= kLargestCoordinate)))) {
       const bool endsIn = inRange(s.start) && inRange(s.end);
-      refuse(e, endsIn ? "an arc of radius " + outOfRange(s.radius) + " mm about " + outOfRange(s.centre) +
+      refuse(e, endsIn ? "an arc of radius " + outOfRange(s.radius()) + " mm about " + outOfRange(s.centre) +
                              " mm, beyond 1e6 mm"
                        : "it reaches " + outOfRange(inRange(s.start) ? s.end : s.start) + " mm, beyond 1e6 mm");
       return;

@@ -190,13 +190,13 @@ void writeItem(Out& o, const Item& it, const std::vector<Layer>& layers, const s
   const bool full = std::abs(std::abs(s.sweep) - 2 * std::numbers::pi) < 1e-12;
   entityHead(o, full ? "CIRCLE" : "ARC", owner, layer, "AcDbCircle");
   o.point(10, s.centre, it.z);
-  o.g(40, s.radius);
+  o.g(40, s.radius());
   if (full) {
     ++counts.circles;
     return;
   }
   // DXF arcs run counter-clockwise from group 50 to group 51.
-  const double a = s.startAngle, b = s.startAngle + s.sweep;
+  const double a = s.startAngle(), b = s.startAngle() + s.sweep;
   if (o.handles()) o.g(100, "AcDbArc");
   o.g(50, degrees(s.sweep > 0 ? a : b));
   o.g(51, degrees(s.sweep > 0 ? b : a));

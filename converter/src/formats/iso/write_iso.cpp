@@ -51,7 +51,7 @@ class IsoWriter {
   std::string motion(const Segment& arcOrLine, bool rapid, char a, char b, bool withG = true) const {
     const double sweep = std::abs(arcOrLine.sweep);
     const bool sliver = flattenSlivers && arcOrLine.isArc() && sweep < 2 * geometry::kPi - 1e-9 &&
-                        arcOrLine.radius * (1 - std::cos(sweep / 2)) < 0.5 * resolution();
+                        arcOrLine.radius() * (1 - std::cos(sweep / 2)) < 0.5 * resolution();
     const Segment s = sliver ? Segment::line(arcOrLine.start, arcOrLine.end) : arcOrLine;
     std::string w;
     if (withG) {

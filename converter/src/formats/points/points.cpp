@@ -317,7 +317,7 @@ std::optional<PointOutput> emitPoints4(const Toolpath& toolpath, const SourceFil
     for (int side = 0; side < 2; ++side) {
       const geometry::Segment& seg = side == 0 ? lo : up;
       if (seg.isArc())
-        deviation[side] = seg.radius * (1.0 - std::cos(std::abs(seg.sweep) / (2.0 * static_cast<double>(n))));
+        deviation[side] = seg.radius() * (1.0 - std::cos(std::abs(seg.sweep) / (2.0 * static_cast<double>(n))));
     }
     for (const double s : {a, b})
       out.stats.maxDeviation =

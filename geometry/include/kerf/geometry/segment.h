@@ -24,11 +24,11 @@ enum class ArcDirection : std::uint8_t { Clockwise, CounterClockwise };
 struct Segment {
   Vec2 start = Vec2::Zero();
   Vec2 end = Vec2::Zero();
-  // Arc only. radius is |start - centre|; the end point may sit off the circle by the
-  // tolerance the arc was accepted with (see arc.h), and end is kept exactly as programmed.
+  // Arc only. The circle is the one about centre through start (radius() and startAngle() are
+  // computed from the two, not stored: a program holds a segment per block, and these 16 bytes
+  // were a fifth of a move); the end point may sit off the circle by the tolerance the arc was
+  // accepted with (see arc.h), and end is kept exactly as programmed.
   Vec2 centre = Vec2::Zero();
-  double radius = 0.0;
-  double startAngle = 0.0;               ///< angle of start about centre
   double sweep = 0.0;                    ///< signed: > 0 counter-clockwise, < 0 clockwise; |sweep| <= 2 pi
   SegmentKind kind = SegmentKind::Line;  ///< last, so that Move's fields fit in the padding after it
 
@@ -39,6 +39,11 @@ struct Segment {
   static Segment arc(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir);
 
   [[nodiscard]] bool isArc() const { return kind == SegmentKind::Arc; }
+  /// An arc's radius, |start - centre|, mm (0 for a line): one square root.
+  [[nodiscard]] double radius() const { return isArc() ? (start - centre).norm() : 0.0; }
+  /// The angle of an arc's start about its centre, radians in (-pi, pi] (0 for a line): one atan2.
+  /// A loop over many points of one arc takes it once.
+  [[nodiscard]] double startAngle() const { return isArc() ? angleOf(start - centre) : 0.0; }
   [[nodiscard]] ArcDirection direction() const {
     return sweep < 0 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise;
   }
@@ -57,7 +62,7 @@ struct Segment {
   /// Distance (mm) from p to the nearest point of the segment.
   [[nodiscard]] double distanceTo(const Vec2& p) const;
   /// How far an arc's end lies off its circle: |end - centre| - radius, mm (0 for a line).
-  [[nodiscard]] double radiusError() const { return isArc() ? (end - centre).norm() - radius : 0.0; }
+  [[nodiscard]] double radiusError() const { return isArc() ? (end - centre).norm() - radius() : 0.0; }
 };
 
 /// Segments read where they are: a plain array, or one member of every record of an array (the

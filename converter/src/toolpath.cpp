@@ -3,6 +3,7 @@
 #include "kerf/converter/toolpath.h"
 
 #include <algorithm>
+#include <iterator>
 #include <tuple>
 
 namespace kerf::converter {
@@ -33,6 +34,7 @@ MoveRow Toolpath::rowOf(std::size_t i) const {
   forEachRowTable([&](auto table, auto field) {
     if (i < (this->*table).size()) row.*field = (this->*table)[i];
   });
+  row.feed = feedOf(i);
   return row;
 }
 
@@ -51,8 +53,27 @@ void Toolpath::replaceMoves(std::vector<MoveRow>&& rows, const std::vector<std::
   });
   moves.clear();
   moves.reserve(rows.size());
-  for (MoveRow& r : rows) moves.push_back(r.move);
+  feedChanges.clear();
+  for (MoveRow& r : rows) {
+    setFeedFrom(moves.size(), r.feed);
+    moves.push_back(r.move);
+  }
   renumberMoveLists(newIndex);
+}
+
+void Toolpath::changeFeedFrom(std::size_t from, double feed) {
+  if (!feedChanges.empty() && feedChanges.back().from == from) {  // no move ran at the feed it replaces
+    feedChanges.pop_back();
+    setFeedFrom(from, feed);  // a change from the feed before it, or none
+    return;
+  }
+  feedChanges.push_back({static_cast<std::uint32_t>(from), feed});
+}
+
+double Toolpath::feedOf(std::size_t i) const {
+  const auto after = std::upper_bound(feedChanges.begin(), feedChanges.end(), i,
+                                      [](std::size_t m, const FeedChange& c) { return m < c.from; });
+  return after == feedChanges.begin() ? 0.0 : std::prev(after)->mmPerMinute;
 }
 
 void Toolpath::renumberMoveLists(const std::vector<std::uint32_t>& newIndex) {

@@ -72,14 +72,14 @@ SegmentIntersection lineArc(const Segment& line, const Segment& arc, double tol)
   const double len = std::sqrt(len2);
   const Vec2 f = line.start - arc.centre;
   const double t0 = -f.dot(d) / len2;  // foot of the perpendicular from the centre
-  const double dist = (f + t0 * d).norm();
-  if (dist > arc.radius() + tol) return r;
+  const double dist = (f + t0 * d).norm(), radius = arc.radius();
+  if (dist > radius + tol) return r;
   double ts[2];
   int n = 0;
-  if (std::abs(dist - arc.radius()) <= tol) {
+  if (std::abs(dist - radius) <= tol) {
     ts[n++] = t0;  // tangent
   } else {
-    const double h = std::sqrt(std::max(0.0, arc.radius() * arc.radius() - dist * dist)) / len;
+    const double h = std::sqrt(std::max(0.0, radius * radius - dist * dist)) / len;
     ts[n++] = t0 - h;
     ts[n++] = t0 + h;
   }
@@ -100,15 +100,16 @@ struct AngleInterval {
 };
 
 AngleInterval ccwInterval(const Segment& arc) {
-  if (arc.sweep >= 0) return {detail::wrapPositive(arc.startAngle()), arc.sweep};
-  return {detail::wrapPositive(arc.startAngle() + arc.sweep), -arc.sweep};
+  const double a0 = arc.startAngle();
+  if (arc.sweep >= 0) return {detail::wrapPositive(a0), arc.sweep};
+  return {detail::wrapPositive(a0 + arc.sweep), -arc.sweep};
 }
 
 SegmentIntersection arcArc(const Segment& a, const Segment& b, double tol) {
   SegmentIntersection r;
   const Vec2 dc = b.centre - a.centre;
-  const double d = dc.norm();
-  if (d <= tol && std::abs(a.radius() - b.radius()) <= tol) {
+  const double d = dc.norm(), ra = a.radius(), rb = b.radius();
+  if (d <= tol && std::abs(ra - rb) <= tol) {
     // Same circle: shared stretches of the two angular intervals.
     const AngleInterval ia = ccwInterval(a), ib = ccwInterval(b);
     const double offset = detail::wrapPositive(ib.from - ia.from);
@@ -121,10 +122,10 @@ SegmentIntersection arcArc(const Segment& a, const Segment& b, double tol) {
         bestTo = hi;
       }
     }
-    if (best * a.radius() > tol) {
+    if (best * ra > tol) {
       r.overlap = true;
-      addPoint(r, a.centre + a.radius() * direction(ia.from + bestFrom), tol);
-      addPoint(r, a.centre + a.radius() * direction(ia.from + bestTo), tol);
+      addPoint(r, a.centre + ra * direction(ia.from + bestFrom), tol);
+      addPoint(r, a.centre + ra * direction(ia.from + bestTo), tol);
       return r;
     }
     // No shared stretch: they can still touch at end points.
@@ -134,9 +135,9 @@ SegmentIntersection arcArc(const Segment& a, const Segment& b, double tol) {
       if (detail::onArc(b, p, tol)) addPoint(r, p, tol);
     return r;
   }
-  if (d > a.radius() + b.radius() + tol || d < std::abs(a.radius() - b.radius()) - tol || d == 0.0) return r;
-  const double along = (a.radius() * a.radius() - b.radius() * b.radius() + d * d) / (2 * d);
-  const double h2 = a.radius() * a.radius() - along * along;
+  if (d > ra + rb + tol || d < std::abs(ra - rb) - tol || d == 0.0) return r;
+  const double along = (ra * ra - rb * rb + d * d) / (2 * d);
+  const double h2 = ra * ra - along * along;
   const Vec2 u = dc / d;
   const Vec2 base = a.centre + along * u;
   const Vec2 perp(-u.y(), u.x());
@@ -275,16 +276,16 @@ double yAt(const Piece& p, const Segment& s, double x) {
   if (x <= p.left.x()) return p.left.y();
   if (x >= p.right.x()) return p.right.y();
   if (!p.arc) return p.left.y() + (x - p.left.x()) * p.slope;
-  const double dx = x - s.centre.x();
-  const double h = std::sqrt(std::max(0.0, s.radius() * s.radius() - dx * dx));
+  const double dx = x - s.centre.x(), r = s.radius();
+  const double h = std::sqrt(std::max(0.0, r * r - dx * dx));
   return s.centre.y() + (p.upper ? h : -h);
 }
 
 /// dy/dx just right of x (the order of pieces that leave one point).
 double slopeAt(const Piece& p, const Segment& s, double x) {
   if (!p.arc) return p.slope;
-  const double dx = x - s.centre.x();
-  const double h = std::sqrt(std::max(0.0, s.radius() * s.radius() - dx * dx));
+  const double dx = x - s.centre.x(), r = s.radius();
+  const double h = std::sqrt(std::max(0.0, r * r - dx * dx));
   // Where x turns, the slope is infinite: upwards from the circle's left point on the upper half,
   // downwards on the lower; the other way round at its right point.
   if (h <= 1e-300) return (p.upper == (dx < 0)) ? 1e300 : -1e300;
@@ -312,7 +313,7 @@ void forEachPiece(const Segment& s, std::uint32_t index, F&& f) {
     return;
   }
   // Split where x turns: at the angles 0 and pi (mod 2 pi) inside the sweep.
-  const double a0 = s.startAngle(), a1 = s.startAngle() + s.sweep;
+  const double a0 = s.startAngle(), a1 = a0 + s.sweep, r = s.radius();
   const double lo = std::min(a0, a1), hi = std::max(a0, a1);
   double cuts[5];
   int count = 0;
@@ -323,7 +324,7 @@ void forEachPiece(const Segment& s, std::uint32_t index, F&& f) {
   auto at = [&](double ang) {
     if (ang == a0) return s.start;
     if (ang == a1) return s.end;  // the ends exactly: the neighbours share them, bit for bit
-    return Vec2(s.centre + s.radius() * Vec2(std::cos(ang), std::sin(ang)));
+    return Vec2(s.centre + r * Vec2(std::cos(ang), std::sin(ang)));
   };
   for (int k = 0; k + 1 < count; ++k) {
     const double mid = (cuts[k] + cuts[k + 1]) / 2;

@@ -58,21 +58,56 @@ Vec2 Segment::tangentAt(double t) const {
   return sweep >= 0 ? Vec2(-radial.y(), radial.x()) : Vec2(radial.y(), -radial.x());
 }
 
+namespace {
+
+/// The quadrant of v: 0 for the angles [0, pi/2), 1 for [pi/2, pi), 2 for [pi, 3 pi/2), 3 for
+/// [3 pi/2, 2 pi) (and for the zero vector): the axis direction q pi/2 opens quadrant q.
+int quadrantOf(const Vec2& v) {
+  if (v.x() > 0 && v.y() >= 0) return 0;
+  if (v.x() <= 0 && v.y() > 0) return 1;
+  if (v.x() < 0 && v.y() <= 0) return 2;
+  return 3;
+}
+
+/// How many axis directions an arc passes, counted counter-clockwise from `from` (not counting
+/// one `from` lies on) to `to`, the arc turning by w (radians, 0 <= w < 2 pi); -1 when the
+/// quadrants of the two disagree with w (an end a rounding away from an axis, or off its circle),
+/// so that the caller measures angles instead.
+int axesPassed(const Vec2& from, const Vec2& to, double w) {
+  const int qf = quadrantOf(from);
+  int n = (quadrantOf(to) - qf + 4) % 4;
+  if (n == 0 && w > kPi) n = 4;  // round past every axis back into the quadrant it left
+  // The first axis after `from` lies (0, pi/2] on, so w passes m or m + 1 of them.
+  const int m = static_cast<int>(w / (kPi / 2));
+  return n == m || n == m + 1 ? n : -1;
+}
+
+}  // namespace
+
 Box Segment::bounds() const {
   Box b;
   b.add(start);
   b.add(end);
-  if (kind == SegmentKind::Arc) {
-    // Axis extremes (0, 90, 180, 270 degrees) that the arc passes through.
-    // The directions are exact (cos and sin of q pi/2 are not: cos(pi/2) is 6e-17), and no sine is
-    // taken: the sweeps make every segment's box.
-    static constexpr double kAxis[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-    const double a0 = startAngle(), r = radius();
-    for (int q = 0; q < 4; ++q) {
-      const double phi = q * kPi / 2;
-      if (detail::angleAlong(a0, sweep, phi) <= std::abs(sweep)) b.add(centre + r * Vec2(kAxis[q][0], kAxis[q][1]));
+  if (kind != SegmentKind::Arc) return b;
+  // Axis extremes (0, 90, 180, 270 degrees) that the arc passes through. The directions are exact
+  // (cos and sin of q pi/2 are not: cos(pi/2) is 6e-17). Which ones, from the quadrants of the
+  // ends, counter-clockwise from the end a clockwise arc stops at; where those disagree with the
+  // sweep, from the angles (an atan2: the sweeps make every segment's box).
+  static constexpr double kAxis[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  const Vec2 a = start - centre, e = end - centre;
+  const double r = a.norm(), w = std::abs(sweep);
+  auto addAxis = [&](int q) { b.add(centre + r * Vec2(kAxis[q][0], kAxis[q][1])); };
+  if (w < kTwoPi) {
+    const bool ccw = sweep >= 0;
+    if (const int n = axesPassed(ccw ? a : e, ccw ? e : a, w); n >= 0) {
+      const int first = quadrantOf(ccw ? a : e) + 1;
+      for (int k = 0; k < n; ++k) addAxis((first + k) % 4);
+      return b;
     }
   }
+  const double a0 = angleOf(a);
+  for (int q = 0; q < 4; ++q)
+    if (detail::angleAlong(a0, sweep, q * kPi / 2) <= w) addAxis(q);
   return b;
 }
 

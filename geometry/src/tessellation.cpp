@@ -32,12 +32,13 @@ struct ChordPlan {
   double sinHalf = 0.0;
 };
 
-ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
-  const double sweep = std::abs(arc.sweep);
+/// The chords of an arc of radius r (mm) turning by sweep (radians, signed).
+ChordPlan planChords(double r, double sweep_, const Sampling& sampling) {
+  const double sweep = std::abs(sweep_);
   ChordPlan plan;
   if (sampling.mode == SamplingMode::Step) {
-    plan.span = stepAngle(sampling.value, arc.radius());
-    if (sampling.value < 2 * arc.radius()) plan.sinHalf = sampling.value / (2 * arc.radius());
+    plan.span = stepAngle(sampling.value, r);
+    if (sampling.value < 2 * r) plan.sinHalf = sampling.value / (2 * r);
     // A remainder smaller than 1e-9 of a step is rounding noise, not a chord.
     const double q = sweep / plan.span;
     const double whole = std::floor(q + 1e-9);
@@ -46,7 +47,7 @@ ChordPlan planChords(const Segment& arc, const Sampling& sampling) {
     if (plan.rest <= 1e-9 * plan.span) plan.rest = 0.0;
     if (plan.full == 0) plan.rest = sweep;  // the whole arc is shorter than one step
   } else {
-    const double maxSpan = toleranceAngle(sampling.value, arc.radius());
+    const double maxSpan = toleranceAngle(sampling.value, r);
     plan.full = static_cast<std::size_t>(std::max(1.0, std::ceil(sweep / maxSpan - 1e-9)));
     plan.span = sweep / static_cast<double>(plan.full);
     plan.rest = 0.0;
@@ -125,7 +126,7 @@ double chordMeanRelativeError(double span) { return chordError(1.0, span).meanRe
 
 std::size_t sampleCount(const Segment& seg, const Sampling& sampling) {
   if (!seg.isArc()) return 1;
-  const ChordPlan plan = planChords(seg, sampling);
+  const ChordPlan plan = planChords(seg.radius(), seg.sweep, sampling);
   return plan.full + (plan.rest > 0 ? 1 : 0);
 }
 
@@ -136,28 +137,29 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
     if (out) out->push_back(seg.end);
     return stats;
   }
-  const ChordPlan plan = planChords(seg, sampling);
+  const double r = seg.radius();
+  const ChordPlan plan = planChords(r, seg.sweep, sampling);
   const double dir = seg.sweep >= 0 ? 1.0 : -1.0;
   const std::size_t total = plan.full + (plan.rest > 0 ? 1 : 0);
   stats.points = total;
   if (out) {
     out->reserve(out->size() + total);
+    const double a0 = seg.startAngle();
     for (std::size_t i = 1; i < total; ++i) {
-      const double a = seg.startAngle() + dir * plan.span * static_cast<double>(i);
-      out->push_back(seg.centre + seg.radius() * direction(a));
+      const double a = a0 + dir * plan.span * static_cast<double>(i);
+      out->push_back(seg.centre + r * direction(a));
     }
     out->push_back(seg.end);
   }
   const double sweep = std::abs(seg.sweep);
   double weighted = 0.0;
   if (plan.full > 0) {
-    const ChordError e = plan.sinHalf > 0 ? chordErrorOfSine(seg.radius(), plan.span, plan.sinHalf)
-                                          : chordError(seg.radius(), plan.span);
+    const ChordError e = plan.sinHalf > 0 ? chordErrorOfSine(r, plan.span, plan.sinHalf) : chordError(r, plan.span);
     stats.maxDeviation = e.sagitta;
     weighted += static_cast<double>(plan.full) * plan.span * e.meanRelative;
   }
   if (plan.rest > 0) {
-    const ChordError e = chordError(seg.radius(), plan.rest);
+    const ChordError e = chordError(r, plan.rest);
     stats.maxDeviation = std::max(stats.maxDeviation, e.sagitta);
     weighted += plan.rest * e.meanRelative;
   }
@@ -291,14 +293,14 @@ std::vector<Vec2> seedArcPoints(const Segment& arc, double k) {
   const SeedArcAngles a = seedAngles(arc, k);
   std::vector<Vec2> points;
   const bool clockwise = arc.sweep < 0;  // G2: delta grows by gamma; G3: it falls by gamma
+  const double r = arc.radius();
   const double total = std::abs(a.beta - a.alpha);
   // Same rounding rule as sample(): a remainder below 1e-9 of a step is no chord.
   const auto steps = static_cast<std::size_t>(std::floor(total / a.gamma + 1e-9));
   for (std::size_t i = 1; i <= steps; ++i) {
     const double delta = a.alpha + (clockwise ? 1.0 : -1.0) * a.gamma * static_cast<double>(i);
     if (std::abs(delta - a.alpha) >= total - 1e-9 * a.gamma) break;  // reached beta
-    points.emplace_back(arc.centre.x() + std::cos(delta) * arc.radius(),
-                        arc.centre.y() - std::sin(delta) * arc.radius());
+    points.emplace_back(arc.centre.x() + std::cos(delta) * r, arc.centre.y() - std::sin(delta) * r);
   }
   points.push_back(arc.end);
   return points;

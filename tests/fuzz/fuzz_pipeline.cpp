@@ -45,7 +45,7 @@ bool sameReading(const kerf::converter::Pipeline& a, const kerf::converter::Pipe
         !sameBits(s.end.x(), t.end.x()) || !sameBits(s.end.y(), t.end.y()) || !sameBits(s.centre.x(), t.centre.x()) ||
         !sameBits(s.centre.y(), t.centre.y()) || !sameBits(s.radius(), t.radius()) ||
         !sameBits(s.startAngle(), t.startAngle()) || !sameBits(s.sweep, t.sweep) || x[i].kind != y[i].kind ||
-        x[i].line != y[i].line || x[i].feedIndex != y[i].feedIndex || x[i].centreForm != y[i].centreForm ||
+        x[i].line != y[i].line || a.toolpath.feedOf(i) != b.toolpath.feedOf(i) || x[i].centreForm != y[i].centreForm ||
         x[i].wireOffset != y[i].wireOffset)
       return false;
   }

@@ -184,4 +184,40 @@ TEST(segment_test, bounds_include_axis_extremes) {
   EXPECT_NEAR(b.min.y(), 0, kEps);
 }
 
+// bounds() picks the axis extremes from the quadrants of the ends, and from the angles where
+// those disagree with the sweep. Whichever way, the box holds every point of the arc and is no
+// larger than the arc's own extent: on random arcs of every size and turn, with ends on the axes,
+// full circles, and ends off the circle by up to 1e-4 of the radius.
+TEST(segment_test, bounds_hold_the_arc_and_no_more) {
+  std::mt19937_64 rng(58);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double quarter = kPi / 2;
+  for (int i = 0; i < 4000; ++i) {
+    const Vec2 c(200 * unit(rng) - 100, 200 * unit(rng) - 100);
+    const double r = std::pow(10.0, 4 * unit(rng) - 2);
+    // Every fourth arc starts or ends on an axis; every eighth is a full circle.
+    double a0 = 2 * kPi * unit(rng), a1 = 2 * kPi * unit(rng);
+    if (i % 4 == 1) a0 = quarter * std::floor(4 * unit(rng));
+    if (i % 4 == 2) a1 = quarter * std::floor(4 * unit(rng));
+    if (i % 8 == 3) a1 = a0;
+    const double off = i % 16 == 5 ? r * 1e-4 * (2 * unit(rng) - 1) : 0.0;
+    const Vec2 start = c + r * direction(a0), end = c + (r + off) * direction(a1);
+    const Segment s =
+        Segment::arc(start, end, c, unit(rng) < 0.5 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise);
+    const Box b = s.bounds();
+    Box walked;  // the arc's extent, walked in 1/2048 of its turn (within 2e-6 of the radius)
+    for (int k = 0; k <= 2048; ++k) walked.add(s.pointAt(k / 2048.0));
+    const double tol = 1e-9 * r + std::abs(off);
+    ASSERT_LE(b.min.x(), walked.min.x() + tol) << i;
+    ASSERT_LE(b.min.y(), walked.min.y() + tol) << i;
+    ASSERT_GE(b.max.x(), walked.max.x() - tol) << i;
+    ASSERT_GE(b.max.y(), walked.max.y() - tol) << i;
+    const double slack = 3e-6 * r + std::abs(off);
+    ASSERT_GE(b.min.x(), walked.min.x() - slack) << i;
+    ASSERT_GE(b.min.y(), walked.min.y() - slack) << i;
+    ASSERT_LE(b.max.x(), walked.max.x() + slack) << i;
+    ASSERT_LE(b.max.y(), walked.max.y() + slack) << i;
+  }
+}
+
 }  // namespace

@@ -435,7 +435,7 @@ TEST(machine_test, plain_blocks_say_what_every_block_says) {
   EXPECT_TRUE(has(read("G92 X0 Y0\nG02 X1. Y0 R0.1\nM02\n"), Code::RadiusTooSmall));
   const Pipeline feeds = read("G92 X0 Y0\nG01 X1. F2.\nG01 X2. F3.\nX3. F2.\nM02\n");
   ASSERT_EQ(feeds.toolpath.moves.size(), 3u);
-  auto feed = [&](std::size_t i) { return feeds.toolpath.feeds.at(feeds.toolpath.moves[i].feedIndex - 1); };
+  auto feed = [&](std::size_t i) { return feeds.toolpath.feedOf(i); };
   EXPECT_EQ(feed(0), 2.0);
   EXPECT_EQ(feed(1), 3.0);
   EXPECT_EQ(feed(2), 2.0);

@@ -23,8 +23,8 @@ std::optional<Toolpath> toolpathAtPlane(const Toolpath& toolpath, const PlaneCho
   out.programUnit = toolpath.programUnit;
   out.endedProperly = toolpath.endedProperly;
   out.heights = toolpath.heights;
-  out.feeds = toolpath.feeds;  // the moves keep their feeds
   if (!toolpath.isTaper()) {
+    out.feedChanges = toolpath.feedChanges;  // the same moves at their feeds
     out.moves = toolpath.moves;
     out.centreWords = toolpath.centreWords;
     return out;
@@ -62,6 +62,7 @@ std::optional<Toolpath> toolpathAtPlane(const Toolpath& toolpath, const PlaneCho
       Move m = toolpath.moves[i];
       m.lower = piece;
       if (m.kind != MoveKind::Rapid) m.kind = piece.isArc() ? MoveKind::Arc : MoveKind::Line;
+      out.setFeedFrom(out.moves.size(), toolpath.feedOf(i));
       out.moves.push_back(m);
     }
   }

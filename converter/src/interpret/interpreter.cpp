@@ -189,7 +189,7 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
     if (f->value <= 0)
       diags_.warning(Code::BadFeed, src_, f->span(), "feed F must be positive");
     else
-      feedIndex_ = toolpath_.feedIndexFor(f->value * (plan.inch ? 25.4 : 1.0));
+      feed_ = f->value * (plan.inch ? 25.4 : 1.0);
   }
   if (bw.group(ModalGroup::Units)) {
     inch_ = plan.inch;

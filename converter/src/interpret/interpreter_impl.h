@@ -332,6 +332,9 @@ class Interpreter {
   /// The run of moves under one G41/G42 that the move at `index` (about to be, or just, stored)
   /// starts or extends.
   void noteOffsetRun(const Move& m, std::size_t index);
+  /// The call depth a move records: the subprograms the run is in (Move::kMaxCallDepth at most;
+  /// the caller masks it with kMaxCallDepth too, so that the compiler sees it fit the bits).
+  [[nodiscard]] std::size_t callDepth() const { return std::min(stack_.size(), Move::kMaxCallDepth); }
   // upper_side.cpp
   bool buildUpper(const BlockWords& bw, const BlockWords& ubw, const Block& block, Move& move, Segment& upper);
   bool buildUpperAbsolute(const BlockWords& bw, const BlockWords& ubw, const Block& block, Segment& upper);
@@ -441,7 +444,7 @@ class Interpreter {
   HeldWord motionWord_;
   bool incremental_ = false;
   bool inch_ = false;
-  std::uint32_t feedIndex_ = 0;  // the feed in force: Toolpath::feeds[feedIndex_ - 1]; 0: none programmed
+  double feed_ = 0.0;  // the feed in force, mm/min; 0: none programmed
   // What the move being built records beside it (Toolpath::centreWords, taperDegrees).
   Vec2 moveCentreWords_{0, 0};
   float moveTaper_ = 0.0f;

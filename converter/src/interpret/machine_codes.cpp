@@ -200,9 +200,8 @@ void Interpreter::returnHome(const BlockWords& bw, const BlockWords& ubw, const 
     move.line = block.line;
     move.span = block.span();
     move.kind = MoveKind::Rapid;
-    move.feedIndex = feedIndex_;
     move.wireOffset = wireOffset_;
-    move.callDepth = static_cast<std::uint8_t>(std::min<std::size_t>(stack_.size(), 255));
+    move.callDepth = callDepth() & Move::kMaxCallDepth;
     move.lower = Segment::line(position_, lowerEnd);
     push(std::move(move), Segment::line(upperStart, upperEnd));
   }

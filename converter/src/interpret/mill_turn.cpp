@@ -273,8 +273,7 @@ void Interpreter::faceMove(const BlockWords& bw, const Block& block) {
   Move move;
   move.line = block.line;
   move.span = block.span();
-  move.feedIndex = feedIndex_;
-  move.callDepth = static_cast<std::uint8_t>(std::min<std::size_t>(stack_.size(), 255));
+  move.callDepth = callDepth() & Move::kMaxCallDepth;
   moveCentreWords_ = Vec2::Zero();
   const bool arc = motion_ == Motion::Clockwise || motion_ == Motion::CounterClockwise;
   if (arc && rotary) {

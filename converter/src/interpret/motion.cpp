@@ -193,11 +193,10 @@ bool Interpreter::executeMove(const BlockWords& bw, const BlockWords& ubw, const
   Move move;
   move.line = block.line;
   move.span = block.span();
-  move.feedIndex = feedIndex_;
   moveCentreWords_ = Vec2::Zero();
   moveTaper_ = 0.0f;
   move.wireOffset = wireOffset_;
-  move.callDepth = static_cast<std::uint8_t>(std::min<std::size_t>(stack_.size(), 255));
+  move.callDepth = callDepth() & Move::kMaxCallDepth;
 
   const Vec2 start = position_;
   Vec2 end = start;
@@ -246,8 +245,9 @@ void Interpreter::push(Move&& m, Segment upper) {
     pendingCorner_ = PendingCorner{0.0, std::nullopt, false, before.span, before.line};
     makeCorner(m, upper);
   }
-  m.modes = static_cast<std::uint8_t>((incremental_ ? kModeIncremental : 0) | (inch_ ? kModeInch : 0));
+  m.modes = ((incremental_ ? kModeIncremental : 0) | (inch_ ? kModeInch : 0)) & 3u;
   noteOffsetRun(m, toolpath_.moves.size());
+  toolpath_.setFeedFrom(toolpath_.moves.size(), feed_);
   toolpath_.moves.push_back(std::move(m));
   if (dialect_ != Dialect::Plain) toolpath_.upper.push_back(upper);
   if (dialect_ == Dialect::TaperAngle) toolpath_.taperDegrees.push_back(moveTaper_);

@@ -21,10 +21,9 @@ std::string speedText(double v) {
 std::optional<double> passMinutes(const Toolpath& toolpath, const Pass& pass, const SpeedModel& model, double speed) {
   double minutes = 0.0;
   for (std::size_t m = pass.first; m < pass.end; ++m) {
-    const Move& move = toolpath.moves[m];
-    const double length = move.lower.length();
-    if (model.speeds.feedIsSpeed && move.feedIndex > 0 && toolpath.feeds[move.feedIndex - 1] > 0)
-      minutes += length / toolpath.feeds[move.feedIndex - 1];
+    const double length = toolpath.moves[m].lower.length();
+    if (const double feed = model.speeds.feedIsSpeed ? toolpath.feedOf(m) : 0.0; feed > 0)
+      minutes += length / feed;
     else if (speed > 0)
       minutes += length / speed;
     else

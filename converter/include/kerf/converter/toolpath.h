@@ -47,23 +47,26 @@ struct Move {
   // A program holds one move per block, so the move is kept small (the static_assert below). The
   // small fields sit in the segment's tail padding (a [[no_unique_address]] member's padding
   // may hold the members after it); what only some programs or commands need lives beside the
-  // moves in the Toolpath: the upper contour, the taper angle, the centre as written, the feeds.
-  // What can be computed from the segment (the arc's radius error) is computed, not stored.
+  // moves in the Toolpath: the upper contour, the taper angle, the centre as written, the feeds
+  // (Toolpath::feedOf). What can be computed from the segment (the arc's radius, its radius error)
+  // is computed, not stored. The small fields are bits, so that the line and the span fit in 72 bytes.
   [[no_unique_address]] geometry::Segment lower;  ///< the contour on the lower plane
-  std::uint8_t callDepth = 0;                     ///< 0 in the main program (at most 255: calls nest 16 deep)
-  MoveKind kind = MoveKind::Line;
-  CentreForm centreForm = CentreForm::None;
-  WireOffset wireOffset = WireOffset::Off;
-  std::uint8_t modes = 0;       ///< the modes in force at the block (ModeBit): what `kerf explain` and the window say
-  SourceSpan span;              ///< the block's text
-  std::uint32_t line = 0;       ///< 1-based source line of that block
-  std::uint32_t feedIndex = 0;  ///< the feed in force: Toolpath::feeds[feedIndex - 1] mm/min; 0: none programmed
+  std::uint8_t callDepth : 6 = 0;                 ///< 0 in the main program (kMaxCallDepth at most: calls nest 16 deep)
+  std::uint8_t modes : 2 = 0;  ///< the modes in force at the block (ModeBit): what `kerf explain` and the window say
+  MoveKind kind : 2 = MoveKind::Line;
+  CentreForm centreForm : 3 = CentreForm::None;
+  WireOffset wireOffset : 2 = WireOffset::Off;
+  std::uint32_t line = 0;  ///< 1-based source line of that block
+  SourceSpan span;         ///< the block's text
+
+  /// The deepest call depth a move records (a deeper one records this).
+  static constexpr std::size_t kMaxCallDepth = 63;
 
   [[nodiscard]] bool isCut() const { return kind != MoveKind::Rapid; }
   /// How far the arc's end lies off its circle: |end - centre| - |start - centre|, mm (0 for a line).
   [[nodiscard]] double radiusError() const { return lower.radiusError(); }
 };
-static_assert(sizeof(Move) <= 96, "a move is stored for every block: keep it small");
+static_assert(sizeof(Move) <= 72, "a move is stored for every block: keep it small");
 
 /// The moves of a toolpath, in the order the program runs them.
 using MoveList = std::vector<Move>;
@@ -143,6 +146,7 @@ struct MoveRow {
   OffsetRole offsetRole = OffsetRole::None;
   float taperDegrees = 0.0F;         ///< the taper-angle dialect's angle in force, degrees
   geometry::Vec2 centreWords{0, 0};  ///< I J or R as written (InterpreterOptions::recordCentreWords)
+  double feed = 0.0;                 ///< the feed in force, mm/min (0: none programmed): Toolpath::feedChanges
 };
 
 /// The tables indexed by move: `moves`, and each of the others either empty (not kept for this
@@ -204,21 +208,22 @@ struct Toolpath : MoveTables {
   /// The corner made as move i, or null.
   [[nodiscard]] const CornerMade* cornerAt(std::size_t i) const;
 
-  /// The feeds programmed, in the order they came into force (Move::feedIndex counts from 1), mm/min.
-  std::vector<double> feeds;
-
-  /// The Move::feedIndex that gives `mmPerMinute` (0 for none, <= 0): the last entry of feeds when
-  /// it holds the same value, else a new one.
-  std::uint32_t feedIndexFor(double mmPerMinute) {
-    if (!(mmPerMinute > 0)) return 0;
-    if (feeds.empty() || feeds.back() != mmPerMinute) feeds.push_back(mmPerMinute);
-    return static_cast<std::uint32_t>(feeds.size());
+  /// The feeds programmed: from move `from` on, the feed is `mmPerMinute` (0: none programmed),
+  /// in move order, each a change from the one before. Feeds change seldom, so they are kept as
+  /// changes, not in every move; replaceMoves keeps them aligned with the moves (MoveRow::feed).
+  struct FeedChange {
+    std::uint32_t from = 0;
+    double mmPerMinute = 0.0;
+  };
+  std::vector<FeedChange> feedChanges;
+  /// From move `from` (the next move appended, or a later one) on, the feed is mmPerMinute (0:
+  /// none; a value <= 0 is none).
+  void setFeedFrom(std::size_t from, double mmPerMinute) {
+    const double feed = mmPerMinute > 0 ? mmPerMinute : 0.0;  // inline: the interpreter asks at every move
+    if (feed != (feedChanges.empty() ? 0.0 : feedChanges.back().mmPerMinute)) changeFeedFrom(from, feed);
   }
   /// The feed of move i, mm/min (0: none programmed).
-  [[nodiscard]] double feedOf(std::size_t i) const {
-    const std::uint32_t k = moves[i].feedIndex;
-    return k == 0 || k > feeds.size() ? 0.0 : feeds[k - 1];
-  }
+  [[nodiscard]] double feedOf(std::size_t i) const;
   /// The taper angle in force at move i, degrees (taper-angle dialect; 0 otherwise).
   [[nodiscard]] double taperDegreesOf(std::size_t i) const {
     return i < taperDegrees.size() ? static_cast<double>(taperDegrees[i]) : 0.0;
@@ -246,6 +251,7 @@ struct Toolpath : MoveTables {
 
  private:
   void renumberMoveLists(const std::vector<std::uint32_t>& newIndex);
+  void changeFeedFrom(std::size_t from, double feed);  // setFeedFrom's change (feed >= 0)
 
  public:
   [[nodiscard]] bool isTaper() const { return !upper.empty(); }

@@ -25,6 +25,7 @@ Toolpath fourMoves() {
     tp.offsetRole.push_back(i % 2 == 0 ? OffsetRole::Element : OffsetRole::Corner);
     tp.taperDegrees.push_back(static_cast<float>(i) + 0.5F);
     tp.centreWords.push_back(Vec2(i, -i));
+    tp.setFeedFrom(i, 100.0 * (i % 2 == 0 ? 1 : 2));  // 100, 200, 100, 200 mm/min
   }
   tp.stops = {1, 3};
   tp.conditions = {{0, "C001"}, {2, "C002"}};
@@ -44,6 +45,7 @@ void expectSameRow(const MoveRow& a, const MoveRow& b) {
   EXPECT_EQ(a.offsetRole, b.offsetRole);
   EXPECT_EQ(a.taperDegrees, b.taperDegrees);
   EXPECT_EQ(a.centreWords, b.centreWords);
+  EXPECT_EQ(a.feed, b.feed);
 }
 
 // Old move 1 removed, a new move inserted before old move 3: new order 0, 2, new, 3.
@@ -53,6 +55,7 @@ TEST(toolpath_test, every_table_follows_its_move) {
   MoveRow inserted = old.rowOf(3);
   inserted.move.line = 99;
   inserted.taperDegrees = 9.0F;
+  inserted.feed = 0.0;  // no feed programmed
   std::vector<MoveRow> rows = {old.rowOf(0), old.rowOf(2), inserted, old.rowOf(3)};
   tp.replaceMoves(std::move(rows), {0, 1, 1, 3, 4});
   ASSERT_EQ(tp.moves.size(), 4U);
@@ -63,6 +66,7 @@ TEST(toolpath_test, every_table_follows_its_move) {
   expectSameRow(tp.rowOf(1), old.rowOf(2));
   EXPECT_EQ(tp.rowOf(2).move.line, 99U);
   EXPECT_EQ(tp.rowOf(2).taperDegrees, 9.0F);
+  EXPECT_EQ(tp.feedOf(2), 0.0);
   expectSameRow(tp.rowOf(3), old.rowOf(3));
   // The lists that name moves: stop 1 (old move 1, removed) lands on old move 2's place.
   EXPECT_EQ(tp.stops, (std::vector<std::uint32_t>{1, 3}));
@@ -72,6 +76,27 @@ TEST(toolpath_test, every_table_follows_its_move) {
   ASSERT_EQ(tp.offsetSpans.size(), 1U);
   EXPECT_EQ(tp.offsetSpans[0].first, 1U);
   EXPECT_EQ(tp.offsetSpans[0].end, 4U);
+}
+
+// The feeds are kept as changes: one where the feed changes, none where it stays; a change at a
+// move that has not run yet replaces the one before it.
+TEST(toolpath_test, feeds_are_kept_where_they_change) {
+  Toolpath tp;
+  EXPECT_EQ(tp.feedOf(0), 0.0);
+  tp.setFeedFrom(0, 0.0);  // none: no change
+  EXPECT_TRUE(tp.feedChanges.empty());
+  tp.setFeedFrom(2, 150.0);
+  tp.setFeedFrom(3, 150.0);
+  tp.setFeedFrom(5, 90.0);
+  tp.setFeedFrom(5, 80.0);   // replaces 90 before move 5 ran
+  tp.setFeedFrom(7, -1.0);   // a value <= 0 is none
+  ASSERT_EQ(tp.feedChanges.size(), 3U);
+  for (const auto& [move, feed] : {std::pair{0, 0.0}, {1, 0.0}, {2, 150.0}, {4, 150.0}, {5, 80.0}, {6, 80.0}, {7, 0.0},
+                                   {100, 0.0}})
+    EXPECT_EQ(tp.feedOf(move), feed) << move;
+  tp.setFeedFrom(7, 80.0);  // back to the feed before: the change at 7 goes
+  ASSERT_EQ(tp.feedChanges.size(), 2U);
+  EXPECT_EQ(tp.feedOf(9), 80.0);
 }
 
 // A table the program does not keep stays empty; the offset tables start when the offset applies.

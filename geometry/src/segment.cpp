@@ -22,18 +22,15 @@ Segment Segment::arc(const Vec2& start, const Vec2& end, const Vec2& centre, Arc
   s.start = start;
   s.end = end;
   s.centre = centre;
-  const double startAngle = angleOf(start - centre);
-  const double endAngle = angleOf(end - centre);
-  const bool full = (end - start).norm() <= 1e-12 * std::max(1.0, (start - centre).norm());
-  if (dir == ArcDirection::CounterClockwise) {
-    double w = detail::wrapPositive(endAngle - startAngle);
-    if (full || w == 0.0) w = kTwoPi;
-    s.sweep = w;
-  } else {
-    double w = detail::wrapPositive(startAngle - endAngle);
-    if (full || w == 0.0) w = kTwoPi;
-    s.sweep = -w;
-  }
+  const Vec2 a = start - centre, e = end - centre;
+  // The turn from a to e counter-clockwise, in [0, 2 pi]: one atan2 of the pair, which is also
+  // nearer the true angle than the difference of the two directions' angles.
+  double ccw = std::atan2(cross(a, e), a.dot(e));
+  if (ccw < 0) ccw += kTwoPi;
+  const bool full = (end - start).norm() <= 1e-12 * std::max(1.0, a.norm());
+  double w = dir == ArcDirection::CounterClockwise ? ccw : (ccw == 0.0 ? 0.0 : kTwoPi - ccw);
+  if (full || w == 0.0) w = kTwoPi;
+  s.sweep = dir == ArcDirection::CounterClockwise ? w : -w;
   return s;
 }
 

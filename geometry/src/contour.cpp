@@ -24,13 +24,13 @@ namespace {
 /// input, tests/fuzz/corpus/closure-one-cell.nc) made a run of 40,000 slots with a vertex each,
 /// and inserting took 0.8 s, growing as the square of the moves. Two cells may share a tag, and
 /// then a chain: a match is a candidate only; the caller measures the distance anyway. There are
-/// 1.5 slots a vertex (any count, not a power of two: the slot is the hash scaled to the table), so
-/// the table is 13 bytes a vertex, 2.6 MB at 200,000; a probe then scans about 10 tags (measured on
-/// a 200,000-vertex ring, before the chains). Slots of 24 bytes (both cell coordinates and the
+/// 2 slots a vertex (any count, not a power of two: the slot is the hash scaled to the table), so
+/// the table is 16 bytes a vertex, 3.2 MB at 200,000; at 1.5 (13 bytes) the linear probes scanned
+/// half as many tags again (docs/performance.md). Slots of 24 bytes (both cell coordinates and the
 /// vertex) at twice the vertices took 12.6 MB.
 class CellTable {
  public:
-  explicit CellTable(std::size_t expected) : size_(std::max<std::size_t>(16, expected + expected / 2)) {
+  explicit CellTable(std::size_t expected) : size_(std::max<std::size_t>(16, 2 * expected)) {
     tags_.assign(size_, kEmpty);
     vertices_.resize(size_);
     next_.resize(expected);

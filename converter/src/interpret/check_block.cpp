@@ -4,6 +4,9 @@
 namespace kerf::converter::interp {
 
 bool Interpreter::checkDialectWords(const Block& block, const BlockWords& bw, const BlockWords& ubw, bool setPosition) {
+  // A plain block (X Y I J R F and motion codes, one side: Block::plain) holds none of the words
+  // refused below, and most blocks are plain.
+  if (block.plain) return true;
   // Built only when a word is refused: this runs for every block.
   const char* choose = "choose the dialect with --dialect";
   auto refuse = [&](const Word* w, const std::string& message, const std::string& help = {}) {

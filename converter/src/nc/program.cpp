@@ -1029,20 +1029,18 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
   // A UTF-8 byte-order mark (some Windows editors write one) is not part of the program.
   const std::size_t bom = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
   LineParser parser(source, program, diags, options);
-  bool sawContent = false;  // a block or a setting was read, so a '%' line closes the program
   for (std::uint32_t line = 1; line <= source.lineCount(); ++line) {
     auto [begin, end] = source.lineRange(line);
     if (line == 1) begin = static_cast<std::uint32_t>(std::min<std::size_t>(bom, end));
-    // A '%' line opens the program; a '%' line after content closes it (the rest is ignored).
+    // A '%' line opens the program; a '%' line after content (a block or a setting read: both
+    // lists only grow) closes it, and the rest is ignored.
     std::size_t at = begin;
     while (at < end && isBlank(text[at])) ++at;
     if (at < end && text[at] == '%') {
-      if (sawContent) break;
+      if (!program.blocks.empty() || !program.settings.empty()) break;
       continue;
     }
-    const std::size_t before = program.blocks.size() + program.settings.size();
     parser.parseLine(begin, end, line);
-    sawContent = sawContent || program.blocks.size() + program.settings.size() != before;
   }
   reportMacroStatements(parser.macros(), source, diags);
   return program;

@@ -30,16 +30,6 @@ SourceLocation SourceFile::locate(std::uint32_t offset) const {
   return {line, offset - lineStarts_[line - 1] + 1};
 }
 
-std::pair<std::uint32_t, std::uint32_t> SourceFile::lineRange(std::uint32_t line) const {
-  if (line == 0 || line > lineStarts_.size()) return {0, 0};
-  const std::uint32_t begin = lineStarts_[line - 1];
-  std::uint32_t end = line < lineStarts_.size() ? lineStarts_[line] : static_cast<std::uint32_t>(text_.size());
-  // Drop the line break: LF, CR LF or CR.
-  if (end > begin && text_.data()[end - 1] == '\n') --end;
-  if (end > begin && text_.data()[end - 1] == '\r') --end;
-  return {begin, end};
-}
-
 std::string_view SourceFile::lineText(std::uint32_t line) const {
   const auto [begin, end] = lineRange(line);
   return text().substr(begin, end - begin);

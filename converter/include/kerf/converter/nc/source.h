@@ -40,8 +40,17 @@ class SourceFile {
   [[nodiscard]] SourceLocation locate(std::uint32_t offset) const;
   /// The text of a 1-based line, without its line break.
   [[nodiscard]] std::string_view lineText(std::uint32_t line) const;
-  /// Byte offsets [begin, end) of a 1-based line, without its line break.
-  [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> lineRange(std::uint32_t line) const;
+  /// Byte offsets [begin, end) of a 1-based line, without its line break; {0, 0} for a line the
+  /// file does not have. Inline: the parser asks for every line.
+  [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> lineRange(std::uint32_t line) const {
+    if (line == 0 || line > lineStarts_.size()) return {0, 0};
+    const std::uint32_t begin = lineStarts_[line - 1];
+    std::uint32_t end = line < lineStarts_.size() ? lineStarts_[line] : static_cast<std::uint32_t>(text_.size());
+    // Drop the line break: LF, CR LF or CR.
+    if (end > begin && text_[end - 1] == '\n') --end;
+    if (end > begin && text_[end - 1] == '\r') --end;
+    return {begin, end};
+  }
   [[nodiscard]] std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
 
  private:

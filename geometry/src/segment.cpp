@@ -34,8 +34,6 @@ Segment Segment::arc(const Vec2& start, const Vec2& end, const Vec2& centre, Arc
   return s;
 }
 
-double Segment::length() const { return kind == SegmentKind::Line ? (end - start).norm() : radius() * std::abs(sweep); }
-
 Vec2 Segment::pointAt(double t) const {
   if (kind == SegmentKind::Line) return start + t * (end - start);
   if (t <= 0.0) return start;

@@ -47,7 +47,8 @@ struct Segment {
   [[nodiscard]] ArcDirection direction() const {
     return sweep < 0 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise;
   }
-  [[nodiscard]] double length() const;
+  /// mm. Inline: the checks and the summary ask for every move's.
+  [[nodiscard]] double length() const { return isArc() ? radius() * std::abs(sweep) : (end - start).norm(); }
   /// Point at parameter t in [0, 1], proportional to length. For arcs the point lies on the
   /// circle of radius `radius`; at t = 1 it is the circle point nearest the programmed end.
   [[nodiscard]] Vec2 pointAt(double t) const;

@@ -64,12 +64,11 @@ int quadrantOf(const Vec2& v) {
   return 3;
 }
 
-/// How many axis directions an arc passes, counted counter-clockwise from `from` (not counting
-/// one `from` lies on) to `to`, the arc turning by w (radians, 0 <= w < 2 pi); -1 when the
-/// quadrants of the two disagree with w (an end a rounding away from an axis, or off its circle),
-/// so that the caller measures angles instead.
-int axesPassed(const Vec2& from, const Vec2& to, double w) {
-  const int qf = quadrantOf(from);
+/// How many axis directions an arc passes, counted counter-clockwise from a direction in quadrant
+/// qf (not counting the axis it may lie on) to `to`, the arc turning by w (radians, 0 <= w < 2 pi);
+/// -1 when the quadrants of the two disagree with w (an end a rounding away from an axis, or off
+/// its circle), so that the caller measures angles instead.
+int axesPassed(int qf, const Vec2& to, double w) {
   int n = (quadrantOf(to) - qf + 4) % 4;
   if (n == 0 && w > kPi) n = 4;  // round past every axis back into the quadrant it left
   // The first axis after `from` lies (0, pi/2] on, so w passes m or m + 1 of them.
@@ -80,9 +79,7 @@ int axesPassed(const Vec2& from, const Vec2& to, double w) {
 }  // namespace
 
 Box Segment::bounds() const {
-  Box b;
-  b.add(start);
-  b.add(end);
+  Box b{start.cwiseMin(end), start.cwiseMax(end)};
   if (kind != SegmentKind::Arc) return b;
   // Axis extremes (0, 90, 180, 270 degrees) that the arc passes through. The directions are exact
   // (cos and sin of q pi/2 are not: cos(pi/2) is 6e-17). Which ones, from the quadrants of the
@@ -90,19 +87,22 @@ Box Segment::bounds() const {
   // sweep, from the angles (an atan2: the sweeps make every segment's box).
   static constexpr double kAxis[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
   const Vec2 a = start - centre, e = end - centre;
-  const double r = a.norm(), w = std::abs(sweep);
-  auto addAxis = [&](int q) { b.add(centre + r * Vec2(kAxis[q][0], kAxis[q][1])); };
+  const double w = std::abs(sweep);
+  auto addAxis = [&](int q, double r) { b.add(centre + r * Vec2(kAxis[q][0], kAxis[q][1])); };
   if (w < kTwoPi) {
     const bool ccw = sweep >= 0;
-    if (const int n = axesPassed(ccw ? a : e, ccw ? e : a, w); n >= 0) {
-      const int first = quadrantOf(ccw ? a : e) + 1;
-      for (int k = 0; k < n; ++k) addAxis((first + k) % 4);
+    const int qf = quadrantOf(ccw ? a : e);
+    if (const int n = axesPassed(qf, ccw ? e : a, w); n >= 0) {
+      if (n > 0) {
+        const double r = a.norm();
+        for (int k = 1; k <= n; ++k) addAxis((qf + k) % 4, r);
+      }
       return b;
     }
   }
-  const double a0 = angleOf(a);
+  const double a0 = angleOf(a), r = a.norm();
   for (int q = 0; q < 4; ++q)
-    if (detail::angleAlong(a0, sweep, q * kPi / 2) <= w) addAxis(q);
+    if (detail::angleAlong(a0, sweep, q * kPi / 2) <= w) addAxis(q, r);
   return b;
 }
 

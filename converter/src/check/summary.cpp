@@ -79,8 +79,8 @@ void addBounds(geometry::Box& box, const geometry::Segment& s) {
   box.add(s.end);
   if (!s.isArc()) return;
   const geometry::Vec2& c = s.centre;
-  if (c.x() + s.radius() <= box.max.x() && c.x() - s.radius() >= box.min.x() && c.y() + s.radius() <= box.max.y() &&
-      c.y() - s.radius() >= box.min.y())
+  const double r = s.radius();
+  if (c.x() + r <= box.max.x() && c.x() - r >= box.min.x() && c.y() + r <= box.max.y() && c.y() - r >= box.min.y())
     return;
   box.add(s.bounds());
 }

@@ -245,6 +245,7 @@ void Interpreter::push(Move&& m, Segment upper) {
     pendingCorner_ = PendingCorner{0.0, std::nullopt, false, before.span, before.line};
     makeCorner(m, upper);
   }
+  // Masked with the two bits Move::modes has, so that the compiler sees the value fit them.
   m.modes = ((incremental_ ? kModeIncremental : 0) | (inch_ ? kModeInch : 0)) & 3u;
   noteOffsetRun(m, toolpath_.moves.size());
   toolpath_.setFeedFrom(toolpath_.moves.size(), feed_);

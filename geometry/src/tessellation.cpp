@@ -32,9 +32,9 @@ struct ChordPlan {
   double sinHalf = 0.0;
 };
 
-/// The chords of an arc of radius r (mm) turning by sweep (radians, signed).
-ChordPlan planChords(double r, double sweep_, const Sampling& sampling) {
-  const double sweep = std::abs(sweep_);
+/// The chords of an arc of radius r (mm) turning by signedSweep (radians).
+ChordPlan planChords(double r, double signedSweep, const Sampling& sampling) {
+  const double sweep = std::abs(signedSweep);
   ChordPlan plan;
   if (sampling.mode == SamplingMode::Step) {
     plan.span = stepAngle(sampling.value, r);

@@ -108,14 +108,14 @@ int windingOf(const Segment& s, const Vec2& p) {
       }
       return w;
     }
-    const double dy = p.y() - s.centre.y();
-    if (std::abs(dy) >= s.radius()) return w;
-    const double h = std::sqrt(s.radius() * s.radius() - dy * dy);
+    const double dy = p.y() - s.centre.y(), r = s.radius();
+    if (std::abs(dy) >= r) return w;
+    const double h = std::sqrt(r * r - dy * dy), a0 = s.startAngle();
     for (const double x : {s.centre.x() - h, s.centre.x() + h}) {
       if (x <= p.x()) continue;
       const Vec2 q(x, p.y());
       const double phi = angleOf(q - s.centre);
-      const double along = detail::angleAlong(s, phi);
+      const double along = detail::angleAlong(a0, s.sweep, phi);
       if (along > std::abs(s.sweep)) continue;
       // Going up or down there: the tangent's y is cos(phi) for a counter-clockwise arc.
       const double up = std::cos(phi) * (s.sweep > 0 ? 1.0 : -1.0);

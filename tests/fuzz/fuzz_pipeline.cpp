@@ -43,8 +43,7 @@ bool sameReading(const kerf::converter::Pipeline& a, const kerf::converter::Pipe
     const kerf::geometry::Segment &s = x[i].lower, &t = y[i].lower;
     if (s.kind != t.kind || !sameBits(s.start.x(), t.start.x()) || !sameBits(s.start.y(), t.start.y()) ||
         !sameBits(s.end.x(), t.end.x()) || !sameBits(s.end.y(), t.end.y()) || !sameBits(s.centre.x(), t.centre.x()) ||
-        !sameBits(s.centre.y(), t.centre.y()) || !sameBits(s.radius(), t.radius()) ||
-        !sameBits(s.startAngle(), t.startAngle()) || !sameBits(s.sweep, t.sweep) || x[i].kind != y[i].kind ||
+        !sameBits(s.centre.y(), t.centre.y()) || !sameBits(s.sweep, t.sweep) || x[i].kind != y[i].kind ||
         x[i].line != y[i].line || a.toolpath.feedOf(i) != b.toolpath.feedOf(i) || x[i].centreForm != y[i].centreForm ||
         x[i].wireOffset != y[i].wireOffset)
       return false;

@@ -88,11 +88,11 @@ TEST(toolpath_test, feeds_are_kept_where_they_change) {
   tp.setFeedFrom(2, 150.0);
   tp.setFeedFrom(3, 150.0);
   tp.setFeedFrom(5, 90.0);
-  tp.setFeedFrom(5, 80.0);   // replaces 90 before move 5 ran
-  tp.setFeedFrom(7, -1.0);   // a value <= 0 is none
+  tp.setFeedFrom(5, 80.0);  // replaces 90 before move 5 ran
+  tp.setFeedFrom(7, -1.0);  // a value <= 0 is none
   ASSERT_EQ(tp.feedChanges.size(), 3U);
-  for (const auto& [move, feed] : {std::pair{0, 0.0}, {1, 0.0}, {2, 150.0}, {4, 150.0}, {5, 80.0}, {6, 80.0}, {7, 0.0},
-                                   {100, 0.0}})
+  for (const auto& [move, feed] :
+       {std::pair{0, 0.0}, {1, 0.0}, {2, 150.0}, {4, 150.0}, {5, 80.0}, {6, 80.0}, {7, 0.0}, {100, 0.0}})
     EXPECT_EQ(tp.feedOf(move), feed) << move;
   tp.setFeedFrom(7, 80.0);  // back to the feed before: the change at 7 goes
   ASSERT_EQ(tp.feedChanges.size(), 2U);

@@ -58,11 +58,12 @@ std::optional<Toolpath> toolpathAtPlane(const Toolpath& toolpath, const PlaneCho
       pieces.push_back(toolpath.upper[i]);
     else
       geometry::appendSection(toolpath.moves[i].lower, toolpath.upper[i], s, tolerance, pieces);
+    const double feed = toolpath.feedOf(i);
     for (const geometry::Segment& piece : pieces) {
       Move m = toolpath.moves[i];
       m.lower = piece;
       if (m.kind != MoveKind::Rapid) m.kind = piece.isArc() ? MoveKind::Arc : MoveKind::Line;
-      out.setFeedFrom(out.moves.size(), toolpath.feedOf(i));
+      out.setFeedFrom(out.moves.size(), feed);
       out.moves.push_back(m);
     }
   }

@@ -332,9 +332,6 @@ class Interpreter {
   /// The run of moves under one G41/G42 that the move at `index` (about to be, or just, stored)
   /// starts or extends.
   void noteOffsetRun(const Move& m, std::size_t index);
-  /// The call depth a move records: the subprograms the run is in (Move::kMaxCallDepth at most;
-  /// the caller masks it with kMaxCallDepth too, so that the compiler sees it fit the bits).
-  [[nodiscard]] std::size_t callDepth() const { return std::min(stack_.size(), Move::kMaxCallDepth); }
   // upper_side.cpp
   bool buildUpper(const BlockWords& bw, const BlockWords& ubw, const Block& block, Move& move, Segment& upper);
   bool buildUpperAbsolute(const BlockWords& bw, const BlockWords& ubw, const Block& block, Segment& upper);

@@ -201,7 +201,7 @@ void Interpreter::returnHome(const BlockWords& bw, const BlockWords& ubw, const 
     move.span = block.span();
     move.kind = MoveKind::Rapid;
     move.wireOffset = wireOffset_;
-    move.callDepth = callDepth() & Move::kMaxCallDepth;
+    move.setCallDepth(stack_.size());
     move.lower = Segment::line(position_, lowerEnd);
     push(std::move(move), Segment::line(upperStart, upperEnd));
   }

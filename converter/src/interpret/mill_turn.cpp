@@ -273,7 +273,7 @@ void Interpreter::faceMove(const BlockWords& bw, const Block& block) {
   Move move;
   move.line = block.line;
   move.span = block.span();
-  move.callDepth = callDepth() & Move::kMaxCallDepth;
+  move.setCallDepth(stack_.size());
   moveCentreWords_ = Vec2::Zero();
   const bool arc = motion_ == Motion::Clockwise || motion_ == Motion::CounterClockwise;
   if (arc && rotary) {

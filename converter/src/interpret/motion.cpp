@@ -196,7 +196,7 @@ bool Interpreter::executeMove(const BlockWords& bw, const BlockWords& ubw, const
   moveCentreWords_ = Vec2::Zero();
   moveTaper_ = 0.0f;
   move.wireOffset = wireOffset_;
-  move.callDepth = callDepth() & Move::kMaxCallDepth;
+  move.setCallDepth(stack_.size());
 
   const Vec2 start = position_;
   Vec2 end = start;

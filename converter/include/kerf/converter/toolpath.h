@@ -5,6 +5,7 @@
 #include "kerf/geometry/ruled_surface.h"
 #include "kerf/geometry/segment.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -61,6 +62,8 @@ struct Move {
 
   /// The deepest call depth a move records (a deeper one records this).
   static constexpr std::size_t kMaxCallDepth = 63;
+  /// callDepth = depth, kMaxCallDepth at most (masked too, so that the compiler sees it fit the bits).
+  void setCallDepth(std::size_t depth) { callDepth = std::min(depth, kMaxCallDepth) & kMaxCallDepth; }
 
   [[nodiscard]] bool isCut() const { return kind != MoveKind::Rapid; }
   /// How far the arc's end lies off its circle: |end - centre| - |start - centre|, mm (0 for a line).

@@ -181,22 +181,32 @@ TEST(parser_test, one_error_per_block_and_parsing_goes_on) {
   EXPECT_FALSE(p.blocks[1].hasError);
 }
 
-TEST(parser_test, a_block_of_more_words_than_a_block_holds_is_an_error_at_the_first_word_too_many) {
-  // A block holds Block::kMaxWords words (16-bit counts): the word after them is reported, the
-  // block keeps the ones before it, and the next line is read as usual.
+TEST(parser_test, a_line_longer_than_a_block_holds_is_an_error_and_not_read) {
+  // A block's length is 16 bits (Block::kMaxLength): a longer line is reported at its first
+  // character too many and not read; the lines around it are read as usual. One character less
+  // is read.
   std::string line = "G01";
-  for (std::size_t k = 1; k < Block::kMaxWords + 10; ++k) line += " G01";
-  SourceFile src("p.nc", line + "\nG01 X2.\n");
+  while (line.size() <= Block::kMaxLength) line += " G01";
+  SourceFile src("p.nc", "G01 X1.\n" + line + "\nG01 X2.\n");
   Diagnostics d;
   const Program p = parse(src, d);
   ASSERT_EQ(d.errorCount(), 1u);
   EXPECT_EQ(d.all().front().code, Code::BlockTooLong);
-  EXPECT_EQ(d.all().front().span.offset, 4 * Block::kMaxWords);  // "G01 " a word
+  EXPECT_EQ(src.locate(d.all().front().span.offset).line, 2u);
+  EXPECT_EQ(src.locate(d.all().front().span.offset).column, Block::kMaxLength + 1);
   ASSERT_EQ(p.blocks.size(), 2u);
-  EXPECT_EQ(p.blocks[0].wordCount, Block::kMaxWords);
-  EXPECT_TRUE(p.blocks[0].hasError);
-  EXPECT_EQ(p.blocks[1].wordCount, 2u);
+  EXPECT_EQ(p.lineOf(p.blocks[1]), 3u);
   EXPECT_EQ(WordReader(p).words(p.blocks[1])[1].letter, 'X');
+
+  std::string fits = "G01";
+  while (fits.size() < Block::kMaxLength) fits += " G01";  // 3 + 4k characters: 65,535 at k = 16,383
+  ASSERT_EQ(fits.size(), Block::kMaxLength);
+  SourceFile fitting("q.nc", fits + "\n");
+  Diagnostics fd;
+  const Program q = parse(fitting, fd);
+  EXPECT_EQ(fd.errorCount(), 0u) << (fd.all().empty() ? "" : fd.all().front().message);
+  ASSERT_EQ(q.blocks.size(), 1u);
+  EXPECT_EQ(q.blocks[0].length, Block::kMaxLength);
 }
 
 TEST(diagnostics_test, long_lines_are_shown_as_a_window_around_the_column) {
@@ -309,7 +319,7 @@ TEST(parser_test, lines_end_at_lf_cr_lf_or_a_lone_cr) {
     const Program p = parse(src, d);
     EXPECT_FALSE(d.hasErrors());
     ASSERT_EQ(p.blocks.size(), 3u) << text;
-    EXPECT_EQ(p.blocks[2].line, 3u);
+    EXPECT_EQ(p.lineOf(p.blocks[2]), 3u);
     EXPECT_EQ(src.lineText(2), "G1 Y2.");
   }
 }
@@ -506,7 +516,7 @@ TEST(parser_test, plain_blocks_hold_only_motion_codes_and_coordinates) {
                                       false, false, false, false, false, false, false};
   ASSERT_EQ(p.blocks.size(), expected.size());
   for (std::size_t k = 0; k < expected.size(); ++k)
-    EXPECT_EQ(p.blocks[k].plain, expected[k]) << "line " << p.blocks[k].line;
+    EXPECT_EQ(p.blocks[k].plain, expected[k]) << "line " << p.lineOf(p.blocks[k]);
 }
 
 // Program::notPlain lists the blocks that are not plain, in order, which the scans for evidence,
@@ -575,18 +585,18 @@ TEST(parser_test, plain_blocks_read_again_as_the_parse_read_them) {
       SourceFile alone("block.nc", text);
       Diagnostics ad;
       const Program q = parse(alone, ad);
-      ASSERT_EQ(q.blocks.size(), 1u) << file << ":" << b.line;
+      ASSERT_EQ(q.blocks.size(), 1u) << file << ":" << p.lineOf(b);
       ASSERT_FALSE(q.blocks[0].plain);
       const auto again = reader.words(b);
       const auto parsed = q.wordsOf(q.blocks[0]);
-      ASSERT_EQ(again.size() + 1, parsed.size()) << file << ":" << b.line;
+      ASSERT_EQ(again.size() + 1, parsed.size()) << file << ":" << p.lineOf(b);
       for (std::size_t k = 0; k < again.size(); ++k) {
-        EXPECT_EQ(again[k].letter, parsed[k].letter) << file << ":" << b.line;
-        EXPECT_EQ(again[k].value, parsed[k].value) << file << ":" << b.line;
-        EXPECT_EQ(again[k].hasPoint, parsed[k].hasPoint) << file << ":" << b.line;
-        EXPECT_EQ(again[k].kind, parsed[k].kind) << file << ":" << b.line;
-        EXPECT_EQ(again[k].length, parsed[k].length) << file << ":" << b.line;
-        EXPECT_EQ(again[k].offset - b.offset, parsed[k].offset) << file << ":" << b.line;
+        EXPECT_EQ(again[k].letter, parsed[k].letter) << file << ":" << p.lineOf(b);
+        EXPECT_EQ(again[k].value, parsed[k].value) << file << ":" << p.lineOf(b);
+        EXPECT_EQ(again[k].hasPoint, parsed[k].hasPoint) << file << ":" << p.lineOf(b);
+        EXPECT_EQ(again[k].kind, parsed[k].kind) << file << ":" << p.lineOf(b);
+        EXPECT_EQ(again[k].length, parsed[k].length) << file << ":" << p.lineOf(b);
+        EXPECT_EQ(again[k].offset - b.offset, parsed[k].offset) << file << ":" << p.lineOf(b);
       }
       ++checked;
     }
@@ -695,24 +705,24 @@ TEST(parser_test, the_short_road_for_plain_blocks_reads_as_the_word_loop) {
     std::size_t plain = 0;
     for (std::size_t k = 0; k < fb.size(); ++k) {
       const Block &a = fb[k], &b = lb[k];
-      const std::uint32_t aLine = fast.lineRange(a.line).first, bLine = loop.lineRange(b.line).first;
-      ASSERT_EQ(a.line, b.line);
-      EXPECT_EQ(a.offset - aLine, b.offset - bLine) << "line " << a.line;
-      EXPECT_EQ(a.plain, b.plain) << "line " << a.line;
-      EXPECT_EQ(a.hasError, b.hasError) << "line " << a.line;
-      EXPECT_EQ(a.wordCount, b.wordCount) << "line " << a.line;
-      EXPECT_EQ(a.upperFrom, b.upperFrom) << "line " << a.line;
+      const std::uint32_t aLine = fast.lineRange(fp.lineOf(a)).first, bLine = loop.lineRange(lp.lineOf(b)).first;
+      ASSERT_EQ(fp.lineOf(a), lp.lineOf(b));
+      EXPECT_EQ(a.offset - aLine, b.offset - bLine) << "line " << fp.lineOf(a);
+      EXPECT_EQ(a.plain, b.plain) << "line " << fp.lineOf(a);
+      EXPECT_EQ(a.hasError, b.hasError) << "line " << fp.lineOf(a);
+      EXPECT_EQ(a.wordCount, b.wordCount) << "line " << fp.lineOf(a);
+      EXPECT_EQ(a.upperFrom, b.upperFrom) << "line " << fp.lineOf(a);
       const std::string_view aText = fp.textOf(a), bText = lp.textOf(b);
-      EXPECT_EQ(aText, bText.substr(0, aText.size())) << "line " << a.line;
+      EXPECT_EQ(aText, bText.substr(0, aText.size())) << "line " << fp.lineOf(a);
       plain += a.plain;
       const auto aw = fr.words(a);
       const std::vector<Word> awCopy(aw.begin(), aw.end());
       const auto bw = lr.words(b);
-      ASSERT_EQ(awCopy.size(), bw.size()) << "line " << a.line;
+      ASSERT_EQ(awCopy.size(), bw.size()) << "line " << fp.lineOf(a);
       for (std::size_t w = 0; w < bw.size(); ++w) {
-        EXPECT_EQ(awCopy[w].letter, bw[w].letter) << "line " << a.line;
-        EXPECT_EQ(awCopy[w].value, bw[w].value) << "line " << a.line;
-        EXPECT_EQ(awCopy[w].offset - aLine, bw[w].offset - bLine) << "line " << a.line;
+        EXPECT_EQ(awCopy[w].letter, bw[w].letter) << "line " << fp.lineOf(a);
+        EXPECT_EQ(awCopy[w].value, bw[w].value) << "line " << fp.lineOf(a);
+        EXPECT_EQ(awCopy[w].offset - aLine, bw[w].offset - bLine) << "line " << fp.lineOf(a);
       }
     }
     EXPECT_GT(plain, 1000u);

@@ -44,7 +44,7 @@ void Interpreter::holdCorner(const Word& w, const Block& block, bool moved, cons
     if (!(*upperSize >= 0) || *upperSize > 1e5)
       return refuse("the upper plane's corner radius K must be 0 to 100 m, not " + formatFixed(*upperSize, 3) + " mm");
   }
-  pendingCorner_ = PendingCorner{size, upperSize, w.letter == 'C', w.span(), block.line};
+  pendingCorner_ = PendingCorner{size, upperSize, w.letter == 'C', w.span(), lineOf(block)};
 }
 
 void Interpreter::refusePendingCorner(const std::string& why) {

@@ -48,8 +48,8 @@ bool Interpreter::executeSetPosition(const BlockWords& bw, const BlockWords& ubw
                  "program with --machine robofil");
     return false;
   }
-  if (const Word* i = bw['I']) setHeight(fileThickness_, length(*i), "G92 I", block.line);
-  if (const Word* j = bw['J']) setHeight(fileProgramZ_, length(*j), "G92 J", block.line);
+  if (const Word* i = bw['I']) setHeight(fileThickness_, length(*i), "G92 I", lineOf(block));
+  if (const Word* j = bw['J']) setHeight(fileProgramZ_, length(*j), "G92 J", lineOf(block));
   const bool wasUnknown = unknown_.active;
   if (wasUnknown && (bare || (bw.has('X') && bw.has('Y')))) {
     positionKnownAgain(block);

@@ -420,6 +420,10 @@ class Interpreter {
                           const std::vector<double>& distance, const char* plane);
 
   SourceSpan spanOf(const Word* w, const Block& b) const { return w ? w->span() : b.span(); }
+  /// The line block b starts on: the run asks for the blocks in order, so the line of the block
+  /// before is tried first (SourceFile::lineOf's hint).
+  std::uint32_t lineOf(const Block& b) { return src_->lineOf(b.offset, lineHint_); }
+  std::uint32_t lineHint_ = 0;  // lineOf's: the line it answered last
 
   std::size_t executed_ = 0;                                     // blocks run so far
   std::unordered_map<std::size_t, std::uint64_t> blocksOfCall_;  // per subprogram start (memo)

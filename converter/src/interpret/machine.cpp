@@ -605,45 +605,48 @@ void codeEvidence(const Program& program, const Block& b, bool p, Tallies& t, bo
       const long tenths = roundHalfAway(w.value * 10);
       if (whole && (n == 60 || n == 38 || n == 39))
         t["robofil"].add(
-            "G" + std::to_string(n), [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
+            "G" + std::to_string(n), [&] { return onLine("G" + std::to_string(n), program.lineOf(b)); }, w.span(), 2);
       if (whole && n >= 140 && n <= 142)
         t["sodick"].add(
-            "colon", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 2);
+            "colon", [&] { return onLine("G" + std::to_string(n), program.lineOf(b)); }, w.span(), 2);
       if ((whole && (n == 112 || n == 113)) || tenths == 121 || tenths == 131)
         t["fanuc"].add(
             "polar",
             [&] {
-              return onLine("polar interpolation (" + std::string(text.substr(w.offset, w.length)) + ")", b.line);
+              return onLine("polar interpolation (" + std::string(text.substr(w.offset, w.length)) + ")",
+                            program.lineOf(b));
             },
             w.span(), 3);
       if (whole && (n == 98 || n == 99))
         t["fanuc"].add(
-            "g98", [&] { return onLine("G" + std::to_string(n), b.line); }, w.span(), 1);
+            "g98", [&] { return onLine("G" + std::to_string(n), program.lineOf(b)); }, w.span(), 1);
       if (whole && (n == 61 || n == 64))
         t["linuxcnc"].add(
-            "path", [&] { return onLine("G" + std::to_string(n) + " path control", b.line); }, w.span(), 1);
+            "path", [&] { return onLine("G" + std::to_string(n) + " path control", program.lineOf(b)); }, w.span(), 1);
       g92 |= whole && n == 92;
       taper |= whole && (n == 51 || n == 52);
     } else if (w.letter == 'M' && whole) {
       if (n == 28)
         t["robofil"].add(
-            "M28", [&] { return onLine("M28", b.line); }, w.span(), 2);
+            "M28", [&] { return onLine("M28", program.lineOf(b)); }, w.span(), 2);
       if ((n == 100 || n == 101) && p)
         t["cnc3"].add(
-            "geometry", [&] { return onLine("M" + std::to_string(n) + " P (taper geometry)", b.line); }, w.span(), 3);
+            "geometry", [&] { return onLine("M" + std::to_string(n) + " P (taper geometry)", program.lineOf(b)); },
+            w.span(), 3);
       if (n >= 105 && n <= 107 && p)
         t["cnc3"].add(
-            "generator", [&] { return onLine("M" + std::to_string(n) + " P (generator and wire settings)", b.line); },
+            "generator",
+            [&] { return onLine("M" + std::to_string(n) + " P (generator and wire settings)", program.lineOf(b)); },
             w.span(), 2);
       if (n == 40 || n == 41 || (n >= 82 && n <= 85))
         t["cnc3"].add(
-            "M" + std::to_string(n), [&] { return onLine("M" + std::to_string(n), b.line); }, w.span(), 1);
+            "M" + std::to_string(n), [&] { return onLine("M" + std::to_string(n), program.lineOf(b)); }, w.span(), 1);
       if (n == 199)
         t["sodick"].add(
-            "M199", [&] { return onLine("M199", b.line); }, w.span(), 1);
+            "M199", [&] { return onLine("M199", program.lineOf(b)); }, w.span(), 1);
     } else if (w.letter == 'T' && whole && (n == 84 || n == 85 || n == 94)) {
       t["sodick"].add(
-          "T" + std::to_string(n), [&] { return onLine("T" + std::to_string(n), b.line); }, w.span(), 1);
+          "T" + std::to_string(n), [&] { return onLine("T" + std::to_string(n), program.lineOf(b)); }, w.span(), 1);
     }
   }
 }
@@ -654,20 +657,21 @@ void blockEvidence(const Program& program, const Block& b, Tallies& t) {
   if (b.kind == BlockKind::MacroCall) {
     const std::string_view call = program.textOf(b).substr(0, program.textOf(b).find('('));
     t["sodick"].add(
-        "call", [&] { return onLine("the macro call " + std::string(call) + "(...)", b.line); }, b.span(), 3);
+        "call", [&] { return onLine("the macro call " + std::string(call) + "(...)", program.lineOf(b)); }, b.span(),
+        3);
     return;
   }
   if (b.kind == BlockKind::MacroB) {
     t["fanuc"].add(
-        "macro", [&] { return onLine("macro B", b.line); }, b.span(), 2);
+        "macro", [&] { return onLine("macro B", program.lineOf(b)); }, b.span(), 2);
     return;
   }
   if (b.twoMotions)
     t["cnc3"].add(
-        "two", [&] { return onLine("two motion words in one block", b.line); }, b.span(), 3);
+        "two", [&] { return onLine("two motion words in one block", program.lineOf(b)); }, b.span(), 3);
   if (b.lowerCase)
     t["linuxcnc"].add(
-        "lower", [&] { return onLine("lower-case words", b.line); }, b.span(), 1);
+        "lower", [&] { return onLine("lower-case words", program.lineOf(b)); }, b.span(), 1);
   std::uint32_t letters = 0;  // a bit per letter the block has
   for (const Word& w : program.wordsOf(b)) letters |= 1u << (w.letter - 'A');
   auto has = [&](char c) { return (letters & (1u << (c - 'A'))) != 0; };
@@ -677,28 +681,28 @@ void blockEvidence(const Program& program, const Block& b, Tallies& t) {
   for (const Word& w : program.wordsOf(b))
     if (w.corner) {
       t["fanuc"].add(
-          "corner", [&] { return onLine("a corner word (,R or ,C)", b.line); }, w.span(), 2);
+          "corner", [&] { return onLine("a corner word (,R or ,C)", program.lineOf(b)); }, w.span(), 2);
       break;
     }
   if (b.unusualValues)
     for (const Word& w : program.wordsOf(b)) {
       if (w.kind == WordValue::Macro)
         t["fanuc"].add(
-            "macro", [&] { return onLine("a macro B value", b.line); }, w.span(), 2);
+            "macro", [&] { return onLine("a macro B value", program.lineOf(b)); }, w.span(), 2);
       if (w.kind == WordValue::Register)
         t["sodick"].add(
-            "register", [&] { return onLine("a register value", b.line); }, w.span(), 2);
+            "register", [&] { return onLine("a register value", program.lineOf(b)); }, w.span(), 2);
     }
   codeEvidence(program, b, p, t, g92, taper);
   if (g92 && ij)
     t["ncvc"].add(
-        "g92ij", [&] { return onLine("G92 with I J (plane heights)", b.line); }, b.span(), 3);
+        "g92ij", [&] { return onLine("G92 with I J (plane heights)", program.lineOf(b)); }, b.span(), 3);
   if (uv && kl)
     t["ncvc"].add(
-        "kl", [&] { return onLine("K L beside U V", b.line); }, b.span(), 2);
+        "kl", [&] { return onLine("K L beside U V", program.lineOf(b)); }, b.span(), 2);
   if (taper && tWord)
     t["ncvc"].add(
-        "t", [&] { return onLine("G51/G52 with a T angle", b.line); }, b.span(), 2);
+        "t", [&] { return onLine("G51/G52 with a T angle", program.lineOf(b)); }, b.span(), 2);
 }
 
 }  // namespace

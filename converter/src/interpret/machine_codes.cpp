@@ -24,7 +24,7 @@ bool Interpreter::recordGuides(const BlockWords& bw, const Block& block, const s
   const Word* p = bw['P'];
   const Word* q = bw['Q'];
   if (!p || !q || !p->isNumber() || !q->isNumber()) return false;
-  const std::string where = " on line " + std::to_string(block.line);
+  const std::string where = " on line " + std::to_string(lineOf(block));
   fileGuideSpacing_ = Height{length(*p), code + " P" + where};
   fileGuideBelow_ = Height{length(*q), code + " Q" + where};
   return true;
@@ -87,7 +87,7 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
         break;
       case CodeEffect::Thickness:
         if (const Word* p = bw['P']; p && p->isNumber()) {
-          setHeight(fileThickness_, length(*p), (key + " P").c_str(), block.line);
+          setHeight(fileThickness_, length(*p), (key + " P").c_str(), lineOf(block));
         } else {
           diags_.warning(Code::ParameterMissing, src_, w.span(),
                          as + " sets the workpiece thickness with P, and has none");
@@ -197,7 +197,7 @@ void Interpreter::returnHome(const BlockWords& bw, const BlockWords& ubw, const 
   if (unknown_.active) positionKnownAgain(block);  // the home is a known place
   if ((lowerEnd - position_).norm() > 1e-12 || (upperEnd - upperStart).norm() > 1e-12) {
     Move move;
-    move.line = block.line;
+    move.line = lineOf(block);
     move.span = block.span();
     move.kind = MoveKind::Rapid;
     move.wireOffset = wireOffset_;
@@ -212,8 +212,8 @@ void Interpreter::returnHome(const BlockWords& bw, const BlockWords& ubw, const 
 void Interpreter::skipMove(const Block& block, bool cut) {
   ++unknown_.skippedMoves;
   if (cut) ++unknown_.skippedCuts;
-  if (unknown_.firstSkippedLine == 0) unknown_.firstSkippedLine = block.line;
-  unknown_.lastSkippedLine = block.line;
+  if (unknown_.firstSkippedLine == 0) unknown_.firstSkippedLine = lineOf(block);
+  unknown_.lastSkippedLine = lineOf(block);
 }
 
 void Interpreter::positionKnownAgain(const Block& block) { flushUnknown(&block); }
@@ -231,7 +231,7 @@ void Interpreter::flushUnknown(const Block* knownAgain) {
                     : "s " + std::to_string(u.firstSkippedLine) + " to " + std::to_string(u.lastSkippedLine)) +
                " (" + std::to_string(u.skippedCuts) + " cut) cannot be drawn or checked";
   }
-  message += knownAgain ? "; line " + std::to_string(knownAgain->line) + " gives it again"
+  message += knownAgain ? "; line " + std::to_string(lineOf(*knownAgain)) + " gives it again"
                         : "; it stays unknown to the end of the program";
   std::string help = u.help;
   if (help.empty() && u.skippedCuts > 0)
@@ -271,10 +271,10 @@ bool Interpreter::skipPolarSection(std::size_t pc, std::size_t& next, const Word
   const std::string what = written(src_, polarWord);
   std::string message = what + " (polar coordinate interpolation, X and C words) is not supported yet: ";
   if (cancelled)
-    message += "the blocks up to " + cancelWord + " on line " + std::to_string(program_.blocks[end - 1].line) +
+    message += "the blocks up to " + cancelWord + " on line " + std::to_string(lineOf(program_.blocks[end - 1])) +
                " are not read";
   else if (end > pc + 1)
-    message += "the blocks from here to line " + std::to_string(program_.blocks[end - 1].line) +
+    message += "the blocks from here to line " + std::to_string(lineOf(program_.blocks[end - 1])) +
                " are not read (no G13.1 follows)";
   else
     message += "no G13.1 follows it";

@@ -271,7 +271,7 @@ void Interpreter::faceMove(const BlockWords& bw, const Block& block) {
   const double startC = face_.c;
   face_.c = newC;
   Move move;
-  move.line = block.line;
+  move.line = lineOf(block);
   move.span = block.span();
   move.setCallDepth(stack_.size());
   moveCentreWords_ = Vec2::Zero();

@@ -136,7 +136,7 @@ bool Interpreter::buildSegment(const BlockWords& w, Motion motion, const Vec2& s
       record->centreForm = form;
     }
     build = geometry::arcFromCentre(start, end, centre, dir, tolerance_);
-    if (record) tallyArcCentre(start, end, ij, shift, build.status == geometry::ArcStatus::Ok, block.line);
+    if (record) tallyArcCentre(start, end, ij, shift, build.status == geometry::ArcStatus::Ok, lineOf(block));
   }
   if (build.status != geometry::ArcStatus::Ok) {
     reportArc(build, w, block, side);
@@ -191,7 +191,7 @@ bool Interpreter::executeMove(const BlockWords& bw, const BlockWords& ubw, const
     return true;
   }
   Move move;
-  move.line = block.line;
+  move.line = lineOf(block);
   move.span = block.span();
   moveCentreWords_ = Vec2::Zero();
   moveTaper_ = 0.0f;

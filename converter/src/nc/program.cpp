@@ -251,13 +251,12 @@ class LineParser {
     while (i < end && isBlank(text_[i])) ++i;
     if (i >= end) return end;
     // The common block first: no setting is plain (its '=' is no plain block's character).
-    if (const std::size_t next = tryPlainBlock(i, end, line); next != i) return next;
+    if (const std::size_t next = tryPlainBlock(i, end); next != i) return next;
     if (trySetting(i, end, line)) return end;
 
     Block block;
     block.firstWord = static_cast<std::uint32_t>(program_.words.size());
     block.offset = static_cast<std::uint32_t>(i);
-    block.line = line;
     if (text_[i] == '/') {
       block.blockDelete = true;
       ++i;
@@ -333,12 +332,6 @@ class LineParser {
         break;
       }
       if (isLowerLetter(c)) block.lowerCase = true;
-      if (static_cast<std::size_t>(wordsSoFar(block)) >= Block::kMaxWords) {
-        error(block, Code::BlockTooLong, i, 1,
-              "a block of more than " + std::to_string(Block::kMaxWords) + " words: the rest of the line is not read",
-              "split the line into blocks");
-        break;
-      }
       i = parseWord(block, i, end);
       if (block.hasError) break;  // one error per block: what follows is likely noise from it
     }
@@ -356,7 +349,7 @@ class LineParser {
   /// in Program::plainWords, where the interpreter's WordReader finds them.
   /// Anything else — a comment, a blank after a letter, lower case, a second motion word after a
   /// coordinate, anything an error — returns begin, and the word loop reads the block.
-  std::size_t tryPlainBlock(const std::size_t begin, const std::size_t end, const std::uint32_t line) {
+  std::size_t tryPlainBlock(const std::size_t begin, const std::size_t end) {
     constexpr std::uint16_t kMostWords = 64;  // more: the word loop (a plain block has at most 7 letters and its G's)
     std::uint32_t letters = 0;                // X Y I J R F seen (each may stand once)
     std::uint16_t count = 0;
@@ -445,10 +438,9 @@ class LineParser {
     block.firstWord = program_.plainWords.at();
     program_.plainWords.keep(count);
     block.offset = static_cast<std::uint32_t>(begin);
-    block.line = line;
     std::size_t last = blockEnd;
     while (last > begin && isBlank(text_[last - 1])) --last;
-    block.length = static_cast<std::uint32_t>(last - begin);
+    block.length = static_cast<std::uint16_t>(last - begin);
     block.wordCount = block.upperFrom = count;
     block.plain = true;
     program_.blocks.push_back(block);
@@ -474,8 +466,8 @@ class LineParser {
   void finish(Block& block, std::size_t blockEnd) {
     std::size_t last = blockEnd;
     while (last > block.offset && isBlank(text_[last - 1])) --last;
-    block.length = static_cast<std::uint32_t>(last - block.offset);
-    // At most Block::kMaxWords: the word loop stops there, and the sides' reordering adds none.
+    block.length = static_cast<std::uint16_t>(last - block.offset);
+    // Both fit 16 bits: parseProgram reads no line longer than Block::kMaxLength.
     block.wordCount = static_cast<std::uint16_t>(program_.words.size() - block.firstWord);
     if (block.kind == BlockKind::Words && block.upperFrom == 0 && block.wordCount > 0 && !hasUpper_)
       block.upperFrom = block.wordCount;
@@ -613,7 +605,7 @@ class LineParser {
   }
 
   /// Sodick `TP<z>` (program plane) and `TN<z>` (lower plane).
-  bool tryHeightWord(Block& block, std::size_t start, std::size_t i, std::size_t end, std::size_t& next) {
+  bool tryHeightWord(std::size_t start, std::size_t i, std::size_t end, std::size_t& next) {
     if (i >= end || (upper(text_[i]) != 'P' && upper(text_[i]) != 'N')) return false;
     const NumberScan n = scanNumber(text_, i + 1, end);
     if (n.status != NumberScan::Ok) return false;
@@ -622,7 +614,7 @@ class LineParser {
     h.value = n.value;
     h.hasPoint = n.hasPoint;
     h.span = {static_cast<std::uint32_t>(start), static_cast<std::uint32_t>(n.end - start)};
-    h.line = block.line;
+    h.line = src_.lineOf(static_cast<std::uint32_t>(start));
     program_.heights.push_back(h);
     next = n.end;
     return true;
@@ -707,7 +699,7 @@ class LineParser {
     while (i < end && isBlank(text_[i])) ++i;  // "X 10." is accepted
     // B is no wire word (3B code starts with it), except a rotary axis homed with G28/G30 (`G28 B`).
     if (!isWordLetter(letter) && !(letter == 'B' && homing_)) return unknownLetter(block, start, i, end, letter);
-    if (std::size_t next = 0; letter == 'T' && tryHeightWord(block, start, i, end, next)) return next;
+    if (std::size_t next = 0; letter == 'T' && tryHeightWord(start, i, end, next)) return next;
     if (const std::size_t next = valueAtMachine(block, start, i, end, letter); next != i) return next;
     const NumberScan n = scanNumber(text_, i, end);
     if (n.status == NumberScan::Missing) return noNumber(block, start, i, end, letter);
@@ -981,7 +973,7 @@ std::span<const Word> WordReader::words(const Block& b) {
   again.words.clear();
   again.notPlain.clear();
   again.plainWords.clear();
-  again_->parser.parseLine(b.offset, std::size_t{b.offset} + b.length, b.line);
+  again_->parser.parseLine(b.offset, std::size_t{b.offset} + b.length, program_.source->lineOf(b.offset));
   buffer_.clear();
   if (!again.blocks.empty()) {
     const Block& read = again.blocks.front();
@@ -1038,6 +1030,12 @@ Program parseProgram(const SourceFile& source, Diagnostics& diags, const ParseOp
     while (at < end && isBlank(text[at])) ++at;
     if (at < end && text[at] == '%') {
       if (!program.blocks.empty() || !program.settings.empty()) break;
+      continue;
+    }
+    if (end - begin > Block::kMaxLength) {
+      diags.error(Code::BlockTooLong, &source, {static_cast<std::uint32_t>(begin + Block::kMaxLength), 1},
+                  "a line of more than " + std::to_string(Block::kMaxLength) + " characters: it is not read",
+                  "split the line into blocks");
       continue;
     }
     parser.parseLine(begin, end, line);

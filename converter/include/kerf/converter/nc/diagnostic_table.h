@@ -30,7 +30,7 @@
   X(111, TooManyMCodes, Error, "error", "more than four M codes, or six codes of the machine profile, in one block (none is dropped silently)") \
   X(112, DecimalComma, Error, "error", "a comma where the decimal point belongs (`F12,9285`); the help gives the number probably meant") \
   X(113, MacroStatement, Error, "error", "macro B (`#100 = …`, `WHILE`, `IF`, `GOTO`, `END`) is not run; one for the file, at the first, counting the rest") \
-  X(114, BlockTooLong, Error, "error", "a block of more than 65,535 words; the rest of its line is not read") \
+  X(114, BlockTooLong, Error, "error", "a line of more than 65,535 characters; it is not read") \
   X(120, ThreeBSyntax, Error, "error", "a malformed 3B record (a lost B, a sign or point in a field, an unknown Z, no G)") \
   X(121, DxfSyntax, Error, "error", "a malformed or truncated DXF file, at its line (binary: byte offset) and group code") \
   X(122, DxfEntity, Warning, "warning/error", "a DXF entity that cannot become a contour (zero radius, a spline whose knots do not fit, an INSERT of a block that is not there, nesting too deep); error: INSERTs that expand past the budget, refused before expanding further") \

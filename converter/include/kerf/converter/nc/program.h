@@ -76,14 +76,15 @@ enum class BlockKind : std::uint8_t {
 };
 
 struct Block {
-  /// Most words a block may hold (wordCount and upperFrom are 16 bits, so that a block stays 24
-  /// bytes: a program holds one per line). The parser reports a longer block (K0114).
-  static constexpr std::size_t kMaxWords = 0xFFFF;
+  /// The longest line the parser reads (K0114 refuses a longer one): a block's length, word count
+  /// and upperFrom are 16 bits, so that a block is 16 bytes (a program holds one per line; they
+  /// are held with the moves while the program runs). A word is two characters at least, so a
+  /// block of a line this long holds fewer than kMaxLength words.
+  static constexpr std::size_t kMaxLength = 0xFFFF;
 
   std::uint32_t firstWord = 0;  ///< index in Program::words, or in Program::plainWords for a plain block
-  std::uint32_t offset = 0;     ///< start of the block's text
-  std::uint32_t length = 0;     ///< to the end of the block's text (without the line break)
-  std::uint32_t line = 0;       ///< 1-based
+  std::uint32_t offset = 0;     ///< start of the block's text; its line is SourceFile::lineOf(offset)
+  std::uint16_t length = 0;     ///< to the end of the block's text (without the line break)
   std::uint16_t wordCount = 0;
   /// Words from this index on (relative to firstWord) describe the upper contour. The parser
   /// orders a block's words so that the lower side's come first: those before a Sodick ':' or a
@@ -106,7 +107,7 @@ struct Block {
   std::uint8_t unusedBit : 1 = 0;  ///< named so that copying a block writes whole bytes (see Word)
   [[nodiscard]] SourceSpan span() const { return {offset, length}; }
 };
-static_assert(sizeof(Block) == 24, "a Block is 24 bytes: a program holds one per line");
+static_assert(sizeof(Block) == 16, "a Block is 16 bytes: a program holds one per line");
 
 /// A plane height written in the program outside the word set (docs/taper.md): Sodick `TP` /
 /// `TN` words and LinuxCNC `(AXIS,XY_Z_POS,z)` / `(AXIS,UV_Z_POS,z)` comments.
@@ -209,6 +210,8 @@ struct Program {
   }
   /// The block's text as written.
   [[nodiscard]] std::string_view textOf(const Block& b) const { return source->text().substr(b.offset, b.length); }
+  /// The 1-based line a block starts on (a binary search in the source's lines).
+  [[nodiscard]] std::uint32_t lineOf(const Block& b) const { return source->lineOf(b.offset); }
 };
 
 /// The words of any block of a program, as the parser read them: a block that is not plain's from

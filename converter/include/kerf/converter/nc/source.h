@@ -52,6 +52,21 @@ class SourceFile {
     return {begin, end};
   }
   [[nodiscard]] std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
+  /// The 1-based line that holds byte `offset` (locate's line): a binary search.
+  [[nodiscard]] std::uint32_t lineOf(std::uint32_t offset) const { return locate(offset).line; }
+  /// lineOf for a reader that walks the text forwards: `hint` is a line to try first (the answer
+  /// before; 0 for none), and the line after it; elsewhere a binary search. `hint` is set to the
+  /// answer. Inline: the interpreter asks for every block's line.
+  [[nodiscard]] std::uint32_t lineOf(std::uint32_t offset, std::uint32_t& hint) const {
+    const std::uint32_t* const starts = lineStarts_.data();
+    const std::size_t count = lineStarts_.size();
+    // Past the start of the hint's line (a hint of 0 wraps to no line), on it or on the next.
+    if (const std::uint32_t line = hint; line - 1u < count && starts[line - 1] <= offset) {
+      if (line == count || offset < starts[line]) return line;
+      if (line + 1 == count || offset < starts[line + 1]) return hint = line + 1;
+    }
+    return hint = lineOf(offset);
+  }
 
  private:
   std::string name_;

@@ -408,6 +408,53 @@ struct SweepEvents {
   [[nodiscard]] std::uint32_t segOf(std::uint32_t piece) const { return identity ? piece : pieceSeg[piece]; }
 };
 
+/// The events in the sweep's order: by x, then y, then the first entry (two events at one point
+/// are two paths through it, each entry names a piece's end once: the order is total, so any sort
+/// gives the same). Distributed first into buckets by x — slices of [least x, greatest x], taken
+/// through a monotone map, so a bucket's events all precede the next bucket's — then each bucket
+/// sorted alone. A path's events spread over its extent: the buckets hold two on average and the
+/// whole is about linear, where a comparison sort of n events costs n log n comparisons (most of
+/// the decision sweep's work on a tangled walk). Events that pile into one bucket (a path of one x)
+/// are sorted there as the whole was.
+void sortEvents(std::vector<SweepEvents::Event>& events) {
+  using Event = SweepEvents::Event;
+  const auto less = [](const Event& a, const Event& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.entry[0] < b.entry[0];
+  };
+  const std::size_t n = events.size();
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Event& e : events) {
+    lo = std::min(lo, e.x);
+    hi = std::max(hi, e.x);
+  }
+  const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(n / 2, 1));
+  const double scale = static_cast<double>(buckets) / (hi - lo);
+  if (n < 16 || !(hi > lo) || !std::isfinite(scale)) {  // a few, or one x: the comparison sort
+    geometry::parallelSort(events.begin(), events.end(), less);
+    return;
+  }
+  // (x - lo) * scale rounds monotonically, and so does the truncation: a larger x never takes an
+  // earlier bucket. The last bucket also takes x = hi (and what rounding puts past it).
+  const auto last = static_cast<std::uint32_t>(buckets - 1);
+  const auto bucketOf = [&](const Event& e) {
+    const double t = (e.x - lo) * scale;
+    return t < static_cast<double>(last) ? static_cast<std::uint32_t>(t) : last;
+  };
+  // end[b] counts bucket b's events, then (summed) is where the bucket ends; the events placed
+  // from the last back, it is where the bucket starts.
+  std::vector<std::uint32_t> end(buckets, 0);
+  for (const Event& e : events) ++end[bucketOf(e)];
+  std::uint32_t at = 0;
+  for (std::uint32_t& b : end) at = b += at;
+  std::vector<Event> sorted(n);
+  for (auto e = events.rbegin(); e != events.rend(); ++e) sorted[--end[bucketOf(*e)]] = *e;
+  for (std::size_t b = 0; b < buckets; ++b) {
+    const auto first = sorted.begin() + end[b], stop = b + 1 < buckets ? sorted.begin() + end[b + 1] : sorted.end();
+    if (stop - first > 1) std::sort(first, stop, less);
+  }
+  events.swap(sorted);
+}
+
 template <typename IsLive>
 SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) {
   using Event = SweepEvents::Event;
@@ -448,8 +495,7 @@ SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) 
       ++sub;
     });
   }
-  geometry::parallelSort(events.begin(), events.end(),
-                         [](const Event& a, const Event& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  sortEvents(events);
   out.probeIndex = static_cast<std::uint32_t>(pieces);
   if (!out.identity) out.pieceSeg.push_back(std::numeric_limits<std::uint32_t>::max());
   return out;

@@ -412,7 +412,7 @@ struct SweepEvents {
 /// are two paths through it, each entry names a piece's end once: the order is total, so any sort
 /// gives the same). Distributed first into buckets by x — slices of [least x, greatest x], taken
 /// through a monotone map, so a bucket's events all precede the next bucket's — then each bucket
-/// sorted alone. A path's events spread over its extent: the buckets hold two on average and the
+/// sorted alone. A path's events spread over its extent: the buckets hold four on average and the
 /// whole is about linear, where a comparison sort of n events costs n log n comparisons (most of
 /// the decision sweep's work on a tangled walk). Events that pile into one bucket (a path of one x)
 /// are sorted there as the whole was.
@@ -427,7 +427,7 @@ void sortEvents(std::vector<SweepEvents::Event>& events) {
     lo = std::min(lo, e.x);
     hi = std::max(hi, e.x);
   }
-  const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(n / 2, 1));
+  const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(n / 4, 1));
   const double scale = static_cast<double>(buckets) / (hi - lo);
   if (n < 16 || !(hi > lo) || !std::isfinite(scale)) {  // a few, or one x: the comparison sort
     geometry::parallelSort(events.begin(), events.end(), less);

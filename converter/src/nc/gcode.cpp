@@ -82,33 +82,38 @@ constexpr std::array<MCodeInfo, 12> kMCodes = {{
     {MCode::ReturnFromSubprogram, 99, "return from a subprogram"},
 }};
 
-constexpr std::uint8_t kNoCode = 0xFF;
-/// kGCodeTable's index of each whole code G0 - G149 (kNoCode where there is none): a G word's entry in
-/// one look, not a pass over the table.
-constexpr std::array<std::uint8_t, 150> kWholeCodes = [] {
+}  // namespace
+
+namespace detail {
+
+constexpr std::array<std::uint8_t, 150> kWholeGCodes = [] {
   std::array<std::uint8_t, 150> index{};
-  index.fill(kNoCode);
+  index.fill(kNoGCode);
   for (std::size_t k = 0; k < kGCodeTable.size(); ++k)
     if (kGCodeTable[k].fraction == 0 && kGCodeTable[k].number < static_cast<int>(index.size()))
       index[static_cast<std::size_t>(kGCodeTable[k].number)] = static_cast<std::uint8_t>(k);
+  // Fanuc writes G12.1 / G13.1 also as G112 / G113.
+  for (std::size_t k = 0; k < kGCodeTable.size(); ++k)
+    if (kGCodeTable[k].fraction == 1 && (kGCodeTable[k].number == 12 || kGCodeTable[k].number == 13))
+      index[static_cast<std::size_t>(kGCodeTable[k].number + 100)] = static_cast<std::uint8_t>(k);
   return index;
 }();
 
-}  // namespace
-
-bool splitGNumber(double value, int& number, int& fraction) {
-  // A whole number (nearly every code written): the general rule below gives the same.
-  if (value >= 0 && value < 1e6 && value == static_cast<double>(static_cast<int>(value))) {
-    number = static_cast<int>(value);
-    fraction = 0;
-    return true;
-  }
+bool splitFractionalGNumber(double value, int& number, int& fraction) {
   const long tenths = roundHalfAway(value * 10);
   if (value < 0 || std::abs(value * 10 - static_cast<double>(tenths)) > 1e-6) return false;
   number = static_cast<int>(tenths / 10);
   fraction = static_cast<int>(tenths % 10);
   return true;
 }
+
+const GCodeInfo* findFractionalGCode(int number, int fraction) {
+  for (const GCodeInfo& g : kGCodeTable)
+    if (g.number == number && g.fraction == fraction) return &g;
+  return nullptr;
+}
+
+}  // namespace detail
 
 std::string codeKey(char letter, double value) {
   std::string key(1, letter);
@@ -125,28 +130,13 @@ const GCodeInfo* findGCode(double value) {
   return findGCode(number, fraction);
 }
 
-const GCodeInfo* findGCode(int number, int fraction) {
-  // Fanuc writes G12.1 / G13.1 also as G112 / G113.
-  if (fraction == 0 && (number == 112 || number == 113)) {
-    number -= 100;
-    fraction = 1;
-  }
-  if (fraction == 0 && number < static_cast<int>(kWholeCodes.size())) {
-    const std::uint8_t k = kWholeCodes[static_cast<std::size_t>(number)];
-    return k == kNoCode ? nullptr : &kGCodeTable[k];
-  }
-  for (const GCodeInfo& g : kGCodeTable)
-    if (g.number == number && g.fraction == fraction) return &g;
-  return nullptr;
-}
-
 bool isMotionCode(double value) {
   const GCodeInfo* g = findGCode(value);
   return g && g->group == ModalGroup::Motion;
 }
 
 bool isWholeMotionCode(std::uint64_t number) {
-  if (number >= kWholeCodes.size()) return false;  // no motion code is that large
+  if (number >= detail::kWholeGCodes.size()) return false;  // no motion code is that large
   const GCodeInfo* g = findGCode(static_cast<int>(number), 0);
   return g && g->group == ModalGroup::Motion;
 }

@@ -89,8 +89,7 @@ struct GCodeInfo {
 
 /// The code written as `value` (G2, G02, G12.1, G112), or nothing when it is not in the table.
 const GCodeInfo* findGCode(double value);
-/// The same, for a code already split into its number and tenths (splitGNumber).
-const GCodeInfo* findGCode(int number, int fraction);
+/// The same, for a code already split into its number and tenths (splitGNumber): below, inline.
 /// A G word's value that names a code of the motion group (G00-G03): what makes a block plain
 /// for the parser (program.h) and a second motion word open a block's upper side.
 bool isMotionCode(double value);
@@ -108,9 +107,35 @@ std::string gName(GCode code);
 /// "G60", "G12.1", "M28", "T84": a word's code as profiles and messages name it (the letter alone
 /// when the value is no code number).
 std::string codeKey(char letter, double value);
+
+namespace detail {
+inline constexpr std::uint8_t kNoGCode = 0xFF;
+/// kGCodeTable's index of each whole code G0 - G149 (G112 and G113 are G12.1 and G13.1, as Fanuc
+/// also writes them), kNoGCode where there is none: a G word's entry in one look.
+extern const std::array<std::uint8_t, 150> kWholeGCodes;
+bool splitFractionalGNumber(double value, int& number, int& fraction);
+const GCodeInfo* findFractionalGCode(int number, int fraction);
+}  // namespace detail
+
 /// The number written, split as (number, fraction); false when it is not a whole number or one
-/// with a single decimal.
-bool splitGNumber(double value, int& number, int& fraction);
+/// with a single decimal. Inline, as findGCode(int, int): every G word of a program asks.
+inline bool splitGNumber(double value, int& number, int& fraction) {
+  // A whole number (nearly every code written): the general rule gives the same.
+  if (value >= 0 && value < 1e6 && value == static_cast<double>(static_cast<int>(value))) {
+    number = static_cast<int>(value);
+    fraction = 0;
+    return true;
+  }
+  return detail::splitFractionalGNumber(value, number, fraction);
+}
+
+inline const GCodeInfo* findGCode(int number, int fraction) {
+  if (fraction == 0 && static_cast<unsigned>(number) < detail::kWholeGCodes.size()) {
+    const std::uint8_t k = detail::kWholeGCodes[static_cast<std::size_t>(number)];
+    return k == detail::kNoGCode ? nullptr : &kGCodeTable[k];
+  }
+  return detail::findFractionalGCode(number, fraction);
+}
 
 /// M codes every profile knows.
 enum class MCode : std::uint8_t {

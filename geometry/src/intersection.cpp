@@ -459,11 +459,15 @@ template <typename IsLive>
 SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) {
   using Event = SweepEvents::Event;
   SweepEvents out;
-  out.identity = live == path.size();
-  for (std::size_t i = 0; i < path.size() && out.identity; ++i) out.identity = !path[i].isArc();
-  if (!out.identity) out.pieceSeg.reserve(live + live / 8 + 16);
+  std::size_t arcs = 0;
+  for (std::size_t i = 0; i < path.size(); ++i) arcs += path[i].isArc() && isLive(i);
+  out.identity = live == path.size() && arcs == 0;
+  // Room for every piece and event there can be (an arc has four pieces at most, a piece two
+  // ends), so that they are never copied while they grow: room never written takes no memory.
+  const std::size_t most = live + 3 * arcs;
+  if (!out.identity) out.pieceSeg.reserve(most + 1);
   std::vector<Event>& events = out.events;
-  events.reserve(live + live / 8 + 16);
+  events.reserve(2 * most);
   std::size_t pieces = 0;
   std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
   for (std::uint32_t i = 0; i < path.size(); ++i) {

@@ -324,6 +324,25 @@ TEST(parser_test, lines_end_at_lf_cr_lf_or_a_lone_cr) {
   }
 }
 
+TEST(parser_test, the_line_of_an_offset_is_the_same_with_any_hint) {
+  // SourceFile::lineOf(offset, hint) tries the hint's line and the next first (the interpreter asks
+  // in order): from any hint — none, stale, past the end, behind or ahead — it answers locate's
+  // line and leaves the hint there. Empty lines, a last line without a break, and every break.
+  for (const char* text : {"G1 X1.\n\nG1 Y2.\r\n\r\nM2", "a\rb\r\rc\n", "\n\n\n", "G1 X1."}) {
+    const SourceFile src("p.nc", text);
+    const auto size = static_cast<std::uint32_t>(src.text().size());
+    for (std::uint32_t offset = 0; offset < size; ++offset) {
+      const std::uint32_t line = src.locate(offset).line;
+      EXPECT_EQ(src.lineOf(offset), line);
+      for (std::uint32_t start = 0; start <= src.lineCount() + 2; ++start) {
+        std::uint32_t hint = start;
+        EXPECT_EQ(src.lineOf(offset, hint), line) << text << " offset " << offset << " hint " << start;
+        EXPECT_EQ(hint, line);
+      }
+    }
+  }
+}
+
 TEST(parser_test, a_byte_order_mark_is_not_part_of_the_program) {
   SourceFile src("p.nc", "\xEF\xBB\xBFG1 X1.\nM2\n");
   Diagnostics d;

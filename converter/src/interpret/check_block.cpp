@@ -4,10 +4,7 @@
 namespace kerf::converter::interp {
 
 bool Interpreter::checkDialectWords(const Block& block, const BlockWords& bw, const BlockWords& ubw, bool setPosition) {
-  // A plain block (X Y I J R F and motion codes, one side: Block::plain) holds none of the words
-  // refused below, and most blocks are plain.
-  if (block.plain) return true;
-  // Built only when a word is refused: this runs for every block.
+  // Built only when a word is refused.
   const char* choose = "choose the dialect with --dialect";
   auto refuse = [&](const Word* w, const std::string& message, const std::string& help = {}) {
     diags_.error(Code::WordNotInDialect, src_, w ? w->span() : block.span(),
@@ -66,7 +63,9 @@ bool Interpreter::checkDialectWords(const Block& block, const BlockWords& bw, co
 }
 
 bool Interpreter::checkBlock(const Block& block, const BlockWords& bw, const BlockWords& ubw, const BlockPlan& plan) {
-  if (!checkDialectWords(block, bw, ubw, plan.setPosition)) return false;
+  // A plain block (X Y I J R F and motion codes, one side: Block::plain) holds none of the words
+  // a dialect refuses, and most blocks are plain.
+  if (!block.plain && !checkDialectWords(block, bw, ubw, plan.setPosition)) return false;
   // G04: a time, P in milliseconds or X in seconds, not below zero.
   if (plan.dwell) {
     const Word* time = bw.has('P') ? bw['P'] : bw['X'];

@@ -6,9 +6,7 @@
 
 namespace kerf::converter::interp {
 
-void Interpreter::warnIgnoredWords(const BlockWords& bw, const BlockPlan& plan) {
-  // Most blocks hold none of these words.
-  if (!bw.hasAny(letterBits("AKQZTWB")) && !plan.dwell) return;
+void Interpreter::warnEachIgnoredWord(const BlockWords& bw, const BlockPlan& plan) {
   // Q is the second parameter of an M code (M100 P Q); Z may set the position with G92.
   const bool mCode = bw.mCount > 0 || bw.machineCount > 0;
   for (char c : {'A', 'K', 'Q', 'Z', 'T', 'W'}) {

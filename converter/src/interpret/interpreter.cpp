@@ -224,7 +224,7 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
     skipPolarSection(pc, next, *p);
     return Flow::Continue;
   }
-  if (executeMachineCodes(bw, block) == Flow::Stop) return Flow::Stop;
+  if (bw.machineCount > 0) executeMachineCodes(bw, block);
   if (plan.setPosition && !executeSetPosition(bw, ubw, block)) return Flow::Continue;
   holdMotion(bw);
   if (plan.homing && machine_.home && !bw.hasCode(GCode::MachineCoordinates)) {

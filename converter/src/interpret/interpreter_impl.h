@@ -283,9 +283,15 @@ class Interpreter {
   BlockPlan fillIn(const Block& block, const BlockWords& bw, const BlockWords& ubw) const;
   // check_block.cpp (phase 3)
   bool checkBlock(const Block& block, const BlockWords& bw, const BlockWords& ubw, const BlockPlan& plan);
+  /// The words the dialect refuses in a block that is not plain (Block::plain has none of them).
   bool checkDialectWords(const Block& block, const BlockWords& bw, const BlockWords& ubw, bool setPosition);
   // execute.cpp (phase 4)
-  void warnIgnoredWords(const BlockWords& bw, const BlockPlan& plan);
+  /// The words the block's dialect gives no meaning, and coordinates in a G04 block, warned.
+  /// Inline: most blocks hold none of them, and are past at once.
+  void warnIgnoredWords(const BlockWords& bw, const BlockPlan& plan) {
+    if (bw.hasAny(letterBits("AKQZTWB")) || plan.dwell) warnEachIgnoredWord(bw, plan);
+  }
+  void warnEachIgnoredWord(const BlockWords& bw, const BlockPlan& plan);
   bool executeSetPosition(const BlockWords& bw, const BlockWords& ubw, const Block& block);
   bool executeTaperAngle(const BlockWords& bw);
   void setHeight(std::optional<Height>& slot, double value, const char* what, std::uint32_t line);
@@ -330,8 +336,12 @@ class Interpreter {
   /// when the block has none.
   const Word* cornerUpperRadius(const BlockWords& bw) const;
   /// The run of moves under one G41/G42 that the move at `index` (about to be, or just, stored)
-  /// starts or extends.
-  void noteOffsetRun(const Move& m, std::size_t index);
+  /// starts or extends; nothing for a move without the wire offset. Inline: most programs' moves
+  /// have none.
+  void noteOffsetRun(const Move& m, std::size_t index) {
+    if (m.wireOffset != WireOffset::Off) extendOffsetRun(m, index);
+  }
+  void extendOffsetRun(const Move& m, std::size_t index);
   // upper_side.cpp
   bool buildUpper(const BlockWords& bw, const BlockWords& ubw, const Block& block, Move& move, Segment& upper);
   bool buildUpperAbsolute(const BlockWords& bw, const BlockWords& ubw, const Block& block, Segment& upper);
@@ -351,7 +361,8 @@ class Interpreter {
   /// (M98 P L inside it, at their L), counted from the text without running it: at most `cap`.
   std::uint64_t blocksOfCall(std::size_t target, std::uint64_t cap, std::size_t depth);
   // machine_codes.cpp
-  Flow executeMachineCodes(const BlockWords& bw, const Block& block);
+  /// The codes the machine profile knows in the block (BlockWords::machine), each in turn.
+  void executeMachineCodes(const BlockWords& bw, const Block& block);
   /// cnc3's guides (M100 P L Q H, or M106 in its earlier numbering), said as `code`: recorded;
   /// false without P and Q.
   bool recordGuides(const BlockWords& bw, const Block& block, const std::string& code);

@@ -30,7 +30,7 @@ bool Interpreter::recordGuides(const BlockWords& bw, const Block& block, const s
   return true;
 }
 
-Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) {
+void Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) {
   for (std::size_t k = 0; k < bw.machineCount; ++k) {
     const Word& w = *bw.machine[k].word;
     const KnownCode& code = *bw.machine[k].code;
@@ -110,7 +110,6 @@ Flow Interpreter::executeMachineCodes(const BlockWords& bw, const Block& block) 
         break;
     }
   }
-  return Flow::Continue;
 }
 
 Flow Interpreter::executeMacroCall(const Block& block) {

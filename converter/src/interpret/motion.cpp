@@ -210,8 +210,8 @@ bool Interpreter::executeMove(const BlockWords& bw, const BlockWords& ubw, const
   move.kind = motion_ == Motion::Rapid ? MoveKind::Rapid : straight ? MoveKind::Line : MoveKind::Arc;
   move.lower = lower;
 
-  Segment upper = lower;
-  if (!buildUpper(bw, ubw, block, move, upper)) {
+  Segment upper = lower;  // a plain program's: the wire is vertical
+  if (dialect_ != Dialect::Plain && !buildUpper(bw, ubw, block, move, upper)) {
     position_ = end;
     return false;
   }
@@ -240,7 +240,8 @@ void Interpreter::push(Move&& m, Segment upper) {
   if (toolpath_.moves.empty()) toolpath_.start = position_;  // the move starts here (in the toolpath frame)
   if (pendingCorner_) {
     makeCorner(m, upper);
-  } else if (roundsProgramCorner(m)) {  // corner-rounded (Charmilles G28): every sharp corner of a taper
+  } else if (programCorners_ == CodeEffect::CornerRounded &&
+             roundsProgramCorner(m)) {  // corner-rounded (Charmilles G28): every sharp corner of a taper
     const Move& before = toolpath_.moves.back();
     pendingCorner_ = PendingCorner{0.0, std::nullopt, false, before.span, before.line};
     makeCorner(m, upper);
@@ -255,9 +256,8 @@ void Interpreter::push(Move&& m, Segment upper) {
   if (options_.recordCentreWords) toolpath_.centreWords.push_back(moveCentreWords_);
 }
 
-void Interpreter::noteOffsetRun(const Move& m, std::size_t index) {
+void Interpreter::extendOffsetRun(const Move& m, std::size_t index) {
   // Runs of moves under one G41/G42 (wire_offset.cpp applies them at the end).
-  if (m.wireOffset == WireOffset::Off) return;
   const bool extends = !offsetRuns_.empty() && offsetRuns_.back().end == index &&
                        offsetRuns_.back().side == m.wireOffset && offsetRuns_.back().value == offsetValue_ &&
                        offsetRuns_.back().offsetRegister == offsetRegister_ && m.kind != MoveKind::Rapid;

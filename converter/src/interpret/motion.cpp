@@ -200,15 +200,14 @@ bool Interpreter::executeMove(const BlockWords& bw, const BlockWords& ubw, const
 
   const Vec2 start = position_;
   Vec2 end = start;
-  Segment lower;
-  if (!buildSide(bw, 'X', 'Y', motion_, start, shift_, "", block, motionWord_.get(), lower, end, &move)) {
+  if (!buildSide(bw, 'X', 'Y', motion_, start, shift_, "", block, motionWord_.get(), move.lower, end, &move)) {
     position_ = end;
     return false;
   }
+  const Segment& lower = move.lower;
   const bool straight = motion_ == Motion::Rapid || motion_ == Motion::Line;
   if (straight && !hasEnd && !plan.upperWords) return true;  // I J R alone on a line: warned, no move
   move.kind = motion_ == Motion::Rapid ? MoveKind::Rapid : straight ? MoveKind::Line : MoveKind::Arc;
-  move.lower = lower;
 
   Segment upper = lower;  // a plain program's: the wire is vertical
   if (dialect_ != Dialect::Plain && !buildUpper(bw, ubw, block, move, upper)) {

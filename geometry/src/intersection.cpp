@@ -1130,7 +1130,8 @@ std::optional<SelfIntersectionResult> SelfIntersectionSearch::boxSweep(std::size
       const Active entry = active[a];
       if (entry.box.reachX < box.minX) continue;  // leaves the sweep
       active[w++] = entry;
-      if (!entry.box.meets(box)) continue;
+      // The boxes meet in x: the entry's starts no later (the order) and reaches this one's start.
+      if (!(entry.box.minY <= box.reachY && box.minY <= entry.box.reachY)) continue;
       pending.emplace_back(std::min(idx, entry.idx), std::max(idx, entry.idx));
       if (pending.size() == kBatch && flush(pending, r)) return r;
     }

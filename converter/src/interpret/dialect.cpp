@@ -113,7 +113,8 @@ DialectEvidence gatherEvidence(const Program& program) {
   DialectEvidence e;
   for (const std::uint32_t index : program.notPlain) {  // a plain block holds no evidence
     const Block& b = program.blocks[index];
-    if (b.colon) e.colon.set(onLine("':'", program.lineOf(b)), b.span());
+    const std::uint32_t line = program.lineOf(b);
+    if (b.colon) e.colon.set(onLine("':'", line), b.span());
     bool setPosition = false, homing = false, hasUv = false, upperCentre = false, kl = false, g92ij = false;
     const auto words = program.wordsOf(b);
     for (std::size_t k = 0; k < words.size(); ++k) {
@@ -121,15 +122,14 @@ DialectEvidence gatherEvidence(const Program& program) {
       const bool upperSide = k >= b.upperFrom;
       if (w.letter == 'G' && w.isNumber()) {
         const long tenths = roundHalfAway(w.value * 10);
-        if (tenths == 510 || tenths == 520)
-          e.taperAngle.set(onLine(tenths == 510 ? "G51" : "G52", program.lineOf(b)), w.span());
+        if (tenths == 510 || tenths == 520) e.taperAngle.set(onLine(tenths == 510 ? "G51" : "G52", line), w.span());
         if (tenths >= 1400 && tenths <= 1420 && tenths % 10 == 0)
-          e.colonMode.set(onLine("G" + std::to_string(tenths / 10), program.lineOf(b)), w.span());
+          e.colonMode.set(onLine("G" + std::to_string(tenths / 10), line), w.span());
         if (tenths == 920) setPosition = true;
         if (tenths == 280 || tenths == 300) homing = true;
       } else if (w.letter == 'M' && w.isNumber()) {
         const long m = roundHalfAway(w.value);
-        if (m == 100 || m == 101) e.abs.set(onLine("M" + std::to_string(m), program.lineOf(b)), w.span());
+        if (m == 100 || m == 101) e.abs.set(onLine("M" + std::to_string(m), line), w.span());
       } else if (w.letter == 'U' || w.letter == 'V') {
         hasUv = true;
       } else if (upperSide && (w.letter == 'I' || w.letter == 'J' || w.letter == 'R')) {
@@ -140,13 +140,13 @@ DialectEvidence gatherEvidence(const Program& program) {
       if (setPosition && (w.letter == 'I' || w.letter == 'J')) g92ij = true;
     }
     if (hasUv && !setPosition) {
-      e.uv.set(onLine("U/V", program.lineOf(b)), b.span());
-      if (b.twoMotions) e.abs.set(onLine("a second motion word for U V", program.lineOf(b)), b.span());
-      if (upperCentre) e.abs.set(onLine("a second I J / R for the upper arc", program.lineOf(b)), b.span());
-      if (kl && !upperCentre) e.rel.set(onLine("K L with U V", program.lineOf(b)), b.span());
+      e.uv.set(onLine("U/V", line), b.span());
+      if (b.twoMotions) e.abs.set(onLine("a second motion word for U V", line), b.span());
+      if (upperCentre) e.abs.set(onLine("a second I J / R for the upper arc", line), b.span());
+      if (kl && !upperCentre) e.rel.set(onLine("K L with U V", line), b.span());
     }
-    if (g92ij) e.rel.set(onLine("G92 with I J (NCVC plane heights)", program.lineOf(b)), b.span());
-    if (homing && hasUv) e.homesUv.set(onLine("U V homed as axes of their own (G28/G30)", program.lineOf(b)), b.span());
+    if (g92ij) e.rel.set(onLine("G92 with I J (NCVC plane heights)", line), b.span());
+    if (homing && hasUv) e.homesUv.set(onLine("U V homed as axes of their own (G28/G30)", line), b.span());
   }
   for (const HeightWord& h : program.heights)
     if (h.kind == HeightWord::Kind::LinuxCncUvPlane || h.kind == HeightWord::Kind::LinuxCncXyPlane)

@@ -211,8 +211,8 @@ void Interpreter::returnHome(const BlockWords& bw, const BlockWords& ubw, const 
 void Interpreter::skipMove(const Block& block, bool cut) {
   ++unknown_.skippedMoves;
   if (cut) ++unknown_.skippedCuts;
-  if (unknown_.firstSkippedLine == 0) unknown_.firstSkippedLine = lineOf(block);
   unknown_.lastSkippedLine = lineOf(block);
+  if (unknown_.firstSkippedLine == 0) unknown_.firstSkippedLine = unknown_.lastSkippedLine;
 }
 
 void Interpreter::positionKnownAgain(const Block& block) { flushUnknown(&block); }

@@ -45,4 +45,25 @@ inline bool onArc(const Segment& arc, const Vec2& p, double tol) {
   return along <= std::abs(arc.sweep) + angTol || along >= kTwoPi - angTol;
 }
 
+/// The quadrant of v: 0 for the angles [0, pi/2), 1 for [pi/2, pi), 2 for [pi, 3 pi/2), 3 for
+/// [3 pi/2, 2 pi) (and for the zero vector): the axis direction q pi/2 opens quadrant q.
+inline int quadrantOf(const Vec2& v) {
+  if (v.x() > 0 && v.y() >= 0) return 0;
+  if (v.x() <= 0 && v.y() > 0) return 1;
+  if (v.x() < 0 && v.y() <= 0) return 2;
+  return 3;
+}
+
+/// How many axis directions an arc passes, counted counter-clockwise from a direction in quadrant
+/// qf (not counting the axis it may lie on) to `to` (counting the axis it lies on), the arc turning
+/// by w (radians, 0 <= w < 2 pi); -1 when the quadrants of the two disagree with w (an end a
+/// rounding away from an axis, or off its circle), so that the caller measures angles instead.
+inline int axesPassed(int qf, const Vec2& to, double w) {
+  int n = (quadrantOf(to) - qf + 4) % 4;
+  if (n == 0 && w > kPi) n = 4;  // round past every axis back into the quadrant it left
+  // The first axis after `from` lies (0, pi/2] on, so w passes m or m + 1 of them.
+  const int m = static_cast<int>(w / (kPi / 2));
+  return n == m || n == m + 1 ? n : -1;
+}
+
 }  // namespace kerf::geometry::detail

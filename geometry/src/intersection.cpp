@@ -312,24 +312,39 @@ void forEachPiece(const Segment& s, std::uint32_t index, F&& f) {
     add(s.start, s.end, false, false);
     return;
   }
-  // Split where x turns: at the angles 0 and pi (mod 2 pi) inside the sweep.
-  const double a0 = s.startAngle(), a1 = a0 + s.sweep, r = s.radius();
-  const double lo = std::min(a0, a1), hi = std::max(a0, a1);
-  double cuts[5];
-  int count = 0;
-  cuts[count++] = lo;
-  for (double k = std::ceil(lo / kPi); k * kPi < hi && count < 4; k += 1.0)  // at most 4 pieces: 2 bits
-    if (k * kPi > lo) cuts[count++] = k * kPi;
-  cuts[count++] = hi;
-  auto at = [&](double ang) {
-    if (ang == a0) return s.start;
-    if (ang == a1) return s.end;  // the ends exactly: the neighbours share them, bit for bit
-    return Vec2(s.centre + r * Vec2(std::cos(ang), std::sin(ang)));
-  };
-  for (int k = 0; k + 1 < count; ++k) {
-    const double mid = (cuts[k] + cuts[k + 1]) / 2;
-    add(at(cuts[k]), at(cuts[k + 1]), true, std::sin(mid) > 0);
+  // Split where x turns: at the circle's rightmost and leftmost points (the axis directions 0 and
+  // pi), taken exactly, in the order a counter-clockwise walk from the arc's first end in that
+  // sense (the start of a counter-clockwise arc, the end of a clockwise one) meets them. Which axes
+  // the walk passes comes from the ends' quadrants (detail::axesPassed), or from the angle of the
+  // first end where those disagree with the sweep; no axis on which the walk starts or stops.
+  const bool ccw = s.sweep >= 0;
+  const Vec2 &from = ccw ? s.start : s.end, &to = ccw ? s.end : s.start;
+  const Vec2 a = from - s.centre, e = to - s.centre;
+  const double w = std::abs(s.sweep);
+  int quadrant = detail::quadrantOf(a);  // where the walk is
+  int axes = w < kTwoPi ? detail::axesPassed(quadrant, e, w) : -1;
+  if (axes >= 0) {
+    if (axes > 0 && e.y() == 0 && (quadrant + axes) % 2 == 0) --axes;  // `to` lies on the last x axis
+  } else {
+    const double angle = detail::wrapPositive(angleOf(a));
+    quadrant = std::min(3, static_cast<int>(angle / (kPi / 2)));
+    axes = 0;
+    while (axes < 5 && (quadrant + axes + 1) * (kPi / 2) - angle < w) ++axes;
   }
+  const double r = s.radius();
+  Vec2 last = from;
+  bool upper = quadrant < 2;  // the half the walk is in: it changes at each x axis
+  int cuts = 0;
+  for (int k = 1; k <= axes && cuts < 3; ++k) {  // at most 4 pieces: 2 bits
+    const int axis = (quadrant + k) % 4;
+    if (axis % 2 != 0) continue;
+    const Vec2 cut(s.centre.x() + (axis == 0 ? r : -r), s.centre.y());
+    add(last, cut, true, upper);
+    last = cut;
+    upper = !upper;
+    ++cuts;
+  }
+  add(last, to, true, upper);
 }
 
 /// Piece `sub` of a segment (forEachPiece's order).

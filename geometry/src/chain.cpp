@@ -144,11 +144,16 @@ std::vector<Chain> chainSegments(std::span<const Segment> segments, const ChainO
 
 namespace {
 
-/// Adds twice a segment's share of the signed area to `twice`: the triangle it makes with the
-/// origin, then, for an arc, the circular segment beyond its chord (summed in that order).
+/// Adds twice a segment's share of the signed area to `twice`. A line: the triangle it makes with
+/// the origin. An arc: the triangles (origin, start, centre) and (origin, centre, end) and the
+/// sector, r^2 sweep — the same as the chord's triangle and the circular segment beyond it,
+/// r^2 (sweep - sin sweep), without the sine (the cross product of the radii is r^2 sin sweep).
 void addTwiceArea(double& twice, const Segment& s) {
-  twice += cross(s.start, s.end);
-  if (s.isArc()) twice += s.radius() * s.radius() * (s.sweep - std::sin(s.sweep));
+  if (!s.isArc()) {
+    twice += cross(s.start, s.end);
+    return;
+  }
+  twice += cross(s.centre, s.end - s.start) + (s.start - s.centre).squaredNorm() * s.sweep;
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "kerf/geometry/arc.h"
+#include "kerf/geometry/chain.h"
 
 #include "test_support.h"
 
@@ -8,6 +9,7 @@
 #include <cstddef>
 #include <cstring>
 #include <random>
+#include <vector>
 
 using namespace kerf::geometry;
 using kerf::test::Motion2;
@@ -218,6 +220,25 @@ TEST(segment_test, bounds_hold_the_arc_and_no_more) {
     ASSERT_LE(b.max.x(), walked.max.x() + slack) << i;
     ASSERT_LE(b.max.y(), walked.max.y() + slack) << i;
   }
+}
+
+TEST(segment_test, an_arcs_share_of_the_area_holds_far_from_the_origin) {
+  // A three-quarter disc (a line in from the rim, the centre, a line out, and an arc of 270
+  // degrees back) and the same walked clockwise, 5,000 mm from the origin: the shares of the
+  // elements are large and cancel, the area is 3/4 pi r^2 either way round.
+  const Vec2 c(5000.3, -3000.7);
+  const double r = 0.25;
+  const Vec2 east = c + Vec2(r, 0), south = c + Vec2(0, -r);
+  const std::vector<Segment> ccw = {Segment::line(south, c), Segment::line(c, east),
+                                    Segment::arc(east, south, c, ArcDirection::CounterClockwise)};
+  const std::vector<Segment> cw = {Segment::arc(south, east, c, ArcDirection::Clockwise), Segment::line(east, c),
+                                   Segment::line(c, south)};
+  const double area = 0.75 * kPi * r * r;
+  EXPECT_NEAR(signedArea(ccw), area, 1e-9);
+  EXPECT_NEAR(signedArea(cw), -area, 1e-9);
+  double shares = 0.0;
+  for (const Segment& s : ccw) shares += areaTerm(s);
+  EXPECT_NEAR(shares, area, 1e-9);
 }
 
 }  // namespace

@@ -306,9 +306,18 @@ class Interpreter {
   /// The block's motion and the corner at its end.
   bool executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
   bool executeMove(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
+  /// One side's end point from its letters xl yl (absolute or incremental, in program coordinates:
+  /// `shift` away from the toolpath's) and its segment from start (buildSegment). Inline: every
+  /// move's lower side takes it.
   bool buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
                  std::string_view side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
-                 Move* record);
+                 Move* record) {
+    Vec2 endProgram = start + shift;  // in program coordinates; unwritten axes stay
+    if (const Word* x = w[xl]) endProgram.x() = incremental_ ? endProgram.x() + length(*x) : length(*x);
+    if (const Word* y = w[yl]) endProgram.y() = incremental_ ? endProgram.y() + length(*y) : length(*y);
+    end = endProgram - shift;
+    return buildSegment(w, motion, start, end, shift, 0.0, side, block, motionWord, out, record);
+  }
   /// The line or arc from start to end with the block's I J or R; I J are turned by centreTurn
   /// degrees (a mill-turn polar frame; 0 elsewhere). False, with the error reported, when it
   /// cannot be built.

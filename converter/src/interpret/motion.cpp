@@ -64,16 +64,6 @@ void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2&
   if (!closedAsUsed && tally_.firstFailLine == 0) tally_.firstFailLine = line;
 }
 
-bool Interpreter::buildSide(const BlockWords& w, char xl, char yl, Motion motion, const Vec2& start, const Vec2& shift,
-                            std::string_view side, const Block& block, const Word* motionWord, Segment& out, Vec2& end,
-                            Move* record) {
-  Vec2 endProgram = start + shift;  // in program coordinates; unwritten axes stay
-  if (const Word* x = w[xl]) endProgram.x() = incremental_ ? endProgram.x() + length(*x) : length(*x);
-  if (const Word* y = w[yl]) endProgram.y() = incremental_ ? endProgram.y() + length(*y) : length(*y);
-  end = endProgram - shift;
-  return buildSegment(w, motion, start, end, shift, 0.0, side, block, motionWord, out, record);
-}
-
 bool Interpreter::buildSegment(const BlockWords& w, Motion motion, const Vec2& start, const Vec2& end,
                                const Vec2& shift, double centreTurn, std::string_view side, const Block& block,
                                const Word* motionWord, Segment& out, Move* record) {

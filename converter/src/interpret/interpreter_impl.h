@@ -267,11 +267,21 @@ class Interpreter {
   Flow executeProgramFlow(const BlockWords& bw, std::size_t pc, std::size_t& next);
   // read_block.cpp (phase 1)
   bool readBlock(const Block& block, BlockWords& bw, BlockWords& ubw);
-  /// The word into bw: an address letter's slot (the common word, inline), or readCodeWord.
+  /// The word into bw: the common words inline — an address letter's slot, a G code of the table
+  /// into its modal group where no profile names codes — and every other word, or one of those
+  /// that something is wrong with (a letter twice, two codes of a group), by readCodeWord.
   void readWord(const Word& w, BlockWords& bw) {
-    if (!options_.millTurn && !w.corner && isPlainAddress(w.letter) && !bw.has(w.letter)) {
-      bw.setLetter(w.letter, &w);
-      return;
+    if (!options_.millTurn && !w.corner) {
+      if (isPlainAddress(w.letter) && !bw.has(w.letter)) {
+        bw.setLetter(w.letter, &w);
+        return;
+      }
+      int number = 0, fraction = 0;
+      if (w.letter == 'G' && machine_.codes.empty() && w.isNumber() && splitGNumber(w.value, number, fraction))
+        if (const GCodeInfo* gi = findGCode(number, fraction); gi && !bw.group(gi->group)) {
+          bw.setGroup(gi->group, &w, gi->code);
+          return;
+        }
     }
     readCodeWord(w, bw);
   }

@@ -8,14 +8,6 @@
 
 namespace kerf::geometry {
 
-Segment Segment::line(const Vec2& a, const Vec2& b) {
-  Segment s;
-  s.kind = SegmentKind::Line;
-  s.start = a;
-  s.end = b;
-  return s;
-}
-
 Segment Segment::arc(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir) {
   Segment s;
   s.kind = SegmentKind::Arc;

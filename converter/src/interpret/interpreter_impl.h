@@ -333,7 +333,17 @@ class Interpreter {
   /// cannot be built.
   bool buildSegment(const BlockWords& w, Motion motion, const Vec2& start, const Vec2& end, const Vec2& shift,
                     double centreTurn, std::string_view side, const Block& block, const Word* motionWord, Segment& out,
-                    Move* record);
+                    Move* record) {
+    if ((motion == Motion::Rapid || motion == Motion::Line) && !w.hasAny(letterBits("IJR"))) {
+      out = Segment::line(start, end);  // the common straight move, inline
+      return true;
+    }
+    return buildArcSegment(w, motion, start, end, shift, centreTurn, side, block, motionWord, out, record);
+  }
+  /// buildSegment's arcs, and the straight moves with centre words (warned, then a line).
+  bool buildArcSegment(const BlockWords& w, Motion motion, const Vec2& start, const Vec2& end, const Vec2& shift,
+                       double centreTurn, std::string_view side, const Block& block, const Word* motionWord,
+                       Segment& out, Move* record);
   void tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift, bool closedAsUsed,
                       std::uint32_t line);
   void reportArc(const geometry::ArcBuild& build, const BlockWords& bw, const Block& block, std::string_view side);

@@ -64,9 +64,9 @@ void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2&
   if (!closedAsUsed && tally_.firstFailLine == 0) tally_.firstFailLine = line;
 }
 
-bool Interpreter::buildSegment(const BlockWords& w, Motion motion, const Vec2& start, const Vec2& end,
-                               const Vec2& shift, double centreTurn, std::string_view side, const Block& block,
-                               const Word* motionWord, Segment& out, Move* record) {
+bool Interpreter::buildArcSegment(const BlockWords& w, Motion motion, const Vec2& start, const Vec2& end,
+                                  const Vec2& shift, double centreTurn, std::string_view side, const Block& block,
+                                  const Word* motionWord, Segment& out, Move* record) {
   const bool hasCentre = w.has('I') || w.has('J');
   const bool hasRadius = w.has('R');
   if (motion == Motion::Rapid || motion == Motion::Line) {

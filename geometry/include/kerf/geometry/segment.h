@@ -33,7 +33,13 @@ struct Segment {
   SegmentKind kind = SegmentKind::Line;  ///< last, so that Move's fields fit in the padding after it
 
   /// A straight line from a to b.
-  static Segment line(const Vec2& a, const Vec2& b);
+  static Segment line(const Vec2& a, const Vec2& b) {
+    Segment s;
+    s.kind = SegmentKind::Line;
+    s.start = a;
+    s.end = b;
+    return s;
+  }
   /// An arc from start to end about centre. When start and end coincide (within 1e-12 of the
   /// radius) the arc is a full circle. The sweep follows the direction.
   static Segment arc(const Vec2& start, const Vec2& end, const Vec2& centre, ArcDirection dir);

@@ -960,9 +960,7 @@ struct WordReader::Again {
 WordReader::WordReader(const Program& program) : program_(program) {}
 WordReader::~WordReader() = default;
 
-std::span<const Word> WordReader::words(const Block& b) {
-  if (!b.plain) return program_.wordsOf(b);
-  if (const Word* kept = program_.plainWords.find(b.firstWord)) return {kept, b.wordCount};
+std::span<const Word> WordReader::parseAgain(const Block& b) {
   // Given back: the block's text parsed again, alone, by the parser. Its span ends where a ';', a
   // blank or the line's end follows, none of a number's characters (LineParser::parseLine); a
   // plain block has no Z (ParseOptions::upperAxesUZ) and no ';' (semicolonEndsBlock) inside it,

@@ -227,13 +227,19 @@ class WordReader {
   WordReader(const WordReader&) = delete;
   WordReader& operator=(const WordReader&) = delete;
 
-  [[nodiscard]] std::span<const Word> words(const Block& b);
+  [[nodiscard]] std::span<const Word> words(const Block& b) {
+    if (!b.plain) return program_.wordsOf(b);
+    if (const Word* kept = program_.plainWords.find(b.firstWord)) return {kept, b.wordCount};
+    return parseAgain(b);
+  }
   /// The lower side's words (all of them when the block has no upper side).
   [[nodiscard]] std::span<const Word> lowerWords(const Block& b) { return words(b).first(b.upperFrom); }
   [[nodiscard]] std::span<const Word> upperWords(const Block& b) { return words(b).subspan(b.upperFrom); }
 
  private:
   struct Again;  // the parser that parses a given-back block again, and its program (program.cpp)
+  /// A plain block whose kept words were given back: its text parsed again.
+  std::span<const Word> parseAgain(const Block& b);
 
   const Program& program_;
   std::vector<Word> buffer_;

@@ -410,10 +410,11 @@ class LineParser {
         if (letters & bit) return begin;  // a repeated word: the word loop reports it
         letters |= bit;
       }
+      assert(k - p <= static_cast<std::ptrdiff_t>(Block::kMaxLength));  // parseProgram reads no longer line
       Word& w = words[count++];
       w = Word{.letter = c,
                .hasPoint = point,
-               .length = static_cast<std::uint16_t>(std::min<std::ptrdiff_t>(k - p, 0xFFFF)),
+               .length = static_cast<std::uint16_t>(k - p),
                .offset = static_cast<std::uint32_t>(p - text),
                .value = decimalValue(whole, integerDigits, fractionDigits, negative, first, k)};
       if (!motion && c != 'F') {  // a length letter (isLengthLetter)

@@ -45,9 +45,8 @@ Vec2 Segment::tangentAt(double t) const {
   return sweep >= 0 ? Vec2(-radial.y(), radial.x()) : Vec2(radial.y(), -radial.x());
 }
 
-Box Segment::bounds() const {
+Box Segment::arcBounds() const {
   Box b{start.cwiseMin(end), start.cwiseMax(end)};
-  if (kind != SegmentKind::Arc) return b;
   // Axis extremes (0, 90, 180, 270 degrees) that the arc passes through. The directions are exact
   // (cos and sin of q pi/2 are not: cos(pi/2) is 6e-17). Which ones, from the quadrants of the
   // ends, counter-clockwise from the end a clockwise arc stops at; where those disagree with the

@@ -60,8 +60,14 @@ struct Segment {
   [[nodiscard]] Vec2 pointAt(double t) const;
   /// Unit tangent in the direction of travel at parameter t.
   [[nodiscard]] Vec2 tangentAt(double t) const;
-  /// Tight bounding box (arcs include their axis extremes).
-  [[nodiscard]] Box bounds() const;
+  /// Tight bounding box (arcs include their axis extremes). A line's inline: every check asks for
+  /// every segment's.
+  [[nodiscard]] Box bounds() const {
+    if (kind != SegmentKind::Arc) return {start.cwiseMin(end), start.cwiseMax(end)};
+    return arcBounds();
+  }
+  /// bounds() of an arc.
+  [[nodiscard]] Box arcBounds() const;
   /// The same path travelled the other way.
   [[nodiscard]] Segment reversed() const;
   /// Parameter t in [0, 1] (proportional to length) of the segment's point nearest p.

@@ -239,19 +239,25 @@ class LineParser {
   /// a ';'): the short road's scans stop there without comparing with `end`.
   void parseLine(std::size_t begin, std::size_t end, std::uint32_t line) {
     std::size_t i = begin;
-    while (i < end) i = parseBlock(i, end, line);
+    while (i < end) {
+      while (i < end && isBlank(text_[i])) ++i;
+      if (i >= end) return;
+      // The common block first: no setting is plain (its '=' is no plain block's character).
+      if (const std::size_t next = tryPlainBlock(i, end); next != i) {
+        i = next;
+        continue;
+      }
+      i = parseBlock(i, end, line);
+    }
   }
 
   /// The macro B statements of the lines parsed.
   [[nodiscard]] const MacroTally& macros() const { return macros_; }
 
  private:
-  /// Parses one block from i; returns where the next block on this line starts (or end).
+  /// Parses one block that is not plain (tryPlainBlock), from i at its first character; returns
+  /// where the next block on this line starts (or end).
   std::size_t parseBlock(std::size_t i, std::size_t end, std::uint32_t line) {
-    while (i < end && isBlank(text_[i])) ++i;
-    if (i >= end) return end;
-    // The common block first: no setting is plain (its '=' is no plain block's character).
-    if (const std::size_t next = tryPlainBlock(i, end); next != i) return next;
     if (trySetting(i, end, line)) return end;
 
     Block block;

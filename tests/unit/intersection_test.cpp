@@ -513,6 +513,50 @@ TEST(self_intersection_test, the_decision_sweep_agrees_with_the_box_sweep_on_ran
   EXPECT_GE(dropsSame, 2998);
 }
 
+TEST(self_intersection_test, arcs_that_start_or_end_on_their_circles_axes_are_decided_as_the_boxes_list) {
+  // Walks on an integer grid of half circles over axis-aligned chords (their ends lie exactly on
+  // their circle's axes, where the sweep cuts an arc into x-monotone pieces), quarter circles from
+  // axis to axis, full circles (whose axes the sweep finds from the start's angle) and lines: the
+  // decision sweep finds a contact exactly when the box sweep lists one.
+  std::mt19937 rng(58);
+  std::uniform_int_distribution<int> dir(0, 3), kind(0, 5), len(1, 3);
+  const Vec2 steps[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  int clean = 0, touched = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<Segment> path;
+    Vec2 at(0, 0);
+    for (int k = 0; k < 3 + trial % 7; ++k) {
+      const int d = dir(rng), what = kind(rng);
+      const Vec2 next = at + len(rng) * steps[d];
+      const ArcDirection way = trial % 2 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise;
+      if (what == 0) {
+        // A full circle: about a centre on an axis through where it stands, or off the axes.
+        const Vec2 off = k % 2 ? Vec2(0.5 * steps[dir(rng)]) : Vec2(0.3 * steps[dir(rng)] + 0.4 * steps[(d + 1) % 4]);
+        path.push_back(Segment::arc(at, at, at + off, way));
+        continue;
+      }
+      if (what == 1) {  // a quarter circle about the corner of the step's square
+        const Vec2 turn = steps[(d + 1) % 4], end = at + steps[d] + turn;
+        path.push_back(Segment::arc(at, end, at + turn, way));
+        at = end;
+        continue;
+      }
+      path.push_back(what < 4 ? Segment::arc(at, next, (at + next) / 2, way) : Segment::line(at, next));
+      at = next;
+    }
+    SelfIntersectionOptions decision, boxes;
+    decision.maxContacts = boxes.maxContacts = 100000;
+    decision.method = SweepMethod::Decision;
+    boxes.method = SweepMethod::Boxes;
+    const auto a = findSelfIntersections(path, decision);
+    const auto b = findSelfIntersections(path, boxes);
+    ASSERT_EQ(a.contacts.empty(), b.contacts.empty()) << "trial " << trial;
+    (b.contacts.empty() ? clean : touched)++;
+  }
+  EXPECT_GT(clean, 40);  // both answers occur, so the comparison means something either way
+  EXPECT_GT(touched, 40);
+}
+
 TEST(self_intersection_test, a_long_vertical_in_many_pieces_is_decided_with_few_tests) {
   // 100,000 collinear vertical pieces (all boxes at one x: the box sweep's budget runs out), closed
   // by two lines and an arc.

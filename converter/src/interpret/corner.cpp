@@ -120,9 +120,9 @@ void Interpreter::makeCorner(Move& next, Segment& nextUpper) {
   if (!apex) toolpath_.corners.push_back({static_cast<std::uint32_t>(at), pc.size, pc.chamfer, c.sharp});
 }
 
-bool Interpreter::roundsProgramCorner(const Move& next) const {
-  if (dialect_ != Dialect::TaperAngle || programCorners_ != CodeEffect::CornerRounded || !next.isCut() ||
-      toolpath_.moves.empty() || !toolpath_.moves.back().isCut() || taperRecords_.size() < 2)
+bool Interpreter::turnsTaperCorner(const Move& next) const {
+  if (dialect_ != Dialect::TaperAngle || !next.isCut() || toolpath_.moves.empty() || !toolpath_.moves.back().isCut() ||
+      taperRecords_.size() < 2)
     return false;
   // Both moves lean and neither starts or ends the taper (the next one's record is the last; the
   // one before belongs to the move before): the start-up and the cancel keep their sharp joints.

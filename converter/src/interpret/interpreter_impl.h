@@ -357,8 +357,12 @@ class Interpreter {
   /// The held corner between the last move and next: both trimmed, the corner's move pushed.
   void makeCorner(Move& next, Segment& nextUpper);
   /// corner-rounded is in force and next turns a sharp corner of a taper from the last move: a
-  /// corner move (a point here) goes between them.
-  bool roundsProgramCorner(const Move& next) const;
+  /// corner move (a point here) goes between them. Inline: most programs round no corners.
+  bool roundsProgramCorner(const Move& next) const {
+    return programCorners_ == CodeEffect::CornerRounded && turnsTaperCorner(next);
+  }
+  /// roundsProgramCorner's test of the moves themselves.
+  bool turnsTaperCorner(const Move& next) const;
   /// The held corner, if any, refused (K0240) for why.
   void refusePendingCorner(const std::string& why);
   /// NCVC's K beside a bare corner R in a taper (`G60 ... R2. K3.`): the upper plane's radius. Null

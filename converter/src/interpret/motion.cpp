@@ -229,8 +229,7 @@ void Interpreter::push(Move&& m, Segment upper) {
   if (toolpath_.moves.empty()) toolpath_.start = position_;  // the move starts here (in the toolpath frame)
   if (pendingCorner_) {
     makeCorner(m, upper);
-  } else if (programCorners_ == CodeEffect::CornerRounded &&
-             roundsProgramCorner(m)) {  // corner-rounded (Charmilles G28): every sharp corner of a taper
+  } else if (roundsProgramCorner(m)) {  // corner-rounded (Charmilles G28): every sharp corner of a taper
     const Move& before = toolpath_.moves.back();
     pendingCorner_ = PendingCorner{0.0, std::nullopt, false, before.span, before.line};
     makeCorner(m, upper);

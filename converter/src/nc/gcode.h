@@ -89,7 +89,6 @@ struct GCodeInfo {
 
 /// The code written as `value` (G2, G02, G12.1, G112), or nothing when it is not in the table.
 const GCodeInfo* findGCode(double value);
-/// The same, for a code already split into its number and tenths (splitGNumber): below, inline.
 /// A G word's value that names a code of the motion group (G00-G03): what makes a block plain
 /// for the parser (program.h) and a second motion word open a block's upper side.
 bool isMotionCode(double value);
@@ -129,6 +128,7 @@ inline bool splitGNumber(double value, int& number, int& fraction) {
   return detail::splitFractionalGNumber(value, number, fraction);
 }
 
+/// findGCode for a code already split into its number and tenths (splitGNumber).
 inline const GCodeInfo* findGCode(int number, int fraction) {
   if (fraction == 0 && static_cast<unsigned>(number) < detail::kWholeGCodes.size()) {
     const std::uint8_t k = detail::kWholeGCodes[static_cast<std::size_t>(number)];

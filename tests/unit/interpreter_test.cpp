@@ -199,7 +199,7 @@ TEST(interpreter_test, rapid_moves_are_not_cut) {
 }
 
 // The summary's box is the union of the cut moves' own boxes, bit for bit: arcs whose circle lies
-// inside the box so far skip the test of their extremes, arcs that bulge past it do not.
+// inside the box of the ends skip the test of their extremes, arcs that bulge past it do not.
 TEST(interpreter_test, summary_bounds_are_the_union_of_the_moves_boxes) {
   // End points on a 30 mm square, and four half circles that each bulge 5 mm past one of its
   // sides alone (clockwise: left, top, right, bottom), then small arcs well inside it.

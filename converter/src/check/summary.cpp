@@ -71,13 +71,13 @@ SurfaceMeasures measureSurface(const Toolpath& toolpath) {
 
 namespace {
 
-/// box.add(s.bounds()) without the arc's angles where its whole circle lies inside the box with
-/// its end points (nearly every arc of a long program): its extremes, points of that circle, would
-/// not move the box. The same box, bit for bit: an extreme is (c.x +- r, c.y + 0) or (c.x, c.y +- r).
-void addBounds(geometry::Box& box, const geometry::Segment& s) {
-  box.add(s.start);
-  box.add(s.end);
-  if (!s.isArc()) return;
+/// An arc's share of a box that already holds its ends (and every other end of its stretch):
+/// box.add(s.bounds()) without the arc's angles where its whole circle lies inside the box (most
+/// arcs of a long program, once the box holds all of the stretch's ends): its extremes, points of
+/// that circle, would not move it. The same box, bit for bit: an extreme is (c.x +- r, c.y + 0) or
+/// (c.x, c.y +- r), and a box is a least and a greatest corner, which the order of adds does not
+/// change.
+void addArcExtremes(geometry::Box& box, const geometry::Segment& s) {
   const geometry::Vec2& c = s.centre;
   const double r = s.radius();
   if (c.x() + r <= box.max.x() && c.x() - r >= box.min.x() && c.y() + r <= box.max.y() && c.y() - r >= box.min.y())
@@ -195,9 +195,13 @@ void SummaryMaker::makePiece(std::size_t k) {
       ++part.lines;
     if (taper) ++(toolpath_.upper[i].isArc() ? part.upperArcs : part.upperLines);
     part.cutLength += m.lower.length();
-    addBounds(part.bounds, m.lower);
+    part.bounds.add(m.lower.start);
+    part.bounds.add(m.lower.end);
     part.sampler.add(m.lower);
   }
+  // The arcs' extremes once the box holds every end of the stretch (addArcExtremes).
+  for (std::size_t i = k * kStretch; i < std::min(n, (k + 1) * kStretch); ++i)
+    if (const Move& m = toolpath_.moves[i]; m.isCut() && m.lower.isArc()) addArcExtremes(part.bounds, m.lower);
 }
 
 Summary SummaryMaker::finish(const SurfaceMeasures* measures) const {

@@ -12,8 +12,6 @@ namespace kerf::geometry {
 
 namespace {
 
-Vec2 leftNormal(const Vec2& t) { return {-t.y(), t.x()}; }
-
 /// The largest arc radius a fit makes, mm: the readers take no coordinate beyond 1e6 mm.
 constexpr double kLargestArcRadius = 1e6;
 /// A spline through fit points whose control points lie farther than this many times the points'

@@ -7,8 +7,6 @@
 namespace kerf::geometry {
 namespace {
 
-Vec2 leftNormal(const Vec2& d) { return Vec2(-d.y(), d.x()); }
-
 /// Points where the carriers (infinite line, full circle) of a and b meet; at most two.
 int carrierIntersections(const Segment& a, const Segment& b, Vec2 out[2]) {
   if (!a.isArc() && !b.isArc()) {

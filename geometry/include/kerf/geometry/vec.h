@@ -25,6 +25,9 @@ inline constexpr double kDegreesPerRadian = 180.0 / kPi;
 /// z component of the 3D cross product of (a, 0) and (b, 0).
 inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+/// v turned +90 degrees (counter-clockwise): the left normal of a direction, as long as v.
+inline Vec2 leftNormal(const Vec2& v) { return {-v.y(), v.x()}; }
+
 /// Angle of v from +X in (-pi, pi].
 inline double angleOf(const Vec2& v) { return std::atan2(v.y(), v.x()); }
 

@@ -402,10 +402,22 @@ struct StopAtContact {
   [[nodiscard]] bool full() const { return true; }
 };
 
-/// The decision sweep's events: every live segment's x-monotone pieces (forEachPiece), their ends
-/// sorted by x, then y. Made once for a search and read by each of its sweeps — the decision sweep
-/// and every dropping sweep after it (which pass the pieces of segments dropped since by).
-struct SweepEvents {
+/// The decision sweep's events: every live segment's x-monotone pieces (piecesOf), their ends in
+/// the sweep's order: by x, then y, then the first entry (two events at one point are two paths
+/// through it, each entry names a piece's end once: the order is total, so any sort gives the
+/// same). Made once for a search and read by each of its sweeps — the decision sweep and every
+/// dropping sweep after it (which pass the pieces of segments dropped since by).
+///
+/// The events are distributed into buckets by x — slices of [least x, greatest x], taken through a
+/// monotone map, so a bucket's events all precede the next bucket's — and each bucket is sorted
+/// alone, the first time a sweep reads into it (from): a sweep that stops at an early contact, as
+/// on a path that crosses itself near its left end, sorts only the buckets it reached. A path's
+/// events spread over its extent: the buckets hold four on average and the whole is about linear,
+/// where a comparison sort of n events costs n log n comparisons (most of the decision sweep's
+/// work on a tangled walk). Events that pile into one bucket (a path of one x) are sorted there as
+/// the whole was.
+class SweepEvents {
+ public:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   // An event: a point where one or two pieces enter or leave the sweep. Neighbouring pieces of a
   // path share their joint, so one event serves both and a closed path of n pieces sorts about n
@@ -414,38 +426,60 @@ struct SweepEvents {
     double x, y;  // plain doubles: 24 bytes, not the 32 an aligned Vec2 would make it
     std::uint32_t entry[2];
   };
-  std::vector<Event> events;
   /// Piece -> its segment; empty when every segment is live and a line (then piece k is segment
   /// k: 4 bytes a piece saved).
   std::vector<std::uint32_t> pieceSeg;
   bool identity = true;
   std::uint32_t probeIndex = 0;  ///< the index after the last piece: the probe's
   [[nodiscard]] std::uint32_t segOf(std::uint32_t piece) const { return identity ? piece : pieceSeg[piece]; }
+
+  /// Where makeSweepEvents puts the events, in any order, before order() buckets them.
+  std::vector<Event>& unordered() { return events_; }
+  /// Distributes the events into their buckets (the sweeps' reads sort each).
+  [[gnu::noinline]] void order();
+  [[nodiscard]] std::size_t size() const { return events_.size(); }
+  /// The events from g on: event g and every event at its point in the sweep's order (the bucket
+  /// that holds them sorted: a bucket is a range of x, so one point's events share one). Those
+  /// after them may not be in order yet, but none of them lies at that point.
+  const Event* from(std::size_t g) {
+    if (g >= sortedEnd_) sortThrough(g);
+    return events_.data();
+  }
+
+ private:
+  struct Less {
+    bool operator()(const Event& a, const Event& b) const {
+      return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.entry[0] < b.entry[0];
+    }
+  };
+  /// Sorts the buckets up to the one that holds event i. Out of line: the sweep's loop only
+  /// compares with sortedEnd_.
+  [[gnu::noinline]] void sortThrough(std::size_t i) {
+    while (sortedEnd_ <= i && next_ < bucketEnd_.size()) {
+      const std::size_t stop = bucketEnd_[next_++];
+      if (stop - sortedEnd_ > 1) std::sort(events_.begin() + sortedEnd_, events_.begin() + stop, Less{});
+      sortedEnd_ = stop;
+    }
+  }
+
+  std::vector<Event> events_;
+  std::vector<std::uint32_t> bucketEnd_;  // where each bucket's events end
+  std::size_t next_ = 0;                  // the first bucket not sorted yet
+  std::size_t sortedEnd_ = 0;             // the events before this one are in the sweep's order
 };
 
-/// The events in the sweep's order: by x, then y, then the first entry (two events at one point
-/// are two paths through it, each entry names a piece's end once: the order is total, so any sort
-/// gives the same). Distributed first into buckets by x — slices of [least x, greatest x], taken
-/// through a monotone map, so a bucket's events all precede the next bucket's — then each bucket
-/// sorted alone. A path's events spread over its extent: the buckets hold four on average and the
-/// whole is about linear, where a comparison sort of n events costs n log n comparisons (most of
-/// the decision sweep's work on a tangled walk). Events that pile into one bucket (a path of one x)
-/// are sorted there as the whole was.
-void sortEvents(std::vector<SweepEvents::Event>& events) {
-  using Event = SweepEvents::Event;
-  const auto less = [](const Event& a, const Event& b) {
-    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.entry[0] < b.entry[0];
-  };
-  const std::size_t n = events.size();
+void SweepEvents::order() {
+  const std::size_t n = events_.size();
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const Event& e : events) {
+  for (const Event& e : events_) {
     lo = std::min(lo, e.x);
     hi = std::max(hi, e.x);
   }
   const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(n / 4, 1));
   const double scale = static_cast<double>(buckets) / (hi - lo);
   if (n < 16 || !(hi > lo) || !std::isfinite(scale)) {  // a few, or one x: the comparison sort
-    geometry::parallelSort(events.begin(), events.end(), less);
+    geometry::parallelSort(events_.begin(), events_.end(), Less{});
+    sortedEnd_ = n;
     return;
   }
   // (x - lo) * scale rounds monotonically, and so does the truncation: a larger x never takes an
@@ -457,17 +491,17 @@ void sortEvents(std::vector<SweepEvents::Event>& events) {
   };
   // end[b] counts bucket b's events, then (summed) is where the bucket ends; the events placed
   // from the last back, it is where the bucket starts.
-  std::vector<std::uint32_t> end(buckets, 0);
-  for (const Event& e : events) ++end[bucketOf(e)];
+  std::vector<std::uint32_t>& end = bucketEnd_;
+  end.assign(buckets, 0);
+  for (const Event& e : events_) ++end[bucketOf(e)];
   std::uint32_t at = 0;
   for (std::uint32_t& b : end) at = b += at;
-  std::vector<Event> sorted(n);
-  for (auto e = events.rbegin(); e != events.rend(); ++e) sorted[--end[bucketOf(*e)]] = *e;
-  for (std::size_t b = 0; b < buckets; ++b) {
-    const auto first = sorted.begin() + end[b], stop = b + 1 < buckets ? sorted.begin() + end[b + 1] : sorted.end();
-    if (stop - first > 1) std::sort(first, stop, less);
-  }
-  events.swap(sorted);
+  std::vector<Event> placed(n);
+  for (auto e = events_.rbegin(); e != events_.rend(); ++e) placed[--end[bucketOf(*e)]] = *e;
+  // Where each bucket ends: where the next starts, and the last at n.
+  std::rotate(end.begin(), end.begin() + 1, end.end());
+  end.back() = static_cast<std::uint32_t>(n);
+  events_.swap(placed);
 }
 
 template <typename IsLive>
@@ -481,7 +515,7 @@ SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) 
   // ends), so that they are never copied while they grow: room never written takes no memory.
   const std::size_t most = live + 3 * arcs;
   if (!out.identity) out.pieceSeg.reserve(most + 1);
-  std::vector<Event>& events = out.events;
+  std::vector<Event>& events = out.unordered();
   events.reserve(2 * most);
   std::size_t pieces = 0;
   std::size_t previous[2] = {SIZE_MAX, SIZE_MAX};  // the events of the previous piece's ends
@@ -514,7 +548,7 @@ SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) 
       ++sub;
     });
   }
-  sortEvents(events);
+  out.order();
   out.probeIndex = static_cast<std::uint32_t>(pieces);
   if (!out.identity) out.pieceSeg.push_back(std::numeric_limits<std::uint32_t>::max());
   return out;
@@ -538,7 +572,7 @@ SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) 
 template <bool kDrop, typename IsLive, typename Touches, typename Drop>
 class DecisionSweep {
  public:
-  DecisionSweep(SegmentView path, const SweepEvents& events, IsLive& isLive, Touches& touches, double near,
+  DecisionSweep(SegmentView path, SweepEvents& events, IsLive& isLive, Touches& touches, double near,
                 std::size_t& tested, Drop& drop)
       : path_(path), shared_(events), isLive_(isLive), touches_(touches), near_(near), tested_(tested), drop_(drop) {}
 
@@ -546,10 +580,12 @@ class DecisionSweep {
     probe_.seg = std::numeric_limits<std::uint32_t>::max();
     probe_.index = shared_.probeIndex;
     where_.assign(std::size_t{shared_.probeIndex} + 1, order_.end());
-    for (std::size_t g = 0; g < shared_.events.size();) {
-      const Vec2 at(shared_.events[g].x, shared_.events[g].y);
+    const std::size_t n = shared_.size();
+    for (std::size_t g = 0; g < n;) {
+      const SweepEvents::Event* events = shared_.from(g);
+      const Vec2 at(events[g].x, events[g].y);
       std::size_t h = g + 1;
-      while (h < shared_.events.size() && shared_.events[h].x == at.x() && shared_.events[h].y == at.y()) ++h;
+      while (h < n && events[h].x == at.x() && events[h].y == at.y()) ++h;
       sweepX_ = at.x();
       if (sweepX_ != verticalsX_) {
         verticals_.clear();
@@ -558,10 +594,10 @@ class DecisionSweep {
       // At one point the pieces enter before any leaves, so that everything meeting there is in
       // the order at once.
       for (std::size_t e = g; e < h; ++e)
-        for (const std::uint32_t entry : shared_.events[e].entry)
+        for (const std::uint32_t entry : events[e].entry)
           if (entry != kNone && (entry & 1u) && !enter(entry >> 3, (entry >> 1) & 3u, at)) return false;
       for (std::size_t e = g; e < h; ++e)
-        for (const std::uint32_t entry : shared_.events[e].entry)
+        for (const std::uint32_t entry : events[e].entry)
           if (entry != kNone && !(entry & 1u) && !leave(entry >> 3, at)) return false;
       if constexpr (kDrop)
         if (!leaveDropped()) return false;
@@ -700,7 +736,7 @@ class DecisionSweep {
   using Less = OrderAtSweep<const YNow, const SlopeNow>;
 
   SegmentView path_;
-  const SweepEvents& shared_;
+  SweepEvents& shared_;
   IsLive& isLive_;
   Touches& touches_;
   double near_;
@@ -722,7 +758,7 @@ class DecisionSweep {
 
 /// True when no pair of the live segments touches (DecisionSweep, above).
 template <bool kDrop = false, typename IsLive, typename Touches, typename Drop = StopAtContact>
-bool sweepFindsNoContact(SegmentView path, const SweepEvents& events, IsLive&& isLive, Touches&& touches, double near,
+bool sweepFindsNoContact(SegmentView path, SweepEvents& events, IsLive&& isLive, Touches&& touches, double near,
                          std::size_t& tested, Drop&& drop = Drop{}) {
   return DecisionSweep<kDrop, std::remove_reference_t<IsLive>, std::remove_reference_t<Touches>,
                        std::remove_reference_t<Drop>>(path, events, isLive, touches, near, tested, drop)
@@ -835,7 +871,7 @@ bool byPair(const Contact& l, const Contact& r) { return l.first != r.first ? l.
 /// The sweeps read the events the decision sweep read (a dropped segment's pieces are passed by);
 /// a drop's pass over the segments reads their boxes (boxOf(i): segment i's SweepBox).
 template <typename BoxOf, typename IsLive, typename IsForward, typename IsWrap, typename Touches>
-SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOptions& options, const SweepEvents& events,
+SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOptions& options, SweepEvents& events,
                                     BoxOf&& boxOf, IsLive&& isLive, IsForward&& isForward, IsWrap&& isWrap,
                                     Touches&& touches, std::size_t tested) {
   const std::size_t n = path.size();
@@ -1198,7 +1234,7 @@ SelfIntersectionResult SelfIntersectionSearch::run() {
   auto isLiveSegment = [this](std::size_t i) { return isLive(i); };
   auto touchesPair = [this](std::size_t a, std::size_t b) { return touches(a, b); };
   std::size_t tested = 0;
-  const SweepEvents events = makeSweepEvents(path_, live_, isLiveSegment);
+  SweepEvents events = makeSweepEvents(path_, live_, isLiveSegment);
   if (sweepFindsNoContact(path_, events, isLiveSegment, touchesPair, tol_, tested)) {
     SelfIntersectionResult clean;
     clean.candidatePairs = tested;

@@ -1,14 +1,11 @@
 #include "kerf/geometry/contour.h"
 
-#include "kerf/geometry/parallel.h"
-
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <mutex>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -124,28 +121,28 @@ ClosureReport analyseClosure(SegmentView path, double tol) {
   };
   if (path.size() >= std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("analyseClosure: more than 2^32 - 2 segments");
-  // The first segment k whose end meets the start of a segment v <= k, and the earliest such v.
-  // Every start goes into the table first; then the ends are probed on every core, each thread
-  // over its stretch in order, a hit past k only when v <= k, and no thread going past the
-  // earliest k found so far. The earliest k of all stretches is the one a single pass that
-  // inserts and probes in turn would stop at.
+  // The first segment k whose end meets the start of a segment v <= k, and the earliest such v: one
+  // pass in which the start of k goes into the table and then the end of k is probed, so the table
+  // holds the starts of 0..k alone and the pass stops at the first k that meets one. A path that
+  // runs on from each end (the next start is that end) has its start's cell from the probe before.
   CellTable starts(path.size());
+  std::size_t loopTo = path.size(), loopFrom = path.size();
+  std::int64_t gx = 0, gy = 0;  // the cell of the end probed last
   for (std::size_t k = 0; k < path.size(); ++k) {
-    const auto [sx, sy] = cellOf(path[k].start);
-    starts.insert(sx, sy, static_cast<std::uint32_t>(k));
-  }
-  // The earliest v whose start the end of k meets, v <= k; none: the path's size.
-  auto probe = [&](std::size_t k) {
-    std::size_t best = path.size();
+    const Vec2& s = path[k].start;
+    if (k == 0 || s != path[k - 1].end) std::tie(gx, gy) = cellOf(s);
+    starts.insert(gx, gy, static_cast<std::uint32_t>(k));
     const Vec2& e = path[k].end;
     const double fx = e.x() * perCell, fy = e.y() * perCell;
-    const std::int64_t gx = cellIndex(fx), gy = cellIndex(fy);
+    gx = cellIndex(fx);
+    gy = cellIndex(fy);
     const double rx = fx - static_cast<double>(gx), ry = fy - static_cast<double>(gy);
     const std::int64_t sideX = rx < kNear ? -1 : rx > 1 - kNear ? 1 : 0;
     const std::int64_t sideY = ry < kNear ? -1 : ry > 1 - kNear ? 1 : 0;
+    std::size_t best = path.size();
     auto visit = [&](std::int64_t cx, std::int64_t cy) {
       starts.forEach(cx, cy, [&](std::size_t v) {
-        if (v > k || v >= best || (path[v].start - e).norm() > tol) return;
+        if (v >= best || (path[v].start - e).norm() > tol) return;
         // v == k: the segment closes on its own start — a full circle does; a zero-length
         // move does not count as a loop.
         if (v == k && path[k].length() <= tol) return;
@@ -156,24 +153,12 @@ ClosureReport analyseClosure(SegmentView path, double tol) {
     if (sideX) visit(gx + sideX, gy);
     if (sideY) visit(gx, gy + sideY);
     if (sideX && sideY) visit(gx + sideX, gy + sideY);
-    return best;
-  };
-  std::atomic<std::size_t> earliest{path.size()};  // the earliest k with a hit found so far
-  std::mutex mutex;
-  std::size_t loopTo = path.size(), loopFrom = path.size();
-  geometry::parallelFor(path.size(), 4096, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end && k < earliest.load(std::memory_order_relaxed); ++k) {
-      const std::size_t v = probe(k);
-      if (v == path.size()) continue;
-      const std::lock_guard<std::mutex> lock(mutex);
-      if (k < loopTo) {
-        loopTo = k;
-        loopFrom = v;
-        earliest.store(k, std::memory_order_relaxed);
-      }
-      return;
+    if (best < path.size()) {
+      loopTo = k;
+      loopFrom = best;
+      break;
     }
-  });
+  }
   if (loopTo < path.size()) {
     report.loopFrom = loopFrom;
     report.loopTo = loopTo;

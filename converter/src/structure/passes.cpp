@@ -221,7 +221,6 @@ class StructureFinder {
       pass.offsetRegister = span->offsetRegister;
       pass.offset = span->value;
     }
-    for (std::size_t k = pass.first; k < pass.end; ++k) pass.length += moves_[k].lower.length();
     pass.firstLine = moves_[pass.first].line;
     pass.lastLine = moves_[pass.end - 1].line;
     const Vec2 from = programmed(pass.alongFirst).start, to = programmed(pass.alongEnd - 1).end;
@@ -229,12 +228,25 @@ class StructureFinder {
     pass.to = to;
     pass.gap = (to - from).norm();
     pass.closes = pass.gap <= tol_;
+    // The pass's length, and the length and area along its contour (the programmed path). Where
+    // that is the moves themselves (no wire offset), one pass over the moves gives both lengths,
+    // each summed in the moves' order as alone.
     double along = 0.0, area = 0.0;
-    for (std::size_t k = pass.alongFirst; k < pass.alongEnd; ++k) {
-      const Segment& s = programmed(k);
-      along += s.length();
-      area += geometry::areaTerm(s);
+    const bool same = tp_.programmed.empty();
+    for (std::size_t k = pass.first; k < pass.end; ++k) {
+      const double length = moves_[k].lower.length();
+      pass.length += length;
+      if (same && k >= pass.alongFirst && k < pass.alongEnd) {
+        along += length;
+        area += geometry::areaTerm(moves_[k].lower);
+      }
     }
+    if (!same)
+      for (std::size_t k = pass.alongFirst; k < pass.alongEnd; ++k) {
+        const Segment& s = programmed(k);
+        along += s.length();
+        area += geometry::areaTerm(s);
+      }
     pass.alongLength = along;
     if (!pass.closes) area += geometry::areaTerm(Segment::line(to, from));  // an open contour closed by its chord
     // An area smaller than a band of the tolerance's width along the contour is none.

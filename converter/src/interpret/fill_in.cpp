@@ -25,12 +25,17 @@ BlockPlan Interpreter::fillIn(const Block& block, const BlockWords& bw, const Bl
   } else {
     p.inch = inch_;
   }
-  p.setPosition = bw.hasCode(GCode::SetPosition);
-  p.dwell = bw.hasCode(GCode::Dwell);
-  // G53 alone moves nothing (a machine-coordinate move needs its axis words).
-  const bool axisWords = bw.hasAny(letterBits("XYUV")) || ubw.hasAny(letterBits("UV"));
-  p.homing = bw.hasCode(GCode::ReferenceReturn) || bw.hasCode(GCode::SecondReference) ||
-             (bw.hasCode(GCode::MachineCoordinates) && axisWords);
+  // G04, G28, G30, G53 and G92 are the non-modal group's codes: a block holds one at most, and most
+  // blocks none.
+  if (bw.group(ModalGroup::NonModal)) {
+    const GCode c = bw.code(ModalGroup::NonModal);
+    p.setPosition = c == GCode::SetPosition;
+    p.dwell = c == GCode::Dwell;
+    // G53 alone moves nothing (a machine-coordinate move needs its axis words).
+    const bool axisWords = bw.hasAny(letterBits("XYUV")) || ubw.hasAny(letterBits("UV"));
+    p.homing =
+        c == GCode::ReferenceReturn || c == GCode::SecondReference || (c == GCode::MachineCoordinates && axisWords);
+  }
   p.lowerWords = bw.hasAny(letterBits("XYIJR")) || (options_.millTurn && bw.has('C'));
   p.upperWords = bw.hasAny(letterBits("UV"));
   if (block.upperFrom < block.wordCount) p.upperWords |= ubw.hasAny(letterBits("UVXYIJRKL"));

@@ -191,6 +191,41 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
     else
       feed_ = f->value * (plan.inch ? 25.4 : 1.0);
   }
+  // The modes and settings a block may change besides its motion: none in most blocks (a motion
+  // code, coordinates, a feed), which pass them by with one test.
+  const bool settings = (bw.groups & ~(1U << static_cast<unsigned>(ModalGroup::Motion))) != 0 ||
+                        dialect_ == Dialect::TaperAngle || bw.cornerRound || bw.cornerChamfer || options_.millTurn ||
+                        bw.machineCount > 0;
+  if (settings)
+    if (const std::optional<Flow> done = executeSettings(bw, ubw, block, plan, pc, next)) return *done;
+  holdMotion(bw);
+  if (plan.homing && machine_.home && !bw.hasCode(GCode::MachineCoordinates)) {
+    returnHome(bw, ubw, block, plan);
+  } else if (plan.homing || plan.positionCode) {
+    const Word* w = plan.positionCodeWord ? plan.positionCodeWord : bw.group(ModalGroup::NonModal);
+    const std::string what =
+        plan.positionCode
+            ? std::string(program_.source->text().substr(w->offset, w->length)) + " (" + plan.positionCode->note + ")"
+            : gName(bw.code(ModalGroup::NonModal)) + " (" + info(bw.code(ModalGroup::NonModal)).meaning + ")";
+    positionUnknown(what, w->span());
+  } else if (plan.unknownValue && !plan.dwell && !plan.setPosition && !plan.noMotion) {
+    const Word* w = plan.unknownValue;
+    const std::string written(program_.source->text().substr(w->offset, w->length));
+    positionUnknown(
+        "'" + written + "' (" + (w->kind == WordValue::Register ? "a register value" : "a macro variable") + ")",
+        w->span());
+    skipMove(block, plan.motion != Motion::Rapid);
+  } else if (!plan.dwell && !plan.setPosition && !plan.noMotion) {
+    if (!executeMotion(bw, ubw, block, plan)) return Flow::Continue;
+  }
+  return executeProgramFlow(bw, pc, next);
+}
+
+/// The part of executeBlock between the feed and the motion: units, the wire offset, the taper angle,
+/// colon mode, G90/G91, the work offset, a corner word that has no move, a mill-turn face block, a
+/// polar section, the profile's codes and G92. A flow when the block ends here.
+std::optional<Flow> Interpreter::executeSettings(const BlockWords& bw, const BlockWords& ubw, const Block& block,
+                                                 const BlockPlan& plan, std::size_t pc, std::size_t& next) {
   if (bw.group(ModalGroup::Units)) {
     inch_ = plan.inch;
     toolpath_.programUnit = inch_ ? LengthUnit::Inch : LengthUnit::Millimetre;
@@ -226,27 +261,7 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   }
   if (bw.machineCount > 0) executeMachineCodes(bw, block);
   if (plan.setPosition && !executeSetPosition(bw, ubw, block)) return Flow::Continue;
-  holdMotion(bw);
-  if (plan.homing && machine_.home && !bw.hasCode(GCode::MachineCoordinates)) {
-    returnHome(bw, ubw, block, plan);
-  } else if (plan.homing || plan.positionCode) {
-    const Word* w = plan.positionCodeWord ? plan.positionCodeWord : bw.group(ModalGroup::NonModal);
-    const std::string what =
-        plan.positionCode
-            ? std::string(program_.source->text().substr(w->offset, w->length)) + " (" + plan.positionCode->note + ")"
-            : gName(bw.code(ModalGroup::NonModal)) + " (" + info(bw.code(ModalGroup::NonModal)).meaning + ")";
-    positionUnknown(what, w->span());
-  } else if (plan.unknownValue && !plan.dwell && !plan.setPosition && !plan.noMotion) {
-    const Word* w = plan.unknownValue;
-    const std::string written(program_.source->text().substr(w->offset, w->length));
-    positionUnknown(
-        "'" + written + "' (" + (w->kind == WordValue::Register ? "a register value" : "a macro variable") + ")",
-        w->span());
-    skipMove(block, plan.motion != Motion::Rapid);
-  } else if (!plan.dwell && !plan.setPosition && !plan.noMotion) {
-    if (!executeMotion(bw, ubw, block, plan)) return Flow::Continue;
-  }
-  return executeProgramFlow(bw, pc, next);
+  return std::nullopt;
 }
 
 void Interpreter::holdMotion(const BlockWords& bw) {

@@ -262,6 +262,8 @@ class Interpreter {
   void findLegacyTaperCodes();
   void warnIntegerUnit();
   Flow executeBlock(std::size_t pc, std::size_t& next);
+  std::optional<Flow> executeSettings(const BlockWords& bw, const BlockWords& ubw, const Block& block,
+                                      const BlockPlan& plan, std::size_t pc, std::size_t& next);
   void holdMotion(const BlockWords& bw);
   /// M codes in order (M98/M99 calls, the end), then the profile's program ends.
   Flow executeProgramFlow(const BlockWords& bw, std::size_t pc, std::size_t& next);

@@ -63,9 +63,11 @@ bool Interpreter::checkDialectWords(const Block& block, const BlockWords& bw, co
 }
 
 bool Interpreter::checkBlock(const Block& block, const BlockWords& bw, const BlockWords& ubw, const BlockPlan& plan) {
-  // A plain block (X Y I J R F and motion codes, one side: Block::plain) holds none of the words
-  // a dialect refuses, and most blocks are plain.
-  if (!block.plain && !checkDialectWords(block, bw, ubw, plan.setPosition)) return false;
+  // A plain block (X Y I J R F and motion codes, one side, plain numbers: Block::plain) holds none
+  // of the words this phase refuses — a dialect's, G04's, a plane's, a direction, U — and most
+  // blocks are plain.
+  if (block.plain) return true;
+  if (!checkDialectWords(block, bw, ubw, plan.setPosition)) return false;
   // G04: a time, P in milliseconds or X in seconds, not below zero.
   if (plan.dwell) {
     const Word* time = bw.has('P') ? bw['P'] : bw['X'];

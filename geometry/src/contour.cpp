@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <stdexcept>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -27,16 +27,22 @@ namespace {
 /// vertex) at twice the vertices took 12.6 MB.
 class CellTable {
  public:
-  explicit CellTable(std::size_t expected) : size_(std::max<std::size_t>(16, 2 * expected)) {
-    tags_.assign(size_, kEmpty);
-    vertices_.resize(size_);
-    next_.resize(expected);
-  }
+  /// vertices_ and next_ are left unwritten: a slot's vertex is read only where its tag says it
+  /// holds one, and a vertex's next only once it is in the table.
+  explicit CellTable(std::size_t expected)
+      : size_(std::max<std::size_t>(16, 2 * expected)),
+        tags_(size_, kEmpty),
+        vertices_(new std::uint32_t[size_]),
+        next_(new std::uint32_t[std::max<std::size_t>(1, expected)]) {}
+  /// A cell as the table finds it: its hash, made once for an insertion and a probe of one cell.
+  struct Cell {
+    std::uint64_t hash;
+  };
+  static Cell cell(std::int64_t gx, std::int64_t gy) { return {hash(gx, gy)}; }
   /// value < expected, each once.
-  void insert(std::int64_t gx, std::int64_t gy, std::uint32_t value) {
-    const std::uint64_t h = hash(gx, gy);
-    const std::uint16_t t = tag(h);
-    for (std::size_t slot = slotOf(h);; slot = next(slot)) {
+  void insert(Cell c, std::uint32_t value) {
+    const std::uint16_t t = tag(c.hash);
+    for (std::size_t slot = slotOf(c.hash);; slot = next(slot)) {
       if (tags_[slot] == kEmpty) {
         tags_[slot] = t;
         vertices_[slot] = value;
@@ -52,10 +58,9 @@ class CellTable {
   }
   /// f(vertex) for every vertex that may lie in the cell (and a few of other cells).
   template <typename F>
-  void forEach(std::int64_t gx, std::int64_t gy, F&& f) const {
-    const std::uint64_t h = hash(gx, gy);
-    const std::uint16_t t = tag(h);
-    for (std::size_t slot = slotOf(h); tags_[slot] != kEmpty; slot = next(slot))
+  void forEach(Cell c, F&& f) const {
+    const std::uint16_t t = tag(c.hash);
+    for (std::size_t slot = slotOf(c.hash); tags_[slot] != kEmpty; slot = next(slot))
       if (tags_[slot] == t)
         for (std::uint32_t v = vertices_[slot]; v != kEnd; v = next_[v]) f(std::size_t{v});
   }
@@ -87,8 +92,8 @@ class CellTable {
   [[nodiscard]] std::size_t next(std::size_t slot) const { return slot + 1 == size_ ? 0 : slot + 1; }
   std::size_t size_;
   std::vector<std::uint16_t> tags_;
-  std::vector<std::uint32_t> vertices_;
-  std::vector<std::uint32_t> next_;
+  std::unique_ptr<std::uint32_t[]> vertices_;
+  std::unique_ptr<std::uint32_t[]> next_;
 };
 
 /// floor(f) as an integer, inline (std::floor is a call on the baseline x86-64); beyond 2^62
@@ -127,21 +132,24 @@ ClosureReport analyseClosure(SegmentView path, double tol) {
   // runs on from each end (the next start is that end) has its start's cell from the probe before.
   CellTable starts(path.size());
   std::size_t loopTo = path.size(), loopFrom = path.size();
-  std::int64_t gx = 0, gy = 0;  // the cell of the end probed last
+  CellTable::Cell endCell{};  // the cell of the end probed last
   for (std::size_t k = 0; k < path.size(); ++k) {
     const Vec2& s = path[k].start;
-    if (k == 0 || s != path[k - 1].end) std::tie(gx, gy) = cellOf(s);
-    starts.insert(gx, gy, static_cast<std::uint32_t>(k));
+    if (k == 0 || s != path[k - 1].end) {
+      const auto [sx, sy] = cellOf(s);
+      starts.insert(CellTable::cell(sx, sy), static_cast<std::uint32_t>(k));
+    } else {
+      starts.insert(endCell, static_cast<std::uint32_t>(k));
+    }
     const Vec2& e = path[k].end;
     const double fx = e.x() * perCell, fy = e.y() * perCell;
-    gx = cellIndex(fx);
-    gy = cellIndex(fy);
+    const std::int64_t gx = cellIndex(fx), gy = cellIndex(fy);
     const double rx = fx - static_cast<double>(gx), ry = fy - static_cast<double>(gy);
     const std::int64_t sideX = rx < kNear ? -1 : rx > 1 - kNear ? 1 : 0;
     const std::int64_t sideY = ry < kNear ? -1 : ry > 1 - kNear ? 1 : 0;
     std::size_t best = path.size();
-    auto visit = [&](std::int64_t cx, std::int64_t cy) {
-      starts.forEach(cx, cy, [&](std::size_t v) {
+    auto visit = [&](CellTable::Cell c) {
+      starts.forEach(c, [&](std::size_t v) {
         if (v >= best || (path[v].start - e).norm() > tol) return;
         // v == k: the segment closes on its own start — a full circle does; a zero-length
         // move does not count as a loop.
@@ -149,10 +157,11 @@ ClosureReport analyseClosure(SegmentView path, double tol) {
         best = v;
       });
     };
-    visit(gx, gy);
-    if (sideX) visit(gx + sideX, gy);
-    if (sideY) visit(gx, gy + sideY);
-    if (sideX && sideY) visit(gx + sideX, gy + sideY);
+    endCell = CellTable::cell(gx, gy);
+    visit(endCell);
+    if (sideX) visit(CellTable::cell(gx + sideX, gy));
+    if (sideY) visit(CellTable::cell(gx, gy + sideY));
+    if (sideX && sideY) visit(CellTable::cell(gx + sideX, gy + sideY));
     if (best < path.size()) {
       loopTo = k;
       loopFrom = best;

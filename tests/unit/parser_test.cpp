@@ -616,6 +616,11 @@ TEST(parser_test, plain_blocks_read_again_as_the_parse_read_them) {
         EXPECT_EQ(again[k].kind, parsed[k].kind) << file << ":" << p.lineOf(b);
         EXPECT_EQ(again[k].length, parsed[k].length) << file << ":" << p.lineOf(b);
         EXPECT_EQ(again[k].offset - b.offset, parsed[k].offset) << file << ":" << p.lineOf(b);
+        // A G word of a plain block names G00-G03 and carries its code (the table's first four:
+        // 1 + the number), on both roads.
+        const unsigned code = again[k].letter == 'G' ? static_cast<unsigned>(parsed[k].value) + 1 : 0U;
+        EXPECT_EQ(again[k].motionCode, code) << file << ":" << p.lineOf(b);
+        EXPECT_EQ(parsed[k].motionCode, code) << file << ":" << p.lineOf(b);
       }
       ++checked;
     }

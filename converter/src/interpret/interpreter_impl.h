@@ -278,12 +278,19 @@ class Interpreter {
         bw.setLetter(w.letter, &w);
         return;
       }
-      int number = 0, fraction = 0;
-      if (w.letter == 'G' && machine_.codes.empty() && w.isNumber() && splitGNumber(w.value, number, fraction))
-        if (const GCodeInfo* gi = findGCode(number, fraction); gi && !bw.group(gi->group)) {
-          bw.setGroup(gi->group, &w, gi->code);
+      if (w.letter == 'G' && machine_.codes.empty()) {
+        // A plain block's motion code, as the parse found it in the table; any other code's here.
+        if (w.motionCode != 0 && !bw.group(ModalGroup::Motion)) {
+          bw.setGroup(ModalGroup::Motion, &w, static_cast<GCode>(w.motionCode - 1));
           return;
         }
+        int number = 0, fraction = 0;
+        if (w.isNumber() && splitGNumber(w.value, number, fraction))
+          if (const GCodeInfo* gi = findGCode(number, fraction); gi && !bw.group(gi->group)) {
+            bw.setGroup(gi->group, &w, gi->code);
+            return;
+          }
+      }
     }
     readCodeWord(w, bw);
   }

@@ -135,10 +135,10 @@ bool isMotionCode(double value) {
   return g && g->group == ModalGroup::Motion;
 }
 
-bool isWholeMotionCode(std::uint64_t number) {
-  if (number >= detail::kWholeGCodes.size()) return false;  // no motion code is that large
+const GCodeInfo* findWholeMotionCode(std::uint64_t number) {
+  if (number >= detail::kWholeGCodes.size()) return nullptr;  // no motion code is that large
   const GCodeInfo* g = findGCode(static_cast<int>(number), 0);
-  return g && g->group == ModalGroup::Motion;
+  return g && g->group == ModalGroup::Motion ? g : nullptr;
 }
 
 bool isHomingCode(double value) {

@@ -92,8 +92,9 @@ const GCodeInfo* findGCode(double value);
 /// A G word's value that names a code of the motion group (G00-G03): what makes a block plain
 /// for the parser (program.h) and a second motion word open a block's upper side.
 bool isMotionCode(double value);
-/// The same for a whole code number as written without a point (G01: 1).
-bool isWholeMotionCode(std::uint64_t number);
+/// The motion-group code (G00-G03) of a whole code number as written without a point (G01: 1), or
+/// nothing when the number names no code of that group.
+const GCodeInfo* findWholeMotionCode(std::uint64_t number);
 /// A G word's value that homes the axes (G28, G30): the axis letters after it may stand bare.
 bool isHomingCode(double value);
 /// The table of every code, in the order of enum GCode (gcode.cpp).

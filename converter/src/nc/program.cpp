@@ -381,6 +381,7 @@ class LineParser {
       }
       if (!hasClass(c, kPlainLetter | kMotionLetter) || count == kMostWords) return begin;
       const bool motion = c == 'G';
+      std::uint8_t motionCode = 0;  // Word::motionCode
       // [sign] digits [. digits], at least one digit, fewer than kLargestDigits significant digits
       // before the point (scanNumber's syntax and value); no sign on a code.
       const char* k = p + 1;
@@ -409,7 +410,9 @@ class LineParser {
       if (motion) {
         // A code of the motion group written as digits, without a point; a second after a
         // coordinate opens an upper side (noteForSides).
-        if (point || !isWholeMotionCode(whole) || (sawCoordinate && sawMotion)) return begin;
+        const GCodeInfo* const code = point ? nullptr : findWholeMotionCode(whole);
+        if (!code || (sawCoordinate && sawMotion)) return begin;
+        motionCode = static_cast<std::uint8_t>(static_cast<unsigned>(code->code) + 1);
         sawMotion = true;
       } else {
         const std::uint32_t bit = 1u << (c - 'A');
@@ -420,6 +423,7 @@ class LineParser {
       Word& w = words[count++];
       w = Word{.letter = c,
                .hasPoint = point,
+               .motionCode = static_cast<std::uint8_t>(motionCode & 7U),
                .length = static_cast<std::uint16_t>(k - p),
                .offset = static_cast<std::uint32_t>(p - text),
                .value = decimalValue(whole, integerDigits, fractionDigits, negative, first, k)};
@@ -678,6 +682,11 @@ class LineParser {
     w.offset = static_cast<std::uint32_t>(start);
     w.length = static_cast<std::uint16_t>(std::min<std::size_t>(stop - start, 0xFFFF));
     w.value = value;
+    // A G word written as digits that names a motion code carries it, as the plain pass's do.
+    if (letter == 'G' && kind == WordValue::Number && !hasPoint && value >= 0 && value < 1e6)
+      if (const GCodeInfo* code = findWholeMotionCode(static_cast<std::uint64_t>(value));
+          code && static_cast<double>(static_cast<std::uint64_t>(value)) == value)
+        w.motionCode = static_cast<std::uint8_t>((static_cast<unsigned>(code->code) + 1) & 7U);
     if (isLengthLetter(letter) && kind == WordValue::Number) {
       if (hasPoint) {
         program_.anyDecimalPoint = true;

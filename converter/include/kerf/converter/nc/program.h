@@ -48,9 +48,12 @@ struct Word {
   /// Written after a comma: Fanuc's optional corner words `,R r` (round the corner at the block's
   /// end) and `,C c` (chamfer it). The span starts at the comma.
   bool corner : 1 = false;
-  /// The byte's other bits, unused; named so that copying a word writes whole bytes (unnamed, GCC
-  /// reads the byte first to keep them).
-  std::uint8_t unusedBits : 3 = 0;
+  /// A G word written as digits (no point) that names a code of the motion group, G00-G03: 1 + its
+  /// code (GCode), as the parse found it in the G-code table, so that the interpreter need not look
+  /// it up again; 0 in every other word.
+  /// (Every bit of the byte is named, so that copying a word writes whole bytes: unnamed, GCC reads
+  /// the byte first to keep them.)
+  std::uint8_t motionCode : 3 = 0;
   std::uint16_t length = 0;  ///< bytes of the whole word in the source (letter + value)
   std::uint32_t offset = 0;  ///< byte offset of the letter
   double value = 0.0;        ///< as written (no unit conversion); 0 unless a Number

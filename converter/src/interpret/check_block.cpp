@@ -62,11 +62,8 @@ bool Interpreter::checkDialectWords(const Block& block, const BlockWords& bw, co
   return true;
 }
 
-bool Interpreter::checkBlock(const Block& block, const BlockWords& bw, const BlockWords& ubw, const BlockPlan& plan) {
-  // A plain block (X Y I J R F and motion codes, one side, plain numbers: Block::plain) holds none
-  // of the words this phase refuses — a dialect's, G04's, a plane's, a direction, U — and most
-  // blocks are plain.
-  if (block.plain) return true;
+bool Interpreter::checkBlockWords(const Block& block, const BlockWords& bw, const BlockWords& ubw,
+                                  const BlockPlan& plan) {
   if (!checkDialectWords(block, bw, ubw, plan.setPosition)) return false;
   // G04: a time, P in milliseconds or X in seconds, not below zero.
   if (plan.dwell) {

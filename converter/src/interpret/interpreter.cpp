@@ -202,12 +202,7 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   if (plan.homing && machine_.home && !bw.hasCode(GCode::MachineCoordinates)) {
     returnHome(bw, ubw, block, plan);
   } else if (plan.homing || plan.positionCode) {
-    const Word* w = plan.positionCodeWord ? plan.positionCodeWord : bw.group(ModalGroup::NonModal);
-    const std::string what =
-        plan.positionCode
-            ? std::string(program_.source->text().substr(w->offset, w->length)) + " (" + plan.positionCode->note + ")"
-            : gName(bw.code(ModalGroup::NonModal)) + " (" + info(bw.code(ModalGroup::NonModal)).meaning + ")";
-    positionUnknown(what, w->span());
+    positionGone(bw, plan);
   } else if (plan.unknownValue && !plan.dwell && !plan.setPosition && !plan.noMotion) {
     const Word* w = plan.unknownValue;
     const std::string written(program_.source->text().substr(w->offset, w->length));
@@ -219,6 +214,18 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
     if (!executeMotion(bw, ubw, block, plan)) return Flow::Continue;
   }
   return executeProgramFlow(bw, pc, next);
+}
+
+/// A block whose code takes the wire where only the machine knows (G28, G30, a profile's code).
+void Interpreter::positionGone(const BlockWords& bw, const BlockPlan& plan) {
+  // Fill in sets the code's word with a profile's code; G28 and G30 are the non-modal group's.
+  const Word* w = plan.positionCodeWord ? plan.positionCodeWord : bw.group(ModalGroup::NonModal);
+  if (!w) return;
+  const std::string what =
+      plan.positionCode
+          ? std::string(program_.source->text().substr(w->offset, w->length)) + " (" + plan.positionCode->note + ")"
+          : gName(bw.code(ModalGroup::NonModal)) + " (" + info(bw.code(ModalGroup::NonModal)).meaning + ")";
+  positionUnknown(what, w->span());
 }
 
 /// The part of executeBlock between the feed and the motion: units, the wire offset, the taper angle,

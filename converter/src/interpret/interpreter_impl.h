@@ -262,6 +262,7 @@ class Interpreter {
   void findLegacyTaperCodes();
   void warnIntegerUnit();
   Flow executeBlock(std::size_t pc, std::size_t& next);
+  void positionGone(const BlockWords& bw, const BlockPlan& plan);
   std::optional<Flow> executeSettings(const BlockWords& bw, const BlockWords& ubw, const Block& block,
                                       const BlockPlan& plan, std::size_t pc, std::size_t& next);
   void holdMotion(const BlockWords& bw);
@@ -301,7 +302,13 @@ class Interpreter {
   // fill_in.cpp (phase 2)
   BlockPlan fillIn(const Block& block, const BlockWords& bw, const BlockWords& ubw) const;
   // check_block.cpp (phase 3)
-  bool checkBlock(const Block& block, const BlockWords& bw, const BlockWords& ubw, const BlockPlan& plan);
+  /// A plain block (X Y I J R F and motion codes, one side, plain numbers: Block::plain) holds none
+  /// of the words this phase refuses — a dialect's, G04's, a plane's, a direction, U — and most
+  /// blocks are plain: passed inline.
+  bool checkBlock(const Block& block, const BlockWords& bw, const BlockWords& ubw, const BlockPlan& plan) {
+    return block.plain || checkBlockWords(block, bw, ubw, plan);
+  }
+  bool checkBlockWords(const Block& block, const BlockWords& bw, const BlockWords& ubw, const BlockPlan& plan);
   /// The words the dialect refuses in a block that is not plain (Block::plain has none of them).
   bool checkDialectWords(const Block& block, const BlockWords& bw, const BlockWords& ubw, bool setPosition);
   // execute.cpp (phase 4)
@@ -322,8 +329,13 @@ class Interpreter {
     return v * (inch_ ? 25.4 : 1.0);
   }
   // motion.cpp
-  /// The block's motion and the corner at its end.
-  bool executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
+  /// The block's motion and the corner at its end. Inline: most blocks hold no corner word, and most
+  /// profiles read no bare R as one (executeMotionWithCorner).
+  bool executeMotion(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan) {
+    if (!bw.cornerRound && !bw.cornerChamfer && !machine_.bareCornerRadius) return executeMove(bw, ubw, block, plan);
+    return executeMotionWithCorner(bw, ubw, block, plan);
+  }
+  bool executeMotionWithCorner(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
   bool executeMove(const BlockWords& bw, const BlockWords& ubw, const Block& block, const BlockPlan& plan);
   /// One side's end point from its letters xl yl (absolute or incremental, in program coordinates:
   /// `shift` away from the toolpath's) and its segment from start (buildSegment). Inline: every

@@ -136,11 +136,8 @@ bool Interpreter::buildArcSegment(const BlockWords& w, Motion motion, const Vec2
   return true;
 }
 
-bool Interpreter::executeMotion(const BlockWords& blockWords, const BlockWords& ubw, const Block& block,
-                                const BlockPlan& plan) {
-  // Most blocks hold no corner word, and most profiles read no bare R as one.
-  if (!blockWords.cornerRound && !blockWords.cornerChamfer && !machine_.bareCornerRadius)
-    return executeMove(blockWords, ubw, block, plan);
+bool Interpreter::executeMotionWithCorner(const BlockWords& blockWords, const BlockWords& ubw, const Block& block,
+                                          const BlockPlan& plan) {
   BlockWords bare;
   const BlockWords& bw = cornerWords(blockWords, bare);
   const Word* corner = bw.cornerRound ? bw.cornerRound : bw.cornerChamfer;

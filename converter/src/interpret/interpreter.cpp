@@ -185,12 +185,7 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   if (!checkBlock(block, bw, ubw, plan)) return Flow::Continue;
   // Phase 4: execute, in the documented order.
   warnIgnoredWords(bw, plan);
-  if (const Word* f = bw['F']) {
-    if (f->value <= 0)
-      diags_.warning(Code::BadFeed, src_, f->span(), "feed F must be positive");
-    else
-      feed_ = f->value * (plan.inch ? 25.4 : 1.0);
-  }
+  if (const Word* f = bw['F']) takeFeed(*f, plan.inch);
   // The modes and settings a block may change besides its motion: none in most blocks (a motion
   // code, coordinates, a feed), which pass them by with one test.
   const bool settings = (bw.groups & ~(1U << static_cast<unsigned>(ModalGroup::Motion))) != 0 ||
@@ -204,16 +199,29 @@ Flow Interpreter::executeBlock(std::size_t pc, std::size_t& next) {
   } else if (plan.homing || plan.positionCode) {
     positionGone(bw, plan);
   } else if (plan.unknownValue && !plan.dwell && !plan.setPosition && !plan.noMotion) {
-    const Word* w = plan.unknownValue;
-    const std::string written(program_.source->text().substr(w->offset, w->length));
-    positionUnknown(
-        "'" + written + "' (" + (w->kind == WordValue::Register ? "a register value" : "a macro variable") + ")",
-        w->span());
-    skipMove(block, plan.motion != Motion::Rapid);
+    valueUnknown(*plan.unknownValue, block, plan);
   } else if (!plan.dwell && !plan.setPosition && !plan.noMotion) {
     if (!executeMotion(bw, ubw, block, plan)) return Flow::Continue;
   }
   return executeProgramFlow(bw, pc, next);
+}
+
+/// F: the feed from here on, mm/min (an inch program's F is in inches).
+void Interpreter::takeFeed(const Word& f, bool inch) {
+  if (f.value <= 0)
+    diags_.warning(Code::BadFeed, src_, f.span(), "feed F must be positive");
+  else
+    feed_ = f.value * (inch ? 25.4 : 1.0);
+}
+
+/// A move whose coordinate only the machine knows (a register, a macro variable): not drawn, and
+/// the wire's position unknown from here.
+void Interpreter::valueUnknown(const Word& w, const Block& block, const BlockPlan& plan) {
+  const std::string written(program_.source->text().substr(w.offset, w.length));
+  positionUnknown(
+      "'" + written + "' (" + (w.kind == WordValue::Register ? "a register value" : "a macro variable") + ")",
+      w.span());
+  skipMove(block, plan.motion != Motion::Rapid);
 }
 
 /// A block whose code takes the wire where only the machine knows (G28, G30, a profile's code).

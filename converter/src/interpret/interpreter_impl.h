@@ -262,6 +262,8 @@ class Interpreter {
   void findLegacyTaperCodes();
   void warnIntegerUnit();
   Flow executeBlock(std::size_t pc, std::size_t& next);
+  void takeFeed(const Word& f, bool inch);
+  void valueUnknown(const Word& w, const Block& block, const BlockPlan& plan);
   void positionGone(const BlockWords& bw, const BlockPlan& plan);
   std::optional<Flow> executeSettings(const BlockWords& bw, const BlockWords& ubw, const Block& block,
                                       const BlockPlan& plan, std::size_t pc, std::size_t& next);

@@ -1178,12 +1178,14 @@ std::optional<SelfIntersectionResult> SelfIntersectionSearch::boxSweep(std::size
     }
     std::size_t w = 0;
     for (std::size_t a = 0; a < active.size(); ++a) {
-      const Active entry = active[a];
-      if (entry.box.reachX < box.minX) continue;  // leaves the sweep
-      active[w++] = entry;
+      if (active[a].box.reachX < box.minX) continue;  // leaves the sweep
+      const float minY = active[a].box.minY, reachY = active[a].box.reachY;
+      const std::uint32_t other = active[a].idx;
+      if (w != a) active[w] = active[a];  // the entries that stay, closed up
+      ++w;
       // The boxes meet in x: the entry's starts no later (the order) and reaches this one's start.
-      if (!(entry.box.minY <= box.reachY && box.minY <= entry.box.reachY)) continue;
-      pending.emplace_back(std::min(idx, entry.idx), std::max(idx, entry.idx));
+      if (!(minY <= box.reachY && box.minY <= reachY)) continue;
+      pending.emplace_back(std::min(idx, other), std::max(idx, other));
       if (pending.size() == kBatch && flush(pending, r)) return r;
     }
     active.resize(w);

@@ -904,7 +904,8 @@ SelfIntersectionResult dropAndSweep(SegmentView path, const SelfIntersectionOpti
         std::vector<Contact> found;
         std::size_t count = 0;
         for (std::size_t j = lo; j < hi; ++j) {
-          if (j == s || !isLive(j) || dropped[j] || !box.meets(boxOf(j))) continue;
+          // The boxes first: most do not meet s's, and that one test passes them.
+          if (!box.meets(boxOf(j)) || j == s || !isLive(j) || dropped[j]) continue;
           const std::size_t i = std::min<std::size_t>(s, j), k = std::max<std::size_t>(s, j);
           ++count;
           classifyPair(path, i, k, isForward(i, k), isWrap(i, k), tol, found);

@@ -51,10 +51,14 @@ void Interpreter::reportArc(const geometry::ArcBuild& build, const BlockWords& b
 void Interpreter::tallyArcCentre(const Vec2& start, const Vec2& end, const Vec2& ij, const Vec2& shift,
                                  bool closedAsUsed, std::uint32_t line) {
   ++tally_.arcs;
+  // In ArcCentreMode's order; the convention in use was judged as the arc was built (closedAsUsed:
+  // the same centre, the same verdict).
   const Vec2 centres[3] = {start + ij, start - ij, ij - shift};
+  const int used = static_cast<int>(options_.arcCentre);
   int closing = 0, way = 0;
   for (int k = 0; k < 3; ++k)
-    if (geometry::centreVerdict(start, end, centres[k], tolerance_) == geometry::ArcStatus::Ok) {
+    if (k == used ? closedAsUsed
+                  : geometry::centreVerdict(start, end, centres[k], tolerance_) == geometry::ArcStatus::Ok) {
       ++tally_.closes[k];
       ++closing;
       way = k;

@@ -130,14 +130,11 @@ std::size_t sampleCount(const Segment& seg, const Sampling& sampling) {
   return plan.full + (plan.rest > 0 ? 1 : 0);
 }
 
-ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<Vec2>* out) {
+namespace {
+
+/// sample() of an arc of radius r (its radius(), taken once by the caller).
+ArcSampleStats sampleArc(const Segment& seg, double r, const Sampling& sampling, std::vector<Vec2>* out) {
   ArcSampleStats stats;
-  if (!seg.isArc()) {
-    stats.points = 1;
-    if (out) out->push_back(seg.end);
-    return stats;
-  }
-  const double r = seg.radius();
   const ChordPlan plan = planChords(r, seg.sweep, sampling);
   const double dir = seg.sweep >= 0 ? 1.0 : -1.0;
   const std::size_t total = plan.full + (plan.rest > 0 ? 1 : 0);
@@ -167,6 +164,16 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
   return stats;
 }
 
+}  // namespace
+
+ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<Vec2>* out) {
+  if (!seg.isArc()) {
+    if (out) out->push_back(seg.end);
+    return ArcSampleStats{.points = 1};
+  }
+  return sampleArc(seg, seg.radius(), sampling, out);
+}
+
 void PathSampler::add(const Segment& seg) {
   if (stats_.points == 0) {
     first_ = seg.start;
@@ -178,12 +185,15 @@ void PathSampler::add(const Segment& seg) {
     ++stats_.points;
     if (out_) out_->push_back(seg.start);
   }
-  const ArcSampleStats s = sample(seg, sampling_, out_);
-  stats_.points += s.points;
-  if (seg.isArc()) {
+  if (!seg.isArc()) {
+    stats_.points += sample(seg, sampling_, out_).points;
+  } else {
+    const double r = seg.radius();  // once, for its sampling and its length (r |sweep|: Segment::length)
+    const ArcSampleStats s = sampleArc(seg, r, sampling_, out_);
+    stats_.points += s.points;
     ++stats_.arcs;
     stats_.maxDeviation = std::max(stats_.maxDeviation, s.maxDeviation);
-    const double len = seg.length();
+    const double len = r * std::abs(seg.sweep);
     stats_.arcLength += len;
     weighted_ += len * s.meanRelativeError;
   }

@@ -174,7 +174,7 @@ ArcSampleStats sample(const Segment& seg, const Sampling& sampling, std::vector<
   return sampleArc(seg, seg.radius(), sampling, out);
 }
 
-void PathSampler::add(const Segment& seg) {
+double PathSampler::add(const Segment& seg) {
   if (stats_.points == 0) {
     first_ = seg.start;
     last_ = seg.start;
@@ -185,19 +185,20 @@ void PathSampler::add(const Segment& seg) {
     ++stats_.points;
     if (out_) out_->push_back(seg.start);
   }
+  last_ = seg.end;
   if (!seg.isArc()) {
     stats_.points += sample(seg, sampling_, out_).points;
-  } else {
-    const double r = seg.radius();  // once, for its sampling and its length (r |sweep|: Segment::length)
-    const ArcSampleStats s = sampleArc(seg, r, sampling_, out_);
-    stats_.points += s.points;
-    ++stats_.arcs;
-    stats_.maxDeviation = std::max(stats_.maxDeviation, s.maxDeviation);
-    const double len = r * std::abs(seg.sweep);
-    stats_.arcLength += len;
-    weighted_ += len * s.meanRelativeError;
+    return seg.length();
   }
-  last_ = seg.end;
+  const double r = seg.radius();  // once, for its sampling and its length (r |sweep|: Segment::length)
+  const ArcSampleStats s = sampleArc(seg, r, sampling_, out_);
+  stats_.points += s.points;
+  ++stats_.arcs;
+  stats_.maxDeviation = std::max(stats_.maxDeviation, s.maxDeviation);
+  const double len = r * std::abs(seg.sweep);
+  stats_.arcLength += len;
+  weighted_ += len * s.meanRelativeError;
+  return len;
 }
 
 void PathSampler::append(const PathSampler& later) {

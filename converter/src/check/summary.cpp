@@ -194,10 +194,9 @@ void SummaryMaker::makePiece(std::size_t k) {
     else
       ++part.lines;
     if (taper) ++(toolpath_.upper[i].isArc() ? part.upperArcs : part.upperLines);
-    part.cutLength += m.lower.length();
     part.bounds.add(m.lower.start);
     part.bounds.add(m.lower.end);
-    part.sampler.add(m.lower);
+    part.cutLength += part.sampler.add(m.lower);
   }
   // The arcs' extremes once the box holds every end of the stretch (addArcExtremes).
   for (std::size_t i = k * kStretch; i < std::min(n, (k + 1) * kStretch); ++i)

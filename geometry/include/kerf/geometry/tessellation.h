@@ -65,7 +65,9 @@ PathSampleStats samplePath(SegmentView path, const Sampling& sampling, std::vect
 class PathSampler {
  public:
   PathSampler(const Sampling& sampling, std::vector<Vec2>* out) : sampling_(sampling), out_(out) {}
-  void add(const Segment& seg);
+  /// Samples the next segment; returns its length (Segment::length, bit for bit), which the
+  /// sampler works out anyway for an arc.
+  double add(const Segment& seg);
   /// Takes in the counts of a sampler (without points) that sampled the segments that follow
   /// these: the same counts as adding those segments here, but for the order of the sums. Its
   /// first start point is not counted again where it is this one's last end.

@@ -13,6 +13,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <memory_resource>
 #include <mutex>
 #include <numeric>
@@ -426,9 +427,10 @@ class SweepEvents {
     double x, y;  // plain doubles: 24 bytes, not the 32 an aligned Vec2 would make it
     std::uint32_t entry[2];
   };
-  /// Piece -> its segment; empty when every segment is live and a line (then piece k is segment
-  /// k: 4 bytes a piece saved).
-  std::vector<std::uint32_t> pieceSeg;
+  /// Piece -> its segment, then the probe's none; null when every segment is live and a line (then
+  /// piece k is segment k: 4 bytes a piece saved). Room for every piece there can be, each entry
+  /// written as its piece is made (room never written takes no memory).
+  std::unique_ptr<std::uint32_t[]> pieceSeg;
   bool identity = true;
   std::uint32_t probeIndex = 0;  ///< the index after the last piece: the probe's
   [[nodiscard]] std::uint32_t segOf(std::uint32_t piece) const { return identity ? piece : pieceSeg[piece]; }
@@ -514,7 +516,7 @@ SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) 
   // Room for every piece and event there can be (an arc has four pieces at most, a piece two
   // ends), so that they are never copied while they grow: room never written takes no memory.
   const std::size_t most = live + 3 * arcs;
-  if (!out.identity) out.pieceSeg.reserve(most + 1);
+  if (!out.identity) out.pieceSeg.reset(new std::uint32_t[most + 1]);
   std::vector<Event>& events = out.unordered();
   events.reserve(2 * most);
   std::size_t pieces = 0;
@@ -525,7 +527,7 @@ SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) 
     forEachPiece(path[i], i, [&](const Piece& piece) {
       const std::size_t k = pieces++;
       if (k >= (std::size_t{1} << 29)) throw std::length_error("findSelfIntersections: more than 2^29 pieces");
-      if (!out.identity) out.pieceSeg.push_back(i);
+      if (!out.identity) out.pieceSeg[k] = i;
       std::size_t mine[2];
       for (int end = 0; end < 2; ++end) {
         const Vec2& at = end == 0 ? piece.left : piece.right;
@@ -550,7 +552,7 @@ SweepEvents makeSweepEvents(SegmentView path, std::size_t live, IsLive& isLive) 
   }
   out.order();
   out.probeIndex = static_cast<std::uint32_t>(pieces);
-  if (!out.identity) out.pieceSeg.push_back(std::numeric_limits<std::uint32_t>::max());
+  if (!out.identity) out.pieceSeg[pieces] = std::numeric_limits<std::uint32_t>::max();
   return out;
 }
 

@@ -282,9 +282,9 @@ class Interpreter {
         return;
       }
       if (w.letter == 'G' && machine_.codes.empty()) {
-        // A plain block's motion code, as the parse found it in the table; any other code's here.
+        // A motion code as the parse found it in the table (Word::motionCode); any other code here.
         if (w.motionCode != 0 && !bw.group(ModalGroup::Motion)) {
-          bw.setGroup(ModalGroup::Motion, &w, static_cast<GCode>(w.motionCode - 1));
+          bw.setGroup(ModalGroup::Motion, &w, codeOfMotionBits(w.motionCode));
           return;
         }
         int number = 0, fraction = 0;

@@ -412,7 +412,7 @@ class LineParser {
         // coordinate opens an upper side (noteForSides).
         const GCodeInfo* const code = point ? nullptr : findWholeMotionCode(whole);
         if (!code || (sawCoordinate && sawMotion)) return begin;
-        motionCode = static_cast<std::uint8_t>(static_cast<unsigned>(code->code) + 1);
+        motionCode = motionCodeBits(code);
         sawMotion = true;
       } else {
         const std::uint32_t bit = 1u << (c - 'A');
@@ -684,9 +684,9 @@ class LineParser {
     w.value = value;
     // A G word written as digits that names a motion code carries it, as the plain pass's do.
     if (letter == 'G' && kind == WordValue::Number && !hasPoint && value >= 0 && value < 1e6)
-      if (const GCodeInfo* code = findWholeMotionCode(static_cast<std::uint64_t>(value));
-          code && static_cast<double>(static_cast<std::uint64_t>(value)) == value)
-        w.motionCode = static_cast<std::uint8_t>((static_cast<unsigned>(code->code) + 1) & 7U);
+      if (static_cast<double>(static_cast<std::uint64_t>(value)) == value)
+        w.motionCode =
+            static_cast<std::uint8_t>(motionCodeBits(findWholeMotionCode(static_cast<std::uint64_t>(value))) & 7U);
     if (isLengthLetter(letter) && kind == WordValue::Number) {
       if (hasPoint) {
         program_.anyDecimalPoint = true;

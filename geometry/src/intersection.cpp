@@ -403,7 +403,7 @@ struct StopAtContact {
   [[nodiscard]] bool full() const { return true; }
 };
 
-/// The decision sweep's events: every live segment's x-monotone pieces (piecesOf), their ends in
+/// The decision sweep's events: every live segment's x-monotone pieces (forEachPiece), their ends in
 /// the sweep's order: by x, then y, then the first entry (two events at one point are two paths
 /// through it, each entry names a piece's end once: the order is total, so any sort gives the
 /// same). Made once for a search and read by each of its sweeps — the decision sweep and every

@@ -95,10 +95,9 @@ bool isMotionCode(double value);
 /// The motion-group code (G00-G03) of a whole code number as written without a point (G01: 1), or
 /// nothing when the number names no code of that group.
 const GCodeInfo* findWholeMotionCode(std::uint64_t number);
-/// Word::motionCode for such a code: 1 + the code, 0 for none.
-inline std::uint8_t motionCodeBits(const GCodeInfo* g) {
-  return g ? static_cast<std::uint8_t>((static_cast<unsigned>(g->code) + 1) & 7U) : std::uint8_t{0};
-}
+/// Word::motionCode for such a code: 1 + the code, 0 for none (it fits the field's three bits:
+/// asserted below; the word's writer masks it to them).
+inline unsigned motionCodeBits(const GCodeInfo* g) { return g ? static_cast<unsigned>(g->code) + 1 : 0U; }
 /// The code Word::motionCode holds (not 0).
 inline GCode codeOfMotionBits(std::uint8_t bits) { return static_cast<GCode>(bits - 1); }
 static_assert(static_cast<unsigned>(GCode::ArcCounterClockwise) + 1 < 8, "Word::motionCode has three bits");

@@ -359,9 +359,8 @@ class LineParser {
     constexpr std::uint16_t kMostWords = 64;  // more: the word loop (a plain block has at most 7 letters and its G's)
     std::uint32_t letters = 0;                // X Y I J R F seen (each may stand once)
     std::uint16_t count = 0;
-    bool sawMotion = false, sawCoordinate = false, anyPoint = false;
-    std::uint32_t integers = 0;
-    const Word* largest = nullptr;  // the block's largest integer length word, if any
+    bool sawMotion = false, sawCoordinate = false;
+    UnitEvidence evidence;
     // The words go where the program keeps them; they are kept only if the block is plain.
     Word* const words = program_.plainWords.room(kMostWords);
     // At `end` stands a line break ('\n', '\r'), the NUL a std::string keeps after its text
@@ -381,7 +380,7 @@ class LineParser {
       }
       if (!hasClass(c, kPlainLetter | kMotionLetter) || count == kMostWords) return begin;
       const bool motion = c == 'G';
-      std::uint8_t motionCode = 0;  // Word::motionCode
+      unsigned motionCode = 0;  // Word::motionCode: a motion word's, from the G-code table
       // [sign] digits [. digits], at least one digit, fewer than kLargestDigits significant digits
       // before the point (scanNumber's syntax and value); no sign on a code.
       const char* k = p + 1;
@@ -429,22 +428,45 @@ class LineParser {
                .value = decimalValue(whole, integerDigits, fractionDigits, negative, first, k)};
       if (!motion && c != 'F') {  // a length letter (isLengthLetter)
         sawCoordinate = true;
-        if (point) {
-          anyPoint = true;
-        } else {
-          ++integers;
-          if (!largest || std::abs(w.value) > std::abs(largest->value)) largest = &w;
-        }
+        evidence.add(w);
       }
       p = k;
     }
     if (count == 0) return begin;
-    program_.anyDecimalPoint = program_.anyDecimalPoint || anyPoint;
-    program_.integerLengthWords += integers;
-    if (largest && std::abs(largest->value) > program_.largestInteger) {
-      program_.largestInteger = std::abs(largest->value);
-      program_.largestIntegerWord = *largest;
+    keepPlainBlock(begin, blockEnd, count, evidence);
+    return next;
+  }
+
+  /// The integer-unit evidence of a plain block's length words (Program::anyDecimalPoint,
+  /// integerLengthWords, largestInteger), gathered as they are read and kept only with the block.
+  struct UnitEvidence {
+    bool anyPoint = false;
+    std::uint32_t integers = 0;
+    const Word* largest = nullptr;  // the block's largest integer length word, if any
+    void add(const Word& w) {
+      if (w.hasPoint) {
+        anyPoint = true;
+      } else {
+        ++integers;
+        if (!largest || std::abs(w.value) > std::abs(largest->value)) largest = &w;
+      }
     }
+  };
+
+  /// The evidence into the program's.
+  void keep(const UnitEvidence& evidence) {
+    program_.anyDecimalPoint = program_.anyDecimalPoint || evidence.anyPoint;
+    program_.integerLengthWords += evidence.integers;
+    if (evidence.largest && std::abs(evidence.largest->value) > program_.largestInteger) {
+      program_.largestInteger = std::abs(evidence.largest->value);
+      program_.largestIntegerWord = *evidence.largest;
+    }
+  }
+
+  /// tryPlainBlock's block, its `count` words written at Program::plainWords' room: kept, with its
+  /// evidence; its text from begin to blockEnd less the blanks before blockEnd.
+  void keepPlainBlock(std::size_t begin, std::size_t blockEnd, std::uint16_t count, const UnitEvidence& evidence) {
+    keep(evidence);
     Block block;
     block.firstWord = program_.plainWords.at();
     program_.plainWords.keep(count);
@@ -455,7 +477,6 @@ class LineParser {
     block.wordCount = block.upperFrom = count;
     block.plain = true;
     program_.blocks.push_back(block);
-    return next;
   }
 
   /// What stands at text_[i] where a word's letter belongs: reported (K0106).
@@ -688,15 +709,9 @@ class LineParser {
         w.motionCode =
             static_cast<std::uint8_t>(motionCodeBits(findWholeMotionCode(static_cast<std::uint64_t>(value))) & 7U);
     if (isLengthLetter(letter) && kind == WordValue::Number) {
-      if (hasPoint) {
-        program_.anyDecimalPoint = true;
-      } else {
-        ++program_.integerLengthWords;
-        if (std::abs(value) > program_.largestInteger) {
-          program_.largestInteger = std::abs(value);
-          program_.largestIntegerWord = w;
-        }
-      }
+      UnitEvidence evidence;
+      evidence.add(w);
+      keep(evidence);
     }
     program_.words.push_back(w);
   }
